@@ -1,0 +1,90 @@
+#include "args.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+
+namespace lagoon::cli {
+
+std::optional<std::string> ParsedArgs::get(const std::string& name) const {
+  auto it = values_.find(name);
+  if (it == values_.end() || it->second.empty()) return std::nullopt;
+  return it->second.back();
+}
+
+std::vector<std::string> ParsedArgs::all(const std::string& name) const {
+  auto it = values_.find(name);
+  return it == values_.end() ? std::vector<std::string>{} : it->second;
+}
+
+Result<ParsedArgs> parse_args(const CommandSpec& spec, std::span<const std::string> args) {
+  ParsedArgs parsed;
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& arg = args[i];
+    if (arg == "--help" || arg == "-h") {
+      parsed.help = true;
+      return parsed;
+    }
+    if (arg.rfind("--", 0) != 0)
+      return make_error("unexpected argument '" + arg + "' (options start with --)");
+    std::string name = arg.substr(2);
+    std::optional<std::string> inline_value;
+    if (auto eq = name.find('='); eq != std::string::npos) {
+      inline_value = name.substr(eq + 1);
+      name = name.substr(0, eq);
+    }
+    const OptionSpec* option = nullptr;
+    for (const auto& o : spec.options)
+      if (o.name == name) option = &o;
+    if (!option) return make_error("unknown option --" + name + " for '" + spec.name + "'");
+    if (option->value_name.empty()) {
+      if (inline_value) return make_error("--" + name + " takes no value");
+      parsed.add(name, "");
+    } else {
+      if (!inline_value) {
+        if (i + 1 >= args.size()) return make_error("--" + name + " needs a value " + option->value_name);
+        inline_value = args[++i];
+      }
+      if (parsed.has(name) && !option->repeatable) return make_error("--" + name + " is given twice");
+      parsed.add(name, *inline_value);
+    }
+  }
+  for (const auto& o : spec.options)
+    if (o.required && !parsed.has(o.name)) return make_error("missing --" + o.name + " " + o.value_name);
+  return parsed;
+}
+
+std::string usage(const CommandSpec& spec) {
+  std::string out = "usage: lagoon " + spec.name;
+  for (const auto& o : spec.options) {
+    std::string part = "--" + o.name + (o.value_name.empty() ? "" : " " + o.value_name);
+    out += o.required ? " " + part : " [" + part + "]" + (o.repeatable ? "..." : "");
+  }
+  out += "\n\n" + spec.summary + "\n\noptions:\n";
+  for (const auto& o : spec.options) {
+    std::string left = "  --" + o.name + (o.value_name.empty() ? "" : " " + o.value_name);
+    if (left.size() < 26) left.resize(26, ' ');
+    else left += "\n" + std::string(26, ' ');
+    out += left + o.help + "\n";
+  }
+  out += "  --help                  this text\n";
+  if (!spec.details.empty()) out += "\n" + spec.details;
+  return out;
+}
+
+std::optional<long long> parse_integer(const std::string& text) {
+  long long v = 0;
+  auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (text.empty() || ec != std::errc() || end != text.data() + text.size()) return std::nullopt;
+  return v;
+}
+
+std::optional<double> parse_number(const std::string& text) {
+  if (text.empty()) return std::nullopt;
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (end != text.c_str() + text.size() || !std::isfinite(v)) return std::nullopt;
+  return v;
+}
+
+}  // namespace lagoon::cli

@@ -1,0 +1,49 @@
+// A small, strict command-line parser: every option is declared once with its help text, so `--help`
+// and the errors come from the same table. Unknown options, missing values and stray words are usage errors.
+#pragma once
+#include <map>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "vk/result.h"
+
+namespace lagoon::cli {
+
+struct OptionSpec {
+  std::string name;        // "scene" for --scene
+  std::string value_name;  // "FILE"; empty for a flag
+  std::string help;
+  bool required = false;
+  bool repeatable = false;
+};
+
+struct CommandSpec {
+  std::string name;     // "render"
+  std::string summary;  // one line
+  std::vector<OptionSpec> options;
+  std::string details;  // extra paragraphs for --help (environment, examples)
+};
+
+class ParsedArgs {
+ public:
+  bool help = false;
+  bool has(const std::string& name) const { return values_.count(name) > 0; }
+  std::optional<std::string> get(const std::string& name) const;
+  std::vector<std::string> all(const std::string& name) const;
+  void add(const std::string& name, std::string value) { values_[name].push_back(std::move(value)); }
+
+ private:
+  std::map<std::string, std::vector<std::string>> values_;
+};
+
+// Accepts "--name value" and "--name=value". "--help"/"-h" sets help and skips the required checks.
+Result<ParsedArgs> parse_args(const CommandSpec& spec, std::span<const std::string> args);
+std::string usage(const CommandSpec& spec);
+
+// Strict numbers: the whole text must be the number ("12px" and "" are errors).
+std::optional<long long> parse_integer(const std::string& text);
+std::optional<double> parse_number(const std::string& text);
+
+}  // namespace lagoon::cli

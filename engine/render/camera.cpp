@@ -1,0 +1,24 @@
+#include "render/camera.h"
+
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace lagoon::render {
+
+CameraMatrices camera_matrices(const scene::Camera& camera, float aspect) {
+  CameraMatrices m;
+  glm::vec3 forward = camera.look_at - camera.position;
+  // Looking straight up or down: pick another up vector so lookAt stays defined.
+  const glm::vec3 up = std::abs(glm::normalize(forward).y) > 0.999f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
+  m.view = glm::lookAt(camera.position, camera.look_at, up);
+  m.proj = glm::perspective(glm::radians(camera.fov_deg), aspect, camera.near_m, camera.far_m);
+  m.view_proj = m.proj * m.view;
+  return m;
+}
+
+glm::vec3 sun_direction(const scene::Sun& sun) {
+  const float el = glm::radians(sun.elevation_deg), az = glm::radians(sun.azimuth_deg);
+  return {std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az)};
+}
+
+}  // namespace lagoon::render

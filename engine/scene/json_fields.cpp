@@ -1,0 +1,421 @@
+#include "scene/json_fields.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <set>
+
+namespace lagoon::scene {
+namespace {
+
+using nlohmann::json;
+
+constexpr double kFloatMax = std::numeric_limits<float>::max();
+
+std::string format_vec3(const glm::vec3& v) {
+  return "[" + format_number(v.x) + ", " + format_number(v.y) + ", " + format_number(v.z) + "]";
+}
+
+std::string with_unit(std::string text, std::string_view unit) {
+  if (!unit.empty()) text += " " + std::string(unit);
+  return text;
+}
+
+std::string join_path(std::string_view parent, std::string_view name) {
+  return parent.empty() ? std::string(name) : std::string(parent) + "." + std::string(name);
+}
+
+std::string join_list(const std::vector<std::string>& items) {
+  std::string out;
+  for (const std::string& item : items) out += (out.empty() ? "" : ", ") + item;
+  return out;
+}
+
+char lower(char c) {
+  return static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+}
+
+// Case-insensitive Levenshtein distance.
+size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<size_t> row(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    size_t diagonal = row[0];
+    row[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const size_t substitute = diagonal + (lower(a[i - 1]) == lower(b[j - 1]) ? 0 : 1);
+      diagonal = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, substitute});
+    }
+  }
+  return row[b.size()];
+}
+
+// Returns the value as a double, or nullopt after reporting why it is not a usable number.
+std::optional<double> finite_number(const json& j, const std::string& path, const std::string& fix,
+                                    Diagnostics& diag) {
+  if (!j.is_number()) {
+    diag.error(path, "expected a number, got " + describe_value(j), fix);
+    return std::nullopt;
+  }
+  const double v = j.get<double>();
+  // Ranges and float conversion both need finite values; JSON cannot spell NaN but 1e999 and in-memory
+  // documents can produce non-finite values.
+  if (!std::isfinite(v) || std::abs(v) > kFloatMax) {
+    diag.error(path, describe_value(j) + " is not a finite 32-bit float", fix);
+    return std::nullopt;
+  }
+  return v;
+}
+
+}  // namespace
+
+std::string format_number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);  // 6 significant digits: 0.1f prints "0.1", not 0.100000001
+  return buf;
+}
+
+// ---- Bounds ----
+
+Bounds Bounds::between(double lo, double hi) {
+  Bounds b;
+  b.min = lo;
+  b.max = hi;
+  return b;
+}
+
+Bounds Bounds::above(double lo) {
+  Bounds b;
+  b.min = lo;
+  b.min_open = true;
+  return b;
+}
+
+Bounds Bounds::at_least(double lo) {
+  Bounds b;
+  b.min = lo;
+  return b;
+}
+
+bool Bounds::contains(double v) const {
+  const bool min_ok = min_open ? v > min : v >= min;
+  const bool max_ok = max_open ? v < max : v <= max;
+  return min_ok && max_ok;
+}
+
+std::string Bounds::describe() const {
+  const bool has_min = std::isfinite(min), has_max = std::isfinite(max);
+  if (has_min && has_max && !min_open && !max_open) return format_number(min) + " to " + format_number(max);
+  std::string out;
+  if (has_min) out = (min_open ? "> " : ">= ") + format_number(min);
+  if (has_max)
+    out += (out.empty() ? "" : " and ") + std::string(max_open ? "< " : "<= ") + format_number(max);
+  return out.empty() ? "any" : out;
+}
+
+// ---- Diagnostics ----
+
+namespace {
+// True if `inner` is `outer` or a field/element below it ("camera.position[1]" is within "camera.position").
+bool within(std::string_view inner, std::string_view outer) {
+  if (!inner.starts_with(outer)) return false;
+  return inner.size() == outer.size() || inner[outer.size()] == '.' || inner[outer.size()] == '[';
+}
+}  // namespace
+
+void Diagnostics::error(std::string_view path, std::string_view problem, std::string_view fix) {
+  std::string line = source_ + ": " + (path.empty() ? std::string("(top level)") : std::string(path)) + ": " +
+                     std::string(problem) + "; " + std::string(fix);
+  // Either direction: --set camera.fov_deg.x=1 turns camera.fov_deg into an object, reported at fov_deg.
+  for (const auto& [override_path, assignment] : overrides_) {
+    if (!path.empty() && (within(path, override_path) || within(override_path, path))) {
+      line += " (value from --set " + assignment + ")";
+      break;
+    }
+  }
+  lines_.push_back(std::move(line));
+}
+
+void Diagnostics::file_error(std::string_view problem, std::string_view fix) {
+  lines_.push_back(source_ + ": " + std::string(problem) + (fix.empty() ? "" : "; " + std::string(fix)));
+}
+
+void Diagnostics::note_override(std::string path, std::string assignment) {
+  overrides_.insert(overrides_.begin(), {std::move(path), std::move(assignment)});  // last --set wins
+}
+
+Error Diagnostics::to_error() const {
+  std::string message;
+  for (const std::string& line : lines_) message += (message.empty() ? "" : "\n") + line;
+  return Error{message};
+}
+
+// ---- ObjectReader ----
+
+ObjectReader::ObjectReader(const nlohmann::json& object, std::string path, Diagnostics& diag)
+    : object_(&object), diag_(&diag), path_(std::move(path)) {}
+
+ObjectReader::ObjectReader(std::string path, std::vector<FieldInfo>& catalog)
+    : catalog_(&catalog), path_(std::move(path)) {}
+
+std::string ObjectReader::child_path(std::string_view name) const {
+  return join_path(path_, name);
+}
+
+const json* ObjectReader::lookup(std::string_view name) {
+  declared_.emplace_back(name);
+  if (describing()) return nullptr;
+  const auto it = object_->find(name);
+  return it == object_->end() ? nullptr : &*it;
+}
+
+void ObjectReader::describe(std::string_view name, std::string type, std::string_view unit,
+                            std::string default_value, std::string range, std::string_view doc) {
+  catalog_->push_back({child_path(name), std::move(type), std::string(unit), std::move(default_value),
+                       std::move(range), std::string(doc)});
+}
+
+void ObjectReader::number(std::string_view name, float& value, Bounds bounds, std::string_view unit,
+                          std::string_view doc) {
+  if (describing()) return describe(name, "number", unit, format_number(value), bounds.describe(), doc);
+  const json* j = lookup(name);
+  if (!j) return;
+  const std::string path = child_path(name);
+  const std::string fix =
+      "allowed: number " + with_unit(bounds.describe(), unit) + " (default " + format_number(value) + ")";
+  const std::optional<double> v = finite_number(*j, path, fix, *diag_);
+  if (!v) return;
+  // Checked again as float so e.g. 1e-50 for a "> 0" field cannot round to 0.
+  if (!bounds.contains(*v) || !bounds.contains(static_cast<float>(*v))) {
+    diag_->error(path, describe_value(*j) + " is out of range", fix);
+    return;
+  }
+  value = static_cast<float>(*v);
+}
+
+void ObjectReader::integer(std::string_view name, uint32_t& value, Bounds bounds, std::string_view unit,
+                           std::string_view doc) {
+  if (describing()) {
+    return describe(name, "integer", unit, std::to_string(value), bounds.describe(), doc);
+  }
+  const json* j = lookup(name);
+  if (!j) return;
+  const std::string path = child_path(name);
+  const std::string fix = "allowed: whole number " + with_unit(bounds.describe(), unit) + " (default " +
+                          std::to_string(value) + ")";
+  if (!j->is_number()) return diag_->error(path, "expected an integer, got " + describe_value(*j), fix);
+  const double v = j->get<double>();  // exact for every in-range value; 64.0 counts as whole
+  if (!std::isfinite(v) || std::floor(v) != v) {
+    return diag_->error(path, describe_value(*j) + " is not a whole number", fix);
+  }
+  if (!bounds.contains(v) || v < 0 || v > std::numeric_limits<uint32_t>::max()) {
+    return diag_->error(path, describe_value(*j) + " is out of range", fix);
+  }
+  value = static_cast<uint32_t>(v);
+}
+
+void ObjectReader::vec3(std::string_view name, glm::vec3& value, std::string_view unit,
+                        std::string_view doc) {
+  if (describing()) return describe(name, "[x, y, z]", unit, format_vec3(value), "finite", doc);
+  const json* j = lookup(name);
+  if (!j) return;
+  const std::string path = child_path(name);
+  const std::string fix = "allowed: 3 finite numbers [x, y, z]" +
+                          (unit.empty() ? "" : " in " + std::string(unit)) + " (default " +
+                          format_vec3(value) + ")";
+  if (!j->is_array() || j->size() != 3) {
+    const std::string got =
+        describe_value(*j) + (j->is_array() ? " with " + std::to_string(j->size()) + " elements" : "");
+    return diag_->error(path, "expected [x, y, z], got " + got, fix);
+  }
+  glm::vec3 result;
+  for (int i = 0; i < 3; ++i) {
+    const std::optional<double> v = finite_number((*j)[i], path + "[" + std::to_string(i) + "]", fix, *diag_);
+    if (!v) return;
+    result[i] = static_cast<float>(*v);
+  }
+  value = result;
+}
+
+void ObjectReader::flag(std::string_view name, bool& value, std::string_view doc) {
+  if (describing()) return describe(name, "boolean", "", value ? "true" : "false", "true, false", doc);
+  const json* j = lookup(name);
+  if (!j) return;
+  if (!j->is_boolean()) {
+    return diag_->error(child_path(name), "expected true or false, got " + describe_value(*j),
+                        "write true or false without quotes");
+  }
+  value = j->get<bool>();
+}
+
+void ObjectReader::text(std::string_view name, std::string& value, std::string_view doc) {
+  if (describing()) return describe(name, "string", "", json(value).dump(), "any", doc);
+  const json* j = lookup(name);
+  if (!j) return;
+  if (!j->is_string()) {
+    return diag_->error(child_path(name), "expected a string, got " + describe_value(*j),
+                        "write the value in double quotes");
+  }
+  value = j->get<std::string>();
+}
+
+std::optional<ObjectReader> ObjectReader::open_block(std::string_view name, std::string_view doc) {
+  if (describing()) {
+    describe(name, "object", "", "", "", doc);
+    return ObjectReader(child_path(name), *catalog_);
+  }
+  const json* j = lookup(name);
+  if (!j) return std::nullopt;
+  if (!j->is_object()) {
+    diag_->error(child_path(name), "expected an object {...}, got " + describe_value(*j),
+                 "write \"" + std::string(name) +
+                     "\": { ... } (see docs/scene-format.md), or leave it out "
+                     "to use the defaults");
+    return std::nullopt;
+  }
+  return ObjectReader(*j, child_path(name), *diag_);
+}
+
+void ObjectReader::rule(std::string_view name, bool holds, std::string_view rule, std::string_view fix) {
+  if (describing()) {
+    const std::string path = child_path(name);
+    for (FieldInfo& info : *catalog_) {
+      if (info.path == path) info.range += (info.range.empty() ? "" : ", ") + std::string(rule);
+    }
+    return;
+  }
+  if (!holds) diag_->error(child_path(name), "must be " + std::string(rule), fix);
+}
+
+void ObjectReader::finish() {
+  if (describing()) return;
+  std::vector<std::string> allowed = declared_;
+  allowed.push_back("comment");
+  for (const auto& [key, value] : object_->items()) {
+    if (key == "comment") {
+      if (!value.is_string()) {
+        diag_->error(child_path(key), "expected a string, got " + describe_value(value),
+                     "\"comment\" is a free-text note; write it in double quotes");
+      }
+      continue;
+    }
+    if (std::find(declared_.begin(), declared_.end(), key) != declared_.end()) continue;
+    const std::string suggestion = closest_match(key, allowed);
+    const std::string where = path_.empty() ? "at the top level" : "in " + path_;
+    diag_->error(child_path(key), "unknown field",
+                 (suggestion.empty() ? "" : "did you mean '" + suggestion + "'? ") + "Fields allowed " +
+                     where + ": " + join_list(allowed));
+  }
+}
+
+// ---- free functions ----
+
+std::optional<json> parse_json_text(std::string_view text, Diagnostics& diag) {
+  // The parser callback sees keys but not paths, so track the path of the container being parsed.
+  struct Frame {
+    bool is_object;
+    std::string path;
+    std::set<std::string> keys;
+    std::string key;
+    size_t index = 0;
+  };
+  std::vector<Frame> stack;
+  auto value_path = [&stack] {
+    if (stack.empty()) return std::string();
+    const Frame& f = stack.back();
+    return f.is_object ? join_path(f.path, f.key) : f.path + "[" + std::to_string(f.index) + "]";
+  };
+  auto element_done = [&stack] {
+    if (!stack.empty() && !stack.back().is_object) ++stack.back().index;
+  };
+  const json::parser_callback_t callback = [&](int, json::parse_event_t event, json& parsed) {
+    switch (event) {
+      case json::parse_event_t::object_start:
+      case json::parse_event_t::array_start:
+        stack.push_back(Frame{event == json::parse_event_t::object_start, value_path(), {}, {}, 0});
+        break;
+      case json::parse_event_t::object_end:
+      case json::parse_event_t::array_end:
+        if (!stack.empty()) stack.pop_back();
+        element_done();
+        break;
+      case json::parse_event_t::key:
+        if (!stack.empty()) {
+          stack.back().key = parsed.get<std::string>();
+          if (!stack.back().keys.insert(stack.back().key).second) {
+            diag.error(value_path(), "field appears more than once in the same object",
+                       "keep only one (JSON parsers would silently use the last one)");
+          }
+        }
+        break;
+      case json::parse_event_t::value:
+        element_done();
+        break;
+    }
+    return true;
+  };
+  try {
+    json document = json::parse(text.begin(), text.end(), callback, /*allow_exceptions=*/true,
+                                /*ignore_comments=*/false);
+    if (!diag.ok()) return std::nullopt;
+    return document;
+  } catch (const json::parse_error& e) {
+    // what() is "[json.exception.parse_error.101] parse error at line L, column C: ..."; keep from "parse".
+    std::string what = e.what();
+    const size_t start = what.find("] ");
+    if (start != std::string::npos) what = what.substr(start + 2);
+    diag.file_error("invalid JSON: " + what,
+                    "fix the syntax at that position (JSON allows no comments or trailing commas; use a "
+                    "\"comment\" field for notes)");
+  } catch (const json::exception& e) {  // e.g. out_of_range.406 "number overflow parsing '1e999'"
+    std::string what = e.what();
+    const size_t start = what.find("] ");
+    if (start != std::string::npos) what = what.substr(start + 2);
+    diag.file_error("invalid JSON: " + what, "write numbers that fit in a double");
+  }
+  return std::nullopt;
+}
+
+std::string to_markdown_table(const std::vector<FieldInfo>& fields) {
+  auto code = [](const std::string& s) { return s.empty() ? std::string() : "`" + s + "`"; };
+  std::string out =
+      "| Field | Type | Unit | Default | Allowed | Meaning |\n"
+      "|---|---|---|---|---|---|\n";
+  for (const FieldInfo& f : fields) {
+    out += "| " + code(f.path) + " | " + f.type + " | " + f.unit + " | " + code(f.default_value) + " | " +
+           f.range + " | " + f.doc + " |\n";
+  }
+  return out;
+}
+
+std::string describe_value(const json& value) {
+  // ensure_ascii + replace: never throws on invalid UTF-8, and truncation cannot split a character.
+  if (value.is_number_float() && !std::isfinite(value.get<double>())) {  // dump() would print null
+    const double v = value.get<double>();
+    return std::isnan(v) ? "NaN" : v > 0 ? "infinity" : "-infinity";
+  }
+  std::string text = value.dump(-1, ' ', /*ensure_ascii=*/true, json::error_handler_t::replace);
+  if (text.size() > 60) text = text.substr(0, 57) + "...";
+  if (value.is_number() || value.is_null()) return text;
+  return std::string(value.type_name()) + " " + text;
+}
+
+std::string closest_match(std::string_view name, const std::vector<std::string>& candidates) {
+  std::string best;
+  size_t best_distance = std::numeric_limits<size_t>::max();
+  for (const std::string& candidate : candidates) {
+    const size_t d = edit_distance(name, candidate);
+    // A third of the length (at least 2) catches typos and swaps without suggesting unrelated fields; a
+    // shared prefix of 3+ characters catches a missing or extra unit suffix ("fov" vs "fov_deg").
+    const size_t shorter = std::min(name.size(), candidate.size());
+    const bool prefix =
+        shorter >= 3 && edit_distance(name.substr(0, shorter), candidate.substr(0, shorter)) == 0;
+    const bool plausible = d <= std::max<size_t>(2, std::max(name.size(), candidate.size()) / 3) || prefix;
+    if (plausible && d < best_distance) best_distance = d, best = candidate;
+  }
+  return best;
+}
+
+}  // namespace lagoon::scene

@@ -1,0 +1,335 @@
+#include "vk/context.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string_view>
+
+#include "vk/check.h"
+#include "vk/device_select.h"
+#include "vk/pipeline_cache.h"
+
+namespace lagoon::vk {
+namespace {
+
+constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
+
+std::string env(const char* name) {
+  const char* v = std::getenv(name);
+  return v ? v : "";
+}
+
+bool has_layer(const char* name) {
+  uint32_t count = 0;
+  VK_CHECK(vkEnumerateInstanceLayerProperties(&count, nullptr));
+  std::vector<VkLayerProperties> layers(count);
+  VK_CHECK(vkEnumerateInstanceLayerProperties(&count, layers.data()));
+  for (const auto& l : layers)
+    if (std::strcmp(l.layerName, name) == 0) return true;
+  return false;
+}
+
+bool has_instance_extension(const char* name) {
+  uint32_t count = 0;
+  VK_CHECK(vkEnumerateInstanceExtensionProperties(nullptr, &count, nullptr));
+  std::vector<VkExtensionProperties> exts(count);
+  VK_CHECK(vkEnumerateInstanceExtensionProperties(nullptr, &count, exts.data()));
+  for (const auto& e : exts)
+    if (std::strcmp(e.extensionName, name) == 0) return true;
+  return false;
+}
+
+bool has_device_extension(VkPhysicalDevice device, const char* name) {
+  uint32_t count = 0;
+  VK_CHECK(vkEnumerateDeviceExtensionProperties(device, nullptr, &count, nullptr));
+  std::vector<VkExtensionProperties> exts(count);
+  VK_CHECK(vkEnumerateDeviceExtensionProperties(device, nullptr, &count, exts.data()));
+  for (const auto& e : exts)
+    if (std::strcmp(e.extensionName, name) == 0) return true;
+  return false;
+}
+
+// The queue family that does graphics and compute (and presents, when a surface is given), or -1.
+int find_queue_family(VkPhysicalDevice device, VkSurfaceKHR surface) {
+  uint32_t count = 0;
+  vkGetPhysicalDeviceQueueFamilyProperties(device, &count, nullptr);
+  std::vector<VkQueueFamilyProperties> families(count);
+  vkGetPhysicalDeviceQueueFamilyProperties(device, &count, families.data());
+  for (uint32_t i = 0; i < count; ++i) {
+    const VkQueueFlags need = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
+    if ((families[i].queueFlags & need) != need) continue;
+    if (surface != VK_NULL_HANDLE) {
+      VkBool32 present = VK_FALSE;
+      VK_CHECK(vkGetPhysicalDeviceSurfaceSupportKHR(device, i, surface, &present));
+      if (!present) continue;
+    }
+    return static_cast<int>(i);
+  }
+  return -1;
+}
+
+std::string unsuitable_reason(VkPhysicalDevice device, VkSurfaceKHR surface) {
+  VkPhysicalDeviceProperties props;
+  vkGetPhysicalDeviceProperties(device, &props);
+  if (props.apiVersion < VK_API_VERSION_1_3) return "Vulkan 1.3 is required";
+  VkPhysicalDeviceVulkan13Features f13{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+  VkPhysicalDeviceFeatures2 features{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, .pNext = &f13};
+  vkGetPhysicalDeviceFeatures2(device, &features);
+  if (!f13.dynamicRendering) return "dynamicRendering is not supported";
+  if (!f13.synchronization2) return "synchronization2 is not supported";
+  if (!has_device_extension(device, VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME))
+    return VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME " is not supported";
+  if (surface != VK_NULL_HANDLE && !has_device_extension(device, VK_KHR_SWAPCHAIN_EXTENSION_NAME))
+    return "no swapchain support";
+  if (find_queue_family(device, surface) < 0)
+    return surface ? "no queue does graphics, compute and present" : "no queue does graphics and compute";
+  return "";
+}
+
+std::filesystem::path default_cache_dir() {
+  if (std::string dir = env("LAGOON_PIPELINE_CACHE"); !dir.empty()) return dir == "off" ? "" : dir;
+  if (std::string xdg = env("XDG_CACHE_HOME"); !xdg.empty()) return std::filesystem::path(xdg) / "lagoon";
+  if (std::string home = env("HOME"); !home.empty()) return std::filesystem::path(home) / ".cache" / "lagoon";
+  return "";
+}
+
+}  // namespace
+
+ContextOptions ContextOptions::from_environment() {
+  ContextOptions options;
+  const std::string v = env("LAGOON_VALIDATION");
+  options.validation = !v.empty() && v != "0";
+  options.device_override = env("LAGOON_DEVICE");
+  options.pipeline_cache_dir = default_cache_dir();
+  return options;
+}
+
+Result<std::unique_ptr<Context>> Context::create(const ContextOptions& options) {
+  std::unique_ptr<Context> ctx(new Context());
+  ctx->deferred_ = DeferredDestroyer(options.frames_in_flight);
+  if (auto r = ctx->init(options); !r) return r.error();
+  return ctx;
+}
+
+Result<void> Context::init(const ContextOptions& options) {
+  if (auto r = create_instance(options); !r) return r;
+  if (options.create_surface) {
+    surface_ = options.create_surface(instance_);
+    if (surface_ == VK_NULL_HANDLE) return make_error("could not create a Vulkan surface for the window");
+  }
+  if (auto r = pick_device(options); !r) return r;
+  create_device();
+  if (!options.pipeline_cache_dir.empty())
+    pipeline_cache_file_ = options.pipeline_cache_dir / pipeline_cache_file_name(properties_);
+  pipeline_cache_ = load_pipeline_cache(device_, properties_, pipeline_cache_file_);
+  return {};
+}
+
+Result<void> Context::create_instance(const ContextOptions& options) {
+  std::vector<const char*> layers;
+  std::vector<const char*> extensions;
+  for (const auto& e : options.instance_extensions) extensions.push_back(e.c_str());
+  if (options.validation) {
+    if (!has_layer(kValidationLayer))
+      return make_error(
+          "LAGOON_VALIDATION is on but the Vulkan validation layer is not installed: "
+          "'sudo apt-get install vulkan-validationlayers' (or run tools/install-deps.sh)");
+    layers.push_back(kValidationLayer);
+  }
+  debug_utils_ = has_instance_extension(VK_EXT_DEBUG_UTILS_EXTENSION_NAME) && options.validation;
+  if (debug_utils_) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+
+  const VkApplicationInfo app{.sType = VK_STRUCTURE_TYPE_APPLICATION_INFO,
+                              .pApplicationName = "lagoon",
+                              .applicationVersion = VK_MAKE_VERSION(0, 1, 0),
+                              .pEngineName = "lagoon",
+                              .engineVersion = VK_MAKE_VERSION(0, 1, 0),
+                              .apiVersion = VK_API_VERSION_1_3};
+  const VkDebugUtilsMessengerCreateInfoEXT messenger_info{
+      .sType = VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT,
+      .messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT,
+      .messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                     VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT,
+      .pfnUserCallback = &ValidationLog::callback,
+      .pUserData = validation_log_.get()};
+  // Synchronization validation catches missing barriers, which core validation does not.
+  const VkValidationFeatureEnableEXT enables[] = {VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
+  const VkValidationFeaturesEXT features{.sType = VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT,
+                                         .pNext = debug_utils_ ? &messenger_info : nullptr,
+                                         .enabledValidationFeatureCount = 1,
+                                         .pEnabledValidationFeatures = enables};
+  const VkInstanceCreateInfo info{
+      .sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO,
+      .pNext = options.validation ? static_cast<const void*>(&features) : nullptr,
+      .pApplicationInfo = &app,
+      .enabledLayerCount = static_cast<uint32_t>(layers.size()),
+      .ppEnabledLayerNames = layers.data(),
+      .enabledExtensionCount = static_cast<uint32_t>(extensions.size()),
+      .ppEnabledExtensionNames = extensions.data()};
+  const VkResult r = vkCreateInstance(&info, nullptr, &instance_);
+  if (r == VK_ERROR_INCOMPATIBLE_DRIVER) return choose_device({}, "").error();
+  if (r == VK_ERROR_EXTENSION_NOT_PRESENT)
+    return make_error("the Vulkan loader lacks an instance extension the window needs (a display driver for "
+                      "surfaces); run headless or install the platform's Vulkan WSI support");
+  if (r != VK_SUCCESS) return make_error(std::string("vkCreateInstance failed: ") + result_string(r));
+  if (debug_utils_) {
+    auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+        vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
+    VK_CHECK(create(instance_, &messenger_info, nullptr, &messenger_));
+    set_name_fn_ = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
+        vkGetInstanceProcAddr(instance_, "vkSetDebugUtilsObjectNameEXT"));
+  }
+  return {};
+}
+
+Result<void> Context::pick_device(const ContextOptions& options) {
+  uint32_t count = 0;
+  VK_CHECK(vkEnumeratePhysicalDevices(instance_, &count, nullptr));
+  std::vector<VkPhysicalDevice> devices(count);
+  VK_CHECK(vkEnumeratePhysicalDevices(instance_, &count, devices.data()));
+  std::vector<DeviceCandidate> candidates;
+  for (VkPhysicalDevice d : devices) {
+    VkPhysicalDeviceProperties props;
+    vkGetPhysicalDeviceProperties(d, &props);
+    candidates.push_back({.name = props.deviceName,
+                          .type = props.deviceType,
+                          .unsuitable_reason = unsuitable_reason(d, surface_)});
+  }
+  auto chosen = choose_device(candidates, options.device_override);
+  if (!chosen) return chosen.error();
+  physical_device_ = devices[*chosen];
+  queue_family_ = static_cast<uint32_t>(find_queue_family(physical_device_, surface_));
+
+  VkPhysicalDeviceDriverProperties driver{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
+  VkPhysicalDeviceProperties2 props2{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, .pNext = &driver};
+  vkGetPhysicalDeviceProperties2(physical_device_, &props2);
+  properties_ = props2.properties;
+  vkGetPhysicalDeviceMemoryProperties(physical_device_, &memory_properties_);
+  info_ = {.name = properties_.deviceName,
+           .type = device_type_name(properties_.deviceType),
+           .driver_name = driver.driverName,
+           .driver_info = driver.driverInfo,
+           .api_version = properties_.apiVersion,
+           .index = static_cast<uint32_t>(*chosen)};
+  return {};
+}
+
+void Context::create_device() {
+  const float priority = 1.0f;
+  const VkDeviceQueueCreateInfo queue_info{.sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO,
+                                           .queueFamilyIndex = queue_family_,
+                                           .queueCount = 1,
+                                           .pQueuePriorities = &priority};
+  std::vector<const char*> extensions{VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
+  if (surface_ != VK_NULL_HANDLE) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+
+  VkPhysicalDeviceFeatures supported{};
+  vkGetPhysicalDeviceFeatures(physical_device_, &supported);
+  VkPhysicalDeviceVulkan13Features f13{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES,
+                                       .synchronization2 = VK_TRUE,
+                                       .dynamicRendering = VK_TRUE};
+  VkPhysicalDeviceVulkan12Features f12{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES,
+                                       .pNext = &f13};
+  VkPhysicalDeviceFeatures2 features{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, .pNext = &f12};
+  // Optional features used when present (anisotropic filtering of the ocean textures; 64-bit floats in tests).
+  features.features.samplerAnisotropy = supported.samplerAnisotropy;
+  features.features.shaderFloat64 = supported.shaderFloat64;
+  features.features.fillModeNonSolid = supported.fillModeNonSolid;
+
+  const VkDeviceCreateInfo info{.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO,
+                                .pNext = &features,
+                                .queueCreateInfoCount = 1,
+                                .pQueueCreateInfos = &queue_info,
+                                .enabledExtensionCount = static_cast<uint32_t>(extensions.size()),
+                                .ppEnabledExtensionNames = extensions.data()};
+  VK_CHECK(vkCreateDevice(physical_device_, &info, nullptr, &device_));
+  vkGetDeviceQueue(device_, queue_family_, 0, &queue_);
+
+  const VkCommandPoolCreateInfo pool_info{.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO,
+                                          .flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT,
+                                          .queueFamilyIndex = queue_family_};
+  VkCommandPool pool;
+  VK_CHECK(vkCreateCommandPool(device_, &pool_info, nullptr, &pool));
+  one_shot_pool_ = Unique<VkCommandPool>(device_, pool);
+  const VkFenceCreateInfo fence_info{.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+  VkFence fence;
+  VK_CHECK(vkCreateFence(device_, &fence_info, nullptr, &fence));
+  one_shot_fence_ = Unique<VkFence>(device_, fence);
+}
+
+Context::~Context() {
+  if (device_ != VK_NULL_HANDLE) {
+    vkDeviceWaitIdle(device_);
+    deferred_.flush_all();
+    if (auto r = save_pipeline_cache(); !r) std::fprintf(stderr, "lagoon: %s\n", r.error().message.c_str());
+    pipeline_cache_.reset();
+    one_shot_fence_.reset();
+    one_shot_pool_.reset();
+    vkDestroyDevice(device_, nullptr);
+  }
+  if (surface_ != VK_NULL_HANDLE) vkDestroySurfaceKHR(instance_, surface_, nullptr);
+  if (messenger_ != VK_NULL_HANDLE) {
+    auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+        vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
+    destroy(instance_, messenger_, nullptr);
+  }
+  if (instance_ != VK_NULL_HANDLE) vkDestroyInstance(instance_, nullptr);
+}
+
+uint32_t Context::find_memory_type(uint32_t type_bits, VkMemoryPropertyFlags required,
+                                   VkMemoryPropertyFlags preferred) const {
+  int fallback = -1;
+  for (uint32_t i = 0; i < memory_properties_.memoryTypeCount; ++i) {
+    if (!(type_bits & (1u << i))) continue;
+    const VkMemoryPropertyFlags flags = memory_properties_.memoryTypes[i].propertyFlags;
+    if ((flags & required) != required) continue;
+    if ((flags & preferred) == preferred) return i;
+    if (fallback < 0) fallback = static_cast<int>(i);
+  }
+  if (fallback < 0)
+    throw_usage_error("no Vulkan memory type has the required properties 0x" + std::to_string(required));
+  return static_cast<uint32_t>(fallback);
+}
+
+void Context::submit_and_wait(const std::function<void(VkCommandBuffer)>& record) {
+  const VkCommandBufferAllocateInfo alloc{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO,
+                                          .commandPool = one_shot_pool_,
+                                          .level = VK_COMMAND_BUFFER_LEVEL_PRIMARY,
+                                          .commandBufferCount = 1};
+  VkCommandBuffer cmd;
+  VK_CHECK(vkAllocateCommandBuffers(device_, &alloc, &cmd));
+  const VkCommandBufferBeginInfo begin{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
+                                       .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
+  VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
+  record(cmd);
+  VK_CHECK(vkEndCommandBuffer(cmd));
+  const VkCommandBufferSubmitInfo cmd_info{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO,
+                                           .commandBuffer = cmd};
+  const VkSubmitInfo2 submit{.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO_2,
+                             .commandBufferInfoCount = 1,
+                             .pCommandBufferInfos = &cmd_info};
+  VkFence fence = one_shot_fence_;
+  VK_CHECK(vkResetFences(device_, 1, &fence));
+  VK_CHECK(vkQueueSubmit2(queue_, 1, &submit, fence));
+  VK_CHECK(vkWaitForFences(device_, 1, &fence, VK_TRUE, UINT64_MAX));
+  vkFreeCommandBuffers(device_, one_shot_pool_, 1, &cmd);
+}
+
+void Context::wait_idle() const { VK_CHECK(vkDeviceWaitIdle(device_)); }
+
+void Context::set_name(VkObjectType type, uint64_t handle, const char* name) const {
+  if (!debug_utils_ || name == nullptr) return;
+  const auto fn = set_name_fn_;
+  const VkDebugUtilsObjectNameInfoEXT info{.sType = VK_STRUCTURE_TYPE_DEBUG_UTILS_OBJECT_NAME_INFO_EXT,
+                                           .objectType = type,
+                                           .objectHandle = handle,
+                                           .pObjectName = name};
+  if (fn) VK_CHECK(fn(device_, &info));
+}
+
+Result<void> Context::save_pipeline_cache() const {
+  if (pipeline_cache_file_.empty() || !pipeline_cache_) return {};
+  return vk::save_pipeline_cache(device_, pipeline_cache_, pipeline_cache_file_);
+}
+
+}  // namespace lagoon::vk

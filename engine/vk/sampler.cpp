@@ -1,0 +1,32 @@
+#include "vk/sampler.h"
+
+#include <algorithm>
+
+#include "vk/check.h"
+#include "vk/context.h"
+
+namespace lagoon::vk {
+
+Unique<VkSampler> create_sampler(const Context& ctx, const SamplerDesc& desc) {
+  VkPhysicalDeviceFeatures features;
+  vkGetPhysicalDeviceFeatures(ctx.physical_device(), &features);
+  const bool aniso = desc.max_anisotropy > 1.0f && features.samplerAnisotropy;
+  const VkSamplerCreateInfo info{
+      .sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO,
+      .magFilter = desc.filter,
+      .minFilter = desc.filter,
+      .mipmapMode = desc.mipmap,
+      .addressModeU = desc.address,
+      .addressModeV = desc.address,
+      .addressModeW = desc.address,
+      .anisotropyEnable = aniso ? VK_TRUE : VK_FALSE,
+      .maxAnisotropy = aniso ? std::min(desc.max_anisotropy, ctx.properties().limits.maxSamplerAnisotropy) : 1.0f,
+      .minLod = 0.0f,
+      .maxLod = VK_LOD_CLAMP_NONE,
+      .borderColor = VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK};
+  VkSampler sampler;
+  VK_CHECK(vkCreateSampler(ctx.device(), &info, nullptr, &sampler));
+  return {ctx.device(), sampler};
+}
+
+}  // namespace lagoon::vk

@@ -1,0 +1,165 @@
+// End-to-end tests of the `lagoon` binary: exit codes, messages and no half-written output.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "io/png.h"
+#include "support/run_process.h"
+
+namespace lagoon::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kScene = std::string(LAGOON_SOURCE_DIR) + "/scenes/default.json";
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::path(LAGOON_TEST_ARTIFACTS) / "cli" / ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  ProcessResult lagoon(const std::string& args, const std::string& env = "") {
+    return run_process(shell_quote(LAGOON_BINARY) + " " + args, env);
+  }
+  // Nothing at all in the test's folder: no output, no temporary file.
+  void expect_no_files() {
+    for (const auto& e : fs::directory_iterator(dir_)) ADD_FAILURE() << "left behind: " << e.path();
+  }
+  std::string out(const std::string& name) { return (dir_ / name).string(); }
+  fs::path dir_;
+};
+
+TEST_F(Cli, NoArgumentsPrintsUsageAndExits2) {
+  auto r = lagoon("");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("usage: lagoon"), std::string::npos) << r.output;
+}
+
+TEST_F(Cli, UnknownCommandExits2) {
+  auto r = lagoon("paint");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("unknown command 'paint'"), std::string::npos) << r.output;
+}
+
+TEST_F(Cli, EveryCommandHasHelp) {
+  for (const char* command : {"info", "render"}) {
+    auto r = lagoon(std::string(command) + " --help");
+    EXPECT_EQ(r.exit_code, 0) << command;
+    EXPECT_NE(r.output.find(std::string("usage: lagoon ") + command), std::string::npos) << r.output;
+  }
+  auto r = lagoon("--help");
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.output.find("render"), std::string::npos);
+}
+
+TEST_F(Cli, RenderUsageErrorsExit2) {
+  struct Case {
+    std::string args, expected;
+    bool prints_usage = true;
+  } cases[] = {
+      {"render --scene " + kScene, "missing --out"},
+      {"render --out " + out("a.png"), "missing --scene"},
+      {"render --scene " + kScene + " --out " + out("a.png") + " --width abc", "--width abc", false},
+      {"render --scene " + kScene + " --out " + out("a.png") + " --time soon", "--time soon", false},
+      {"render --scene " + kScene + " --out " + out("a.txt"), "must name a .png", false},
+      {"render --scene " + kScene + " --out " + out("a.png") + " --colour red", "unknown option --colour"},
+      {"render --scene " + kScene + " --out " + out("a.png") + " stray", "unexpected argument 'stray'"},
+      {"render --scene " + kScene + " --out", "needs a value"},
+  };
+  for (const Case& c : cases) {
+    auto r = lagoon(c.args);
+    EXPECT_EQ(r.exit_code, 2) << c.args << "\n" << r.output;
+    EXPECT_NE(r.output.find(c.expected), std::string::npos) << c.args << "\n" << r.output;
+    if (c.prints_usage) {
+      EXPECT_NE(r.output.find("usage: lagoon render"), std::string::npos) << r.output;
+    }
+  }
+  expect_no_files();
+}
+
+TEST_F(Cli, MissingSceneFileExits1AndNamesIt) {
+  auto r = lagoon("render --scene " + out("nowhere.json") + " --out " + out("x.png"));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("nowhere.json"), std::string::npos) << r.output;
+  expect_no_files();
+}
+
+TEST_F(Cli, MalformedSceneExits1WithTheFileAndPosition) {
+  const std::string scene = (fs::path(LAGOON_TEST_ARTIFACTS) / "cli" / "malformed.json").string();
+  { std::ofstream(scene) << "{\n  \"camera\": { \"fov_deg\": 40,, }\n}\n"; }
+  auto r = lagoon("render --scene " + scene + " --out " + out("x.png"));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("malformed.json"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("line 2"), std::string::npos) << r.output;
+  expect_no_files();
+}
+
+TEST_F(Cli, OutOfRangeOverrideExits1NamingTheField) {
+  auto r = lagoon("render --scene " + kScene + " --out " + out("x.png") + " --set camera.fov_deg=500");
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("camera.fov_deg"), std::string::npos) << r.output;
+  auto typo = lagoon("render --scene " + kScene + " --out " + out("x.png") + " --set camera.fov=40");
+  EXPECT_EQ(typo.exit_code, 1) << typo.output;
+  EXPECT_NE(typo.output.find("fov_deg"), std::string::npos) << typo.output;
+  auto tiny = lagoon("render --scene " + kScene + " --out " + out("x.png") + " --width 0");
+  EXPECT_EQ(tiny.exit_code, 1) << tiny.output;
+  EXPECT_NE(tiny.output.find("render.width"), std::string::npos) << tiny.output;
+  expect_no_files();
+}
+
+TEST_F(Cli, UnwritableOutputExits1AndLeavesNothing) {
+  { std::ofstream(out("file")) << "x"; }
+  auto r = lagoon("render --scene " + kScene + " --out " + out("file") + "/x.png --width 32 --height 32");
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("x.png"), std::string::npos) << r.output;
+  int entries = 0;
+  for (const auto& e : fs::directory_iterator(dir_)) {
+    ++entries;
+    EXPECT_EQ(e.path().filename(), "file");
+  }
+  EXPECT_EQ(entries, 1);
+}
+
+TEST_F(Cli, RenderWritesThePngAndNamesTheDevice) {
+  auto r = lagoon("render --scene " + kScene + " --out " + out("sub/dir/frame.png") + " --width 96 --height 64 --time 1.5");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("frame.png"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("llvmpipe"), std::string::npos) << r.output;  // the test suite runs on lavapipe
+  auto image = io::read_png(out("sub/dir/frame.png"));
+  ASSERT_TRUE(image) << image.error().message;
+  EXPECT_EQ(image->width, 96u);
+  EXPECT_EQ(image->height, 64u);
+  for (const auto& e : fs::recursive_directory_iterator(dir_)) {
+    if (e.is_regular_file()) {
+      EXPECT_EQ(e.path().filename(), "frame.png") << "stray file " << e.path();
+    }
+  }
+}
+
+TEST_F(Cli, InfoNamesDeviceDriverAndLimits) {
+  auto r = lagoon("info");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  for (const char* s : {"device", "driver", "vulkan api", "max compute workgroup", "timestamp period"})
+    EXPECT_NE(r.output.find(s), std::string::npos) << s << "\n" << r.output;
+}
+
+TEST_F(Cli, UnknownDeviceOverrideListsDevices) {
+  auto r = lagoon("info", "LAGOON_DEVICE=no-such-gpu");
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("no-such-gpu"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("llvmpipe"), std::string::npos) << r.output;
+}
+
+TEST_F(Cli, NoVulkanDeviceNamesThePackageToInstall) {
+  auto r = lagoon("render --scene " + kScene + " --out " + out("x.png"),
+                  "VK_ICD_FILENAMES=/nonexistent/icd.json VK_DRIVER_FILES=/nonexistent/icd.json");
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("mesa-vulkan-drivers"), std::string::npos) << r.output;
+  expect_no_files();
+}
+
+}  // namespace
+}  // namespace lagoon::test

@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Installs Lagoon's build and test dependencies from Debian 12 packages.
+# Idempotent: apt-get runs only when a package is missing. Works as root or through sudo.
+set -euo pipefail
+
+packages=(
+  # toolchain (a minimal Debian has none of it)
+  g++ cmake make pkg-config ca-certificates
+  # Vulkan: loader, lavapipe (CPU device), validation layer, shader compiler and tools
+  libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools spirv-tools
+  # libraries
+  libglfw3-dev libglm-dev libtinygltf-dev libimgui-dev libstb-dev nlohmann-json3-dev
+  # tests and benchmarks
+  libgtest-dev libbenchmark-dev libfftw3-dev
+  # headless window tests
+  xvfb xauth
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)
+  [[ "$status" == "install ok installed" ]] || missing+=("$p")
+done
+
+if [[ ${#missing[@]} -eq 0 ]]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+sudo_cmd=()
+if [[ $(id -u) -ne 0 ]]; then
+  command -v sudo >/dev/null || { echo "install-deps: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
+  sudo_cmd=(sudo)
+fi
+
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update -q
+"${sudo_cmd[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
