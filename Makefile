@@ -1,12 +1,12 @@
 # Lagoon: the README's two commands.
 #   make run   installs what is missing, builds (Release), renders scenes/default.json to out/default.png
 #   make test  the same set-up, then the whole test suite (ctest) on lavapipe with validation on
-# Other targets: build, update-golden (rewrite tests/golden/*.png from the current renderer), clean.
+# Other targets: build, update-golden (rewrite tests/golden/*.png from the current renderer), format, clean.
 BUILD_DIR ?= build
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 
-.PHONY: run test build deps configure update-golden clean
+.PHONY: run test build deps configure update-golden format clean
 
 run: build
 	./$(BUILD_DIR)/bin/lagoon render --scene scenes/default.json --out out/default.png
@@ -26,6 +26,9 @@ deps:
 # Renders every golden image again and overwrites tests/golden/. Review the new images (git diff) before committing.
 update-golden: build
 	cd $(BUILD_DIR) && LAGOON_UPDATE_GOLDEN=1 ctest -L render --output-on-failure -j $(JOBS)
+
+format:
+	clang-format -i $$(git ls-files '*.cpp' '*.h')
 
 clean:
 	rm -rf $(BUILD_DIR) out

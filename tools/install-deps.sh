@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   # toolchain (a minimal Debian has none of it)
-  g++ cmake make pkg-config ca-certificates
+  g++ cmake make pkg-config ca-certificates clang-format
   # Vulkan: loader, lavapipe (CPU device), validation layer, shader compiler and tools
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools spirv-tools
   # libraries

@@ -63,8 +63,10 @@ std::string usage(const CommandSpec& spec) {
   out += "\n\n" + spec.summary + "\n\noptions:\n";
   for (const auto& o : spec.options) {
     std::string left = "  --" + o.name + (o.value_name.empty() ? "" : " " + o.value_name);
-    if (left.size() < 26) left.resize(26, ' ');
-    else left += "\n" + std::string(26, ' ');
+    if (left.size() < 26)
+      left.resize(26, ' ');
+    else
+      left += "\n" + std::string(26, ' ');
     out += left + o.help + "\n";
   }
   out += "  --help                  this text\n";

@@ -77,10 +77,11 @@ const Command& render_command() {
                            {"width", "W", "image width in pixels (same as --set render.width=W)"},
                            {"height", "H", "image height in pixels (same as --set render.height=H)"},
                            {"time", "T", "simulation time in seconds (same as --set time_s=T)"},
-                           {"set", "PATH=VALUE", "override a scene field, e.g. --set camera.fov_deg=40", false,
-                            true}},
-               .details = "example:\n  lagoon render --scene scenes/default.json --out out/default.png --width 640 "
-                          "--height 360\n"},
+                           {"set", "PATH=VALUE", "override a scene field, e.g. --set camera.fov_deg=40",
+                            false, true}},
+               .details =
+                   "example:\n  lagoon render --scene scenes/default.json --out out/default.png --width 640 "
+                   "--height 360\n"},
       .run = run_render};
   return command;
 }

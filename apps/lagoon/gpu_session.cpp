@@ -18,7 +18,8 @@ std::unique_ptr<vk::Context> open_context() {
 int validation_status(vk::Context& ctx) {
   const uint32_t failures = ctx.validation().failures();
   if (failures == 0) return kExitOk;
-  std::fprintf(stderr, "lagoon: the Vulkan validation layer reported %u error(s); see the messages above\n", failures);
+  std::fprintf(stderr, "lagoon: the Vulkan validation layer reported %u error(s); see the messages above\n",
+               failures);
   return kExitValidation;
 }
 

@@ -18,7 +18,8 @@ const std::vector<const Command*>& commands() {
 
 void print_overview(FILE* out) {
   std::fprintf(out, "usage: lagoon <command> [options]\n\ncommands:\n");
-  for (const Command* c : commands()) std::fprintf(out, "  %-10s %s\n", c->spec.name.c_str(), c->spec.summary.c_str());
+  for (const Command* c : commands())
+    std::fprintf(out, "  %-10s %s\n", c->spec.name.c_str(), c->spec.summary.c_str());
   std::fprintf(out, "\n'lagoon <command> --help' describes a command's options.\n");
 }
 
@@ -46,7 +47,8 @@ int main(int argc, char** argv) {
   const std::vector<std::string> rest(argv + 2, argv + argc);
   auto args = parse_args(command->spec, rest);
   if (!args) {
-    std::fprintf(stderr, "lagoon %s: %s\n\n%s", name.c_str(), args.error().message.c_str(), usage(command->spec).c_str());
+    std::fprintf(stderr, "lagoon %s: %s\n\n%s", name.c_str(), args.error().message.c_str(),
+                 usage(command->spec).c_str());
     return kExitUsage;
   }
   if (args->help) {

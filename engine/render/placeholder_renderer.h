@@ -15,7 +15,8 @@ namespace lagoon::render {
 
 class PlaceholderRenderer {
  public:
-  static constexpr VkFormat kColorFormat = VK_FORMAT_R8G8B8A8_UNORM;  // display-referred: gamma applied in shader
+  static constexpr VkFormat kColorFormat =
+      VK_FORMAT_R8G8B8A8_UNORM;  // display-referred: gamma applied in shader
   static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
   static constexpr uint32_t kGridVertsPerSide = 160;
   // Beyond ~1.5 km the placeholder's 5-38 m waves are smaller than a grid cell; the sky fog hides the edge.

@@ -2,8 +2,8 @@
 
 namespace lagoon::vk {
 
-void image_barrier(VkCommandBuffer cmd, VkImage image, VkImageSubresourceRange range, VkImageLayout old_layout,
-                   VkImageLayout new_layout, Access src, Access dst) {
+void image_barrier(VkCommandBuffer cmd, VkImage image, VkImageSubresourceRange range,
+                   VkImageLayout old_layout, VkImageLayout new_layout, Access src, Access dst) {
   const VkImageMemoryBarrier2 barrier{.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2,
                                       .srcStageMask = src.stage,
                                       .srcAccessMask = src.access,
@@ -44,9 +44,8 @@ void memory_barrier(VkCommandBuffer cmd, Access src, Access dst) {
                                  .srcAccessMask = src.access,
                                  .dstStageMask = dst.stage,
                                  .dstAccessMask = dst.access};
-  const VkDependencyInfo dep{.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO,
-                             .memoryBarrierCount = 1,
-                             .pMemoryBarriers = &barrier};
+  const VkDependencyInfo dep{
+      .sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO, .memoryBarrierCount = 1, .pMemoryBarriers = &barrier};
   vkCmdPipelineBarrier2(cmd, &dep);
 }
 

@@ -13,31 +13,34 @@ struct Access {
 // Common points of use.
 namespace access {
 inline constexpr Access kNone{VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE};
-inline constexpr Access kTransferWrite{VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_STAGE_2_BLIT_BIT |
-                                           VK_PIPELINE_STAGE_2_CLEAR_BIT,
-                                       VK_ACCESS_2_TRANSFER_WRITE_BIT};
+inline constexpr Access kTransferWrite{
+    VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_STAGE_2_BLIT_BIT | VK_PIPELINE_STAGE_2_CLEAR_BIT,
+    VK_ACCESS_2_TRANSFER_WRITE_BIT};
 inline constexpr Access kTransferRead{VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_STAGE_2_BLIT_BIT,
                                       VK_ACCESS_2_TRANSFER_READ_BIT};
-inline constexpr Access kComputeRead{VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT |
-                                                                                 VK_ACCESS_2_SHADER_SAMPLED_READ_BIT};
-inline constexpr Access kComputeWrite{VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
-inline constexpr Access kComputeReadWrite{VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                                          VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
-inline constexpr Access kGraphicsSampled{VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
-                                         VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT};
-inline constexpr Access kColorAttachmentWrite{VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                                              VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT |
-                                                  VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT};
-inline constexpr Access kDepthAttachment{VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT |
-                                             VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
-                                         VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT |
-                                             VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT};
+inline constexpr Access kComputeRead{
+    VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+    VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_SAMPLED_READ_BIT};
+inline constexpr Access kComputeWrite{VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                                      VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
+inline constexpr Access kComputeReadWrite{
+    VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+    VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
+inline constexpr Access kGraphicsSampled{
+    VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+    VK_ACCESS_2_SHADER_SAMPLED_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_READ_BIT};
+inline constexpr Access kColorAttachmentWrite{
+    VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+    VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT};
+inline constexpr Access kDepthAttachment{
+    VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+    VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT};
 inline constexpr Access kHostRead{VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT};
 inline constexpr Access kHostWrite{VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_WRITE_BIT};
 }  // namespace access
 
-void image_barrier(VkCommandBuffer cmd, VkImage image, VkImageSubresourceRange range, VkImageLayout old_layout,
-                   VkImageLayout new_layout, Access src, Access dst);
+void image_barrier(VkCommandBuffer cmd, VkImage image, VkImageSubresourceRange range,
+                   VkImageLayout old_layout, VkImageLayout new_layout, Access src, Access dst);
 void buffer_barrier(VkCommandBuffer cmd, VkBuffer buffer, Access src, Access dst);
 void memory_barrier(VkCommandBuffer cmd, Access src, Access dst);
 

@@ -23,17 +23,20 @@ Buffer Buffer::create(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags 
   vkGetBufferMemoryRequirements(ctx.device(), buffer, &req);
   VkMemoryPropertyFlags required = 0, preferred = 0;
   switch (memory) {
-    case MemoryUsage::Device: preferred = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT; break;
-    case MemoryUsage::Upload: required = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT; break;
+    case MemoryUsage::Device:
+      preferred = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+      break;
+    case MemoryUsage::Upload:
+      required = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+      break;
     case MemoryUsage::Readback:
       required = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT;
       preferred = VK_MEMORY_PROPERTY_HOST_CACHED_BIT;
       break;
   }
   const uint32_t type = ctx.find_memory_type(req.memoryTypeBits, required, preferred);
-  const VkMemoryAllocateInfo alloc{.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO,
-                                   .allocationSize = req.size,
-                                   .memoryTypeIndex = type};
+  const VkMemoryAllocateInfo alloc{
+      .sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO, .allocationSize = req.size, .memoryTypeIndex = type};
   VkDeviceMemory mem;
   VK_CHECK(vkAllocateMemory(ctx.device(), &alloc, nullptr, &mem));
   b.memory_ = Unique<VkDeviceMemory>(ctx.device(), mem);
@@ -41,19 +44,22 @@ Buffer Buffer::create(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags 
 
   const VkMemoryPropertyFlags flags = ctx.memory_properties().memoryTypes[type].propertyFlags;
   b.coherent_ = flags & VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
-  if (flags & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT) VK_CHECK(vkMapMemory(ctx.device(), mem, 0, VK_WHOLE_SIZE, 0, &b.mapped_));
+  if (flags & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT)
+    VK_CHECK(vkMapMemory(ctx.device(), mem, 0, VK_WHOLE_SIZE, 0, &b.mapped_));
   return b;
 }
 
 void Buffer::invalidate() const {
   if (coherent_ || !mapped_) return;
-  const VkMappedMemoryRange range{.sType = VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE, .memory = memory_, .size = VK_WHOLE_SIZE};
+  const VkMappedMemoryRange range{
+      .sType = VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE, .memory = memory_, .size = VK_WHOLE_SIZE};
   VK_CHECK(vkInvalidateMappedMemoryRanges(memory_.device(), 1, &range));
 }
 
 void Buffer::flush() const {
   if (coherent_ || !mapped_) return;
-  const VkMappedMemoryRange range{.sType = VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE, .memory = memory_, .size = VK_WHOLE_SIZE};
+  const VkMappedMemoryRange range{
+      .sType = VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE, .memory = memory_, .size = VK_WHOLE_SIZE};
   VK_CHECK(vkFlushMappedMemoryRanges(memory_.device(), 1, &range));
 }
 

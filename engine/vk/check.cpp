@@ -50,6 +50,8 @@ void throw_vulkan_error(VkResult result, const char* call, const char* file, int
                     result);
 }
 
-void throw_usage_error(const std::string& message) { throw std::logic_error("lagoon: " + message); }
+void throw_usage_error(const std::string& message) {
+  throw std::logic_error("lagoon: " + message);
+}
 
 }  // namespace lagoon::vk

@@ -10,7 +10,8 @@ namespace lagoon::vk {
 
 class VulkanError : public std::runtime_error {
  public:
-  VulkanError(std::string message, VkResult result) : std::runtime_error(std::move(message)), result_(result) {}
+  VulkanError(std::string message, VkResult result)
+      : std::runtime_error(std::move(message)), result_(result) {}
   VkResult result() const { return result_; }
 
  private:
@@ -26,9 +27,9 @@ const char* result_string(VkResult result);
 
 }  // namespace lagoon::vk
 
-#define VK_CHECK(call)                                                                 \
-  do {                                                                                 \
-    VkResult lagoon_vk_check_result_ = (call);                                         \
-    if (lagoon_vk_check_result_ < 0)                                                   \
+#define VK_CHECK(call)                                                                      \
+  do {                                                                                      \
+    VkResult lagoon_vk_check_result_ = (call);                                              \
+    if (lagoon_vk_check_result_ < 0)                                                        \
       ::lagoon::vk::throw_vulkan_error(lagoon_vk_check_result_, #call, __FILE__, __LINE__); \
   } while (0)

@@ -147,30 +147,33 @@ Result<void> Context::create_instance(const ContextOptions& options) {
                               .apiVersion = VK_API_VERSION_1_3};
   const VkDebugUtilsMessengerCreateInfoEXT messenger_info{
       .sType = VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT,
-      .messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT,
-      .messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+      .messageSeverity =
+          VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT,
+      .messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
+                     VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
                      VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT,
       .pfnUserCallback = &ValidationLog::callback,
       .pUserData = validation_log_.get()};
   // Synchronization validation catches missing barriers, which core validation does not.
-  const VkValidationFeatureEnableEXT enables[] = {VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
+  const VkValidationFeatureEnableEXT enables[] = {
+      VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
   const VkValidationFeaturesEXT features{.sType = VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT,
                                          .pNext = debug_utils_ ? &messenger_info : nullptr,
                                          .enabledValidationFeatureCount = 1,
                                          .pEnabledValidationFeatures = enables};
-  const VkInstanceCreateInfo info{
-      .sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO,
-      .pNext = options.validation ? static_cast<const void*>(&features) : nullptr,
-      .pApplicationInfo = &app,
-      .enabledLayerCount = static_cast<uint32_t>(layers.size()),
-      .ppEnabledLayerNames = layers.data(),
-      .enabledExtensionCount = static_cast<uint32_t>(extensions.size()),
-      .ppEnabledExtensionNames = extensions.data()};
+  const VkInstanceCreateInfo info{.sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO,
+                                  .pNext = options.validation ? static_cast<const void*>(&features) : nullptr,
+                                  .pApplicationInfo = &app,
+                                  .enabledLayerCount = static_cast<uint32_t>(layers.size()),
+                                  .ppEnabledLayerNames = layers.data(),
+                                  .enabledExtensionCount = static_cast<uint32_t>(extensions.size()),
+                                  .ppEnabledExtensionNames = extensions.data()};
   const VkResult r = vkCreateInstance(&info, nullptr, &instance_);
   if (r == VK_ERROR_INCOMPATIBLE_DRIVER) return choose_device({}, "").error();
   if (r == VK_ERROR_EXTENSION_NOT_PRESENT)
-    return make_error("the Vulkan loader lacks an instance extension the window needs (a display driver for "
-                      "surfaces); run headless or install the platform's Vulkan WSI support");
+    return make_error(
+        "the Vulkan loader lacks an instance extension the window needs (a display driver for "
+        "surfaces); run headless or install the platform's Vulkan WSI support");
   if (r != VK_SUCCESS) return make_error(std::string("vkCreateInstance failed: ") + result_string(r));
   if (debug_utils_) {
     auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
@@ -201,7 +204,8 @@ Result<void> Context::pick_device(const ContextOptions& options) {
   queue_family_ = static_cast<uint32_t>(find_queue_family(physical_device_, surface_));
 
   VkPhysicalDeviceDriverProperties driver{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
-  VkPhysicalDeviceProperties2 props2{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, .pNext = &driver};
+  VkPhysicalDeviceProperties2 props2{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2,
+                                     .pNext = &driver};
   vkGetPhysicalDeviceProperties2(physical_device_, &props2);
   properties_ = props2.properties;
   vkGetPhysicalDeviceMemoryProperties(physical_device_, &memory_properties_);
@@ -231,7 +235,8 @@ void Context::create_device() {
   VkPhysicalDeviceVulkan12Features f12{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES,
                                        .pNext = &f13};
   VkPhysicalDeviceFeatures2 features{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, .pNext = &f12};
-  // Optional features used when present (anisotropic filtering of the ocean textures; 64-bit floats in tests).
+  // Optional features used when present (anisotropic filtering of the ocean textures; 64-bit floats in
+  // tests).
   features.features.samplerAnisotropy = supported.samplerAnisotropy;
   features.features.shaderFloat64 = supported.shaderFloat64;
   features.features.fillModeNonSolid = supported.fillModeNonSolid;
@@ -315,7 +320,9 @@ void Context::submit_and_wait(const std::function<void(VkCommandBuffer)>& record
   vkFreeCommandBuffers(device_, one_shot_pool_, 1, &cmd);
 }
 
-void Context::wait_idle() const { VK_CHECK(vkDeviceWaitIdle(device_)); }
+void Context::wait_idle() const {
+  VK_CHECK(vkDeviceWaitIdle(device_));
+}
 
 void Context::set_name(VkObjectType type, uint64_t handle, const char* name) const {
   if (!debug_utils_ || name == nullptr) return;

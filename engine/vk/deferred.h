@@ -12,7 +12,8 @@ class DeferredDestroyer {
  public:
   explicit DeferredDestroyer(uint32_t frame_slots = 1) : slots_(frame_slots) {}
 
-  // Takes ownership of any movable owner (Unique<T>, Buffer, Image...) until its frame slot comes round again.
+  // Takes ownership of any movable owner (Unique<T>, Buffer, Image...) until its frame slot comes round
+  // again.
   template <typename T>
   void defer(T&& owner) {
     slots_[current_].push_back(std::make_unique<Holder<std::decay_t<T>>>(std::forward<T>(owner)));

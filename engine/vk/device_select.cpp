@@ -9,11 +9,16 @@ namespace {
 
 int type_rank(VkPhysicalDeviceType type) {
   switch (type) {
-    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 4;
-    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 3;
-    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return 2;
-    case VK_PHYSICAL_DEVICE_TYPE_CPU: return 1;
-    default: return 0;
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+      return 4;
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+      return 3;
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+      return 2;
+    case VK_PHYSICAL_DEVICE_TYPE_CPU:
+      return 1;
+    default:
+      return 0;
   }
 }
 
@@ -26,7 +31,8 @@ std::string lower(std::string_view s) {
 std::string describe(const std::vector<DeviceCandidate>& devices) {
   std::string out;
   for (size_t i = 0; i < devices.size(); ++i) {
-    out += "\n  " + std::to_string(i) + ": " + devices[i].name + " (" + device_type_name(devices[i].type) + ")";
+    out +=
+        "\n  " + std::to_string(i) + ": " + devices[i].name + " (" + device_type_name(devices[i].type) + ")";
     if (!devices[i].unsuitable_reason.empty()) out += " - unsuitable: " + devices[i].unsuitable_reason;
   }
   return out;
@@ -36,37 +42,45 @@ std::string describe(const std::vector<DeviceCandidate>& devices) {
 
 const char* device_type_name(VkPhysicalDeviceType type) {
   switch (type) {
-    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return "discrete GPU";
-    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return "integrated GPU";
-    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return "virtual GPU";
-    case VK_PHYSICAL_DEVICE_TYPE_CPU: return "CPU";
-    default: return "other";
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU:
+      return "discrete GPU";
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU:
+      return "integrated GPU";
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU:
+      return "virtual GPU";
+    case VK_PHYSICAL_DEVICE_TYPE_CPU:
+      return "CPU";
+    default:
+      return "other";
   }
 }
 
 Result<size_t> choose_device(const std::vector<DeviceCandidate>& devices, std::string_view override_spec) {
   if (devices.empty()) {
     return make_error(
-        "no Vulkan device found. Install a driver: 'sudo apt-get install mesa-vulkan-drivers' gives lavapipe, "
+        "no Vulkan device found. Install a driver: 'sudo apt-get install mesa-vulkan-drivers' gives "
+        "lavapipe, "
         "a CPU Vulkan device that needs no GPU (or run tools/install-deps.sh). If VK_ICD_FILENAMES is set, "
         "check that it names an existing ICD file.");
   }
   if (!override_spec.empty()) {
     std::vector<size_t> matches;
     size_t index = 0;
-    auto [end, ec] = std::from_chars(override_spec.data(), override_spec.data() + override_spec.size(), index);
+    auto [end, ec] =
+        std::from_chars(override_spec.data(), override_spec.data() + override_spec.size(), index);
     if (ec == std::errc() && end == override_spec.data() + override_spec.size()) {
       if (index >= devices.size())
-        return make_error("LAGOON_DEVICE=" + std::string(override_spec) + " is out of range; devices are:" +
-                          describe(devices));
+        return make_error("LAGOON_DEVICE=" + std::string(override_spec) +
+                          " is out of range; devices are:" + describe(devices));
       matches.push_back(index);
     } else {
       const std::string needle = lower(override_spec);
       for (size_t i = 0; i < devices.size(); ++i)
         if (lower(devices[i].name).find(needle) != std::string::npos) matches.push_back(i);
       if (matches.empty())
-        return make_error("LAGOON_DEVICE=" + std::string(override_spec) +
-                          " matches no device name; use an index or part of a name from:" + describe(devices));
+        return make_error(
+            "LAGOON_DEVICE=" + std::string(override_spec) +
+            " matches no device name; use an index or part of a name from:" + describe(devices));
     }
     // Of several name matches take the first suitable one; report why when none is.
     for (size_t i : matches)
@@ -80,9 +94,10 @@ Result<size_t> choose_device(const std::vector<DeviceCandidate>& devices, std::s
     if (best == devices.size() || type_rank(devices[i].type) > type_rank(devices[best].type)) best = i;
   }
   if (best == devices.size())
-    return make_error("no Vulkan device can run Lagoon (it needs Vulkan 1.3 with dynamic rendering, "
-                      "synchronization2 and VK_KHR_push_descriptor):" + describe(devices) +
-                      "\nUpdate the driver, or install mesa-vulkan-drivers for lavapipe.");
+    return make_error(
+        "no Vulkan device can run Lagoon (it needs Vulkan 1.3 with dynamic rendering, "
+        "synchronization2 and VK_KHR_push_descriptor):" +
+        describe(devices) + "\nUpdate the driver, or install mesa-vulkan-drivers for lavapipe.");
   return best;
 }
 

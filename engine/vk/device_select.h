@@ -1,5 +1,6 @@
 // Which physical device to use: a pure function of what the driver reports, so it is unit-tested without
-// Vulkan. Preference discrete > integrated > virtual > CPU; LAGOON_DEVICE=<index or name substring> overrides.
+// Vulkan. Preference discrete > integrated > virtual > CPU; LAGOON_DEVICE=<index or name substring>
+// overrides.
 #pragma once
 #include <vulkan/vulkan.h>
 

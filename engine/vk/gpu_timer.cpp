@@ -28,7 +28,8 @@ void GpuTimer::reset(VkCommandBuffer cmd) {
 }
 
 uint32_t GpuTimer::begin(VkCommandBuffer cmd, std::string_view name) {
-  if (names_.size() >= max_scopes_) throw_usage_error("GpuTimer: more than " + std::to_string(max_scopes_) + " scopes");
+  if (names_.size() >= max_scopes_)
+    throw_usage_error("GpuTimer: more than " + std::to_string(max_scopes_) + " scopes");
   const uint32_t scope = static_cast<uint32_t>(names_.size());
   names_.emplace_back(name);
   if (pool_) vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, pool_, 2 * scope);
@@ -43,8 +44,9 @@ std::vector<PassTime> GpuTimer::results() const {
   std::vector<PassTime> out;
   if (!pool_ || names_.empty()) return out;
   std::vector<uint64_t> ticks(2 * names_.size());
-  VK_CHECK(vkGetQueryPoolResults(device_, pool_, 0, static_cast<uint32_t>(ticks.size()), ticks.size() * sizeof(uint64_t),
-                                 ticks.data(), sizeof(uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+  VK_CHECK(vkGetQueryPoolResults(device_, pool_, 0, static_cast<uint32_t>(ticks.size()),
+                                 ticks.size() * sizeof(uint64_t), ticks.data(), sizeof(uint64_t),
+                                 VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
   for (size_t i = 0; i < names_.size(); ++i) {
     const uint64_t delta = ((ticks[2 * i + 1] & valid_mask_) - (ticks[2 * i] & valid_mask_)) & valid_mask_;
     out.push_back({names_[i], double(delta) * ns_per_tick_ * 1e-6});

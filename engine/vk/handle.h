@@ -10,10 +10,10 @@ namespace lagoon::vk {
 template <typename T>
 struct DestroyTraits;
 
-#define LAGOON_DESTROY_TRAIT(Type, fn)                                                           \
-  template <>                                                                                    \
-  struct DestroyTraits<Type> {                                                                   \
-    static void destroy(VkDevice device, Type handle) { fn(device, handle, nullptr); }           \
+#define LAGOON_DESTROY_TRAIT(Type, fn)                                                 \
+  template <>                                                                          \
+  struct DestroyTraits<Type> {                                                         \
+    static void destroy(VkDevice device, Type handle) { fn(device, handle, nullptr); } \
   };
 LAGOON_DESTROY_TRAIT(VkBuffer, vkDestroyBuffer)
 LAGOON_DESTROY_TRAIT(VkImage, vkDestroyImage)
@@ -41,7 +41,8 @@ class Unique {
   Unique(const Unique&) = delete;
   Unique& operator=(const Unique&) = delete;
   Unique(Unique&& other) noexcept
-      : device_(std::exchange(other.device_, VK_NULL_HANDLE)), handle_(std::exchange(other.handle_, VK_NULL_HANDLE)) {}
+      : device_(std::exchange(other.device_, VK_NULL_HANDLE)),
+        handle_(std::exchange(other.handle_, VK_NULL_HANDLE)) {}
   Unique& operator=(Unique&& other) noexcept {
     if (this != &other) {
       reset();

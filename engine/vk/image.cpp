@@ -10,13 +10,14 @@
 namespace lagoon::vk {
 
 bool is_depth_format(VkFormat format) {
-  return format == VK_FORMAT_D32_SFLOAT || format == VK_FORMAT_D16_UNORM || format == VK_FORMAT_D24_UNORM_S8_UINT ||
-         format == VK_FORMAT_D32_SFLOAT_S8_UINT;
+  return format == VK_FORMAT_D32_SFLOAT || format == VK_FORMAT_D16_UNORM ||
+         format == VK_FORMAT_D24_UNORM_S8_UINT || format == VK_FORMAT_D32_SFLOAT_S8_UINT;
 }
 
 uint32_t format_texel_size(VkFormat format) {
   switch (format) {
-    case VK_FORMAT_R8_UNORM: return 1;
+    case VK_FORMAT_R8_UNORM:
+      return 1;
     case VK_FORMAT_R8G8B8A8_UNORM:
     case VK_FORMAT_R8G8B8A8_SRGB:
     case VK_FORMAT_B8G8R8A8_UNORM:
@@ -24,11 +25,15 @@ uint32_t format_texel_size(VkFormat format) {
     case VK_FORMAT_R32_SFLOAT:
     case VK_FORMAT_R32_UINT:
     case VK_FORMAT_R16G16_SFLOAT:
-    case VK_FORMAT_D32_SFLOAT: return 4;
+    case VK_FORMAT_D32_SFLOAT:
+      return 4;
     case VK_FORMAT_R16G16B16A16_SFLOAT:
-    case VK_FORMAT_R32G32_SFLOAT: return 8;
-    case VK_FORMAT_R32G32B32A32_SFLOAT: return 16;
-    default: throw_usage_error("format_texel_size: unsupported format " + std::to_string(format));
+    case VK_FORMAT_R32G32_SFLOAT:
+      return 8;
+    case VK_FORMAT_R32G32B32A32_SFLOAT:
+      return 16;
+    default:
+      throw_usage_error("format_texel_size: unsupported format " + std::to_string(format));
   }
 }
 
@@ -37,9 +42,10 @@ Image Image::create(const Context& ctx, const ImageDesc& desc) {
   img.format_ = desc.format;
   img.extent_ = desc.extent;
   img.layers_ = desc.layers;
-  img.mip_levels_ = desc.mip_levels != 0
-                        ? desc.mip_levels
-                        : static_cast<uint32_t>(std::bit_width(std::max(desc.extent.width, desc.extent.height)));
+  img.mip_levels_ =
+      desc.mip_levels != 0
+          ? desc.mip_levels
+          : static_cast<uint32_t>(std::bit_width(std::max(desc.extent.width, desc.extent.height)));
   img.aspect_ = is_depth_format(desc.format) ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
   const VkImageCreateInfo info{.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO,
                                .imageType = VK_IMAGE_TYPE_2D,
@@ -70,11 +76,12 @@ Image Image::create(const Context& ctx, const ImageDesc& desc) {
 
   const VkImageViewType view_type = desc.layers > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
   auto make_view = [&](uint32_t base_mip, uint32_t mip_count) {
-    const VkImageViewCreateInfo view_info{.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO,
-                                          .image = image,
-                                          .viewType = view_type,
-                                          .format = desc.format,
-                                          .subresourceRange = {img.aspect_, base_mip, mip_count, 0, desc.layers}};
+    const VkImageViewCreateInfo view_info{
+        .sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO,
+        .image = image,
+        .viewType = view_type,
+        .format = desc.format,
+        .subresourceRange = {img.aspect_, base_mip, mip_count, 0, desc.layers}};
     VkImageView view;
     VK_CHECK(vkCreateImageView(ctx.device(), &view_info, nullptr, &view));
     return Unique<VkImageView>(ctx.device(), view);

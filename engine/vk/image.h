@@ -27,7 +27,9 @@ class Image {
   VkImage handle() const { return image_; }
   VkImageView view() const { return view_; }
   // View of one mip level (all layers), e.g. to write a mip in a compute pass.
-  VkImageView mip_view(uint32_t level) const { return mip_views_.empty() ? view_.get() : mip_views_.at(level).get(); }
+  VkImageView mip_view(uint32_t level) const {
+    return mip_views_.empty() ? view_.get() : mip_views_.at(level).get();
+  }
   VkFormat format() const { return format_; }
   VkExtent2D extent() const { return extent_; }
   uint32_t mip_levels() const { return mip_levels_; }

@@ -17,7 +17,8 @@ ShaderReflection reflect_or_throw(const ShaderCode& code) {
 }
 
 // Merges the stages' declarations; the same binding in two stages must agree on type and count.
-PipelineInterface make_interface(const Context& ctx, std::span<const std::pair<const ShaderCode*, ShaderReflection>> stages) {
+PipelineInterface make_interface(const Context& ctx,
+                                 std::span<const std::pair<const ShaderCode*, ShaderReflection>> stages) {
   std::map<uint32_t, InterfaceBinding> merged;
   uint32_t push_size = 0;
   VkShaderStageFlags push_stages = 0;
@@ -29,9 +30,11 @@ PipelineInterface make_interface(const Context& ctx, std::span<const std::pair<c
       if (b.set != 0)
         throw_usage_error("shader " + std::string(code->name) + ": binding " + std::to_string(b.binding) +
                           " is in set " + std::to_string(b.set) + "; Lagoon passes use set 0 only");
-      auto [it, inserted] = merged.try_emplace(b.binding, InterfaceBinding{b.binding, b.type, b.count, 0, b.name});
+      auto [it, inserted] =
+          merged.try_emplace(b.binding, InterfaceBinding{b.binding, b.type, b.count, 0, b.name});
       if (!inserted && (it->second.type != b.type || it->second.count != b.count))
-        throw_usage_error("shaders " + name + " declare binding " + std::to_string(b.binding) + " differently");
+        throw_usage_error("shaders " + name + " declare binding " + std::to_string(b.binding) +
+                          " differently");
       it->second.stages |= refl.stage;
     }
     if (refl.push_constant_size > 0) {
@@ -70,30 +73,41 @@ Unique<VkShaderModule> make_module(const Context& ctx, const ShaderCode& code) {
 bool compatible(VkDescriptorType type, const Binding& b) {
   switch (type) {
     case VK_DESCRIPTOR_TYPE_STORAGE_BUFFER:
-    case VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER: return std::holds_alternative<BufferRef>(b.resource);
+    case VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER:
+      return std::holds_alternative<BufferRef>(b.resource);
     case VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER:
-    case VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER: return std::holds_alternative<TexelBufferRef>(b.resource);
+    case VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER:
+      return std::holds_alternative<TexelBufferRef>(b.resource);
     case VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER:
     case VK_DESCRIPTOR_TYPE_SAMPLER:
-      return std::holds_alternative<ImageRef>(b.resource) && std::get<ImageRef>(b.resource).sampler != VK_NULL_HANDLE;
+      return std::holds_alternative<ImageRef>(b.resource) &&
+             std::get<ImageRef>(b.resource).sampler != VK_NULL_HANDLE;
     case VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE:
-    case VK_DESCRIPTOR_TYPE_STORAGE_IMAGE: return std::holds_alternative<ImageRef>(b.resource);
-    default: return false;
+    case VK_DESCRIPTOR_TYPE_STORAGE_IMAGE:
+      return std::holds_alternative<ImageRef>(b.resource);
+    default:
+      return false;
   }
 }
 
 }  // namespace
 
-PipelineInterface::PipelineInterface(const Context& ctx, std::string name, std::vector<InterfaceBinding> bindings,
-                                     uint32_t push_size, VkShaderStageFlags push_stages)
-    : name_(std::move(name)), bindings_(std::move(bindings)), push_size_(push_size), push_stages_(push_stages) {
+PipelineInterface::PipelineInterface(const Context& ctx, std::string name,
+                                     std::vector<InterfaceBinding> bindings, uint32_t push_size,
+                                     VkShaderStageFlags push_stages)
+    : name_(std::move(name)),
+      bindings_(std::move(bindings)),
+      push_size_(push_size),
+      push_stages_(push_stages) {
   std::vector<VkDescriptorSetLayoutBinding> layout_bindings;
   for (const InterfaceBinding& b : bindings_)
-    layout_bindings.push_back({.binding = b.binding, .descriptorType = b.type, .descriptorCount = b.count, .stageFlags = b.stages});
-  const VkDescriptorSetLayoutCreateInfo set_info{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO,
-                                                 .flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR,
-                                                 .bindingCount = static_cast<uint32_t>(layout_bindings.size()),
-                                                 .pBindings = layout_bindings.data()};
+    layout_bindings.push_back(
+        {.binding = b.binding, .descriptorType = b.type, .descriptorCount = b.count, .stageFlags = b.stages});
+  const VkDescriptorSetLayoutCreateInfo set_info{
+      .sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO,
+      .flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR,
+      .bindingCount = static_cast<uint32_t>(layout_bindings.size()),
+      .pBindings = layout_bindings.data()};
   VkDescriptorSetLayout set_layout;
   VK_CHECK(vkCreateDescriptorSetLayout(ctx.device(), &set_info, nullptr, &set_layout));
   set_layout_ = Unique<VkDescriptorSetLayout>(ctx.device(), set_layout);
@@ -111,8 +125,8 @@ PipelineInterface::PipelineInterface(const Context& ctx, std::string name, std::
   layout_ = Unique<VkPipelineLayout>(ctx.device(), layout);
 }
 
-void PipelineInterface::bind(VkCommandBuffer cmd, VkPipelineBindPoint point, std::span<const Binding> bindings,
-                             const void* push, size_t push_size) const {
+void PipelineInterface::bind(VkCommandBuffer cmd, VkPipelineBindPoint point,
+                             std::span<const Binding> bindings, const void* push, size_t push_size) const {
   // Shader blocks end at their last member; C++ structs may round up to 16 bytes. Anything else is a bug.
   if (push_size < push_size_ || push_size > ((push_size_ + 15u) & ~15u))
     throw_usage_error("pass " + name_ + ": push constants are " + std::to_string(push_size) +
@@ -120,8 +134,8 @@ void PipelineInterface::bind(VkCommandBuffer cmd, VkPipelineBindPoint point, std
   size_t expected = 0;
   for (const InterfaceBinding& b : bindings_) expected += b.count;
   if (bindings.size() != expected)
-    throw_usage_error("pass " + name_ + ": " + std::to_string(bindings.size()) + " bindings given, the shaders declare " +
-                      std::to_string(expected));
+    throw_usage_error("pass " + name_ + ": " + std::to_string(bindings.size()) +
+                      " bindings given, the shaders declare " + std::to_string(expected));
 
   std::vector<VkWriteDescriptorSet> writes;
   std::vector<VkDescriptorBufferInfo> buffers;
@@ -129,13 +143,15 @@ void PipelineInterface::bind(VkCommandBuffer cmd, VkPipelineBindPoint point, std
   buffers.reserve(bindings.size());
   images.reserve(bindings.size());
   for (const Binding& b : bindings) {
-    auto it = std::find_if(bindings_.begin(), bindings_.end(), [&](const auto& d) { return d.binding == b.binding; });
+    auto it = std::find_if(bindings_.begin(), bindings_.end(),
+                           [&](const auto& d) { return d.binding == b.binding; });
     if (it == bindings_.end() || b.array_element >= it->count)
       throw_usage_error("pass " + name_ + ": binding " + std::to_string(b.binding) + "[" +
                         std::to_string(b.array_element) + "] is not declared by the shaders");
     if (!compatible(it->type, b))
       throw_usage_error("pass " + name_ + ": binding " + std::to_string(b.binding) + " (" + it->name +
-                        ") is given a resource of the wrong kind for descriptor type " + std::to_string(it->type));
+                        ") is given a resource of the wrong kind for descriptor type " +
+                        std::to_string(it->type));
     VkWriteDescriptorSet w{.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
                            .dstBinding = b.binding,
                            .dstArrayElement = b.array_element,
@@ -157,7 +173,8 @@ void PipelineInterface::bind(VkCommandBuffer cmd, VkPipelineBindPoint point, std
   if (push_size_ > 0) vkCmdPushConstants(cmd, layout_, push_stages_, 0, push_size_, push);
 }
 
-ComputePipeline ComputePipeline::create(const Context& ctx, const ShaderCode& shader, std::span<const SpecConstant> spec) {
+ComputePipeline ComputePipeline::create(const Context& ctx, const ShaderCode& shader,
+                                        std::span<const SpecConstant> spec) {
   ComputePipeline p;
   const std::pair<const ShaderCode*, ShaderReflection> stage{&shader, reflect_or_throw(shader)};
   if (stage.second.stage != VK_SHADER_STAGE_COMPUTE_BIT)
@@ -194,15 +211,17 @@ void dispatch(VkCommandBuffer cmd, const ComputePipeline& pipeline, std::span<co
 
 std::array<uint32_t, 3> groups_for(const ComputePipeline& pipeline, std::array<uint32_t, 3> threads) {
   std::array<uint32_t, 3> groups;
-  for (int i = 0; i < 3; ++i) groups[i] = (threads[i] + pipeline.local_size()[i] - 1) / pipeline.local_size()[i];
+  for (int i = 0; i < 3; ++i)
+    groups[i] = (threads[i] + pipeline.local_size()[i] - 1) / pipeline.local_size()[i];
   return groups;
 }
 
 GraphicsPipeline GraphicsPipeline::create(const Context& ctx, const GraphicsDesc& desc) {
-  if (!desc.vertex || !desc.fragment) throw_usage_error("GraphicsPipeline needs a vertex and a fragment shader");
+  if (!desc.vertex || !desc.fragment)
+    throw_usage_error("GraphicsPipeline needs a vertex and a fragment shader");
   GraphicsPipeline p;
-  const std::pair<const ShaderCode*, ShaderReflection> stages[] = {{desc.vertex, reflect_or_throw(*desc.vertex)},
-                                                                   {desc.fragment, reflect_or_throw(*desc.fragment)}};
+  const std::pair<const ShaderCode*, ShaderReflection> stages[] = {
+      {desc.vertex, reflect_or_throw(*desc.vertex)}, {desc.fragment, reflect_or_throw(*desc.fragment)}};
   p.interface_ = make_interface(ctx, stages);
 
   Unique<VkShaderModule> vs = make_module(ctx, *desc.vertex), fs = make_module(ctx, *desc.fragment);
@@ -218,23 +237,26 @@ GraphicsPipeline GraphicsPipeline::create(const Context& ctx, const GraphicsDesc
        .module = fs,
        .pName = stages[1].second.entry_point.c_str(),
        .pSpecializationInfo = spec_info.get()}};
-  const VkPipelineVertexInputStateCreateInfo vertex_input{.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-  const VkPipelineInputAssemblyStateCreateInfo assembly{.sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO,
-                                                        .topology = desc.topology};
-  const VkPipelineViewportStateCreateInfo viewport{.sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO,
-                                                   .viewportCount = 1,
-                                                   .scissorCount = 1};
-  const VkPipelineRasterizationStateCreateInfo raster{.sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO,
-                                                      .polygonMode = VK_POLYGON_MODE_FILL,
-                                                      .cullMode = desc.cull,
-                                                      .frontFace = desc.front_face,
-                                                      .lineWidth = 1.0f};
-  const VkPipelineMultisampleStateCreateInfo multisample{.sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO,
-                                                         .rasterizationSamples = VK_SAMPLE_COUNT_1_BIT};
-  const VkPipelineDepthStencilStateCreateInfo depth{.sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO,
-                                                    .depthTestEnable = desc.depth_test,
-                                                    .depthWriteEnable = desc.depth_write,
-                                                    .depthCompareOp = desc.depth_compare};
+  const VkPipelineVertexInputStateCreateInfo vertex_input{
+      .sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+  const VkPipelineInputAssemblyStateCreateInfo assembly{
+      .sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO, .topology = desc.topology};
+  const VkPipelineViewportStateCreateInfo viewport{
+      .sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO, .viewportCount = 1, .scissorCount = 1};
+  const VkPipelineRasterizationStateCreateInfo raster{
+      .sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO,
+      .polygonMode = VK_POLYGON_MODE_FILL,
+      .cullMode = desc.cull,
+      .frontFace = desc.front_face,
+      .lineWidth = 1.0f};
+  const VkPipelineMultisampleStateCreateInfo multisample{
+      .sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO,
+      .rasterizationSamples = VK_SAMPLE_COUNT_1_BIT};
+  const VkPipelineDepthStencilStateCreateInfo depth{
+      .sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO,
+      .depthTestEnable = desc.depth_test,
+      .depthWriteEnable = desc.depth_write,
+      .depthCompareOp = desc.depth_compare};
   const VkPipelineColorBlendAttachmentState blend_attachment{
       .blendEnable = desc.alpha_blend,
       .srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA,
@@ -246,17 +268,20 @@ GraphicsPipeline GraphicsPipeline::create(const Context& ctx, const GraphicsDesc
       .colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
                         VK_COLOR_COMPONENT_A_BIT};
   const std::vector<VkPipelineColorBlendAttachmentState> blends(desc.color_formats.size(), blend_attachment);
-  const VkPipelineColorBlendStateCreateInfo blend{.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO,
-                                                  .attachmentCount = static_cast<uint32_t>(blends.size()),
-                                                  .pAttachments = blends.data()};
+  const VkPipelineColorBlendStateCreateInfo blend{
+      .sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO,
+      .attachmentCount = static_cast<uint32_t>(blends.size()),
+      .pAttachments = blends.data()};
   const VkDynamicState dynamic_states[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
-  const VkPipelineDynamicStateCreateInfo dynamic{.sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO,
-                                                 .dynamicStateCount = 2,
-                                                 .pDynamicStates = dynamic_states};
-  const VkPipelineRenderingCreateInfo rendering{.sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
-                                                .colorAttachmentCount = static_cast<uint32_t>(desc.color_formats.size()),
-                                                .pColorAttachmentFormats = desc.color_formats.data(),
-                                                .depthAttachmentFormat = desc.depth_format};
+  const VkPipelineDynamicStateCreateInfo dynamic{
+      .sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO,
+      .dynamicStateCount = 2,
+      .pDynamicStates = dynamic_states};
+  const VkPipelineRenderingCreateInfo rendering{
+      .sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
+      .colorAttachmentCount = static_cast<uint32_t>(desc.color_formats.size()),
+      .pColorAttachmentFormats = desc.color_formats.data(),
+      .depthAttachmentFormat = desc.depth_format};
   const VkGraphicsPipelineCreateInfo info{.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO,
                                           .pNext = &rendering,
                                           .stageCount = 2,
@@ -277,8 +302,8 @@ GraphicsPipeline GraphicsPipeline::create(const Context& ctx, const GraphicsDesc
   return p;
 }
 
-void draw(VkCommandBuffer cmd, const GraphicsPipeline& pipeline, std::span<const Binding> bindings, const void* push,
-          size_t push_size, uint32_t vertex_count, uint32_t instance_count) {
+void draw(VkCommandBuffer cmd, const GraphicsPipeline& pipeline, std::span<const Binding> bindings,
+          const void* push, size_t push_size, uint32_t vertex_count, uint32_t instance_count) {
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.pipeline());
   pipeline.interface().bind(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bindings, push, push_size);
   vkCmdDraw(cmd, vertex_count, instance_count, 0, 0);

@@ -45,12 +45,18 @@ struct Binding {
   uint32_t array_element = 0;
 };
 
-inline Binding bind(uint32_t binding, const Buffer& buffer) { return {binding, BufferRef{buffer.handle()}}; }
-inline Binding bind(uint32_t binding, BufferRef buffer) { return {binding, buffer}; }
+inline Binding bind(uint32_t binding, const Buffer& buffer) {
+  return {binding, BufferRef{buffer.handle()}};
+}
+inline Binding bind(uint32_t binding, BufferRef buffer) {
+  return {binding, buffer};
+}
 inline Binding bind(uint32_t binding, ImageRef image, uint32_t array_element = 0) {
   return {binding, image, array_element};
 }
-inline Binding bind(uint32_t binding, TexelBufferRef texels) { return {binding, texels}; }
+inline Binding bind(uint32_t binding, TexelBufferRef texels) {
+  return {binding, texels};
+}
 
 struct InterfaceBinding {
   uint32_t binding = 0;
@@ -73,9 +79,10 @@ class PipelineInterface {
   const std::string& name() const { return name_; }
 
   // Pushes the descriptors and constants. Every declared binding must be given exactly once, with a
-  // resource of the matching kind; `push_size` must cover the shader's block (C++ structs may add tail padding).
-  void bind(VkCommandBuffer cmd, VkPipelineBindPoint point, std::span<const Binding> bindings, const void* push,
-            size_t push_size) const;
+  // resource of the matching kind; `push_size` must cover the shader's block (C++ structs may add tail
+  // padding).
+  void bind(VkCommandBuffer cmd, VkPipelineBindPoint point, std::span<const Binding> bindings,
+            const void* push, size_t push_size) const;
 
  private:
   std::string name_;
@@ -90,7 +97,8 @@ class PipelineInterface {
 class ComputePipeline {
  public:
   ComputePipeline() = default;
-  static ComputePipeline create(const Context& ctx, const ShaderCode& shader, std::span<const SpecConstant> spec = {});
+  static ComputePipeline create(const Context& ctx, const ShaderCode& shader,
+                                std::span<const SpecConstant> spec = {});
 
   VkPipeline pipeline() const { return pipeline_; }
   const PipelineInterface& interface() const { return interface_; }
@@ -110,10 +118,11 @@ void dispatch(VkCommandBuffer cmd, const ComputePipeline& pipeline, std::span<co
 template <typename Push>
 void dispatch(VkCommandBuffer cmd, const ComputePipeline& pipeline, std::initializer_list<Binding> bindings,
               const Push& push, std::array<uint32_t, 3> groups) {
-  dispatch(cmd, pipeline, std::span<const Binding>(bindings.begin(), bindings.size()), &push, sizeof(Push), groups);
+  dispatch(cmd, pipeline, std::span<const Binding>(bindings.begin(), bindings.size()), &push, sizeof(Push),
+           groups);
 }
-inline void dispatch(VkCommandBuffer cmd, const ComputePipeline& pipeline, std::initializer_list<Binding> bindings,
-                     std::array<uint32_t, 3> groups) {
+inline void dispatch(VkCommandBuffer cmd, const ComputePipeline& pipeline,
+                     std::initializer_list<Binding> bindings, std::array<uint32_t, 3> groups) {
   dispatch(cmd, pipeline, std::span<const Binding>(bindings.begin(), bindings.size()), nullptr, 0, groups);
 }
 
@@ -149,18 +158,19 @@ class GraphicsPipeline {
   Unique<VkPipeline> pipeline_;
 };
 
-void draw(VkCommandBuffer cmd, const GraphicsPipeline& pipeline, std::span<const Binding> bindings, const void* push,
-          size_t push_size, uint32_t vertex_count, uint32_t instance_count = 1);
+void draw(VkCommandBuffer cmd, const GraphicsPipeline& pipeline, std::span<const Binding> bindings,
+          const void* push, size_t push_size, uint32_t vertex_count, uint32_t instance_count = 1);
 
 template <typename Push>
 void draw(VkCommandBuffer cmd, const GraphicsPipeline& pipeline, std::initializer_list<Binding> bindings,
           const Push& push, uint32_t vertex_count, uint32_t instance_count = 1) {
-  draw(cmd, pipeline, std::span<const Binding>(bindings.begin(), bindings.size()), &push, sizeof(Push), vertex_count,
-       instance_count);
+  draw(cmd, pipeline, std::span<const Binding>(bindings.begin(), bindings.size()), &push, sizeof(Push),
+       vertex_count, instance_count);
 }
 
-inline void draw(VkCommandBuffer cmd, const GraphicsPipeline& pipeline, std::initializer_list<Binding> bindings,
-                 uint32_t vertex_count, uint32_t instance_count = 1) {
+inline void draw(VkCommandBuffer cmd, const GraphicsPipeline& pipeline,
+                 std::initializer_list<Binding> bindings, uint32_t vertex_count,
+                 uint32_t instance_count = 1) {
   draw(cmd, pipeline, std::span<const Binding>(bindings.begin(), bindings.size()), nullptr, 0, vertex_count,
        instance_count);
 }

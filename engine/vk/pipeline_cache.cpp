@@ -17,8 +17,9 @@ bool header_matches(const std::vector<char>& data, const VkPhysicalDevicePropert
   VkPipelineCacheHeaderVersionOne header;
   if (data.size() < sizeof(header)) return false;
   std::memcpy(&header, data.data(), sizeof(header));
-  return header.headerSize >= sizeof(header) && header.headerVersion == VK_PIPELINE_CACHE_HEADER_VERSION_ONE &&
-         header.vendorID == props.vendorID && header.deviceID == props.deviceID &&
+  return header.headerSize >= sizeof(header) &&
+         header.headerVersion == VK_PIPELINE_CACHE_HEADER_VERSION_ONE && header.vendorID == props.vendorID &&
+         header.deviceID == props.deviceID &&
          std::memcmp(header.pipelineCacheUUID, props.pipelineCacheUUID, VK_UUID_SIZE) == 0;
 }
 
@@ -26,7 +27,8 @@ bool header_matches(const std::vector<char>& data, const VkPhysicalDevicePropert
 
 std::string pipeline_cache_file_name(const VkPhysicalDeviceProperties& props) {
   char uuid[2 * VK_UUID_SIZE + 1];
-  for (uint32_t i = 0; i < VK_UUID_SIZE; ++i) std::snprintf(uuid + 2 * i, 3, "%02x", props.pipelineCacheUUID[i]);
+  for (uint32_t i = 0; i < VK_UUID_SIZE; ++i)
+    std::snprintf(uuid + 2 * i, 3, "%02x", props.pipelineCacheUUID[i]);
   char name[128];
   std::snprintf(name, sizeof(name), "pipeline-cache-%04x-%04x-%s.bin", props.vendorID, props.deviceID, uuid);
   return name;

@@ -8,11 +8,12 @@ void begin_rendering(VkCommandBuffer cmd, VkExtent2D extent, std::initializer_li
                      std::optional<DepthTarget> depth) {
   std::vector<VkRenderingAttachmentInfo> color_infos;
   for (const ColorTarget& c : colors) {
-    VkRenderingAttachmentInfo info{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
-                                   .imageView = c.view,
-                                   .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                                   .loadOp = c.clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD,
-                                   .storeOp = VK_ATTACHMENT_STORE_OP_STORE};
+    VkRenderingAttachmentInfo info{
+        .sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
+        .imageView = c.view,
+        .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+        .loadOp = c.clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD,
+        .storeOp = VK_ATTACHMENT_STORE_OP_STORE};
     if (c.clear) info.clearValue.color = {{(*c.clear)[0], (*c.clear)[1], (*c.clear)[2], (*c.clear)[3]}};
     color_infos.push_back(info);
   }
@@ -33,12 +34,15 @@ void begin_rendering(VkCommandBuffer cmd, VkExtent2D extent, std::initializer_li
                              .pDepthAttachment = depth ? &depth_info : nullptr};
   vkCmdBeginRendering(cmd, &info);
   // Negative-height viewport: y up in clip space, as in OpenGL and GLM's projection matrices.
-  const VkViewport viewport{0.0f, float(extent.height), float(extent.width), -float(extent.height), 0.0f, 1.0f};
+  const VkViewport viewport{0.0f, float(extent.height), float(extent.width), -float(extent.height), 0.0f,
+                            1.0f};
   const VkRect2D scissor{{0, 0}, extent};
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
 }
 
-void end_rendering(VkCommandBuffer cmd) { vkCmdEndRendering(cmd); }
+void end_rendering(VkCommandBuffer cmd) {
+  vkCmdEndRendering(cmd);
+}
 
 }  // namespace lagoon::vk

@@ -1,4 +1,5 @@
-// Dynamic rendering (no VkRenderPass/VkFramebuffer objects): begin with attachments, viewport and scissor set.
+// Dynamic rendering (no VkRenderPass/VkFramebuffer objects): begin with attachments, viewport and scissor
+// set.
 #pragma once
 #include <vulkan/vulkan.h>
 

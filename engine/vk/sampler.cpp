@@ -20,7 +20,8 @@ Unique<VkSampler> create_sampler(const Context& ctx, const SamplerDesc& desc) {
       .addressModeV = desc.address,
       .addressModeW = desc.address,
       .anisotropyEnable = aniso ? VK_TRUE : VK_FALSE,
-      .maxAnisotropy = aniso ? std::min(desc.max_anisotropy, ctx.properties().limits.maxSamplerAnisotropy) : 1.0f,
+      .maxAnisotropy =
+          aniso ? std::min(desc.max_anisotropy, ctx.properties().limits.maxSamplerAnisotropy) : 1.0f,
       .minLod = 0.0f,
       .maxLod = VK_LOD_CLAMP_NONE,
       .borderColor = VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK};

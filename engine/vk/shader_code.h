@@ -7,7 +7,7 @@
 namespace lagoon::vk {
 
 struct ShaderCode {
-  std::string_view name;             // path under shaders/, e.g. "render/sky.frag"; used in error messages
+  std::string_view name;            // path under shaders/, e.g. "render/sky.frag"; used in error messages
   std::span<const uint32_t> spirv;  // whole module, host byte order
 };
 

@@ -32,7 +32,7 @@ constexpr uint32_t kLocalSize = 17, kLocalSizeId = 38;  // execution modes
 constexpr uint32_t kBuiltInWorkgroupSize = 25;
 constexpr uint32_t kDimBuffer = 5, kDimSubpassData = 6;
 constexpr uint32_t kMaxStructMembers = 16383;  // SPIR-V universal limit; bounds allocations on bad input
-constexpr int kMaxTypeDepth = 64;              // ids are defined before use, so deeper means corrupt input
+constexpr int kMaxTypeDepth = 64;              // real types nest a few levels; guards against cycles
 
 using Instruction = std::span<const uint32_t>;  // one instruction, opcode word first
 uint32_t opcode(Instruction inst) {
@@ -106,7 +106,7 @@ std::optional<VkShaderStageFlagBits> stage_of(uint32_t execution_model) {
 }
 
 struct Decorations {
-  std::optional<uint32_t> set, binding, spec_id, builtin, array_stride;
+  std::optional<uint32_t> set, binding, spec_id, array_stride;
   bool block = false, buffer_block = false;
 };
 
@@ -238,38 +238,23 @@ Result<void> Module::record(Instruction inst, size_t word_index) {
     }
     case kOpDecorate: {
       Decorations& d = decorations_[inst[1]];
-      switch (inst[2]) {
-        case kBlock:
-          d.block = true;
-          break;
-        case kBufferBlock:
-          d.buffer_block = true;
-          break;
-        case kDescriptorSet:
-          d.set = literal(inst, 3);
-          break;
-        case kBinding:
-          d.binding = literal(inst, 3);
-          break;
-        case kSpecId:
-          d.spec_id = literal(inst, 3);
-          break;
-        case kArrayStride:
-          d.array_stride = literal(inst, 3);
-          break;
-        case kBuiltIn:
-          d.builtin = literal(inst, 3);
-          if (d.builtin == kBuiltInWorkgroupSize) workgroup_size_builtin_ = inst[1];
-          break;
-        default:
-          break;
+      const uint32_t decoration = inst[2];
+      if (decoration == kBlock) d.block = true;
+      if (decoration == kBufferBlock) d.buffer_block = true;
+      if (decoration == kDescriptorSet) d.set = literal(inst, 3);
+      if (decoration == kBinding) d.binding = literal(inst, 3);
+      if (decoration == kSpecId) d.spec_id = literal(inst, 3);
+      if (decoration == kArrayStride) d.array_stride = literal(inst, 3);
+      if (decoration == kBuiltIn && literal(inst, 3) == kBuiltInWorkgroupSize) {
+        workgroup_size_builtin_ = inst[1];
       }
       break;
     }
     case kOpMemberDecorate: {
       const uint32_t member = inst[2];
-      if (member >= kMaxStructMembers)
+      if (member >= kMaxStructMembers) {
         return make_error("SPIR-V OpMemberDecorate member index is out of range");
+      }
       std::vector<MemberLayout>& layouts = members_[inst[1]];
       if (layouts.size() <= member) layouts.resize(member + 1);
       MemberLayout& m = layouts[member];
@@ -324,7 +309,10 @@ Result<ReflectedBinding> Module::describe(uint32_t var, uint32_t type, uint32_t 
                             (b.name.empty() ? "%" + std::to_string(var) : "'" + b.name + "'") + " (set " +
                             std::to_string(b.set) + ", binding " + std::to_string(b.binding) + ")";
   // Arrays of descriptors (also arrays of arrays, which Vulkan flattens) become the descriptor count.
-  for (const Instruction* t = def(type); t != nullptr; t = def(type)) {
+  for (int depth = 0;; ++depth) {
+    const Instruction* t = def(type);
+    if (t == nullptr) break;
+    if (depth > kMaxTypeDepth) return make_error(where + ": array type nesting is too deep");
     if (opcode(*t) == kOpTypeRuntimeArray) {
       return make_error(where + ": unsized descriptor arrays are not supported");
     }
@@ -358,18 +346,21 @@ Result<VkDescriptorType> Module::descriptor_type(uint32_t type, uint32_t storage
       return VK_DESCRIPTOR_TYPE_SAMPLER;
     case kOpTypeSampledImage: {
       const Instruction* image = def((*t)[2]);
-      if (image == nullptr || opcode(*image) != kOpTypeImage)
-        return make_error("sampled image without image");
+      if (image == nullptr || opcode(*image) != kOpTypeImage) {
+        return make_error("sampled image type does not refer to an image type");
+      }
       return (*image)[3] == kDimBuffer ? VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER
                                        : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     }
     case kOpTypeImage: {
       const uint32_t dim = (*t)[3], sampled = (*t)[7];
       if (dim == kDimSubpassData) return VK_DESCRIPTOR_TYPE_INPUT_ATTACHMENT;
-      if (sampled == 1)
+      if (sampled == 1) {
         return dim == kDimBuffer ? VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER : VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
-      if (sampled == 2)
+      }
+      if (sampled == 2) {
         return dim == kDimBuffer ? VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER : VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+      }
       return make_error("image with Sampled=" + std::to_string(sampled) +
                         " (not known at compile time) is not supported");
     }
@@ -384,9 +375,9 @@ Result<VkDescriptorType> Module::descriptor_type(uint32_t type, uint32_t storage
 // (Offset, ArrayStride, MatrixStride) that Vulkan requires on push-constant blocks.
 Result<uint32_t> Module::size_of(uint32_t type, const MemberLayout& layout, int depth) const {
   const Instruction* t = def(type);
-  if (t == nullptr || depth > kMaxTypeDepth)
-    return make_error("type %" + std::to_string(type) + " is not defined");
   const std::string what = "type %" + std::to_string(type);
+  if (t == nullptr) return make_error(what + " is not defined");
+  if (depth > kMaxTypeDepth) return make_error(what + " is nested too deeply (corrupt module?)");
   switch (opcode(*t)) {
     case kOpTypeInt:
     case kOpTypeFloat:

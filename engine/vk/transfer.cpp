@@ -10,14 +10,16 @@ namespace lagoon::vk {
 namespace {
 
 VkDeviceSize mip_bytes(const Image& image, uint32_t mip) {
-  const uint32_t w = std::max(1u, image.extent().width >> mip), h = std::max(1u, image.extent().height >> mip);
+  const uint32_t w = std::max(1u, image.extent().width >> mip),
+                 h = std::max(1u, image.extent().height >> mip);
   return VkDeviceSize(w) * h * format_texel_size(image.format()) * image.layers();
 }
 
 VkBufferImageCopy mip_copy(const Image& image, uint32_t mip) {
   return {.bufferOffset = 0,
           .imageSubresource = {image.aspect(), mip, 0, image.layers()},
-          .imageExtent = {std::max(1u, image.extent().width >> mip), std::max(1u, image.extent().height >> mip), 1}};
+          .imageExtent = {std::max(1u, image.extent().width >> mip),
+                          std::max(1u, image.extent().height >> mip), 1}};
 }
 
 }  // namespace
@@ -30,7 +32,8 @@ void upload_buffer(Context& ctx, const Buffer& dst, std::span<const std::byte> d
     dst.flush();
     return;
   }
-  Buffer staging = Buffer::create(ctx, data.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUsage::Upload, "staging");
+  Buffer staging =
+      Buffer::create(ctx, data.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUsage::Upload, "staging");
   std::memcpy(staging.mapped(), data.data(), data.size());
   ctx.submit_and_wait([&](VkCommandBuffer cmd) {
     const VkBufferCopy region{.srcOffset = 0, .dstOffset = offset, .size = data.size()};
@@ -45,7 +48,8 @@ std::vector<std::byte> readback_buffer(Context& ctx, const Buffer& src) {
     std::memcpy(out.data(), src.mapped(), out.size());
     return out;
   }
-  Buffer staging = Buffer::create(ctx, src.size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUsage::Readback, "readback");
+  Buffer staging =
+      Buffer::create(ctx, src.size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUsage::Readback, "readback");
   ctx.submit_and_wait([&](VkCommandBuffer cmd) {
     const VkBufferCopy region{.size = src.size()};
     vkCmdCopyBuffer(cmd, src.handle(), staging.handle(), 1, &region);
@@ -56,34 +60,39 @@ std::vector<std::byte> readback_buffer(Context& ctx, const Buffer& src) {
   return out;
 }
 
-void upload_image(Context& ctx, const Image& image, std::span<const std::byte> texels, VkImageLayout final_layout,
-                  Access final_access) {
-  if (texels.size() != mip_bytes(image, 0)) throw_usage_error("upload_image: texel data does not match the image size");
-  Buffer staging = Buffer::create(ctx, texels.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUsage::Upload, "staging");
+void upload_image(Context& ctx, const Image& image, std::span<const std::byte> texels,
+                  VkImageLayout final_layout, Access final_access) {
+  if (texels.size() != mip_bytes(image, 0))
+    throw_usage_error("upload_image: texel data does not match the image size");
+  Buffer staging =
+      Buffer::create(ctx, texels.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUsage::Upload, "staging");
   std::memcpy(staging.mapped(), texels.data(), texels.size());
   ctx.submit_and_wait([&](VkCommandBuffer cmd) {
     const VkImageSubresourceRange range = image.all_subresources();
     image_barrier(cmd, image.handle(), range, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                   access::kNone, access::kTransferWrite);
     const VkBufferImageCopy region = mip_copy(image, 0);
-    vkCmdCopyBufferToImage(cmd, staging.handle(), image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+    vkCmdCopyBufferToImage(cmd, staging.handle(), image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
+                           &region);
     image_barrier(cmd, image.handle(), range, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, final_layout,
                   access::kTransferWrite, final_access);
   });
 }
 
-std::vector<std::byte> readback_image(Context& ctx, const Image& image, VkImageLayout layout, Access last_writer,
-                                      uint32_t mip) {
+std::vector<std::byte> readback_image(Context& ctx, const Image& image, VkImageLayout layout,
+                                      Access last_writer, uint32_t mip) {
   const VkDeviceSize size = mip_bytes(image, mip);
-  Buffer staging = Buffer::create(ctx, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUsage::Readback, "readback");
+  Buffer staging =
+      Buffer::create(ctx, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUsage::Readback, "readback");
   ctx.submit_and_wait([&](VkCommandBuffer cmd) {
     const VkImageSubresourceRange range = image.all_subresources();
     image_barrier(cmd, image.handle(), range, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, last_writer,
                   access::kTransferRead);
     const VkBufferImageCopy region = mip_copy(image, mip);
-    vkCmdCopyImageToBuffer(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.handle(), 1, &region);
-    image_barrier(cmd, image.handle(), range, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout, access::kTransferRead,
-                  last_writer);
+    vkCmdCopyImageToBuffer(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.handle(), 1,
+                           &region);
+    image_barrier(cmd, image.handle(), range, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout,
+                  access::kTransferRead, last_writer);
     buffer_barrier(cmd, staging.handle(), access::kTransferWrite, access::kHostRead);
   });
   staging.invalidate();

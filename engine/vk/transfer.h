@@ -18,12 +18,12 @@ std::vector<std::byte> readback_buffer(Context& ctx, const Buffer& src);
 
 // `texels`: mip 0 of every layer, tightly packed, layer after layer. The previous contents are discarded and
 // the image is left in `final_layout`, visible to `final_access`.
-void upload_image(Context& ctx, const Image& image, std::span<const std::byte> texels, VkImageLayout final_layout,
-                  Access final_access);
+void upload_image(Context& ctx, const Image& image, std::span<const std::byte> texels,
+                  VkImageLayout final_layout, Access final_access);
 // Reads one mip level of every layer (tightly packed). The image must be in `layout` after `last_writer`;
 // it is returned to `layout`.
-std::vector<std::byte> readback_image(Context& ctx, const Image& image, VkImageLayout layout, Access last_writer,
-                                      uint32_t mip = 0);
+std::vector<std::byte> readback_image(Context& ctx, const Image& image, VkImageLayout layout,
+                                      Access last_writer, uint32_t mip = 0);
 
 template <typename T>
 std::span<const std::byte> as_bytes_of(const std::vector<T>& v) {

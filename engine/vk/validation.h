@@ -16,11 +16,12 @@ class ValidationLog {
               const char* message);
   uint32_t failures() const { return failures_.load(); }
   std::vector<std::string> messages() const;  // first few failure messages, for test output
-  void set_echo(bool echo) { echo_ = echo; }   // print to stderr as they arrive (default on)
+  void set_echo(bool echo) { echo_ = echo; }  // print to stderr as they arrive (default on)
 
   static VKAPI_ATTR VkBool32 VKAPI_CALL callback(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                                  VkDebugUtilsMessageTypeFlagsEXT type,
-                                                 const VkDebugUtilsMessengerCallbackDataEXT* data, void* user);
+                                                 const VkDebugUtilsMessengerCallbackDataEXT* data,
+                                                 void* user);
 
  private:
   std::atomic<uint32_t> failures_{0};

@@ -7,10 +7,10 @@ LAGOON_GPU_BEGIN
 struct PlaceholderFrame {
   mat4 view_proj;
   mat4 inv_view_proj;
-  vec4 camera_pos;    // xyz metres, w unused
-  vec4 sun_dir;       // xyz unit vector towards the sun, w = sun intensity
-  vec4 grid;          // x = half extent (m), y = vertices per side, z = time (s), w = unused
-  vec4 post;          // x = exposure, y = gamma, zw unused
+  vec4 camera_pos;  // xyz metres, w unused
+  vec4 sun_dir;     // xyz unit vector towards the sun, w = sun intensity
+  vec4 grid;        // x = half extent (m), y = vertices per side, z = time (s), w = unused
+  vec4 post;        // x = exposure, y = gamma, zw unused
 };
 LAGOON_GPU_END
 

@@ -17,7 +17,8 @@ const std::string kScene = std::string(LAGOON_SOURCE_DIR) + "/scenes/default.jso
 class Cli : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::path(LAGOON_TEST_ARTIFACTS) / "cli" / ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    dir_ = fs::path(LAGOON_TEST_ARTIFACTS) / "cli" /
+           ::testing::UnitTest::GetInstance()->current_test_info()->name();
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
@@ -124,7 +125,8 @@ TEST_F(Cli, UnwritableOutputExits1AndLeavesNothing) {
 }
 
 TEST_F(Cli, RenderWritesThePngAndNamesTheDevice) {
-  auto r = lagoon("render --scene " + kScene + " --out " + out("sub/dir/frame.png") + " --width 96 --height 64 --time 1.5");
+  auto r = lagoon("render --scene " + kScene + " --out " + out("sub/dir/frame.png") +
+                  " --width 96 --height 64 --time 1.5");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("frame.png"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("llvmpipe"), std::string::npos) << r.output;  // the test suite runs on lavapipe

@@ -38,7 +38,8 @@ TEST_F(ComputeRoundTrip, SaxpyMatchesCpuThroughDeviceLocalBuffers) {
   const uint32_t n = 10007;  // not a multiple of the workgroup size: the bounds check matters
   const float a = 2.5f;
   const std::vector<float> x = random_floats(n, 1), y = random_floats(n, 2);
-  const auto usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+  const auto usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                     VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
   vk::Buffer bx = vk::Buffer::create(ctx(), n * 4, usage, vk::MemoryUsage::Device, "x");
   vk::Buffer by = vk::Buffer::create(ctx(), n * 4, usage, vk::MemoryUsage::Device, "y");
   vk::upload_buffer(ctx(), bx, vk::as_bytes_of(x));
@@ -62,24 +63,27 @@ TEST_F(ComputeRoundTrip, SaxpyMatchesCpuThroughDeviceLocalBuffers) {
 
 TEST_F(ComputeRoundTrip, StorageImageArraySamplerAndSpecializedWorkgroup) {
   const uint32_t w = 37, h = 23, layers = 3;
-  vk::Image dst = vk::Image::create(ctx(), {.format = VK_FORMAT_R32G32B32A32_SFLOAT,
-                                            .extent = {w, h},
-                                            .layers = layers,
-                                            .usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                                            .debug_name = "dst"});
+  vk::Image dst =
+      vk::Image::create(ctx(), {.format = VK_FORMAT_R32G32B32A32_SFLOAT,
+                                .extent = {w, h},
+                                .layers = layers,
+                                .usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                                .debug_name = "dst"});
   // Source image for the sampler: distinct RGBA32F values uploaded from the CPU.
   std::vector<float> src_texels(size_t{w} * h * 4);
   for (size_t i = 0; i < src_texels.size(); ++i) src_texels[i] = float(i % 251) * 0.5f;
-  vk::Image src = vk::Image::create(ctx(), {.format = VK_FORMAT_R32G32B32A32_SFLOAT,
-                                            .extent = {w, h},
-                                            .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
-                                            .debug_name = "src"});
+  vk::Image src =
+      vk::Image::create(ctx(), {.format = VK_FORMAT_R32G32B32A32_SFLOAT,
+                                .extent = {w, h},
+                                .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                                .debug_name = "src"});
   vk::upload_image(ctx(), src, vk::as_bytes_of(src_texels), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                    vk::access::kComputeRead);
   // Nearest filtering at texel centres must return the texels exactly.
-  vk::Unique<VkSampler> sampler = vk::create_sampler(
-      ctx(), {.filter = VK_FILTER_NEAREST, .mipmap = VK_SAMPLER_MIPMAP_MODE_NEAREST,
-              .address = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE});
+  vk::Unique<VkSampler> sampler =
+      vk::create_sampler(ctx(), {.filter = VK_FILTER_NEAREST,
+                                 .mipmap = VK_SAMPLER_MIPMAP_MODE_NEAREST,
+                                 .address = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE});
   vk::Buffer sampled = vk::Buffer::create(ctx(), size_t{w} * h * 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                           vk::MemoryUsage::Readback, "sampled");
 
@@ -92,8 +96,8 @@ TEST_F(ComputeRoundTrip, StorageImageArraySamplerAndSpecializedWorkgroup) {
     uint32_t size[4];
   } push{{1.0f, 2.0f, 3.0f, 0.5f}, {w, h, layers, 0}};
   ctx().submit_and_wait([&](VkCommandBuffer cmd) {
-    vk::image_barrier(cmd, dst.handle(), dst.all_subresources(), VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
-                      vk::access::kNone, vk::access::kComputeWrite);
+    vk::image_barrier(cmd, dst.handle(), dst.all_subresources(), VK_IMAGE_LAYOUT_UNDEFINED,
+                      VK_IMAGE_LAYOUT_GENERAL, vk::access::kNone, vk::access::kComputeWrite);
     vk::dispatch(cmd, pass,
                  {vk::bind(0, vk::ImageRef{dst.view(), VK_IMAGE_LAYOUT_GENERAL}),
                   vk::bind(1, vk::ImageRef{src.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, sampler}),

@@ -35,9 +35,8 @@ TEST(ValidationLayer, CountsAnInvalidCall) {
   (*ctx)->validation().set_echo(false);
   ASSERT_EQ((*ctx)->validation().failures(), 0u);
   // VUID-VkBufferCreateInfo-size-00912: size must be greater than 0.
-  const VkBufferCreateInfo info{.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO,
-                                .size = 0,
-                                .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT};
+  const VkBufferCreateInfo info{
+      .sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO, .size = 0, .usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT};
   VkBuffer buffer = VK_NULL_HANDLE;
   vkCreateBuffer((*ctx)->device(), &info, nullptr, &buffer);
   if (buffer != VK_NULL_HANDLE) vkDestroyBuffer((*ctx)->device(), buffer, nullptr);
@@ -58,7 +57,8 @@ TEST_F(ContextTest, TimestampsTimeEachScope) {
   if (!timer.supported()) GTEST_SKIP() << "device has no timestamps";
   const vk::ComputePipeline saxpy = vk::ComputePipeline::create(ctx(), shaders::gpu_saxpy_comp);
   const uint32_t n = 1 << 20;
-  vk::Buffer b = vk::Buffer::create(ctx(), n * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUsage::Device);
+  vk::Buffer b =
+      vk::Buffer::create(ctx(), n * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUsage::Device);
   struct Push {
     float a;
     uint32_t n;

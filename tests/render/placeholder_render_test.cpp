@@ -34,8 +34,10 @@ double mean_channel(const io::Image8& img, int channel, uint32_t y0, uint32_t y1
 TEST_F(PlaceholderRender, DefaultSceneMatchesGolden) {
   const io::Image8 image = render(load());
   // lavapipe is deterministic for a given Mesa build; the tolerance absorbs other LLVM/Mesa versions.
-  const CompareOptions tolerance{.channel_tolerance = 3, .max_differing_fraction = 0.005, .min_psnr_db = 35.0};
-  EXPECT_TRUE(matches_golden(image, std::string(LAGOON_SOURCE_DIR) + "/tests/golden/placeholder_default_160x90.png",
+  const CompareOptions tolerance{
+      .channel_tolerance = 3, .max_differing_fraction = 0.005, .min_psnr_db = 35.0};
+  EXPECT_TRUE(matches_golden(image,
+                             std::string(LAGOON_SOURCE_DIR) + "/tests/golden/placeholder_default_160x90.png",
                              tolerance, std::string(LAGOON_TEST_ARTIFACTS) + "/render"));
 }
 

@@ -20,7 +20,9 @@ vk::Context& gpu() {
   return *ctx;
 }
 
-void GpuTest::SetUp() { failures_before_ = gpu().validation().failures(); }
+void GpuTest::SetUp() {
+  failures_before_ = gpu().validation().failures();
+}
 
 void GpuTest::TearDown() {
   const uint32_t failures = gpu().validation().failures() - failures_before_;

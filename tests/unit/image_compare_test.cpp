@@ -1,8 +1,10 @@
 #include "support/image_compare.h"
 
 #include <gtest/gtest.h>
+
 #include <stdlib.h>
 #include <unistd.h>
+#include "support/temp_dir.h"
 
 #include <cmath>
 #include <filesystem>
@@ -30,23 +32,8 @@ Image8 gradient(uint32_t width, uint32_t height) {
   return image;
 }
 
-class TempDir {
- public:
-  TempDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = fs::temp_directory_path() / ("lagoon_compare_test-" + std::to_string(::getpid()) + "-" +
-                                         info->test_suite_name() + "-" + info->name());
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  fs::path operator/(const std::string& name) const { return path_ / name; }
-
- private:
-  fs::path path_;
+struct TempDir : test::TempDir {
+  TempDir() : test::TempDir("lagoon_compare_test") {}
 };
 
 // Sets an environment variable for one scope and restores the previous state.

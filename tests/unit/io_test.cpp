@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
+
 #include <stb_image_write.h>
 #include <unistd.h>
+#include "support/temp_dir.h"
 
 #include <algorithm>
 #include <cstring>
@@ -19,25 +21,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A fresh folder per test, removed afterwards.
-class TempDir {
- public:
-  TempDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = fs::temp_directory_path() / ("lagoon_io_test-" + std::to_string(::getpid()) + "-" +
-                                         info->test_suite_name() + "-" + info->name());
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  const fs::path& path() const { return path_; }
-  fs::path operator/(const std::string& name) const { return path_ / name; }
-
- private:
-  fs::path path_;
+struct TempDir : test::TempDir {
+  TempDir() : test::TempDir("lagoon_io_test") {}
 };
 
 std::vector<std::string> entries(const fs::path& dir) {

@@ -144,7 +144,7 @@ TEST(SpirvReflect, TruncatedModuleIsAnError) {
   const std::span<const uint32_t> words = shaders::reflect_textures_frag.spirv;
   // Cut the module inside the first multi-word instruction past its middle.
   size_t pos = 5;
-  while (pos < words.size() / 2 || (words[pos] >> 16) < 2) pos += words[pos] >> 16;
+  while (pos < words.size() && (pos < words.size() / 2 || (words[pos] >> 16) < 2)) pos += words[pos] >> 16;
   ASSERT_LT(pos, words.size());
   const std::string message = error_of(words.first(pos + 1));
   EXPECT_NE(message.find("truncated"), std::string::npos) << message;
