@@ -28,6 +28,7 @@ class DeferredDestroyer {
   void flush_all() {
     for (auto& s : slots_) s.clear();
   }
+  uint32_t slots() const { return static_cast<uint32_t>(slots_.size()); }
   size_t pending() const {
     size_t n = 0;
     for (const auto& s : slots_) n += s.size();
