@@ -26,7 +26,7 @@ function(lagoon_add_shaders)
     add_custom_command(
       OUTPUT ${out}
       COMMAND ${CMAKE_COMMAND} -E make_directory ${gen_dir}/spv
-      COMMAND ${GLSLANG_VALIDATOR} --quiet --target-env vulkan1.2 -g0 ${include_flags}
+      COMMAND ${GLSLANG_VALIDATOR} --quiet --target-env vulkan1.2 ${include_flags}
               --vn ${ident}_words --depfile ${out}.d -o ${out} ${in}
       DEPENDS ${in}
       DEPFILE ${out}.d
