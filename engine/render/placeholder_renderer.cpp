@@ -59,18 +59,15 @@ io::Image8 PlaceholderRenderer::render(const scene::Scene& scene, std::vector<vk
     vk::image_barrier(cmd, depth.handle(), depth.all_subresources(), VK_IMAGE_LAYOUT_UNDEFINED,
                       VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, vk::access::kNone,
                       vk::access::kDepthAttachment);
+    // One timing scope for the whole pass: tilers such as lavapipe rasterise a pass's draws when it ends,
+    // so timestamps between draws of one pass would not mean anything.
+    vk::GpuScope scope(timer_, cmd, "surface+sky");
     vk::begin_rendering(cmd, extent, {{.view = color.view(), .clear = std::array{0.f, 0.f, 0.f, 1.f}}},
                         vk::DepthTarget{.view = depth.view(), .clear = 1.0f});
     const vk::BufferRef frame_ref{frame_.handle()};
-    {
-      vk::GpuScope scope(timer_, cmd, "sky");
-      vk::draw(cmd, sky_, {vk::bind(0, frame_ref)}, 3);
-    }
-    {
-      vk::GpuScope scope(timer_, cmd, "surface");
-      const uint32_t quads = (kGridVertsPerSide - 1) * (kGridVertsPerSide - 1);
-      vk::draw(cmd, grid_, {vk::bind(0, frame_ref)}, quads * 6);
-    }
+    vk::draw(cmd, sky_, {vk::bind(0, frame_ref)}, 3);
+    const uint32_t quads = (kGridVertsPerSide - 1) * (kGridVertsPerSide - 1);
+    vk::draw(cmd, grid_, {vk::bind(0, frame_ref)}, quads * 6);
     vk::end_rendering(cmd);
   });
   if (timings) *timings = timer_.results();
