@@ -1,0 +1,37 @@
+#include "ocean/ocean_params.h"
+
+namespace lagoon::ocean {
+
+const char* to_string(SpectrumType type) {
+  switch (type) {
+    case SpectrumType::Phillips: return "phillips";
+    case SpectrumType::PiersonMoskowitz: return "pm";
+    case SpectrumType::Jonswap: return "jonswap";
+    case SpectrumType::Tma: return "tma";
+  }
+  return "?";
+}
+
+const char* to_string(Spreading spreading) {
+  switch (spreading) {
+    case Spreading::Cos2: return "cos2";
+    case Spreading::Cos2s: return "cos2s";
+    case Spreading::DonelanBanner: return "donelan-banner";
+  }
+  return "?";
+}
+
+bool from_string(const std::string& name, SpectrumType& out) {
+  for (SpectrumType t : {SpectrumType::Phillips, SpectrumType::PiersonMoskowitz, SpectrumType::Jonswap,
+                         SpectrumType::Tma})
+    if (name == to_string(t)) return out = t, true;
+  return false;
+}
+
+bool from_string(const std::string& name, Spreading& out) {
+  for (Spreading s : {Spreading::Cos2, Spreading::Cos2s, Spreading::DonelanBanner})
+    if (name == to_string(s)) return out = s, true;
+  return false;
+}
+
+}  // namespace lagoon::ocean

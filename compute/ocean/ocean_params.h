@@ -1,0 +1,54 @@
+// Parameters of the FFT ocean: what the scene's "ocean" block holds (docs/scene-format.md documents every
+// field with its unit, default and range). Plain data, no Vulkan.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace lagoon::ocean {
+
+inline constexpr double kGravity = 9.81;  // m/s²
+
+enum class SpectrumType { Phillips, PiersonMoskowitz, Jonswap, Tma };
+enum class Spreading { Cos2, Cos2s, DonelanBanner };
+
+struct SpectrumParams {
+  SpectrumType type = SpectrumType::Jonswap;
+  double wind_speed_mps = 10.0;     // U10, wind speed 10 m above the surface; > 0
+  double wind_direction_deg = 0.0;  // direction the wind blows towards, clockwise from +z (north) towards +x
+  double fetch_km = 100.0;          // distance over which the wind has blown (JONSWAP, TMA); > 0
+  double gamma = 3.3;               // JONSWAP peak enhancement; 1 gives Pierson-Moskowitz's shape
+  Spreading spreading = Spreading::Cos2s;
+  double swell = 0.0;               // Horvath's swell ξ in [0, 1]: elongates crests of long waves
+  double small_wave_cutoff_m = 0.0; // Phillips' damping length l (exp(-k²l²)); 0 = none
+};
+
+struct CascadeParams {
+  double patch_size_m = 1000.0;  // side of the square tile this cascade repeats over
+  uint32_t resolution = 256;     // N: samples per side, a power of two in [64, 1024]
+};
+
+struct FoamParams {
+  // Foam builds where the Jacobian of the horizontal displacement J < threshold (J = 1 on undisturbed
+  // water, < 1 where the surface is compressed, <= 0 where it folds over): new foam = clamp(threshold - J, 0, 1).
+  double threshold = 0.5;
+  double decay_per_s = 0.5;  // existing foam decays as exp(-decay_per_s · dt) (persistence)
+};
+
+struct OceanParams {
+  uint32_t seed = 1;
+  double depth_m = 1000.0;       // water depth for finite-depth dispersion and TMA; > 0
+  double choppiness = 1.0;       // λ: horizontal displacement scale, 0 = none
+  double loop_period_s = 0.0;    // > 0 quantises ω so every field repeats with this period; 0 = no loop
+  SpectrumParams spectrum;
+  std::vector<CascadeParams> cascades{{1000.0, 256}, {100.0, 256}, {10.0, 256}};
+  FoamParams foam;
+};
+
+const char* to_string(SpectrumType type);    // "phillips", "pm", "jonswap", "tma"
+const char* to_string(Spreading spreading);  // "cos2", "cos2s", "donelan-banner"
+// Inverse of to_string; false when the name is unknown.
+bool from_string(const std::string& name, SpectrumType& out);
+bool from_string(const std::string& name, Spreading& out);
+
+}  // namespace lagoon::ocean
