@@ -1,0 +1,59 @@
+#include "fft/gpu_fft.h"
+
+#include "fft/fft_plan.h"
+#include "lagoon_shaders/shaders.h"
+#include "shared/fft.h"
+#include "vk/barriers.h"
+#include "vk/check.h"
+#include "vk/transfer.h"
+
+namespace lagoon::fft {
+
+std::vector<vk::SpecConstant> GpuFft2d::specialisation(uint32_t radix, bool columns, bool inverse) {
+  // 8 x 8 workgroups: neighbouring lanes read neighbouring elements in both directions (see fft_pass.comp).
+  return {{0, 8}, {1, 8}, {2, radix}, {3, columns ? 1u : 0u}, {4, inverse ? 1u : 0u}};
+}
+
+GpuFft2d::GpuFft2d(vk::Context& ctx, uint32_t n, bool inverse)
+    : ctx_(ctx), n_(n), inverse_(inverse), radices_(stockham_radices(n)) {
+  if (!is_supported_size(n))
+    vk::throw_usage_error("GpuFft2d: size " + std::to_string(n) + " is not a power of two in [64, 1024]");
+  const std::vector<float> table = twiddle_table(n);
+  twiddles_ = vk::Buffer::create(ctx, table.size() * sizeof(float),
+                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                 vk::MemoryUsage::Device, "fft twiddles");
+  vk::upload_buffer(ctx, twiddles_, vk::as_bytes_of(table));
+  for (uint32_t radix : radices_)
+    for (bool columns : {false, true})
+      if (!pipelines_.count({radix, columns}))
+        pipelines_.emplace(std::pair{radix, columns},
+                           vk::ComputePipeline::create(ctx, shaders::fft_fft_pass_comp,
+                                                       specialisation(radix, columns, inverse)));
+}
+
+const vk::Buffer& GpuFft2d::record(VkCommandBuffer cmd, const vk::Buffer& a, const vk::Buffer& b,
+                                   uint32_t batches) const {
+  const VkDeviceSize bytes = VkDeviceSize(batches) * n_ * n_ * 8;
+  if (a.size() < bytes || b.size() < bytes) vk::throw_usage_error("GpuFft2d::record: buffers too small");
+  const vk::Buffer* src = &a;
+  const vk::Buffer* dst = &b;
+  vk::memory_barrier(cmd, vk::access::kComputeWrite, vk::access::kComputeRead);
+  for (bool columns : {false, true}) {
+    uint32_t ns = 1;
+    for (uint32_t radix : radices_) {
+      const vk::ComputePipeline& pass = pipelines_.at({radix, columns});
+      const gpu::FftPush push{.n = n_, .ns = ns, .batches = batches, .pad = 0};
+      const uint32_t butterflies = n_ / radix;
+      const std::array<uint32_t, 3> threads =
+          columns ? std::array{n_, butterflies, batches} : std::array{butterflies, n_, batches};
+      vk::dispatch(cmd, pass, {vk::bind(0, *src), vk::bind(1, *dst), vk::bind(2, twiddles_)}, push,
+                   vk::groups_for(pass, threads));
+      vk::memory_barrier(cmd, vk::access::kComputeReadWrite, vk::access::kComputeReadWrite);
+      std::swap(src, dst);
+      ns *= radix;
+    }
+  }
+  return *src;
+}
+
+}  // namespace lagoon::fft

@@ -1,0 +1,40 @@
+// Batched 2-D complex FFT of N x N arrays on the GPU: log16(N) Stockham passes along rows, then along
+// columns, ping-ponging between two buffers. Records only; never submits.
+#pragma once
+#include <map>
+#include <tuple>
+
+#include "vk/buffer.h"
+#include "vk/context.h"
+#include "vk/pipeline.h"
+
+namespace lagoon::fft {
+
+class GpuFft2d {
+ public:
+  // n: supported size (fft_plan.h); inverse: exp(+2πi kn/N) without 1/N scaling (as FFTW_BACKWARD).
+  GpuFft2d(vk::Context& ctx, uint32_t n, bool inverse);
+
+  // Transforms `batches` arrays of vec2 in `a` (row-major, array after array) using `b` as scratch. Returns
+  // the buffer holding the result (a when the pass count is even, which it is for every supported n).
+  // Expects `a` written before by a compute shader or transfer; leaves the result visible to compute reads.
+  const vk::Buffer& record(VkCommandBuffer cmd, const vk::Buffer& a, const vk::Buffer& b,
+                           uint32_t batches) const;
+
+  uint32_t size() const { return n_; }
+  size_t pass_count() const { return 2 * radices_.size(); }
+  const vk::Buffer& twiddles() const { return twiddles_; }
+
+  // The pipeline of one pass: shared with the ocean's fused passes through the same specialisation scheme.
+  static std::vector<vk::SpecConstant> specialisation(uint32_t radix, bool columns, bool inverse);
+
+ private:
+  vk::Context& ctx_;
+  uint32_t n_;
+  bool inverse_;
+  std::vector<uint32_t> radices_;
+  vk::Buffer twiddles_;
+  std::map<std::pair<uint32_t, bool>, vk::ComputePipeline> pipelines_;  // (radix, columns)
+};
+
+}  // namespace lagoon::fft
