@@ -12,9 +12,11 @@ pkg_check_modules(GLFW REQUIRED IMPORTED_TARGET GLOBAL glfw3)
 add_library(lagoon_stb INTERFACE)
 target_link_libraries(lagoon_stb INTERFACE PkgConfig::STB)
 
+# FFTW is the CPU reference of the tests and the baseline of `lagoon bench`; never used by the library.
+pkg_check_modules(FFTW REQUIRED IMPORTED_TARGET GLOBAL fftw3 fftw3f)
+find_library(FFTW3F_THREADS fftw3f_threads REQUIRED)
 if(LAGOON_BUILD_TESTS)
   find_package(GTest REQUIRED)
-  pkg_check_modules(FFTW REQUIRED IMPORTED_TARGET GLOBAL fftw3 fftw3f)
 endif()
 if(LAGOON_BUILD_BENCHMARKS)
   find_package(benchmark REQUIRED)

@@ -1,5 +1,6 @@
 #include "args.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -19,14 +20,19 @@ std::vector<std::string> ParsedArgs::all(const std::string& name) const {
 
 Result<ParsedArgs> parse_args(const CommandSpec& spec, std::span<const std::string> args) {
   ParsedArgs parsed;
+  size_t next_positional = 0;
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& arg = args[i];
     if (arg == "--help" || arg == "-h") {
       parsed.help = true;
       return parsed;
     }
-    if (arg.rfind("--", 0) != 0)
-      return make_error("unexpected argument '" + arg + "' (options start with --)");
+    if (arg.rfind("--", 0) != 0) {
+      if (next_positional >= spec.positional.size())
+        return make_error("unexpected argument '" + arg + "' (options start with --)");
+      parsed.add(spec.positional[next_positional++], arg);
+      continue;
+    }
     std::string name = arg.substr(2);
     std::optional<std::string> inline_value;
     if (auto eq = name.find('='); eq != std::string::npos) {
@@ -56,7 +62,11 @@ Result<ParsedArgs> parse_args(const CommandSpec& spec, std::span<const std::stri
 
 std::string usage(const CommandSpec& spec) {
   std::string out = "usage: lagoon " + spec.name;
+  for (const auto& name : spec.positional)
+    for (const auto& o : spec.options)
+      if (o.name == name) out += " " + o.value_name;
   for (const auto& o : spec.options) {
+    if (std::find(spec.positional.begin(), spec.positional.end(), o.name) != spec.positional.end()) continue;
     std::string part = "--" + o.name + (o.value_name.empty() ? "" : " " + o.value_name);
     out += o.required ? " " + part : " [" + part + "]" + (o.repeatable ? "..." : "");
   }

@@ -23,6 +23,8 @@ struct CommandSpec {
   std::string name;     // "render"
   std::string summary;  // one line
   std::vector<OptionSpec> options;
+  // Options that may also be given as plain words, in this order ("lagoon bench compute").
+  std::vector<std::string> positional;
   std::string details;  // extra paragraphs for --help (environment, examples)
 };
 

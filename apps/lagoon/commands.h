@@ -19,5 +19,6 @@ struct Command {
 
 const Command& info_command();
 const Command& render_command();
+const Command& bench_command();
 
 }  // namespace lagoon::cli

@@ -12,7 +12,8 @@ namespace {
 using lagoon::cli::Command;
 
 const std::vector<const Command*>& commands() {
-  static const std::vector<const Command*> list{&lagoon::cli::info_command(), &lagoon::cli::render_command()};
+  static const std::vector<const Command*> list{&lagoon::cli::info_command(), &lagoon::cli::render_command(),
+                                                &lagoon::cli::bench_command()};
   return list;
 }
 

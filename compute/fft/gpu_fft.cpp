@@ -31,6 +31,26 @@ GpuFft2d::GpuFft2d(vk::Context& ctx, uint32_t n, bool inverse)
                                                        specialisation(radix, columns, inverse)));
 }
 
+GpuFft2d::Pass GpuFft2d::pass(size_t index) const {
+  const size_t per_axis = radices_.size();
+  Pass p{.radix = radices_[index % per_axis], .ns = 1, .columns = index >= per_axis};
+  for (size_t i = 0; i < index % per_axis; ++i) p.ns *= radices_[i];
+  return p;
+}
+
+void GpuFft2d::record_pass(VkCommandBuffer cmd, size_t index, const vk::Buffer& src, const vk::Buffer& dst,
+                           uint32_t batches) const {
+  const Pass p = pass(index);
+  const vk::ComputePipeline& pipeline = pipelines_.at({p.radix, p.columns});
+  const gpu::FftPush push{.n = n_, .ns = p.ns, .batches = batches, .pad = 0};
+  const uint32_t butterflies = n_ / p.radix;
+  const std::array<uint32_t, 3> threads =
+      p.columns ? std::array{n_, butterflies, batches} : std::array{butterflies, n_, batches};
+  vk::dispatch(cmd, pipeline, {vk::bind(0, src), vk::bind(1, dst), vk::bind(2, twiddles_)}, push,
+               vk::groups_for(pipeline, threads));
+  vk::memory_barrier(cmd, vk::access::kComputeReadWrite, vk::access::kComputeReadWrite);
+}
+
 const vk::Buffer& GpuFft2d::record(VkCommandBuffer cmd, const vk::Buffer& a, const vk::Buffer& b,
                                    uint32_t batches) const {
   const VkDeviceSize bytes = VkDeviceSize(batches) * n_ * n_ * 8;
@@ -38,20 +58,9 @@ const vk::Buffer& GpuFft2d::record(VkCommandBuffer cmd, const vk::Buffer& a, con
   const vk::Buffer* src = &a;
   const vk::Buffer* dst = &b;
   vk::memory_barrier(cmd, vk::access::kComputeWrite, vk::access::kComputeRead);
-  for (bool columns : {false, true}) {
-    uint32_t ns = 1;
-    for (uint32_t radix : radices_) {
-      const vk::ComputePipeline& pass = pipelines_.at({radix, columns});
-      const gpu::FftPush push{.n = n_, .ns = ns, .batches = batches, .pad = 0};
-      const uint32_t butterflies = n_ / radix;
-      const std::array<uint32_t, 3> threads =
-          columns ? std::array{n_, butterflies, batches} : std::array{butterflies, n_, batches};
-      vk::dispatch(cmd, pass, {vk::bind(0, *src), vk::bind(1, *dst), vk::bind(2, twiddles_)}, push,
-                   vk::groups_for(pass, threads));
-      vk::memory_barrier(cmd, vk::access::kComputeReadWrite, vk::access::kComputeReadWrite);
-      std::swap(src, dst);
-      ns *= radix;
-    }
+  for (size_t i = 0; i < pass_count(); ++i) {
+    record_pass(cmd, i, *src, *dst, batches);
+    std::swap(src, dst);
   }
   return *src;
 }

@@ -21,8 +21,19 @@ class GpuFft2d {
   const vk::Buffer& record(VkCommandBuffer cmd, const vk::Buffer& a, const vk::Buffer& b,
                            uint32_t batches) const;
 
-  uint32_t size() const { return n_; }
+  // Pass i of pass_count(): row passes first, then column passes.
+  struct Pass {
+    uint32_t radix = 0;
+    uint32_t ns = 1;  // Stockham stride
+    bool columns = false;
+  };
   size_t pass_count() const { return 2 * radices_.size(); }
+  Pass pass(size_t index) const;
+  // Records pass `index` alone (for callers that fuse their own first or last pass), with a barrier after it.
+  void record_pass(VkCommandBuffer cmd, size_t index, const vk::Buffer& src, const vk::Buffer& dst,
+                   uint32_t batches) const;
+
+  uint32_t size() const { return n_; }
   const vk::Buffer& twiddles() const { return twiddles_; }
 
   // The pipeline of one pass: shared with the ocean's fused passes through the same specialisation scheme.

@@ -1,7 +1,9 @@
 #include "scene/json_fields.h"
 
 #include <algorithm>
+#include <bit>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <set>
@@ -69,11 +71,95 @@ std::optional<double> finite_number(const json& j, const std::string& path, cons
   return v;
 }
 
+// Returns the value if it is a whole number (64.0 counts), or nullopt after reporting why not.
+std::optional<double> whole_number(const json& j, const std::string& path, const std::string& fix,
+                                   Diagnostics& diag) {
+  if (!j.is_number()) {
+    diag.error(path, "expected an integer, got " + describe_value(j), fix);
+    return std::nullopt;
+  }
+  const double v = j.get<double>();  // exact for every in-range value
+  if (!std::isfinite(v) || std::floor(v) != v) {
+    diag.error(path, describe_value(j) + " is not a whole number", fix);
+    return std::nullopt;
+  }
+  return v;
+}
+
+// "cascades[2].patch_size_m" -> "cascades[].patch_size_m": the docs describe array elements once.
+std::string strip_indices(std::string_view path) {
+  std::string out;
+  for (size_t i = 0; i < path.size(); ++i) {
+    out += path[i];
+    if (path[i] != '[') continue;
+    while (i + 1 < path.size() && std::isdigit(static_cast<unsigned char>(path[i + 1]))) ++i;
+  }
+  return out;
+}
+
+// Rebuilds one array element's JSON from its describe-mode rows, so array defaults can be shown as JSON
+// ({"patch_size_m":1000,"resolution":256}) without a second, hand-written serializer to keep in sync.
+nlohmann::ordered_json element_json(const std::vector<FieldInfo>& fields) {
+  nlohmann::ordered_json object = nlohmann::ordered_json::object();
+  for (const FieldInfo& f : fields) {
+    // Blocks have no default of their own (their fields follow); nested arrays carry theirs on their row.
+    if (f.default_value.empty() || f.path.find('[') != std::string::npos) continue;
+    nlohmann::ordered_json value = nlohmann::ordered_json::parse(f.default_value, nullptr, false);
+    if (value.is_discarded()) value = f.default_value;
+    std::string pointer = "/" + f.path;
+    std::replace(pointer.begin(), pointer.end(), '.', '/');
+    object[nlohmann::ordered_json::json_pointer(pointer)] = std::move(value);
+  }
+  return object;
+}
+
+std::string elements_json(const std::vector<std::vector<FieldInfo>>& elements) {
+  nlohmann::ordered_json array = nlohmann::ordered_json::array();
+  for (const std::vector<FieldInfo>& fields : elements) array.push_back(element_json(fields));
+  return array.dump();
+}
+
+std::string dump_json(const json& value) {
+  return value.dump(-1, ' ', /*ensure_ascii=*/true, json::error_handler_t::replace);
+}
+
+// Paths cannot index into arrays, so --set ocean.cascades[0].resolution=128 creates a field named
+// "cascades[0]" in ocean. For such a key naming a declared array, returns the fix: the whole array (from
+// the file, else the defaults) with that element changed, ready to paste. "" for other keys.
+std::string index_hint(const std::string& key, const json& value, const json& object,
+                       const std::map<std::string, std::string, std::less<>>& array_defaults,
+                       const std::string& object_path) {
+  const size_t bracket = key.find('[');
+  if (bracket == std::string::npos || bracket == 0) return "";
+  const std::string name = key.substr(0, bracket);
+  const auto defaults = array_defaults.find(name);
+  if (defaults == array_defaults.end()) return "";
+  const auto in_file = object.find(name);
+  json array = in_file != object.end() && in_file->is_array() ? *in_file : json::parse(defaults->second);
+  size_t index = 0;
+  const char* first = key.data() + bracket + 1;
+  const char* last = key.data() + key.size() - 1;  // the closing ']'
+  const auto [end, error] = std::from_chars(first, last, index);
+  if (key.back() == ']' && error == std::errc() && end == last && index < array.size()) {
+    if (array[index].is_object() && value.is_object()) {
+      array[index].merge_patch(value);
+    } else {
+      array[index] = value;
+    }
+  }
+  return "a field path cannot index into an array; set the whole array instead, e.g. --set '" +
+         join_path(object_path, name) + "=" + dump_json(array) + "'";
+}
+
 }  // namespace
 
 std::string format_number(double v) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);  // 6 significant digits: 0.1f prints "0.1", not 0.100000001
+  if (std::abs(v) < 1e15 && std::floor(v) == v) {
+    std::snprintf(buf, sizeof buf, "%.0f", v);  // whole numbers exactly: seeds, sizes
+  } else {
+    std::snprintf(buf, sizeof buf, "%g", v);  // 6 significant digits: 0.1f prints "0.1", not 0.100000001
+  }
   return buf;
 }
 
@@ -96,6 +182,12 @@ Bounds Bounds::above(double lo) {
 Bounds Bounds::at_least(double lo) {
   Bounds b;
   b.min = lo;
+  return b;
+}
+
+Bounds Bounds::above_up_to(double lo, double hi) {
+  Bounds b = between(lo, hi);
+  b.min_open = true;
   return b;
 }
 
@@ -177,22 +269,35 @@ void ObjectReader::describe(std::string_view name, std::string type, std::string
                        std::move(range), std::string(doc)});
 }
 
+std::optional<double> ObjectReader::read_number(std::string_view name, double current, Bounds bounds,
+                                                std::string_view unit, bool as_float) {
+  const json* j = lookup(name);
+  if (!j) return std::nullopt;
+  const std::string path = child_path(name);
+  const std::string fix =
+      "allowed: number " + with_unit(bounds.describe(), unit) + " (default " + format_number(current) + ")";
+  const std::optional<double> v = finite_number(*j, path, fix, *diag_);
+  if (!v) return std::nullopt;
+  // Checked again as float so e.g. 1e-50 for a "> 0" field cannot round to 0.
+  if (!bounds.contains(*v) || (as_float && !bounds.contains(static_cast<float>(*v)))) {
+    diag_->error(path, describe_value(*j) + " is out of range", fix);
+    return std::nullopt;
+  }
+  return v;
+}
+
 void ObjectReader::number(std::string_view name, float& value, Bounds bounds, std::string_view unit,
                           std::string_view doc) {
   if (describing()) return describe(name, "number", unit, format_number(value), bounds.describe(), doc);
-  const json* j = lookup(name);
-  if (!j) return;
-  const std::string path = child_path(name);
-  const std::string fix =
-      "allowed: number " + with_unit(bounds.describe(), unit) + " (default " + format_number(value) + ")";
-  const std::optional<double> v = finite_number(*j, path, fix, *diag_);
-  if (!v) return;
-  // Checked again as float so e.g. 1e-50 for a "> 0" field cannot round to 0.
-  if (!bounds.contains(*v) || !bounds.contains(static_cast<float>(*v))) {
-    diag_->error(path, describe_value(*j) + " is out of range", fix);
-    return;
+  if (const std::optional<double> v = read_number(name, value, bounds, unit, /*as_float=*/true)) {
+    value = static_cast<float>(*v);
   }
-  value = static_cast<float>(*v);
+}
+
+void ObjectReader::number(std::string_view name, double& value, Bounds bounds, std::string_view unit,
+                          std::string_view doc) {
+  if (describing()) return describe(name, "number", unit, format_number(value), bounds.describe(), doc);
+  if (const std::optional<double> v = read_number(name, value, bounds, unit, /*as_float=*/false)) value = *v;
 }
 
 void ObjectReader::integer(std::string_view name, uint32_t& value, Bounds bounds, std::string_view unit,
@@ -205,15 +310,36 @@ void ObjectReader::integer(std::string_view name, uint32_t& value, Bounds bounds
   const std::string path = child_path(name);
   const std::string fix = "allowed: whole number " + with_unit(bounds.describe(), unit) + " (default " +
                           std::to_string(value) + ")";
-  if (!j->is_number()) return diag_->error(path, "expected an integer, got " + describe_value(*j), fix);
-  const double v = j->get<double>();  // exact for every in-range value; 64.0 counts as whole
-  if (!std::isfinite(v) || std::floor(v) != v) {
-    return diag_->error(path, describe_value(*j) + " is not a whole number", fix);
-  }
-  if (!bounds.contains(v) || v < 0 || v > std::numeric_limits<uint32_t>::max()) {
+  const std::optional<double> v = whole_number(*j, path, fix, *diag_);
+  if (!v) return;
+  if (!bounds.contains(*v) || *v < 0 || *v > std::numeric_limits<uint32_t>::max()) {
     return diag_->error(path, describe_value(*j) + " is out of range", fix);
   }
-  value = static_cast<uint32_t>(v);
+  value = static_cast<uint32_t>(*v);
+}
+
+void ObjectReader::power_of_two(std::string_view name, uint32_t& value, uint32_t min, uint32_t max,
+                                std::string_view unit, std::string_view doc) {
+  const std::string between = std::to_string(min) + " and " + std::to_string(max);
+  if (describing()) {
+    return describe(name, "integer", unit, std::to_string(value),
+                    "power of two, " + std::to_string(min) + " to " + std::to_string(max), doc);
+  }
+  const json* j = lookup(name);
+  if (!j) return;
+  std::string allowed;  // spelled out: "64, 128, 256, 512, 1024" is easier to pick from than a rule
+  for (uint64_t p = std::bit_ceil(std::max<uint32_t>(min, 1)); p <= max; p *= 2) {
+    allowed += (allowed.empty() ? "" : ", ") + std::to_string(p);
+  }
+  const std::string path = child_path(name);
+  const std::string fix = "allowed: " + with_unit(allowed, unit) + " (default " + std::to_string(value) + ")";
+  const std::optional<double> v = whole_number(*j, path, fix, *diag_);
+  if (!v) return;
+  // Range first: the cast to uint32_t is only defined for values that fit.
+  if (*v < min || *v > max || !std::has_single_bit(static_cast<uint32_t>(*v))) {
+    return diag_->error(path, describe_value(*j) + " is not a power of two between " + between, fix);
+  }
+  value = static_cast<uint32_t>(*v);
 }
 
 void ObjectReader::vec3(std::string_view name, glm::vec3& value, std::string_view unit,
@@ -278,11 +404,80 @@ std::optional<ObjectReader> ObjectReader::open_block(std::string_view name, std:
   return ObjectReader(*j, child_path(name), *diag_);
 }
 
+std::optional<size_t> ObjectReader::choose(std::string_view name, const std::vector<std::string>& names,
+                                           size_t current, std::string_view doc) {
+  std::string quoted;
+  for (const std::string& n : names) quoted += (quoted.empty() ? "" : ", ") + dump_json(n);
+  const std::string default_text = current < names.size() ? dump_json(names[current]) : "";
+  if (describing()) {
+    describe(name, "string", "", default_text, "one of " + quoted, doc);
+    return std::nullopt;
+  }
+  const json* j = lookup(name);
+  if (!j) return std::nullopt;
+  const std::string path = child_path(name);
+  const std::string fix =
+      "allowed: " + quoted + (default_text.empty() ? "" : " (default " + default_text + ")");
+  if (!j->is_string()) {
+    diag_->error(path, "expected a string, got " + describe_value(*j), fix);
+    return std::nullopt;
+  }
+  const std::string given = j->get<std::string>();
+  const auto it = std::find(names.begin(), names.end(), given);
+  if (it != names.end()) return static_cast<size_t>(it - names.begin());
+  const std::string suggestion = closest_match(given, names);
+  diag_->error(path, describe_value(*j) + " is not one of the allowed names",
+               (suggestion.empty() ? "" : "did you mean '" + suggestion + "'? ") + fix);
+  return std::nullopt;
+}
+
+ObjectReader ObjectReader::describe_array(std::string_view name,
+                                          const std::vector<std::vector<FieldInfo>>& defaults,
+                                          size_t min_size, size_t max_size, std::string_view doc) {
+  describe(name, "array of objects", "", elements_json(defaults),
+           std::to_string(min_size) + " to " + std::to_string(max_size) + " elements", doc);
+  return ObjectReader(child_path(name) + "[]", *catalog_);
+}
+
+std::optional<std::vector<std::optional<ObjectReader>>> ObjectReader::open_array(
+    std::string_view name, const std::vector<std::vector<FieldInfo>>& defaults, size_t min_size,
+    size_t max_size) {
+  const std::string default_json = elements_json(defaults);
+  array_defaults_[std::string(name)] = default_json;
+  const json* j = lookup(name);
+  if (!j) return std::nullopt;
+  const std::string path = child_path(name);
+  const std::string fix = "allowed: an array of " + std::to_string(min_size) + " to " +
+                          std::to_string(max_size) + " objects (default " + default_json + ")";
+  if (!j->is_array()) {
+    diag_->error(path, "expected an array of objects [{...}, ...], got " + describe_value(*j),
+                 fix + ", or leave it out to use the defaults");
+    return std::nullopt;
+  }
+  if (j->size() < min_size || j->size() > max_size) {
+    diag_->error(path, "has " + std::to_string(j->size()) + (j->size() == 1 ? " element" : " elements"), fix);
+  }
+  const std::string example = defaults.empty() ? std::string("{...}") : element_json(defaults.front()).dump();
+  std::vector<std::optional<ObjectReader>> elements;
+  for (size_t i = 0; i < j->size(); ++i) {
+    const std::string element_path = path + "[" + std::to_string(i) + "]";
+    if ((*j)[i].is_object()) {
+      elements.emplace_back(ObjectReader((*j)[i], element_path, *diag_));
+      continue;
+    }
+    diag_->error(element_path, "expected an object {...}, got " + describe_value((*j)[i]),
+                 "each element of " + std::string(name) + " is an object such as " + example);
+    elements.emplace_back(std::nullopt);
+  }
+  return elements;
+}
+
 void ObjectReader::rule(std::string_view name, bool holds, std::string_view rule, std::string_view fix) {
   if (describing()) {
-    const std::string path = child_path(name);
+    const std::string path = strip_indices(child_path(name));
     for (FieldInfo& info : *catalog_) {
-      if (info.path == path) info.range += (info.range.empty() ? "" : ", ") + std::string(rule);
+      if (info.path != path || info.range.find(rule) != std::string::npos) continue;  // once per row
+      info.range += (info.range.empty() ? "" : ", ") + std::string(rule);
     }
     return;
   }
@@ -302,6 +497,10 @@ void ObjectReader::finish() {
       continue;
     }
     if (std::find(declared_.begin(), declared_.end(), key) != declared_.end()) continue;
+    if (std::string hint = index_hint(key, value, *object_, array_defaults_, path_); !hint.empty()) {
+      diag_->error(child_path(key), "unknown field", hint);
+      continue;
+    }
     const std::string suggestion = closest_match(key, allowed);
     const std::string where = path_.empty() ? "at the top level" : "in " + path_;
     diag_->error(child_path(key), "unknown field",

@@ -8,8 +8,10 @@
 #include <glm/vec3.hpp>
 #include <nlohmann/json.hpp>
 
+#include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -28,9 +30,10 @@ struct Bounds {
   bool max_open = false;
 
   static Bounds any() { return Bounds(); }
-  static Bounds between(double lo, double hi);  // lo <= v <= hi
-  static Bounds above(double lo);               // v > lo
-  static Bounds at_least(double lo);            // v >= lo
+  static Bounds between(double lo, double hi);      // lo <= v <= hi
+  static Bounds above(double lo);                   // v > lo
+  static Bounds at_least(double lo);                // v >= lo
+  static Bounds above_up_to(double lo, double hi);  // lo < v <= hi
   bool contains(double v) const;
   std::string describe() const;  // "1 to 170", "> 0", "any"
 };
@@ -38,7 +41,7 @@ struct Bounds {
 // One row of the field reference.
 struct FieldInfo {
   std::string path;  // "camera.fov_deg"
-  std::string type;  // "number", "integer", "[x, y, z]", "boolean", "string", "object"
+  std::string type;  // "number", "integer", "[x, y, z]", "boolean", "string", "object", "array of objects"
   std::string unit;
   std::string default_value;
   std::string range;
@@ -71,11 +74,31 @@ class ObjectReader {
 
   void number(std::string_view name, float& value, Bounds bounds, std::string_view unit,
               std::string_view doc);
+  void number(std::string_view name, double& value, Bounds bounds, std::string_view unit,
+              std::string_view doc);
   void integer(std::string_view name, uint32_t& value, Bounds bounds, std::string_view unit,
                std::string_view doc);
+  // Power of two in [min, max], e.g. an FFT or texture size.
+  void power_of_two(std::string_view name, uint32_t& value, uint32_t min, uint32_t max, std::string_view unit,
+                    std::string_view doc);
   void vec3(std::string_view name, glm::vec3& value, std::string_view unit, std::string_view doc);
   void flag(std::string_view name, bool& value, std::string_view doc);
   void text(std::string_view name, std::string& value, std::string_view doc);
+
+  // A string that must be one of `options` (name, value); stored as the value. Unknown names get a
+  // did-you-mean and the list of allowed names.
+  template <typename E>
+  void choice(std::string_view name, E& value, const std::vector<std::pair<std::string, E>>& options,
+              std::string_view doc) {
+    std::vector<std::string> names;
+    size_t current = options.size();  // value not among the options: the docs show no default
+    for (size_t i = 0; i < options.size(); ++i) {
+      names.push_back(options[i].first);
+      if (options[i].second == value) current = i;
+    }
+    if (const std::optional<size_t> picked = choose(name, names, current, doc))
+      value = options[*picked].second;
+  }
 
   // Nested object read by `read(ObjectReader&, T&)`; absent means "all defaults".
   template <typename T, typename ReadFn>
@@ -86,8 +109,45 @@ class ObjectReader {
     child->finish();
   }
 
+  // Array of objects, each element read by `read(ObjectReader&, T&)` starting from a default T. Absent
+  // keeps `values` (the defaults); present replaces them entirely, so a file states the whole list rather
+  // than patching the defaults element by element. Element paths are "name[1]"; the docs list the element
+  // fields once, as "name[].field".
+  template <typename T, typename ReadFn>
+  void array(std::string_view name, std::vector<T>& values, size_t min_size, size_t max_size, ReadFn&& read,
+             std::string_view doc) {
+    // The defaults, rendered as JSON for the docs and for messages, come from the same read function.
+    std::vector<std::vector<FieldInfo>> defaults;
+    for (T element : values) {  // a copy: read() takes T& even though describing never writes
+      ObjectReader describer("", defaults.emplace_back());
+      read(describer, element);
+    }
+    if (describing()) {
+      ObjectReader element_reader = describe_array(name, defaults, min_size, max_size, doc);
+      T element{};
+      read(element_reader, element);
+      return;
+    }
+    std::optional<std::vector<std::optional<ObjectReader>>> elements =
+        open_array(name, defaults, min_size, max_size);
+    if (!elements) return;
+    std::vector<T> result;
+    bool all_objects = true;
+    for (std::optional<ObjectReader>& element : *elements) {
+      if (!element) {
+        all_objects = false;
+        continue;
+      }
+      read(*element, result.emplace_back());
+      element->finish();
+    }
+    // A wrong length is already reported; keeping the elements still lets cross-element rules check them.
+    if (all_objects) values = std::move(result);
+  }
+
   // Cross-field rule such as far_m > near_m, stated once for the error and the docs' range column
-  // ("must be <rule>"). `fix` should quote the offending values.
+  // ("must be <rule>"). `fix` should quote the offending values. A rule on an array element field
+  // ("cascades[2].patch_size_m") is documented once, on the element row ("cascades[].patch_size_m").
   void rule(std::string_view name, bool holds, std::string_view rule, std::string_view fix);
 
   // Reports fields nobody declared (with a did-you-mean) and a non-string "comment".
@@ -100,12 +160,24 @@ class ObjectReader {
   void describe(std::string_view name, std::string type, std::string_view unit, std::string default_value,
                 std::string range, std::string_view doc);
   std::optional<ObjectReader> open_block(std::string_view name, std::string_view doc);
+  std::optional<size_t> choose(std::string_view name, const std::vector<std::string>& names, size_t current,
+                               std::string_view doc);
+  ObjectReader describe_array(std::string_view name, const std::vector<std::vector<FieldInfo>>& defaults,
+                              size_t min_size, size_t max_size, std::string_view doc);
+  // Null after reporting a non-array; otherwise one reader per element, null for non-object elements.
+  std::optional<std::vector<std::optional<ObjectReader>>> open_array(
+      std::string_view name, const std::vector<std::vector<FieldInfo>>& defaults, size_t min_size,
+      size_t max_size);
+  // Shared by both number() overloads; `as_float` also checks the value after rounding to float.
+  std::optional<double> read_number(std::string_view name, double current, Bounds bounds,
+                                    std::string_view unit, bool as_float);
 
   const nlohmann::json* object_ = nullptr;
   Diagnostics* diag_ = nullptr;
   std::vector<FieldInfo>* catalog_ = nullptr;
   std::string path_;
   std::vector<std::string> declared_;
+  std::map<std::string, std::string, std::less<>> array_defaults_;  // name -> JSON, for finish()'s hints
 };
 
 // Parses JSON text, reporting syntax errors with nlohmann's line/column and duplicate keys (which plain
@@ -118,7 +190,8 @@ std::string to_markdown_table(const std::vector<FieldInfo>& fields);
 // Short, always-valid rendering of a JSON value for messages: `200`, `string "wide"`, `array [1,2]`.
 std::string describe_value(const nlohmann::json& value);
 
-// Numbers for messages and docs, to 6 significant digits: 0.1f -> "0.1", 5000 -> "5000".
+// Numbers for messages and docs, to 6 significant digits: 0.1f -> "0.1", 5000 -> "5000"; whole numbers
+// exactly, so 4294967295 does not print as 4.29497e+09.
 std::string format_number(double v);
 
 // Closest candidate by edit distance if it is plausibly a typo of `name`, else "".

@@ -5,6 +5,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "scene/ocean_block.h"
+
 namespace lagoon::scene {
 namespace {
 
@@ -44,10 +46,12 @@ void read_render(ObjectReader& r, RenderSettings& s) {
   r.number("gamma", s.gamma, Bounds::between(1, 3), "", "Display gamma used to encode the output.");
 }
 
-// New blocks: write read_<block>() above and add one r.block() line here.
+// New blocks: write read_<block>() above (or, for a large block, in its own <block>_block.cpp like
+// ocean_block.cpp) and add one r.block() line here.
 void read_scene(ObjectReader& r, Scene& s) {
   r.block("camera", s.camera, read_camera, "Viewpoint and projection.");
   r.block("sun", s.sun, read_sun, "Direction and strength of sunlight.");
+  r.block("ocean", s.ocean, read_ocean, "Wind, waves and foam of the simulated sea.");
   r.block("render", s.render, read_render, "Output image settings.");
   r.number("time_s", s.time_s, Bounds::between(0, 86400), "s",
            "Simulation time of the rendered frame (at most one day: wave phases are 32-bit floats).");

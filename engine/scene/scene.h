@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "ocean/ocean_params.h"
 #include "scene/json_fields.h"
 #include "scene/overrides.h"
 #include "vk/result.h"
@@ -41,6 +42,7 @@ struct Scene {
   std::filesystem::path source;  // file it came from ("" when parsed from memory)
   Camera camera;
   Sun sun;
+  ocean::OceanParams ocean;
   RenderSettings render;
   float time_s = 0.f;  // simulation time of the rendered frame
 };

@@ -74,7 +74,8 @@ Image Image::create(const Context& ctx, const ImageDesc& desc) {
   img.memory_ = Unique<VkDeviceMemory>(ctx.device(), mem);
   VK_CHECK(vkBindImageMemory(ctx.device(), image, mem, 0));
 
-  const VkImageViewType view_type = desc.layers > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
+  const VkImageViewType view_type =
+      desc.layers > 1 || desc.array_view ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
   auto make_view = [&](uint32_t base_mip, uint32_t mip_count) {
     const VkImageViewCreateInfo view_info{
         .sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO,

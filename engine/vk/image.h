@@ -15,6 +15,7 @@ struct ImageDesc {
   VkExtent2D extent{1, 1};
   uint32_t mip_levels = 1;  // 0 = full chain down to 1x1
   uint32_t layers = 1;      // > 1 gives a 2D_ARRAY view (e.g. one layer per ocean cascade)
+  bool array_view = false;  // a 2D_ARRAY view even for one layer (shaders that declare image2DArray)
   VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT;
   const char* debug_name = nullptr;
 };

@@ -1,0 +1,203 @@
+#include "ocean/gpu/gpu_ocean.h"
+
+#include <algorithm>
+#include <cstring>
+#include <optional>
+
+#include "lagoon_shaders/shaders.h"
+#include "ocean/validate.h"
+#include "shared/ocean.h"
+#include "vk/barriers.h"
+#include "vk/check.h"
+#include "vk/mipmaps.h"
+#include "vk/transfer.h"
+
+namespace lagoon::ocean {
+
+// Cascades that share a resolution are batched through the same passes.
+struct GpuOcean::Group {
+  uint32_t n = 0;
+  std::vector<uint32_t> cascades;
+  vk::Buffer spectrum;  // vec4 (h0(k), conj(h0(-k))) per k, cascade after cascade
+  vk::Buffer omega;     // float ω(k)
+  vk::Buffer ping, pong;
+  std::unique_ptr<fft::GpuFft2d> fft;
+  vk::ComputePipeline evolve, assemble;
+  vk::Image displacement, normal_jacobian;
+};
+
+namespace {
+
+constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+
+}  // namespace
+
+GpuOcean::GpuOcean(vk::Context& ctx, const OceanParams& params) : ctx_(ctx), params_(params) {
+  if (auto valid = validate(params); !valid) vk::throw_usage_error(valid.error().message);
+  std::vector<CascadeSpectrum> spectra;
+  for (uint32_t c = 0; c < params.cascades.size(); ++c) spectra.push_back(make_cascade_spectrum(params, c));
+  build(std::move(spectra));
+}
+
+GpuOcean::GpuOcean(vk::Context& ctx, const OceanParams& params, std::vector<CascadeSpectrum> spectra)
+    : ctx_(ctx), params_(params) {
+  if (spectra.size() != params.cascades.size()) vk::throw_usage_error("GpuOcean: one spectrum per cascade");
+  build(std::move(spectra));
+}
+
+GpuOcean::~GpuOcean() = default;
+
+void GpuOcean::set_params(const OceanParams& params) {
+  if (auto valid = validate(params); !valid) vk::throw_usage_error(valid.error().message);
+  ctx_.wait_idle();  // the old buffers may be in use by frames in flight
+  params_ = params;
+  std::vector<CascadeSpectrum> spectra;
+  for (uint32_t c = 0; c < params.cascades.size(); ++c) spectra.push_back(make_cascade_spectrum(params, c));
+  build(std::move(spectra));
+}
+
+void GpuOcean::build(std::vector<CascadeSpectrum> spectra) {
+  spectra_ = std::move(spectra);
+  groups_.clear();
+  cascade_slots_.assign(spectra_.size(), {0, 0});
+  reset_foam_ = true;
+  for (uint32_t c = 0; c < spectra_.size(); ++c) {
+    const uint32_t n = spectra_[c].resolution;
+    auto it = std::find_if(groups_.begin(), groups_.end(), [&](const auto& g) { return g->n == n; });
+    if (it == groups_.end()) {
+      groups_.push_back(std::make_unique<Group>());
+      groups_.back()->n = n;
+      it = groups_.end() - 1;
+    }
+    cascade_slots_[c] = {uint32_t(it - groups_.begin()), uint32_t((*it)->cascades.size())};
+    (*it)->cascades.push_back(c);
+  }
+  for (auto& g : groups_) {
+    const uint32_t n = g->n, count = uint32_t(g->cascades.size());
+    if (count > 4) vk::throw_usage_error("GpuOcean: at most 4 cascades per resolution");
+    const size_t texels = size_t{n} * n;
+    std::vector<float> pairs(texels * 4 * count), omegas(texels * count);
+    for (uint32_t layer = 0; layer < count; ++layer) {
+      const CascadeSpectrum& s = spectra_[g->cascades[layer]];
+      for (uint32_t iz = 0; iz < n; ++iz)
+        for (uint32_t ix = 0; ix < n; ++ix) {
+          const size_t i = size_t{iz} * n + ix, mirrored = size_t{(n - iz) % n} * n + (n - ix) % n;
+          float* out = &pairs[(layer * texels + i) * 4];
+          out[0] = s.h0[i].real();
+          out[1] = s.h0[i].imag();
+          out[2] = s.h0[mirrored].real();  // conj(h0(-k))
+          out[3] = -s.h0[mirrored].imag();
+          omegas[layer * texels + i] = s.omega[i];
+        }
+    }
+    g->spectrum = vk::Buffer::create(ctx_, pairs.size() * 4, kStorage, vk::MemoryUsage::Device, "ocean h0");
+    g->omega = vk::Buffer::create(ctx_, omegas.size() * 4, kStorage, vk::MemoryUsage::Device, "ocean omega");
+    vk::upload_buffer(ctx_, g->spectrum, vk::as_bytes_of(pairs));
+    vk::upload_buffer(ctx_, g->omega, vk::as_bytes_of(omegas));
+    const VkDeviceSize field_bytes = VkDeviceSize(texels) * 8 * 4 * count;
+    g->ping = vk::Buffer::create(ctx_, field_bytes, kStorage, vk::MemoryUsage::Device, "ocean fft ping");
+    g->pong = vk::Buffer::create(ctx_, field_bytes, kStorage, vk::MemoryUsage::Device, "ocean fft pong");
+    g->fft = std::make_unique<fft::GpuFft2d>(ctx_, n, /*inverse=*/true);
+    const auto first = g->fft->pass(0), last = g->fft->pass(g->fft->pass_count() - 1);
+    g->evolve = vk::ComputePipeline::create(ctx_, shaders::ocean_evolve_fft_comp,
+                                            fft::GpuFft2d::specialisation(first.radix, false, true));
+    g->assemble = vk::ComputePipeline::create(ctx_, shaders::ocean_fft_assemble_comp,
+                                              fft::GpuFft2d::specialisation(last.radix, true, true));
+    const vk::ImageDesc desc{.format = VK_FORMAT_R32G32B32A32_SFLOAT,
+                             .extent = {n, n},
+                             .mip_levels = 0,
+                             .layers = count,
+                             .array_view = true,
+                             .usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                                      VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT};
+    vk::ImageDesc d = desc;
+    d.debug_name = "ocean displacement";
+    g->displacement = vk::Image::create(ctx_, d);
+    d.debug_name = "ocean normal+jacobian";
+    g->normal_jacobian = vk::Image::create(ctx_, d);
+    ctx_.submit_and_wait([&](VkCommandBuffer cmd) {
+      for (const vk::Image* image : {&g->displacement, &g->normal_jacobian})
+        vk::image_barrier(cmd, image->handle(), image->all_subresources(), VK_IMAGE_LAYOUT_UNDEFINED,
+                          VK_IMAGE_LAYOUT_GENERAL, vk::access::kNone, vk::access::kComputeReadWrite);
+    });
+  }
+}
+
+void GpuOcean::record_step(VkCommandBuffer cmd, double time_s, double dt_s, vk::GpuTimer* timer) {
+  // Readers of last step's textures (graphics sampling, readback) must finish before they are rewritten.
+  const vk::Access readers{vk::access::kGraphicsSampled.stage | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT |
+                               VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                           vk::access::kGraphicsSampled.access | VK_ACCESS_2_SHADER_STORAGE_READ_BIT |
+                               VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT};
+  for (auto& g : groups_) {
+    const uint32_t n = g->n, count = uint32_t(g->cascades.size());
+    gpu::OceanPush push{.patch_size_m = {},
+                        .n = n,
+                        .ns = 1,
+                        .cascades = count,
+                        .reset_foam = reset_foam_ ? 1u : 0u,
+                        .time_s = float(time_s),
+                        .dt_s = float(dt_s),
+                        .choppiness = float(params_.choppiness),
+                        .foam_threshold = float(params_.foam.threshold),
+                        .foam_decay_per_s = float(params_.foam.decay_per_s)};
+    for (uint32_t layer = 0; layer < count; ++layer)
+      push.patch_size_m[layer] = float(spectra_[g->cascades[layer]].patch_size_m);
+
+    const size_t passes = g->fft->pass_count();
+    {
+      std::optional<vk::GpuScope> scope;
+      if (timer) scope.emplace(*timer, cmd, "ocean fft " + std::to_string(n));
+      const auto first = g->fft->pass(0);
+      vk::dispatch(cmd, g->evolve, {vk::bind(0, g->spectrum), vk::bind(1, g->omega), vk::bind(2, g->ping)},
+                   push, vk::groups_for(g->evolve, {n / first.radix, n, count}));
+      vk::memory_barrier(cmd, vk::access::kComputeReadWrite, vk::access::kComputeReadWrite);
+      const vk::Buffer* src = &g->ping;
+      const vk::Buffer* dst = &g->pong;
+      for (size_t i = 1; i + 1 < passes; ++i) {
+        g->fft->record_pass(cmd, i, *src, *dst, 4 * count);
+        std::swap(src, dst);
+      }
+      const auto last = g->fft->pass(passes - 1);
+      push.ns = last.ns;
+      for (const vk::Image* image : {&g->displacement, &g->normal_jacobian})
+        vk::image_barrier(cmd, image->handle(), image->all_subresources(), VK_IMAGE_LAYOUT_GENERAL,
+                          VK_IMAGE_LAYOUT_GENERAL, readers, vk::access::kComputeReadWrite);
+      vk::dispatch(cmd, g->assemble,
+                   {vk::bind(0, *src), vk::bind(1, g->fft->twiddles()),
+                    vk::bind(2, vk::ImageRef{g->displacement.mip_view(0), VK_IMAGE_LAYOUT_GENERAL}),
+                    vk::bind(3, vk::ImageRef{g->normal_jacobian.mip_view(0), VK_IMAGE_LAYOUT_GENERAL})},
+                   push, vk::groups_for(g->assemble, {n, n / last.radix, count}));
+    }
+    {
+      std::optional<vk::GpuScope> scope;
+      if (timer) scope.emplace(*timer, cmd, "ocean mips " + std::to_string(n));
+      for (const vk::Image* image : {&g->displacement, &g->normal_jacobian})
+        vk::generate_mipmaps(cmd, *image, VK_IMAGE_LAYOUT_GENERAL, vk::access::kComputeWrite, readers);
+    }
+  }
+  reset_foam_ = false;
+}
+
+CascadeTextures GpuOcean::cascade(uint32_t index) const {
+  const auto [group, layer] = cascade_slots_.at(index);
+  const Group& g = *groups_[group];
+  return {&g.displacement, &g.normal_jacobian, layer, g.n, spectra_[index].patch_size_m};
+}
+
+CascadeReadback GpuOcean::read_cascade(uint32_t index) {
+  const CascadeTextures t = cascade(index);
+  const vk::Access writer{VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT};
+  CascadeReadback out;
+  out.resolution = t.resolution;
+  const size_t layer_floats = size_t{t.resolution} * t.resolution * 4;
+  for (auto [image, target] :
+       {std::pair{t.displacement, &out.displacement}, {t.normal_jacobian, &out.normal_jacobian}}) {
+    const std::vector<std::byte> bytes = vk::readback_image(ctx_, *image, VK_IMAGE_LAYOUT_GENERAL, writer);
+    target->resize(layer_floats);
+    std::memcpy(target->data(), bytes.data() + layer_floats * 4 * t.layer, layer_floats * 4);
+  }
+  return out;
+}
+
+}  // namespace lagoon::ocean

@@ -1,0 +1,72 @@
+// The FFT ocean's per-frame GPU work. Once per parameter change the CPU computes h0(k) and ω(k)
+// (initial_spectrum.h) and uploads them; every step records, per group of cascades sharing a resolution:
+//   evolve + first row FFT pass  ->  remaining row and column passes  ->  last column pass + assembly
+// writing per cascade (one array layer each) displacement (λDx, h, λDz, foam) and (normal, Jacobian)
+// textures, then their mip chains. Records only; the caller submits.
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "fft/gpu_fft.h"
+#include "ocean/initial_spectrum.h"
+#include "ocean/ocean_params.h"
+#include "vk/context.h"
+#include "vk/gpu_timer.h"
+#include "vk/image.h"
+
+namespace lagoon::ocean {
+
+// Where one cascade's textures live.
+struct CascadeTextures {
+  const vk::Image* displacement = nullptr;     // RGBA32F array: (λDx, h, λDz, foam), metres
+  const vk::Image* normal_jacobian = nullptr;  // RGBA32F array: (nx, ny, nz, J)
+  uint32_t layer = 0;
+  uint32_t resolution = 0;
+  double patch_size_m = 0;
+};
+
+// Host copy of one cascade's outputs (mip 0), row-major [z][x], 4 floats per texel.
+struct CascadeReadback {
+  uint32_t resolution = 0;
+  std::vector<float> displacement;
+  std::vector<float> normal_jacobian;
+};
+
+class GpuOcean {
+ public:
+  // Throws on invalid parameters; call validate() first for a user-facing message.
+  GpuOcean(vk::Context& ctx, const OceanParams& params);
+  // For tests: explicit spectra (one per cascade of `params`) instead of make_cascade_spectrum.
+  GpuOcean(vk::Context& ctx, const OceanParams& params, std::vector<CascadeSpectrum> spectra);
+  ~GpuOcean();
+  GpuOcean(const GpuOcean&) = delete;
+  GpuOcean& operator=(const GpuOcean&) = delete;
+
+  // Records the step to `time_s`; `dt_s` is the time since the previous step (foam decay). The first step
+  // after construction or set_params starts foam from zero. Textures are ready for fragment/vertex/compute
+  // sampling (GENERAL layout) when the command buffer completes.
+  void record_step(VkCommandBuffer cmd, double time_s, double dt_s, vk::GpuTimer* timer = nullptr);
+
+  // New parameters: recomputes and uploads the spectrum; rebuilds resources when cascades change.
+  void set_params(const OceanParams& params);
+  const OceanParams& params() const { return params_; }
+  const std::vector<CascadeSpectrum>& spectra() const { return spectra_; }
+  CascadeTextures cascade(uint32_t index) const;
+  uint32_t cascade_count() const { return uint32_t(params_.cascades.size()); }
+
+  // Reads back mip 0 of one cascade (submits and waits; for tests, export and probes).
+  CascadeReadback read_cascade(uint32_t index);
+
+ private:
+  struct Group;
+  void build(std::vector<CascadeSpectrum> spectra);
+
+  vk::Context& ctx_;
+  OceanParams params_;
+  std::vector<CascadeSpectrum> spectra_;
+  std::vector<std::unique_ptr<Group>> groups_;
+  std::vector<std::pair<uint32_t, uint32_t>> cascade_slots_;  // cascade -> (group, layer)
+  bool reset_foam_ = true;
+};
+
+}  // namespace lagoon::ocean

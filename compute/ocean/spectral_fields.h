@@ -1,0 +1,43 @@
+// CPU evaluation of a cascade's real fields at time t on its N x N grid: the evolved spectrum
+// h̃(k,t) = h0(k)e^{-iωt} + conj(h0(-k))e^{+iωt} times each field's multiplier, two real fields packed per
+// complex inverse FFT. The same conventions as the GPU passes (shaders/ocean/evolve_fft.comp).
+#pragma once
+#include <complex>
+#include <functional>
+#include <span>
+#include <vector>
+
+#include "ocean/initial_spectrum.h"
+
+namespace lagoon::ocean {
+
+enum class Field {
+  Dx,
+  Height,
+  Dz,  // horizontal displacement D (before scaling by λ) and height, metres
+  SlopeX,
+  SlopeZ,  // ∂h/∂x, ∂h/∂z
+  DxDx,
+  DzDz,
+  DxDz,  // ∂Dx/∂x, ∂Dz/∂z, ∂Dx/∂z (Jacobian terms, before λ)
+  VelocityX,
+  VelocityY,
+  VelocityZ,  // ∂Dx/∂t, ∂h/∂t, ∂Dz/∂t (m/s, before λ for x and z)
+};
+
+// In-place unnormalised inverse 2-D FFT of `batches` row-major n x n arrays.
+using InverseFft2d =
+    std::function<void(std::vector<std::complex<double>>& data, uint32_t n, uint32_t batches)>;
+
+// Our own CPU FFT (fft/cpu_fft.h) on `threads` threads.
+InverseFft2d cpu_inverse_fft(unsigned threads = 1);
+
+// result[f][z * N + x] is fields[f] at x = i·L/N, z = j·L/N.
+std::vector<std::vector<double>> evaluate_fields(const CascadeSpectrum& spectrum, double time_s,
+                                                 std::span<const Field> fields, const InverseFft2d& fft);
+
+// The spectral value of `field` at mode index (ix, iz) and time t (used by the evaluator and by tests).
+std::complex<double> field_spectrum(const CascadeSpectrum& spectrum, uint32_t ix, uint32_t iz, double time_s,
+                                    Field field);
+
+}  // namespace lagoon::ocean

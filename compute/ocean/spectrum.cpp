@@ -1,0 +1,145 @@
+#include "ocean/spectrum.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace lagoon::ocean {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kG = kGravity;
+
+double fetch_m(const SpectrumParams& s) {
+  return s.fetch_km * 1000.0;
+}
+
+// α of the ω⁻⁵ range for each type.
+double spectrum_alpha(const SpectrumParams& s) {
+  switch (s.type) {
+    case SpectrumType::Phillips:
+      return kPhillipsAlpha;
+    case SpectrumType::PiersonMoskowitz:
+      return kPiersonMoskowitzAlpha;
+    case SpectrumType::Jonswap:
+    case SpectrumType::Tma:
+      return jonswap_alpha(s.wind_speed_mps, fetch_m(s));
+  }
+  return 0.0;
+}
+
+// S(ω) with α and ω_p already known.
+double evaluate(const SpectrumParams& s, double alpha, double peak, double depth_m, double omega) {
+  if (!(omega > 0.0)) return 0.0;
+  switch (s.type) {
+    case SpectrumType::Phillips:
+      return phillips(omega, s.wind_speed_mps, s.small_wave_cutoff_m);
+    case SpectrumType::PiersonMoskowitz:
+      return pierson_moskowitz(omega, alpha, peak);
+    case SpectrumType::Jonswap:
+      return jonswap(omega, alpha, peak, s.gamma);
+    case SpectrumType::Tma:
+      return jonswap(omega, alpha, peak, s.gamma) * kitaigorodskii(omega * std::sqrt(depth_m / kG));
+  }
+  return 0.0;
+}
+
+}  // namespace
+
+double pierson_moskowitz(double omega, double alpha, double peak_omega) {
+  if (!(omega > 0.0)) return 0.0;
+  const double r4 = std::pow(peak_omega / omega, 4.0);
+  return alpha * kG * kG * std::pow(omega, -5.0) * std::exp(-1.25 * r4);
+}
+
+double jonswap(double omega, double alpha, double peak_omega, double gamma) {
+  if (!(omega > 0.0)) return 0.0;
+  const double sigma = omega <= peak_omega ? 0.07 : 0.09;
+  const double d = (omega - peak_omega) / (sigma * peak_omega);
+  const double r = std::exp(-0.5 * d * d);
+  return pierson_moskowitz(omega, alpha, peak_omega) * std::pow(gamma, r);
+}
+
+double kitaigorodskii(double omega_h) {
+  if (omega_h <= 1.0) return 0.5 * omega_h * omega_h;
+  if (omega_h < 2.0) return 1.0 - 0.5 * (2.0 - omega_h) * (2.0 - omega_h);
+  return 1.0;
+}
+
+double pierson_moskowitz_peak_omega(double wind_speed_mps) {
+  return 2.0 * kPi * 0.13 * kG / wind_speed_mps;
+}
+
+double jonswap_alpha(double wind_speed_mps, double fetch_m) {
+  return 0.076 * std::pow(wind_speed_mps * wind_speed_mps / (fetch_m * kG), 0.22);
+}
+
+double jonswap_peak_omega(double wind_speed_mps, double fetch_m) {
+  return 22.0 * std::cbrt(kG * kG / (wind_speed_mps * fetch_m));
+}
+
+double phillips(double omega, double wind_speed_mps, double small_wave_cutoff_m) {
+  if (!(omega > 0.0)) return 0.0;
+  const double k = omega * omega / kG;
+  const double kl_big = k * wind_speed_mps * wind_speed_mps / kG;  // kL, L = U²/g
+  const double kl_small = k * small_wave_cutoff_m;
+  return kPhillipsAlpha * kG * kG * std::pow(omega, -5.0) * std::exp(-1.0 / (kl_big * kl_big)) *
+         std::exp(-kl_small * kl_small);
+}
+
+double peak_omega(const SpectrumParams& s) {
+  switch (s.type) {
+    case SpectrumType::Phillips:
+      return std::pow(0.8, 0.25) * kG / s.wind_speed_mps;
+    case SpectrumType::PiersonMoskowitz:
+      return pierson_moskowitz_peak_omega(s.wind_speed_mps);
+    case SpectrumType::Jonswap:
+    case SpectrumType::Tma:
+      return jonswap_peak_omega(s.wind_speed_mps, fetch_m(s));
+  }
+  return 1.0;
+}
+
+double frequency_spectrum(const SpectrumParams& s, double depth_m, double omega) {
+  return evaluate(s, spectrum_alpha(s), peak_omega(s), depth_m, omega);
+}
+
+DirectionalSpectrum::DirectionalSpectrum(const OceanParams& params)
+    : spectrum_(params.spectrum),
+      depth_m_(params.depth_m),
+      dispersion_{params.depth_m, true, 0.0},
+      spreading_(spreading_for(params.spectrum)),
+      alpha_(spectrum_alpha(params.spectrum)),
+      peak_omega_(peak_omega(params.spectrum)) {
+  const double phi = params.spectrum.wind_direction_deg * kPi / 180.0;
+  wind_x_ = std::sin(phi);
+  wind_z_ = std::cos(phi);
+}
+
+double DirectionalSpectrum::frequency(double omega) const {
+  return evaluate(spectrum_, alpha_, peak_omega_, depth_m_, omega);
+}
+
+double DirectionalSpectrum::omnidirectional(double k) const {
+  if (!(k > 0.0)) return 0.0;
+  return frequency(omega(dispersion_, k)) * domega_dk(dispersion_, k);
+}
+
+double DirectionalSpectrum::operator()(double kx, double kz) const {
+  const double k = std::hypot(kx, kz);
+  if (!(k > 0.0)) return 0.0;
+  const double w = omega(dispersion_, k);
+  const double s = frequency(w);
+  if (s == 0.0) return 0.0;
+  const double theta = std::atan2(kx * wind_z_ - kz * wind_x_, kx * wind_x_ + kz * wind_z_);
+  return s * spreading(spreading_, w, theta) * domega_dk(dispersion_, k) / k;
+}
+
+double directional_spectrum(const OceanParams& params, double kx, double kz) {
+  return DirectionalSpectrum(params)(kx, kz);
+}
+
+double omnidirectional_wavenumber_spectrum(const OceanParams& params, double k) {
+  return DirectionalSpectrum(params).omnidirectional(k);
+}
+
+}  // namespace lagoon::ocean

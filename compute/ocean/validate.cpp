@@ -1,0 +1,137 @@
+#include "ocean/validate.h"
+
+#include <cmath>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <string_view>
+
+namespace lagoon::ocean {
+namespace {
+
+std::string num(double v) {
+  std::ostringstream s;
+  s.precision(6);
+  s << v;
+  return s.str();
+}
+
+class Problems {
+ public:
+  void add(const std::string& field, const std::string& message) {
+    if (!text_.empty()) text_ += '\n';
+    text_ += "ocean." + field + ": " + message;
+  }
+  // NaN fails every comparison, so each check is written to reject it.
+  void positive(const std::string& field, double v, const char* unit) {
+    if (!(v > 0.0) || !std::isfinite(v)) add(field, num(v) + " must be > 0 (" + unit + ")");
+  }
+  void range(const std::string& field, double v, double lo, double hi, const char* why) {
+    if (!(v >= lo && v <= hi))
+      add(field, num(v) + " must be in [" + num(lo) + ", " + num(hi) + "]" + (*why ? " (" : "") + why +
+                     (*why ? ")" : ""));
+  }
+  Result<void> result() const {
+    if (text_.empty()) return {};
+    return make_error(text_);
+  }
+
+ private:
+  std::string text_;
+};
+
+bool power_of_two_in_range(uint32_t n) {
+  return n >= kMinResolution && n <= kMaxResolution && (n & (n - 1)) == 0;
+}
+
+void check_cascades(const OceanParams& p, Problems& problems) {
+  const size_t count = p.cascades.size();
+  if (count < 1 || count > kMaxCascades) {
+    problems.add("cascades", std::to_string(count) + " cascades given; use 1 to " +
+                                 std::to_string(kMaxCascades) + " (largest patch first)");
+    if (count < 1) return;
+  }
+  bool sizes_ok = true;
+  for (size_t i = 0; i < count; ++i) {
+    const CascadeParams& c = p.cascades[i];
+    const std::string at = "cascades[" + std::to_string(i) + "].";
+    if (!power_of_two_in_range(c.resolution))
+      problems.add(at + "resolution", std::to_string(c.resolution) + " is not a power of two between " +
+                                          std::to_string(kMinResolution) + " and " +
+                                          std::to_string(kMaxResolution) + "; use 64, 128, 256, 512 or 1024");
+    if (!(c.patch_size_m > 0.0) || !std::isfinite(c.patch_size_m)) {
+      problems.positive(at + "patch_size_m", c.patch_size_m, "metres");
+      sizes_ok = false;
+    }
+  }
+  if (!sizes_ok) return;
+  for (size_t i = 1; i < count; ++i) {
+    const CascadeParams &prev = p.cascades[i - 1], &c = p.cascades[i];
+    const std::string field = "cascades[" + std::to_string(i) + "].patch_size_m";
+    const std::string prev_field = "cascades[" + std::to_string(i - 1) + "].patch_size_m";
+    if (!(c.patch_size_m < prev.patch_size_m)) {
+      problems.add(field, num(c.patch_size_m) + " m must be smaller than " + prev_field + " (" +
+                              num(prev.patch_size_m) + " m): list cascades largest patch first");
+      continue;
+    }
+    if (!power_of_two_in_range(prev.resolution) || !power_of_two_in_range(c.resolution)) continue;
+    // Bands (initial_spectrum.h): cascade i carries [k_max(i-1), k_max(i)), k_max = π N/(2L).
+    const double pi = std::numbers::pi;
+    const double band_start = pi * prev.resolution / (2.0 * prev.patch_size_m);
+    const double band_end = pi * c.resolution / (2.0 * c.patch_size_m);
+    if (2.0 * pi / c.patch_size_m > band_start) {
+      // Its lowest wave 2π/L lies above where its band starts: the waves in between would be missing.
+      const double min_size = 2.0 * pi / band_start;  // = 4 L(i-1) / N(i-1)
+      const double max_prev = prev.resolution * c.patch_size_m / 4.0;
+      problems.add(field, num(c.patch_size_m) + " m is too small to carry the start of its band (k = " +
+                              num(band_start) + " rad/m, where " + prev_field +
+                              "'s band ends): its longest wave has k = 2π/L = " +
+                              num(2.0 * pi / c.patch_size_m) + " rad/m; use at least " + num(min_size) +
+                              " m here, or at most " + num(max_prev) + " m for " + prev_field);
+    } else if (!(band_end > band_start)) {
+      const double max_size = c.resolution * prev.patch_size_m / prev.resolution;  // k_max(i) > k_max(i-1)
+      problems.add(field, num(c.patch_size_m) +
+                              " m leaves this cascade no waves: its band would end at π N/(2L) = " +
+                              num(band_end) + " rad/m, not above where it starts (" + num(band_start) +
+                              " rad/m); the largest allowed size is below " + num(max_size) +
+                              " m (or raise its resolution)");
+    }
+  }
+}
+
+}  // namespace
+
+Result<void> validate(const OceanParams& p) {
+  Problems problems;
+  problems.positive("depth_m", p.depth_m, "metres of water");
+  problems.range("choppiness", p.choppiness, 0.0, 5.0, "0 = no horizontal displacement");
+  if (!(p.loop_period_s >= 0.0) || !std::isfinite(p.loop_period_s))
+    problems.add("loop_period_s", num(p.loop_period_s) + " must be >= 0 (seconds; 0 = no loop)");
+
+  const SpectrumParams& s = p.spectrum;
+  if (std::string_view(to_string(s.type)) == "?")
+    problems.add("spectrum.type", "unknown spectrum; use phillips, pm, jonswap or tma");
+  if (std::string_view(to_string(s.spreading)) == "?")
+    problems.add("spectrum.spreading", "unknown spreading; use cos2, cos2s or donelan-banner");
+  problems.positive("spectrum.wind_speed_mps", s.wind_speed_mps, "m/s at 10 m height");
+  if (!std::isfinite(s.wind_direction_deg))
+    problems.add("spectrum.wind_direction_deg",
+                 num(s.wind_direction_deg) + " must be a finite angle in degrees");
+  problems.positive("spectrum.fetch_km", s.fetch_km, "km of open water upwind");
+  problems.range("spectrum.gamma", s.gamma, 1.0, 20.0, "JONSWAP peak enhancement, 3.3 is typical");
+  problems.range("spectrum.swell", s.swell, 0.0, 1.0, "");
+  if (!(s.small_wave_cutoff_m >= 0.0) || !std::isfinite(s.small_wave_cutoff_m))
+    problems.add("spectrum.small_wave_cutoff_m",
+                 num(s.small_wave_cutoff_m) + " must be >= 0 (metres; 0 = none)");
+
+  if (!std::isfinite(p.foam.threshold))
+    problems.add("foam.threshold",
+                 num(p.foam.threshold) + " must be a finite Jacobian value (0.5 is typical)");
+  if (!(p.foam.decay_per_s >= 0.0) || !std::isfinite(p.foam.decay_per_s))
+    problems.add("foam.decay_per_s", num(p.foam.decay_per_s) + " must be >= 0 (1/s)");
+
+  check_cascades(p, problems);
+  return problems.result();
+}
+
+}  // namespace lagoon::ocean

@@ -1,0 +1,189 @@
+#include "ocean/wave_query.h"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <glm/geometric.hpp>
+#include <numbers>
+
+#include "ocean/spectral_fields.h"
+
+namespace lagoon::ocean {
+namespace {
+
+constexpr Field kFields[] = {Field::Dx,     Field::Height,    Field::Dz,        Field::SlopeX,
+                             Field::SlopeZ, Field::VelocityX, Field::VelocityY, Field::VelocityZ};
+enum { kDx, kHeight, kDz, kSlopeX, kSlopeZ, kVx, kVy, kVz, kFieldCount };
+
+// Catmull-Rom weights for samples at offsets -1, 0, 1, 2 and fraction s in [0, 1).
+void catmull_rom_weights(double s, double w[4]) {
+  const double s2 = s * s, s3 = s2 * s;
+  w[0] = 0.5 * (-s3 + 2 * s2 - s);
+  w[1] = 0.5 * (3 * s3 - 5 * s2 + 2);
+  w[2] = 0.5 * (-3 * s3 + 4 * s2 + s);
+  w[3] = 0.5 * (s3 - s2);
+}
+
+}  // namespace
+
+double catmull_rom_exponential_error(double theta) {
+  double worst = 0;
+  for (int i = 0; i <= 256; ++i) {
+    const double s = i / 256.0;
+    double w[4];
+    catmull_rom_weights(s, w);
+    std::complex<double> v = 0;
+    for (int m = -1; m <= 2; ++m) v += w[m + 1] * std::polar(1.0, theta * m);
+    worst = std::max(worst, std::abs(v - std::polar(1.0, theta * s)));
+  }
+  return worst;
+}
+
+double catmull_rom_lebesgue_constant() {
+  double worst = 0;
+  for (int i = 0; i <= 256; ++i) {
+    double w[4];
+    catmull_rom_weights(i / 256.0, w);
+    worst = std::max(worst, std::abs(w[0]) + std::abs(w[1]) + std::abs(w[2]) + std::abs(w[3]));
+  }
+  return worst;
+}
+
+struct WaveQuery::Grid {
+  uint32_t n = 0;
+  double texel_m = 0;  // L / N
+  std::vector<double> fields[kFieldCount];
+
+  // Sum of the periodic Catmull-Rom interpolants of `count` fields starting at `first`.
+  void sample(glm::dvec2 p, int first, int count, double* out) const {
+    const double u = p.x / texel_m, v = p.y / texel_m;
+    const double fu = std::floor(u), fv = std::floor(v);
+    double wu[4], wv[4];
+    catmull_rom_weights(u - fu, wu);
+    catmull_rom_weights(v - fv, wv);
+    const long iu = long(fu), iv = long(fv), mask = long(n) - 1;  // n is a power of two
+    size_t rows[4], cols[4];
+    for (int m = 0; m < 4; ++m) {
+      rows[m] = size_t((iv + m - 1) & mask) * n;
+      cols[m] = size_t((iu + m - 1) & mask);
+    }
+    for (int f = 0; f < count; ++f) {
+      const std::vector<double>& data = fields[first + f];
+      double acc = 0;
+      for (int a = 0; a < 4; ++a) {
+        double row = 0;
+        for (int b = 0; b < 4; ++b) row += wu[b] * data[rows[a] + cols[b]];
+        acc += wv[a] * row;
+      }
+      out[f] += acc;
+    }
+  }
+};
+
+WaveQuery::WaveQuery(const OceanParams& params, unsigned threads) : WaveQuery(params, {}, threads) {}
+
+WaveQuery::WaveQuery(const OceanParams& params, std::vector<CascadeSpectrum> spectra, unsigned threads)
+    : params_(params), spectra_(std::move(spectra)), threads_(threads) {
+  if (spectra_.empty())
+    for (uint32_t c = 0; c < params.cascades.size(); ++c)
+      spectra_.push_back(make_cascade_spectrum(params, c));
+  // Interpolation bounds: every mode's largest amplitude |h0(k)| + |h0(-k)| times the 2-D error of its
+  // exponential (tensor product: E(θx) + Λ·E(θz)), tabulated over θ to keep construction fast.
+  constexpr int kTable = 512;
+  std::vector<double> table(kTable + 1);
+  for (int i = 0; i <= kTable; ++i) table[i] = catmull_rom_exponential_error(std::numbers::pi * i / kTable);
+  auto error_at = [&](double theta) {  // |θ| <= π; linear interpolation of a smooth, increasing table
+    const double x = std::min(std::abs(theta), std::numbers::pi) / std::numbers::pi * kTable;
+    const int i = std::min(int(x), kTable - 1);
+    return table[i] + (table[i + 1] - table[i]) * (x - i) + 1e-12;
+  };
+  const double lebesgue = catmull_rom_lebesgue_constant();
+  double variance_h = 0, variance_d = 0;
+  for (const CascadeSpectrum& s : spectra_) {
+    const uint32_t n = s.resolution;
+    const double dk = 2 * std::numbers::pi / s.patch_size_m, texel = s.patch_size_m / n;
+    for (uint32_t iz = 0; iz < n; ++iz)
+      for (uint32_t ix = 0; ix < n; ++ix) {
+        const size_t i = size_t{iz} * n + ix, mirrored = size_t{(n - iz) % n} * n + (n - ix) % n;
+        const double a2 =
+            std::norm(std::complex<double>(s.h0[i])) + std::norm(std::complex<double>(s.h0[mirrored]));
+        if (a2 == 0) continue;
+        const double kx = dk * (ix < n / 2 ? double(ix) : double(ix) - n);
+        const double kz = dk * (iz < n / 2 ? double(iz) : double(iz) - n);
+        const double e = error_at(kx * texel) + lebesgue * error_at(kz * texel);
+        const double k = std::hypot(kx, kz);
+        variance_h += a2 * e * e;
+        variance_d += a2 * e * e * (kx * kx + kz * kz) / (k * k) / 2;  // per horizontal component, on average
+        worst_case_height_ +=
+            (std::abs(std::complex<double>(s.h0[i])) + std::abs(std::complex<double>(s.h0[mirrored]))) * e;
+      }
+  }
+  bound_height_ = 5 * std::sqrt(variance_h);
+  bound_displacement_ = 5 * std::sqrt(2 * variance_d);  // both components: |(dx, dz)|
+}
+
+WaveQuery::~WaveQuery() = default;
+
+void WaveQuery::evaluate(double time_s) {
+  if (evaluated_ && time_s == time_s_) return;
+  const InverseFft2d fft = cpu_inverse_fft(threads_);
+  grids_.clear();
+  max_slope_ = 0;
+  for (const CascadeSpectrum& s : spectra_) {
+    auto grid = std::make_unique<Grid>();
+    grid->n = s.resolution;
+    grid->texel_m = s.patch_size_m / s.resolution;
+    auto values = evaluate_fields(s, time_s, kFields, fft);
+    for (int f = 0; f < kFieldCount; ++f) grid->fields[f] = std::move(values[f]);
+    grids_.push_back(std::move(grid));
+  }
+  // Largest slope of the summed surface, bounded by the sum of each cascade's largest slope.
+  for (const auto& g : grids_) {
+    double m = 0;
+    for (size_t i = 0; i < g->fields[kSlopeX].size(); ++i)
+      m = std::max(m, std::hypot(g->fields[kSlopeX][i], g->fields[kSlopeZ][i]));
+    max_slope_ += m;
+  }
+  time_s_ = time_s;
+  evaluated_ = true;
+}
+
+glm::dvec2 WaveQuery::displacement(glm::dvec2 p) const {
+  double d[3] = {0, 0, 0};
+  for (const auto& g : grids_) g->sample(p, kDx, 3, d);
+  return params_.choppiness * glm::dvec2(d[0], d[2]);
+}
+
+std::vector<WaveSample> WaveQuery::sample(double time_s, std::span<const glm::dvec2> points) {
+  evaluate(time_s);
+  std::vector<WaveSample> out(points.size());
+  const double bound = bound_height_ + max_slope_ * 2 * params_.choppiness * bound_displacement_;
+  for (size_t i = 0; i < points.size(); ++i) {
+    const glm::dvec2 q = points[i];
+    // Fixed point of p = q - λD(p): the rest position whose displaced position is q.
+    glm::dvec2 p = q;
+    bool converged = false;
+    for (int iteration = 0; iteration < 32 && !converged; ++iteration) {
+      const glm::dvec2 next = q - displacement(p);
+      converged = glm::length(next - p) < 1e-6;
+      p = next;
+    }
+    double f[kFieldCount] = {};
+    for (const auto& g : grids_) g->sample(p, 0, kFieldCount, f);
+    WaveSample& s = out[i];
+    s.rest_position = p;
+    s.height = f[kHeight];
+    s.normal = glm::normalize(glm::dvec3(-f[kSlopeX], 1.0, -f[kSlopeZ]));
+    s.velocity = {params_.choppiness * f[kVx], f[kVy], params_.choppiness * f[kVz]};
+    s.error_bound_m = bound;
+    s.converged = converged;
+  }
+  return out;
+}
+
+WaveSample WaveQuery::sample(double time_s, double x, double z) {
+  const glm::dvec2 p(x, z);
+  return sample(time_s, std::span<const glm::dvec2>(&p, 1))[0];
+}
+
+}  // namespace lagoon::ocean

@@ -1,0 +1,74 @@
+// Wave height, normal and surface velocity at any (x, z, t) for physics engines (buoyancy), on the CPU,
+// with no frame lag: the query evaluates the same band-limited sum the GPU evaluates, for the time asked.
+//
+// How: once per distinct time the cascades' fields (height, horizontal displacement, slopes, velocity)
+// are evaluated on their grids with an FFT (~tens of ms for 3 x 256²), then every point costs a few
+// periodic Catmull-Rom lookups. The horizontal displacement is inverted by fixed-point iteration: the
+// answer describes the surface point that the waves move to above (x, z), not the one that rests there.
+//
+// Error bound (WaveSample::error_bound_m) on the height against the exact band-limited sum:
+//   B_h + G · 2λB_D. B_h and B_D bound the interpolation error of the height and of the horizontal
+//   displacement: each mode contributes its amplitude times E(k), the largest interpolation error of a
+//   complex exponential at its wavenumber; the modes' phases are independent and uniformly random, so the
+//   error at a point is a sum of independent terms with standard deviation σ = sqrt(Σ |a_k|² E(k)²) and the
+//   bound is 5σ (exceeded with probability ~1e-6 per point). G is the largest slope on the grid at that
+//   time; the factor 2 covers the displacement inversion while the horizontal map contracts by 1/2 or
+//   better (away from folding crests). worst_case_bound_m() gives the rigorous Σ |a_k| E(k), far larger.
+#pragma once
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "ocean/initial_spectrum.h"
+#include "ocean/ocean_params.h"
+
+namespace lagoon::ocean {
+
+struct WaveSample {
+  double height = 0;               // m above the mean water level, at the query's (x, z)
+  glm::dvec3 normal{0, 1, 0};      // unit surface normal
+  glm::dvec3 velocity{0, 0, 0};    // m/s, velocity of the water surface point there
+  glm::dvec2 rest_position{0, 0};  // (x, z) of the surface point before horizontal displacement
+  double error_bound_m = 0;        // bound on the height error, see above
+  bool converged = true;           // false where the inversion did not converge (folded surface)
+};
+
+class WaveQuery {
+ public:
+  explicit WaveQuery(const OceanParams& params, unsigned threads = 2);
+  WaveQuery(const OceanParams& params, std::vector<CascadeSpectrum> spectra, unsigned threads = 2);
+  ~WaveQuery();
+
+  // Samples every point at `time_s`. The fields for a new time are evaluated first (cached for the next
+  // call).
+  std::vector<WaveSample> sample(double time_s, std::span<const glm::dvec2> points);
+  WaveSample sample(double time_s, double x, double z);
+
+  // The interpolation bounds B_h and B_D (time-independent, 5σ) and the rigorous worst case for the height.
+  double height_interpolation_bound_m() const { return bound_height_; }
+  double displacement_interpolation_bound_m() const { return bound_displacement_; }
+  double worst_case_bound_m() const { return worst_case_height_; }
+
+ private:
+  struct Grid;
+  void evaluate(double time_s);
+  glm::dvec2 displacement(glm::dvec2 p) const;
+
+  OceanParams params_;
+  std::vector<CascadeSpectrum> spectra_;
+  unsigned threads_;
+  std::vector<std::unique_ptr<Grid>> grids_;
+  double time_s_ = 0;
+  bool evaluated_ = false;
+  double max_slope_ = 0;
+  double bound_height_ = 0, bound_displacement_ = 0, worst_case_height_ = 0;
+};
+
+// Largest error of periodic Catmull-Rom interpolation of e^{iθm} (unit samples), |θ| <= π, and the
+// interpolator's Lebesgue constant: the ingredients of the bound, exposed for tests.
+double catmull_rom_exponential_error(double theta);
+double catmull_rom_lebesgue_constant();
+
+}  // namespace lagoon::ocean

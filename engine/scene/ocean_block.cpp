@@ -1,0 +1,92 @@
+#include "scene/ocean_block.h"
+
+#include <initializer_list>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace lagoon::scene {
+namespace {
+
+// Names come from ocean::to_string so the file format and the rest of the code spell them one way.
+template <typename E>
+std::vector<std::pair<std::string, E>> named(std::initializer_list<E> values) {
+  std::vector<std::pair<std::string, E>> options;
+  for (E v : values) options.emplace_back(ocean::to_string(v), v);
+  return options;
+}
+
+void read_spectrum(ObjectReader& r, ocean::SpectrumParams& s) {
+  using ocean::SpectrumType;
+  r.choice("type", s.type,
+           named({SpectrumType::Jonswap, SpectrumType::PiersonMoskowitz, SpectrumType::Phillips,
+                  SpectrumType::Tma}),
+           "Wave spectrum: how wave energy is spread over wavelengths (see Ocean below).");
+  r.number("wind_speed_mps", s.wind_speed_mps, Bounds::above_up_to(0, 60), "m/s",
+           "Wind speed 10 m above the surface (U10); sets the wave height and the peak wavelength.");
+  r.number("wind_direction_deg", s.wind_direction_deg, Bounds::between(0, 360), "deg",
+           "Direction the wind blows towards, clockwise from +z (north) toward +x (east); 90 = toward east.");
+  r.number("fetch_km", s.fetch_km, Bounds::above_up_to(0, 10000), "km",
+           "Distance over which the wind has blown; a short fetch gives younger, smaller, shorter waves "
+           "(jonswap, tma).");
+  r.number("gamma", s.gamma, Bounds::between(1, 20), "",
+           "Peak enhancement: how sharply energy gathers at the peak wavelength; 1 = the pm shape (jonswap, "
+           "tma).");
+  using ocean::Spreading;
+  r.choice("spreading", s.spreading, named({Spreading::Cos2, Spreading::Cos2s, Spreading::DonelanBanner}),
+           "Directional spreading: how wave energy fans out around the wind direction (see Ocean below).");
+  r.number("swell", s.swell, Bounds::between(0, 1), "",
+           "Swell: 0 = pure wind sea; toward 1 the crests of long waves get longer and more parallel.");
+  r.number("small_wave_cutoff_m", s.small_wave_cutoff_m, Bounds::between(0, 10), "m",
+           "Damping length l: the spectrum is multiplied by exp(-k²l²), removing waves much shorter than l; "
+           "0 = none (phillips).");
+}
+
+void read_cascade(ObjectReader& r, ocean::CascadeParams& c) {
+  r.number("patch_size_m", c.patch_size_m, Bounds::above_up_to(0, 100000), "m",
+           "Side of the square tile this cascade's waves repeat over.");
+  r.power_of_two(
+      "resolution", c.resolution, 64, 1024, "",
+      "Samples per tile side (FFT size N); the shortest wave it holds is 2 * patch_size_m / N long.");
+}
+
+void read_foam(ObjectReader& r, ocean::FoamParams& f) {
+  r.number("threshold", f.threshold, Bounds::between(-1, 2), "",
+           "Foam forms where the surface Jacobian J (1 = flat, < 1 squeezed, <= 0 folded over) is below "
+           "this, at rate clamp(threshold - J, 0, 1); higher = more foam.");
+  r.number("decay_per_s", f.decay_per_s, Bounds::between(0, 100), "1/s",
+           "How fast foam fades: it is multiplied by exp(-decay_per_s * dt); 0 = foam never fades.");
+}
+
+}  // namespace
+
+void read_ocean(ObjectReader& r, ocean::OceanParams& o) {
+  r.integer("seed", o.seed, Bounds::between(0, 4294967295.0), "",
+            "Random seed of the wave amplitudes and phases; the same seed and fields give the same sea.");
+  r.number(
+      "depth_m", o.depth_m, Bounds::above_up_to(0, 11000), "m",
+      "Water depth: slows long waves (finite-depth dispersion) and shapes the tma spectrum; a few hundred "
+      "metres and more is deep water for all but the longest swell.");
+  r.number("choppiness", o.choppiness, Bounds::between(0, 5), "",
+           "Horizontal displacement scale: sharpens crests and widens troughs; 0 = points only move up and "
+           "down, large values fold crests over (which makes foam).");
+  r.number("loop_period_s", o.loop_period_s, Bounds::between(0, 3600), "s",
+           "If > 0, wave frequencies are rounded so the whole sea repeats exactly with this period (seamless "
+           "loops); 0 = no loop.");
+  r.block("spectrum", o.spectrum, read_spectrum, "Wind and wave spectrum.");
+  r.array("cascades", o.cascades, 1, 4, read_cascade,
+          "FFT tiles from the largest patch to the smallest; each renders a band of wavelengths (see Ocean "
+          "below). Given in a file, the array replaces the default list.");
+  // Checked per neighbour pair so the error names the element to fix; the docs show it once on the
+  // element row (the default list has 3 elements, so this loop also runs when describing).
+  for (size_t i = 1; i < o.cascades.size(); ++i) {
+    const double previous = o.cascades[i - 1].patch_size_m, current = o.cascades[i].patch_size_m;
+    r.rule("cascades[" + std::to_string(i) + "].patch_size_m", current < previous, "< the previous cascade's",
+           "got " + format_number(current) + " after " + format_number(previous) +
+               "; list cascades from the largest patch to the smallest, each much smaller than the last "
+               "(e.g. 1000, 100, 10)");
+  }
+  r.block("foam", o.foam, read_foam, "Whitecaps where waves fold over.");
+}
+
+}  // namespace lagoon::scene
