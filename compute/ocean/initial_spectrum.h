@@ -1,5 +1,7 @@
 // The initial (t = 0) Fourier amplitudes h0(k) and frequencies ω(k) of each FFT cascade: what the GPU
-// evolves every frame as h(k, t) = h0(k) e^{iωt} + conj(h0(-k)) e^{-iωt}.
+// evolves every frame as h(k, t) = h0(k) e^{-iωt} + conj(h0(-k)) e^{+iωt} (spectral_fields.h), so the
+// component h0(k) e^{i(k·x - ωt)} travels along k, i.e. downwind where Ψ puts its energy. Tessendorf writes
+// e^{+iωt}; the sign does not change any variance below.
 #pragma once
 #include <complex>
 #include <cstdint>

@@ -4,26 +4,33 @@ namespace lagoon::ocean {
 
 const char* to_string(SpectrumType type) {
   switch (type) {
-    case SpectrumType::Phillips: return "phillips";
-    case SpectrumType::PiersonMoskowitz: return "pm";
-    case SpectrumType::Jonswap: return "jonswap";
-    case SpectrumType::Tma: return "tma";
+    case SpectrumType::Phillips:
+      return "phillips";
+    case SpectrumType::PiersonMoskowitz:
+      return "pm";
+    case SpectrumType::Jonswap:
+      return "jonswap";
+    case SpectrumType::Tma:
+      return "tma";
   }
   return "?";
 }
 
 const char* to_string(Spreading spreading) {
   switch (spreading) {
-    case Spreading::Cos2: return "cos2";
-    case Spreading::Cos2s: return "cos2s";
-    case Spreading::DonelanBanner: return "donelan-banner";
+    case Spreading::Cos2:
+      return "cos2";
+    case Spreading::Cos2s:
+      return "cos2s";
+    case Spreading::DonelanBanner:
+      return "donelan-banner";
   }
   return "?";
 }
 
 bool from_string(const std::string& name, SpectrumType& out) {
-  for (SpectrumType t : {SpectrumType::Phillips, SpectrumType::PiersonMoskowitz, SpectrumType::Jonswap,
-                         SpectrumType::Tma})
+  for (SpectrumType t :
+       {SpectrumType::Phillips, SpectrumType::PiersonMoskowitz, SpectrumType::Jonswap, SpectrumType::Tma})
     if (name == to_string(t)) return out = t, true;
   return false;
 }

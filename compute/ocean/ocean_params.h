@@ -19,8 +19,8 @@ struct SpectrumParams {
   double fetch_km = 100.0;          // distance over which the wind has blown (JONSWAP, TMA); > 0
   double gamma = 3.3;               // JONSWAP peak enhancement; 1 gives Pierson-Moskowitz's shape
   Spreading spreading = Spreading::Cos2s;
-  double swell = 0.0;               // Horvath's swell ξ in [0, 1]: elongates crests of long waves
-  double small_wave_cutoff_m = 0.0; // Phillips' damping length l (exp(-k²l²)); 0 = none
+  double swell = 0.0;                // Horvath's swell ξ in [0, 1]: elongates crests of long waves
+  double small_wave_cutoff_m = 0.0;  // Phillips' damping length l (exp(-k²l²)); 0 = none
 };
 
 struct CascadeParams {
@@ -30,16 +30,17 @@ struct CascadeParams {
 
 struct FoamParams {
   // Foam builds where the Jacobian of the horizontal displacement J < threshold (J = 1 on undisturbed
-  // water, < 1 where the surface is compressed, <= 0 where it folds over): new foam = clamp(threshold - J, 0, 1).
+  // water, < 1 where the surface is compressed, <= 0 where it folds over): new foam = clamp(threshold - J, 0,
+  // 1).
   double threshold = 0.5;
   double decay_per_s = 0.5;  // existing foam decays as exp(-decay_per_s · dt) (persistence)
 };
 
 struct OceanParams {
   uint32_t seed = 1;
-  double depth_m = 1000.0;       // water depth for finite-depth dispersion and TMA; > 0
-  double choppiness = 1.0;       // λ: horizontal displacement scale, 0 = none
-  double loop_period_s = 0.0;    // > 0 quantises ω so every field repeats with this period; 0 = no loop
+  double depth_m = 1000.0;     // water depth for finite-depth dispersion and TMA; > 0
+  double choppiness = 1.0;     // λ: horizontal displacement scale, 0 = none
+  double loop_period_s = 0.0;  // > 0 quantises ω so every field repeats with this period; 0 = no loop
   SpectrumParams spectrum;
   std::vector<CascadeParams> cascades{{1000.0, 256}, {100.0, 256}, {10.0, 256}};
   FoamParams foam;
