@@ -9,9 +9,10 @@
 
 namespace lagoon::fft {
 
-std::vector<vk::SpecConstant> GpuFft2d::specialisation(uint32_t radix, bool columns, bool inverse) {
+std::vector<vk::SpecConstant> GpuFft2d::specialisation(uint32_t n, uint32_t ns, uint32_t radix, bool columns,
+                                                       bool inverse) {
   // 8 x 8 workgroups: neighbouring lanes read neighbouring elements in both directions (see fft_pass.comp).
-  return {{0, 8}, {1, 8}, {2, radix}, {3, columns ? 1u : 0u}, {4, inverse ? 1u : 0u}};
+  return {{0, 8}, {1, 8}, {2, radix}, {3, columns ? 1u : 0u}, {4, inverse ? 1u : 0u}, {5, n}, {6, ns}};
 }
 
 GpuFft2d::GpuFft2d(vk::Context& ctx, uint32_t n, bool inverse)
@@ -23,12 +24,11 @@ GpuFft2d::GpuFft2d(vk::Context& ctx, uint32_t n, bool inverse)
                                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                  vk::MemoryUsage::Device, "fft twiddles");
   vk::upload_buffer(ctx, twiddles_, vk::as_bytes_of(table));
-  for (uint32_t radix : radices_)
-    for (bool columns : {false, true})
-      if (!pipelines_.count({radix, columns}))
-        pipelines_.emplace(std::pair{radix, columns},
-                           vk::ComputePipeline::create(ctx, shaders::fft_fft_pass_comp,
-                                                       specialisation(radix, columns, inverse)));
+  for (size_t i = 0; i < pass_count(); ++i) {
+    const Pass p = pass(i);
+    pipelines_.push_back(vk::ComputePipeline::create(ctx, shaders::fft_fft_pass_comp,
+                                                     specialisation(n, p.ns, p.radix, p.columns, inverse)));
+  }
 }
 
 GpuFft2d::Pass GpuFft2d::pass(size_t index) const {
@@ -41,8 +41,8 @@ GpuFft2d::Pass GpuFft2d::pass(size_t index) const {
 void GpuFft2d::record_pass(VkCommandBuffer cmd, size_t index, const vk::Buffer& src, const vk::Buffer& dst,
                            uint32_t batches) const {
   const Pass p = pass(index);
-  const vk::ComputePipeline& pipeline = pipelines_.at({p.radix, p.columns});
-  const gpu::FftPush push{.n = n_, .ns = p.ns, .batches = batches, .pad = 0};
+  const vk::ComputePipeline& pipeline = pipelines_.at(index);
+  const gpu::FftPush push{.batches = batches};
   const uint32_t butterflies = n_ / p.radix;
   const std::array<uint32_t, 3> threads =
       p.columns ? std::array{n_, butterflies, batches} : std::array{butterflies, n_, batches};

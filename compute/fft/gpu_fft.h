@@ -1,8 +1,7 @@
 // Batched 2-D complex FFT of N x N arrays on the GPU: log16(N) Stockham passes along rows, then along
 // columns, ping-ponging between two buffers. Records only; never submits.
 #pragma once
-#include <map>
-#include <tuple>
+#include <vector>
 
 #include "vk/buffer.h"
 #include "vk/context.h"
@@ -37,7 +36,8 @@ class GpuFft2d {
   const vk::Buffer& twiddles() const { return twiddles_; }
 
   // The pipeline of one pass: shared with the ocean's fused passes through the same specialisation scheme.
-  static std::vector<vk::SpecConstant> specialisation(uint32_t radix, bool columns, bool inverse);
+  static std::vector<vk::SpecConstant> specialisation(uint32_t n, uint32_t ns, uint32_t radix, bool columns,
+                                                      bool inverse);
 
  private:
   vk::Context& ctx_;
@@ -45,7 +45,7 @@ class GpuFft2d {
   bool inverse_;
   std::vector<uint32_t> radices_;
   vk::Buffer twiddles_;
-  std::map<std::pair<uint32_t, bool>, vk::ComputePipeline> pipelines_;  // (radix, columns)
+  std::vector<vk::ComputePipeline> pipelines_;  // one per pass
 };
 
 }  // namespace lagoon::fft

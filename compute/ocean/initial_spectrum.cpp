@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numbers>
 #include <system_error>
 #include <thread>
@@ -28,13 +29,15 @@ namespace {
 // Fills rows iz = first, first + stride, ... of `out`.
 //
 // Amplitude scaling. The surface is η(x, t) = Σ_k h(k, t) e^{ik·x} with
-// h(k, t) = h0(k) e^{iωt} + conj(h0(-k)) e^{-iωt}, and h0 of different k independent. We want the discrete
-// sum to carry the spectrum's variance: Var η = Σ_k E|h(k)|² should equal Σ_k Ψ(k) Δk² ≈ ∫ Ψ d²k over the
-// band (Δk = 2π/L, Ψ in m⁴, Δk² in rad²/m², so Ψ Δk² is m²). Since E|h(k)|² = E|h0(k)|² + E|h0(-k)|², each
-// h0 must have E|h0(k)|² = Ψ(k) Δk² / 2. gaussian_pair gives ξr + iξi with E|ξr + iξi|² = 2, hence
+// h(k, t) = h0(k) e^{∓iωt} + conj(h0(-k)) e^{±iωt} (either sign), and h0 of different k independent. We want
+// the discrete sum to carry the spectrum's variance: Var η = Σ_k E|h(k)|² should equal Σ_k Ψ(k) Δk² ≈ ∫ Ψ d²k
+// over the band (Δk = 2π/L, Ψ in m⁴, Δk² in rad²/m², so Ψ Δk² is m²). Since E|h(k)|² = E|h0(k)|² +
+// E|h0(-k)|², each h0 must have E|h0(k)|² = Ψ(k) Δk² / 2. gaussian_pair gives ξr + iξi with E|ξr + iξi|² = 2,
+// hence
 //   h0(k) = (ξr + iξi) · sqrt(Ψ(k)) · Δk / 2.
 // Tessendorf's h0 = (ξr + iξi) sqrt(P(k)) / √2 with P = Ψ Δk² would give E|h0|² = Ψ Δk², i.e. twice the
 // variance (√2 too much amplitude), because the conj(h0(-k)) term already doubles what each mode carries.
+// (Both terms matter: E|h(k)|² = E|h0(k)|² + E|h0(-k)|² holds because h0(k) and h0(-k) are independent.)
 void fill_rows(const OceanParams& params, uint32_t cascade, const DirectionalSpectrum& spectrum,
                const DispersionModel& dispersion, int first, int stride, CascadeSpectrum& out) {
   const int n = static_cast<int>(out.resolution);

@@ -2,13 +2,17 @@
 // One invocation computes one radix-R butterfly of one line: it reads R elements spaced N/R apart, applies
 // the twiddles W^(r·(j mod Ns)·N/(Ns·R)) (table of the N roots of unity), transforms them in registers and
 // writes them Ns apart (autosort: no bit reversal pass). log_R(N) passes make a length-N transform.
-// Specialisation: constant_id 2 = FFT_RADIX (2, 4, 8 or 16), constant_id 4 = FFT_INVERSE (exp(+2πi kn/N),
-// unnormalised). Both are compile-time constants so the loops unroll and the in-register twiddles fold.
+// Specialisation: constant_id 2 = FFT_RADIX (2, 4, 8 or 16), 4 = FFT_INVERSE (exp(+2πi kn/N), unnormalised),
+// 5 = FFT_N (length), 6 = FFT_NS (this pass's Stockham stride). All compile-time constants: the loops unroll,
+// the in-register twiddles fold, and index arithmetic becomes shifts and masks (lavapipe has no vector
+// integer division: a division by a run-time value costs a scalar loop over the SIMD lanes).
 #ifndef LAGOON_COMMON_FFT_GLSL
 #define LAGOON_COMMON_FFT_GLSL
 
 layout(constant_id = 2) const int FFT_RADIX = 16;
 layout(constant_id = 4) const bool FFT_INVERSE = true;
+layout(constant_id = 5) const int FFT_N = 256;
+layout(constant_id = 6) const int FFT_NS = 1;
 const float FFT_SIGN = FFT_INVERSE ? 1.0 : -1.0;
 
 vec2 cmul(vec2 a, vec2 b) { return vec2(a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x); }
@@ -41,11 +45,11 @@ void fft_radix(inout vec2 v[FFT_RADIX]) {
   }
 }
 
-// Index helpers for butterfly j of a length-n line at Stockham stride ns.
-int fft_source_index(int j, int r, int n) { return j + r * (n / FFT_RADIX); }
-int fft_dest_index(int j, int r, int ns) { return (j / ns) * ns * FFT_RADIX + (j % ns) + r * ns; }
+// Index helpers for butterfly j of a line at this pass's stride.
+int fft_source_index(int j, int r) { return j + r * (FFT_N / FFT_RADIX); }
+int fft_dest_index(int j, int r) { return (j / FFT_NS) * FFT_NS * FFT_RADIX + (j % FFT_NS) + r * FFT_NS; }
 // Twiddle of element r of butterfly j from the table of exp(+2πi q/n), conjugated for a forward transform.
 vec2 fft_twiddle(vec2 table_entry) { return FFT_INVERSE ? table_entry : cconj(table_entry); }
-int fft_twiddle_index(int j, int r, int n, int ns) { return (j % ns) * r * (n / (ns * FFT_RADIX)); }
+int fft_twiddle_index(int j, int r) { return (j % FFT_NS) * r * (FFT_N / (FFT_NS * FFT_RADIX)); }
 
 #endif

@@ -15,8 +15,8 @@ layout(std430, binding = 2) readonly buffer Twiddles { vec2 twiddles[]; };  // e
 layout(push_constant) uniform Push { FftPush p; };
 
 void main() {
-  int n = int(p.n), ns = int(p.ns);
-  int butterflies = n / FFT_RADIX;
+  const int n = FFT_N;
+  const int butterflies = n / FFT_RADIX;
   int j = int(FFT_COLUMNS ? gl_GlobalInvocationID.y : gl_GlobalInvocationID.x);
   int line = int(FFT_COLUMNS ? gl_GlobalInvocationID.x : gl_GlobalInvocationID.y);
   int batch = int(gl_GlobalInvocationID.z);
@@ -26,9 +26,9 @@ void main() {
   int stride = FFT_COLUMNS ? n : 1;
   vec2 v[FFT_RADIX];
   for (int r = 0; r < FFT_RADIX; ++r) {
-    vec2 w = fft_twiddle(twiddles[fft_twiddle_index(j, r, n, ns)]);
-    v[r] = cmul(src[base + fft_source_index(j, r, n) * stride], w);
+    vec2 w = fft_twiddle(twiddles[fft_twiddle_index(j, r)]);
+    v[r] = cmul(src[base + fft_source_index(j, r) * stride], w);
   }
   fft_radix(v);
-  for (int r = 0; r < FFT_RADIX; ++r) dst[base + fft_dest_index(j, r, ns) * stride] = v[r];
+  for (int r = 0; r < FFT_RADIX; ++r) dst[base + fft_dest_index(j, r) * stride] = v[r];
 }

@@ -25,7 +25,7 @@ float phase(float w, float t) {
 }
 
 void main() {
-  int n = int(p.n);
+  const int n = FFT_N;
   int j = int(gl_GlobalInvocationID.x);
   int row = int(gl_GlobalInvocationID.y);
   int cascade = int(gl_GlobalInvocationID.z);
@@ -35,7 +35,7 @@ void main() {
   float kz = dk * float(row < n / 2 ? row : row - n);
   vec2 f0[FFT_RADIX], f1[FFT_RADIX], f2[FFT_RADIX], f3[FFT_RADIX];
   for (int r = 0; r < FFT_RADIX; ++r) {
-    int col = fft_source_index(j, r, n);
+    int col = fft_source_index(j, r);
     int index = (cascade * n + row) * n + col;
     vec4 pair = h0_pair[index];
     float a = phase(omega[index], p.time_s);
@@ -62,7 +62,7 @@ void main() {
   int plane = n * n;
   int base = cascade * 4 * plane + row * n;
   for (int r = 0; r < FFT_RADIX; ++r) {
-    int col = fft_dest_index(j, r, 1);
+    int col = fft_dest_index(j, r);
     dst[base + col] = f0[r];
     dst[base + plane + col] = f1[r];
     dst[base + 2 * plane + col] = f2[r];

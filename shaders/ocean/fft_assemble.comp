@@ -16,7 +16,7 @@ layout(rgba32f, binding = 3) writeonly uniform image2DArray normal_jacobian;  //
 layout(push_constant) uniform Push { OceanPush p; };
 
 void main() {
-  int n = int(p.n), ns = int(p.ns);
+  const int n = FFT_N;
   int column = int(gl_GlobalInvocationID.x);
   int j = int(gl_GlobalInvocationID.y);
   int cascade = int(gl_GlobalInvocationID.z);
@@ -26,8 +26,8 @@ void main() {
   int base = cascade * 4 * plane + column;
   vec2 f0[FFT_RADIX], f1[FFT_RADIX], f2[FFT_RADIX], f3[FFT_RADIX];
   for (int r = 0; r < FFT_RADIX; ++r) {
-    vec2 w = fft_twiddle(twiddles[fft_twiddle_index(j, r, n, ns)]);
-    int at = base + fft_source_index(j, r, n) * n;
+    vec2 w = fft_twiddle(twiddles[fft_twiddle_index(j, r)]);
+    int at = base + fft_source_index(j, r) * n;
     f0[r] = cmul(src[at], w);
     f1[r] = cmul(src[at + plane], w);
     f2[r] = cmul(src[at + 2 * plane], w);
@@ -41,7 +41,7 @@ void main() {
   float lambda = p.choppiness;
   float decay = exp(-p.foam_decay_per_s * p.dt_s);
   for (int r = 0; r < FFT_RADIX; ++r) {
-    ivec3 texel = ivec3(column, fft_dest_index(j, r, ns), cascade);
+    ivec3 texel = ivec3(column, fft_dest_index(j, r), cascade);
     float h = f0[r].y, sx = f1[r].y, sz = f2[r].x;
     float jxx = 1.0 + lambda * f2[r].y, jzz = 1.0 + lambda * f3[r].x, jxz = lambda * f3[r].y;
     float jacobian = jxx * jzz - jxz * jxz;

@@ -4,11 +4,12 @@
 #include "shared/interop.h"
 
 LAGOON_GPU_BEGIN
+// N, the Stockham stride, the radix and the direction are specialisation constants (common/fft.glsl).
 struct FftPush {
-  uint n;        // transform length N (power of two, 64..1024); arrays are N x N
-  uint ns;       // Stockham stride: product of the radices of the passes already done (1 for the first)
   uint batches;  // number of N x N arrays
-  uint pad;      // keeps the block 16 bytes; the direction is a specialisation constant (FFT_INVERSE)
+  uint pad0;
+  uint pad1;
+  uint pad2;
 };
 LAGOON_GPU_END
 

@@ -99,10 +99,12 @@ void GpuOcean::build(std::vector<CascadeSpectrum> spectra) {
     g->pong = vk::Buffer::create(ctx_, field_bytes, kStorage, vk::MemoryUsage::Device, "ocean fft pong");
     g->fft = std::make_unique<fft::GpuFft2d>(ctx_, n, /*inverse=*/true);
     const auto first = g->fft->pass(0), last = g->fft->pass(g->fft->pass_count() - 1);
-    g->evolve = vk::ComputePipeline::create(ctx_, shaders::ocean_evolve_fft_comp,
-                                            fft::GpuFft2d::specialisation(first.radix, false, true));
-    g->assemble = vk::ComputePipeline::create(ctx_, shaders::ocean_fft_assemble_comp,
-                                              fft::GpuFft2d::specialisation(last.radix, true, true));
+    g->evolve =
+        vk::ComputePipeline::create(ctx_, shaders::ocean_evolve_fft_comp,
+                                    fft::GpuFft2d::specialisation(n, first.ns, first.radix, false, true));
+    g->assemble =
+        vk::ComputePipeline::create(ctx_, shaders::ocean_fft_assemble_comp,
+                                    fft::GpuFft2d::specialisation(n, last.ns, last.radix, true, true));
     const vk::ImageDesc desc{.format = VK_FORMAT_R32G32B32A32_SFLOAT,
                              .extent = {n, n},
                              .mip_levels = 0,
@@ -132,8 +134,6 @@ void GpuOcean::record_step(VkCommandBuffer cmd, double time_s, double dt_s, vk::
   for (auto& g : groups_) {
     const uint32_t n = g->n, count = uint32_t(g->cascades.size());
     gpu::OceanPush push{.patch_size_m = {},
-                        .n = n,
-                        .ns = 1,
                         .cascades = count,
                         .reset_foam = reset_foam_ ? 1u : 0u,
                         .time_s = float(time_s),
@@ -159,7 +159,6 @@ void GpuOcean::record_step(VkCommandBuffer cmd, double time_s, double dt_s, vk::
         std::swap(src, dst);
       }
       const auto last = g->fft->pass(passes - 1);
-      push.ns = last.ns;
       for (const vk::Image* image : {&g->displacement, &g->normal_jacobian})
         vk::image_barrier(cmd, image->handle(), image->all_subresources(), VK_IMAGE_LAYOUT_GENERAL,
                           VK_IMAGE_LAYOUT_GENERAL, readers, vk::access::kComputeReadWrite);
