@@ -38,17 +38,20 @@ class GpuTimer {
   std::vector<std::string> names_;
 };
 
-// RAII scope: GpuScope s(timer, cmd, "fft");
+// RAII scope: GpuScope s(timer, cmd, "fft"); a null timer records nothing (timing is optional everywhere).
 class GpuScope {
  public:
-  GpuScope(GpuTimer& timer, VkCommandBuffer cmd, std::string_view name)
-      : timer_(timer), cmd_(cmd), scope_(timer.begin(cmd, name)) {}
-  ~GpuScope() { timer_.end(cmd_, scope_); }
+  GpuScope(GpuTimer* timer, VkCommandBuffer cmd, std::string_view name)
+      : timer_(timer), cmd_(cmd), scope_(timer ? timer->begin(cmd, name) : 0) {}
+  GpuScope(GpuTimer& timer, VkCommandBuffer cmd, std::string_view name) : GpuScope(&timer, cmd, name) {}
+  ~GpuScope() {
+    if (timer_) timer_->end(cmd_, scope_);
+  }
   GpuScope(const GpuScope&) = delete;
   GpuScope& operator=(const GpuScope&) = delete;
 
  private:
-  GpuTimer& timer_;
+  GpuTimer* timer_;
   VkCommandBuffer cmd_;
   uint32_t scope_;
 };

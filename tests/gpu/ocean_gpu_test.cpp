@@ -58,9 +58,12 @@ OceanParams test_params() {
   return p;
 }
 
-TEST_F(OceanGpu, EveryFieldMatchesTheCpuReference) {
-  const OceanParams params = test_params();
-  ocean::GpuOcean gpu_ocean(ctx(), params);
+class OceanGpuVariant : public OceanGpu, public ::testing::WithParamInterface<ocean::FftVariant> {};
+
+TEST_P(OceanGpuVariant, EveryFieldMatchesTheCpuReference) {
+  OceanParams params = test_params();
+  if (GetParam() == ocean::FftVariant::Workgroup) params.cascades.push_back({1.5, 512});  // 3 stages, radix 2
+  ocean::GpuOcean gpu_ocean(ctx(), params, GetParam());
   ocean::CpuOceanStep cpu(params, gpu_ocean.spectra(), fftw_inverse());
   // Times are exact in float, so both sides evolve to the same instant; the second step decays foam.
   const auto gpu = run_gpu(gpu_ocean, {1.25, 1.75, 2.5});
@@ -81,6 +84,12 @@ TEST_F(OceanGpu, EveryFieldMatchesTheCpuReference) {
   for (size_t i = 3; i < gpu[0].displacement.size(); i += 4) foam += gpu[0].displacement[i];
   EXPECT_GT(foam, 0.0);
 }
+
+INSTANTIATE_TEST_SUITE_P(Variants, OceanGpuVariant,
+                         ::testing::Values(ocean::FftVariant::Stockham, ocean::FftVariant::Workgroup),
+                         [](const auto& info) {
+                           return info.param == ocean::FftVariant::Stockham ? "Stockham" : "Workgroup";
+                         });
 
 TEST_F(OceanGpu, RepeatedRunsAreBitIdentical) {
   const OceanParams params = test_params();

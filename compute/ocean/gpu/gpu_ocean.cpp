@@ -20,9 +20,7 @@ struct GpuOcean::Group {
   std::vector<uint32_t> cascades;
   vk::Buffer spectrum;  // vec4 (h0(k), conj(h0(-k))) per k, cascade after cascade
   vk::Buffer omega;     // float ω(k)
-  vk::Buffer ping, pong;
-  std::unique_ptr<fft::GpuFft2d> fft;
-  vk::ComputePipeline evolve, assemble;
+  std::unique_ptr<OceanFftPath> fft;
   vk::Image displacement, normal_jacobian;
 };
 
@@ -32,15 +30,17 @@ constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_
 
 }  // namespace
 
-GpuOcean::GpuOcean(vk::Context& ctx, const OceanParams& params) : ctx_(ctx), params_(params) {
+GpuOcean::GpuOcean(vk::Context& ctx, const OceanParams& params, FftVariant variant)
+    : ctx_(ctx), params_(params), variant_(variant) {
   if (auto valid = validate(params); !valid) vk::throw_usage_error(valid.error().message);
   std::vector<CascadeSpectrum> spectra;
   for (uint32_t c = 0; c < params.cascades.size(); ++c) spectra.push_back(make_cascade_spectrum(params, c));
   build(std::move(spectra));
 }
 
-GpuOcean::GpuOcean(vk::Context& ctx, const OceanParams& params, std::vector<CascadeSpectrum> spectra)
-    : ctx_(ctx), params_(params) {
+GpuOcean::GpuOcean(vk::Context& ctx, const OceanParams& params, std::vector<CascadeSpectrum> spectra,
+                   FftVariant variant)
+    : ctx_(ctx), params_(params), variant_(variant) {
   if (spectra.size() != params.cascades.size()) vk::throw_usage_error("GpuOcean: one spectrum per cascade");
   build(std::move(spectra));
 }
@@ -94,17 +94,7 @@ void GpuOcean::build(std::vector<CascadeSpectrum> spectra) {
     g->omega = vk::Buffer::create(ctx_, omegas.size() * 4, kStorage, vk::MemoryUsage::Device, "ocean omega");
     vk::upload_buffer(ctx_, g->spectrum, vk::as_bytes_of(pairs));
     vk::upload_buffer(ctx_, g->omega, vk::as_bytes_of(omegas));
-    const VkDeviceSize field_bytes = VkDeviceSize(texels) * 8 * 4 * count;
-    g->ping = vk::Buffer::create(ctx_, field_bytes, kStorage, vk::MemoryUsage::Device, "ocean fft ping");
-    g->pong = vk::Buffer::create(ctx_, field_bytes, kStorage, vk::MemoryUsage::Device, "ocean fft pong");
-    g->fft = std::make_unique<fft::GpuFft2d>(ctx_, n, /*inverse=*/true);
-    const auto first = g->fft->pass(0), last = g->fft->pass(g->fft->pass_count() - 1);
-    g->evolve =
-        vk::ComputePipeline::create(ctx_, shaders::ocean_evolve_fft_comp,
-                                    fft::GpuFft2d::specialisation(n, first.ns, first.radix, false, true));
-    g->assemble =
-        vk::ComputePipeline::create(ctx_, shaders::ocean_fft_assemble_comp,
-                                    fft::GpuFft2d::specialisation(n, last.ns, last.radix, true, true));
+    g->fft = make_ocean_fft_path(ctx_, variant_, n, count);
     const vk::ImageDesc desc{.format = VK_FORMAT_R32G32B32A32_SFLOAT,
                              .extent = {n, n},
                              .mip_levels = 0,
@@ -144,33 +134,12 @@ void GpuOcean::record_step(VkCommandBuffer cmd, double time_s, double dt_s, vk::
     for (uint32_t layer = 0; layer < count; ++layer)
       push.patch_size_m[layer] = float(spectra_[g->cascades[layer]].patch_size_m);
 
-    const size_t passes = g->fft->pass_count();
+    for (const vk::Image* image : {&g->displacement, &g->normal_jacobian})
+      vk::image_barrier(cmd, image->handle(), image->all_subresources(), VK_IMAGE_LAYOUT_GENERAL,
+                        VK_IMAGE_LAYOUT_GENERAL, readers, vk::access::kComputeReadWrite);
+    g->fft->record(cmd, {&g->spectrum, &g->omega, &g->displacement, &g->normal_jacobian}, push, timer);
     {
-      std::optional<vk::GpuScope> scope;
-      if (timer) scope.emplace(*timer, cmd, "ocean fft " + std::to_string(n));
-      const auto first = g->fft->pass(0);
-      vk::dispatch(cmd, g->evolve, {vk::bind(0, g->spectrum), vk::bind(1, g->omega), vk::bind(2, g->ping)},
-                   push, vk::groups_for(g->evolve, {n / first.radix, n, count}));
-      vk::memory_barrier(cmd, vk::access::kComputeReadWrite, vk::access::kComputeReadWrite);
-      const vk::Buffer* src = &g->ping;
-      const vk::Buffer* dst = &g->pong;
-      for (size_t i = 1; i + 1 < passes; ++i) {
-        g->fft->record_pass(cmd, i, *src, *dst, 4 * count);
-        std::swap(src, dst);
-      }
-      const auto last = g->fft->pass(passes - 1);
-      for (const vk::Image* image : {&g->displacement, &g->normal_jacobian})
-        vk::image_barrier(cmd, image->handle(), image->all_subresources(), VK_IMAGE_LAYOUT_GENERAL,
-                          VK_IMAGE_LAYOUT_GENERAL, readers, vk::access::kComputeReadWrite);
-      vk::dispatch(cmd, g->assemble,
-                   {vk::bind(0, *src), vk::bind(1, g->fft->twiddles()),
-                    vk::bind(2, vk::ImageRef{g->displacement.mip_view(0), VK_IMAGE_LAYOUT_GENERAL}),
-                    vk::bind(3, vk::ImageRef{g->normal_jacobian.mip_view(0), VK_IMAGE_LAYOUT_GENERAL})},
-                   push, vk::groups_for(g->assemble, {n, n / last.radix, count}));
-    }
-    {
-      std::optional<vk::GpuScope> scope;
-      if (timer) scope.emplace(*timer, cmd, "ocean mips " + std::to_string(n));
+      vk::GpuScope scope(timer, cmd, "ocean mips " + std::to_string(n));
       for (const vk::Image* image : {&g->displacement, &g->normal_jacobian})
         vk::generate_mipmaps(cmd, *image, VK_IMAGE_LAYOUT_GENERAL, vk::access::kComputeWrite, readers);
     }

@@ -1,13 +1,13 @@
 // The FFT ocean's per-frame GPU work. Once per parameter change the CPU computes h0(k) and ω(k)
-// (initial_spectrum.h) and uploads them; every step records, per group of cascades sharing a resolution:
-//   evolve + first row FFT pass  ->  remaining row and column passes  ->  last column pass + assembly
+// (initial_spectrum.h) and uploads them; every step records, per group of cascades sharing a resolution,
+// evolve -> inverse FFT of 4 packed fields -> assembly (ocean_fft_path.h: two variants, one per device kind)
 // writing per cascade (one array layer each) displacement (λDx, h, λDz, foam) and (normal, Jacobian)
 // textures, then their mip chains. Records only; the caller submits.
 #pragma once
 #include <memory>
 #include <vector>
 
-#include "fft/gpu_fft.h"
+#include "ocean/gpu/ocean_fft_path.h"
 #include "ocean/initial_spectrum.h"
 #include "ocean/ocean_params.h"
 #include "vk/context.h"
@@ -35,9 +35,10 @@ struct CascadeReadback {
 class GpuOcean {
  public:
   // Throws on invalid parameters; call validate() first for a user-facing message.
-  GpuOcean(vk::Context& ctx, const OceanParams& params);
+  GpuOcean(vk::Context& ctx, const OceanParams& params, FftVariant variant = FftVariant::Auto);
   // For tests: explicit spectra (one per cascade of `params`) instead of make_cascade_spectrum.
-  GpuOcean(vk::Context& ctx, const OceanParams& params, std::vector<CascadeSpectrum> spectra);
+  GpuOcean(vk::Context& ctx, const OceanParams& params, std::vector<CascadeSpectrum> spectra,
+           FftVariant variant = FftVariant::Auto);
   ~GpuOcean();
   GpuOcean(const GpuOcean&) = delete;
   GpuOcean& operator=(const GpuOcean&) = delete;
@@ -63,6 +64,7 @@ class GpuOcean {
 
   vk::Context& ctx_;
   OceanParams params_;
+  FftVariant variant_;
   std::vector<CascadeSpectrum> spectra_;
   std::vector<std::unique_ptr<Group>> groups_;
   std::vector<std::pair<uint32_t, uint32_t>> cascade_slots_;  // cascade -> (group, layer)

@@ -1,0 +1,120 @@
+#include "ocean/gpu/ocean_fft_path.h"
+
+#include <algorithm>
+#include <string>
+
+#include "fft/fft_plan.h"
+#include "fft/gpu_fft.h"
+#include "lagoon_shaders/shaders.h"
+#include "vk/barriers.h"
+#include "vk/pipeline.h"
+#include "vk/transfer.h"
+
+namespace lagoon::ocean {
+namespace {
+
+constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+
+vk::ImageRef storage(const vk::Image& image) {
+  return {image.mip_view(0), VK_IMAGE_LAYOUT_GENERAL};
+}
+
+class StockhamPath : public OceanFftPath {
+ public:
+  StockhamPath(vk::Context& ctx, uint32_t n, uint32_t cascades) : n_(n), fft_(ctx, n, /*inverse=*/true) {
+    const VkDeviceSize bytes = VkDeviceSize(n) * n * 8 * 4 * cascades;
+    ping_ = vk::Buffer::create(ctx, bytes, kStorage, vk::MemoryUsage::Device, "ocean fft ping");
+    pong_ = vk::Buffer::create(ctx, bytes, kStorage, vk::MemoryUsage::Device, "ocean fft pong");
+    const auto first = fft_.pass(0), last = fft_.pass(fft_.pass_count() - 1);
+    evolve_ =
+        vk::ComputePipeline::create(ctx, shaders::ocean_evolve_fft_comp,
+                                    fft::GpuFft2d::specialisation(n, first.ns, first.radix, false, true));
+    assemble_ =
+        vk::ComputePipeline::create(ctx, shaders::ocean_fft_assemble_comp,
+                                    fft::GpuFft2d::specialisation(n, last.ns, last.radix, true, true));
+  }
+
+  void record(VkCommandBuffer cmd, const OceanFftBindings& b, const gpu::OceanPush& push,
+              vk::GpuTimer* timer) const override {
+    const uint32_t count = push.cascades, passes = uint32_t(fft_.pass_count());
+    const auto first = fft_.pass(0), last = fft_.pass(passes - 1);
+    const vk::Buffer* src = &ping_;
+    const vk::Buffer* dst = &pong_;
+    {
+      vk::GpuScope s(timer, cmd, "ocean evolve+rows " + std::to_string(n_));
+      vk::dispatch(cmd, evolve_, {vk::bind(0, *b.spectrum), vk::bind(1, *b.omega), vk::bind(2, ping_)}, push,
+                   vk::groups_for(evolve_, {n_ / first.radix, n_, count}));
+      vk::memory_barrier(cmd, vk::access::kComputeReadWrite, vk::access::kComputeReadWrite);
+      for (uint32_t i = 1; i + 1 < passes; ++i) {
+        fft_.record_pass(cmd, i, *src, *dst, 4 * count);
+        std::swap(src, dst);
+      }
+    }
+    vk::GpuScope s(timer, cmd, "ocean columns+assemble " + std::to_string(n_));
+    vk::dispatch(cmd, assemble_,
+                 {vk::bind(0, *src), vk::bind(1, fft_.twiddles()), vk::bind(2, storage(*b.displacement)),
+                  vk::bind(3, storage(*b.normal_jacobian))},
+                 push, vk::groups_for(assemble_, {n_, n_ / last.radix, count}));
+  }
+
+ private:
+  uint32_t n_;
+  fft::GpuFft2d fft_;
+  vk::Buffer ping_, pong_;
+  vk::ComputePipeline evolve_, assemble_;
+};
+
+class WorkgroupPath : public OceanFftPath {
+ public:
+  WorkgroupPath(vk::Context& ctx, uint32_t n, uint32_t cascades) : n_(n), lines_(std::max(1u, 1024u / n)) {
+    const VkDeviceSize bytes = VkDeviceSize(n) * n * 8 * 4 * cascades;
+    fields_ = vk::Buffer::create(ctx, bytes, kStorage, vk::MemoryUsage::Device, "ocean fields");
+    const std::vector<float> table = fft::twiddle_table(n);
+    twiddles_ =
+        vk::Buffer::create(ctx, table.size() * 4, kStorage, vk::MemoryUsage::Device, "ocean twiddles");
+    vk::upload_buffer(ctx, twiddles_, vk::as_bytes_of(table));
+    // As many lines per workgroup as fit 32 KiB of shared memory (4 fields x N complex floats each): every
+    // workgroup is then 64 invocations.
+    const uint32_t work = n / 16;
+    const std::vector<vk::SpecConstant> rows_spec{{0, work}, {1, lines_}, {4, 1}, {5, n}, {7, lines_}};
+    const std::vector<vk::SpecConstant> columns_spec{{0, lines_}, {1, work}, {4, 1}, {5, n}, {7, lines_}};
+    rows_ = vk::ComputePipeline::create(ctx, shaders::ocean_evolve_rows_comp, rows_spec);
+    columns_ = vk::ComputePipeline::create(ctx, shaders::ocean_columns_assemble_comp, columns_spec);
+  }
+
+  void record(VkCommandBuffer cmd, const OceanFftBindings& b, const gpu::OceanPush& push,
+              vk::GpuTimer* timer) const override {
+    const uint32_t count = push.cascades;
+    {
+      vk::GpuScope s(timer, cmd, "ocean evolve+rows " + std::to_string(n_));
+      vk::dispatch(
+          cmd, rows_,
+          {vk::bind(0, *b.spectrum), vk::bind(1, *b.omega), vk::bind(2, twiddles_), vk::bind(3, fields_)},
+          push, {1, n_ / lines_, count});
+      vk::memory_barrier(cmd, vk::access::kComputeReadWrite, vk::access::kComputeReadWrite);
+    }
+    vk::GpuScope s(timer, cmd, "ocean columns+assemble " + std::to_string(n_));
+    vk::dispatch(cmd, columns_,
+                 {vk::bind(0, fields_), vk::bind(1, twiddles_), vk::bind(2, storage(*b.displacement)),
+                  vk::bind(3, storage(*b.normal_jacobian))},
+                 push, {n_ / lines_, 1, count});
+  }
+
+ private:
+  uint32_t n_, lines_;
+  vk::Buffer fields_, twiddles_;
+  vk::ComputePipeline rows_, columns_;
+};
+
+}  // namespace
+
+std::unique_ptr<OceanFftPath> make_ocean_fft_path(vk::Context& ctx, FftVariant variant, uint32_t n,
+                                                  uint32_t cascades) {
+  if (variant == FftVariant::Auto)
+    variant = ctx.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? FftVariant::Stockham
+                                                                         : FftVariant::Workgroup;
+  if (variant == FftVariant::Stockham) return std::make_unique<StockhamPath>(ctx, n, cascades);
+  return std::make_unique<WorkgroupPath>(ctx, n, cascades);
+}
+
+}  // namespace lagoon::ocean

@@ -1,0 +1,93 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// Transforms the four packed fields along columns (z), all stages, then assembles each output texel:
+// displacement (λDx, h, λDz) and foam, the normal from the slopes and the Jacobian of the horizontal map
+// x -> x + λD:  J = (1 + λ∂Dx/∂x)(1 + λ∂Dz/∂z) - (λ∂Dx/∂z)².  Foam builds where J < threshold and decays:
+// foam = max(previous · exp(-decay·dt), clamp(threshold - J, 0, 1)).
+// Workgroup: (FFT_LINES columns) x (FFT_N/16 work items), so neighbouring lanes read neighbouring columns;
+// groups (N / FFT_LINES, 1, cascades).
+#include "shared/ocean.h"
+#include "common/fft_line.glsl"
+
+layout(local_size_x_id = 0, local_size_y_id = 1) in;
+layout(constant_id = 7) const int FFT_LINES = 4;
+
+layout(std430, binding = 0) readonly buffer Src { vec2 src[]; };
+layout(std430, binding = 1) readonly buffer Twiddles { vec2 twiddles[]; };
+layout(rgba32f, binding = 2) uniform image2DArray displacement;  // (λDx, h, λDz, foam); foam read back
+layout(rgba32f, binding = 3) writeonly uniform image2DArray normal_jacobian;  // (nx, ny, nz, J)
+layout(push_constant) uniform Push { OceanPush p; };
+
+shared vec2 exchange[FFT_LINES * 4 * FFT_N];  // [line][field][element]
+
+void main() {
+  const int n = FFT_N;
+  int line = int(gl_LocalInvocationID.x);
+  int w = int(gl_LocalInvocationID.y);
+  int column = int(gl_WorkGroupID.x) * FFT_LINES + line;
+  int cascade = int(gl_WorkGroupID.z);
+  int plane = n * n, in_base = cascade * 4 * plane + column;
+
+  vec2 f0[16], f1[16], f2[16], f3[16];
+  int radix = fft_stage_radix(0);
+  for (int b = 0; b < 16 / radix; ++b) {
+    for (int r = 0; r < radix; ++r) {
+      int at = in_base + fft_read_index(fft_butterfly(w, b, radix), r, radix) * n, q = b * radix + r;
+      f0[q] = src[at];
+      f1[q] = src[at + plane];
+      f2[q] = src[at + 2 * plane];
+      f3[q] = src[at + 3 * plane];
+    }
+  }
+  int base = line * 4 * n;
+  for (int stage = 0; stage < FFT_STAGES; ++stage) {
+    radix = fft_stage_radix(stage);
+    int ns = fft_stage_stride(stage);
+    if (stage > 0) {
+      barrier();
+      for (int b = 0; b < 16 / radix; ++b) {
+        for (int r = 0; r < radix; ++r) {
+          int j = fft_butterfly(w, b, radix), at = base + fft_read_index(j, r, radix), q = b * radix + r;
+          vec2 tw = fft_twiddle(twiddles[fft_twiddle_index(j, r, radix, ns)]);
+          f0[q] = cmul(exchange[at], tw);
+          f1[q] = cmul(exchange[at + n], tw);
+          f2[q] = cmul(exchange[at + 2 * n], tw);
+          f3[q] = cmul(exchange[at + 3 * n], tw);
+        }
+      }
+      if (stage + 1 < FFT_STAGES) barrier();
+    }
+    fft_stage_registers(f0, radix);
+    fft_stage_registers(f1, radix);
+    fft_stage_registers(f2, radix);
+    fft_stage_registers(f3, radix);
+    if (stage + 1 < FFT_STAGES) {
+      for (int b = 0; b < 16 / radix; ++b) {
+        for (int r = 0; r < radix; ++r) {
+          int at = base + fft_write_index(fft_butterfly(w, b, radix), r, radix, ns), q = b * radix + r;
+          exchange[at] = f0[q];
+          exchange[at + n] = f1[q];
+          exchange[at + 2 * n] = f2[q];
+          exchange[at + 3 * n] = f3[q];
+        }
+      }
+    }
+  }
+
+  float lambda = p.choppiness;
+  float decay = exp(-p.foam_decay_per_s * p.dt_s);
+  int ns = fft_stage_stride(FFT_STAGES - 1);
+  for (int b = 0; b < 16 / radix; ++b) {
+    for (int r = 0; r < radix; ++r) {
+      int q = b * radix + r;
+      ivec3 texel = ivec3(column, fft_write_index(fft_butterfly(w, b, radix), r, radix, ns), cascade);
+      float h = f0[q].y, sx = f1[q].y, sz = f2[q].x;
+      float jxx = 1.0 + lambda * f2[q].y, jzz = 1.0 + lambda * f3[q].x, jxz = lambda * f3[q].y;
+      float jacobian = jxx * jzz - jxz * jxz;
+      float previous = p.reset_foam != 0u ? 0.0 : imageLoad(displacement, texel).w;
+      float foam = max(previous * decay, clamp(p.foam_threshold - jacobian, 0.0, 1.0));
+      imageStore(displacement, texel, vec4(lambda * f0[q].x, h, lambda * f1[q].x, foam));
+      imageStore(normal_jacobian, texel, vec4(normalize(vec3(-sx, 1.0, -sz)), jacobian));
+    }
+  }
+}
