@@ -8,12 +8,12 @@
 #include "io/png.h"
 #include "render/placeholder_renderer.h"
 #include "scene/scene.h"
+#include "scene_args.h"
 
 namespace lagoon::cli {
 namespace {
 
 int run_render(const ParsedArgs& args) {
-  const std::string scene_path = *args.get("scene");
   const std::string out_path = *args.get("out");
   if (out_path.size() < 5 || out_path.substr(out_path.size() - 4) != ".png") {
     std::fprintf(stderr, "lagoon render: --out %s must name a .png file\n", out_path.c_str());
@@ -37,13 +37,8 @@ int run_render(const ParsedArgs& args) {
     }
     overrides.push_back("time_s=" + *v);
   }
-  for (const std::string& s : args.all("set")) overrides.push_back(s);
-
-  auto scene = scene::load_scene(scene_path, overrides);
-  if (!scene) {
-    std::fprintf(stderr, "lagoon render: %s\n", scene.error().message.c_str());
-    return kExitFailure;
-  }
+  auto scene = load_scene_from_args(args, "render", overrides);
+  if (!scene) return kExitFailure;
   auto ctx = open_context();
   if (!ctx) return kExitFailure;
 
@@ -72,7 +67,7 @@ const Command& render_command() {
       .spec = {.name = "render",
                .summary = "Renders one frame of a scene headless and writes it as a PNG. The file is written "
                           "under a temporary name and renamed when complete, so a failed run leaves nothing.",
-               .options = {{"scene", "FILE", "scene JSON (see docs/scene-format.md)", true},
+               .options = {scene_option(),
                            {"out", "FILE.png", "output image; missing folders are created", true},
                            {"width", "W", "image width in pixels (same as --set render.width=W)"},
                            {"height", "H", "image height in pixels (same as --set render.height=H)"},

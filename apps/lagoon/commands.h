@@ -20,5 +20,7 @@ struct Command {
 const Command& info_command();
 const Command& render_command();
 const Command& bench_command();
+const Command& export_command();
+const Command& probe_command();
 
 }  // namespace lagoon::cli

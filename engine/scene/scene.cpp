@@ -5,6 +5,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "ocean/validate.h"
+
 #include "scene/ocean_block.h"
 
 namespace lagoon::scene {
@@ -70,6 +72,13 @@ Result<Scene> validate(const json& document, Diagnostics& diag) {
   read_scene(reader, scene);
   reader.finish();
   if (!diag.ok()) return diag.to_error();
+  // Rules across fields (cascade bands that must connect) live with the physics; report them the same way.
+  if (auto ocean_ok = ocean::validate(scene.ocean); !ocean_ok) {
+    std::istringstream lines(ocean_ok.error().message);
+    for (std::string line; std::getline(lines, line);)
+      if (!line.empty()) diag.file_error(line, "");
+    return diag.to_error();
+  }
   return scene;
 }
 

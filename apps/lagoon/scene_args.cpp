@@ -1,0 +1,27 @@
+#include "scene_args.h"
+
+#include <cstdio>
+
+namespace lagoon::cli {
+
+OptionSpec scene_option() {
+  return {"scene", "FILE", "scene JSON (see docs/scene-format.md)", true};
+}
+
+OptionSpec set_option() {
+  return {"set", "PATH=VALUE", "override a scene field, e.g. --set ocean.spectrum.type=pm (repeatable)",
+          false, true};
+}
+
+std::optional<scene::Scene> load_scene_from_args(const ParsedArgs& args, const std::string& command,
+                                                 std::vector<std::string> extra_overrides) {
+  for (const std::string& s : args.all("set")) extra_overrides.push_back(s);
+  auto scene = scene::load_scene(*args.get("scene"), extra_overrides);
+  if (!scene) {
+    std::fprintf(stderr, "lagoon %s: %s\n", command.c_str(), scene.error().message.c_str());
+    return std::nullopt;
+  }
+  return std::move(scene).value();
+}
+
+}  // namespace lagoon::cli

@@ -1,0 +1,152 @@
+// End-to-end: lagoon export and probe, their files and errors, and bad ocean parameters on every command.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "io/npy.h"
+#include "ocean/cpu_step.h"
+#include "scene/scene.h"
+#include "support/direct_sum.h"
+#include "support/fftw_reference.h"
+#include "support/run_process.h"
+#include "support/temp_dir.h"
+
+namespace lagoon::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kScene = std::string(LAGOON_SOURCE_DIR) + "/scenes/default.json";
+const std::string kSmallOcean =
+    "--set "
+    "'ocean.cascades=[{\"patch_size_m\":300,\"resolution\":64},{\"patch_size_m\":30,\"resolution\":64}]'";
+
+const std::vector<std::string> kSmallOceanOverride{
+    "ocean.cascades=[{\"patch_size_m\":300,\"resolution\":64},{\"patch_size_m\":30,\"resolution\":64}]"};
+
+ProcessResult lagoon(const std::string& args) {
+  return run_process(shell_quote(LAGOON_BINARY) + " " + args);
+}
+
+TEST(OceanCli, ExportWritesTheGpuFieldsInTheDocumentedLayout) {
+  TempDir dir;
+  const fs::path out = dir / "fields";
+  auto r = lagoon("export --scene " + kScene + " --out " + out.string() + " --frames 2 --dt 0.5 --t0 1.25 " +
+                  kSmallOcean);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::ifstream meta_file(out / "meta.json");
+  const auto meta = nlohmann::json::parse(meta_file);
+  EXPECT_EQ(meta["format_version"], 1);
+  EXPECT_EQ(meta["times_s"], nlohmann::json({1.25, 1.75}));
+  ASSERT_EQ(meta["cascades"].size(), 2u);
+  EXPECT_NEAR(meta["cascades"][0]["k_max_rad_per_m"].get<double>(), M_PI * 64 / (2 * 300.0), 1e-12);
+  EXPECT_EQ(meta["cascades"][1]["k_min_rad_per_m"], meta["cascades"][0]["k_max_rad_per_m"]);
+
+  // The same scene through the CPU reference: the exported arrays must be its fields, [frame][z][x][c].
+  auto scene = scene::load_scene(kScene, kSmallOceanOverride);
+  ASSERT_TRUE(scene) << scene.error().message;
+  std::vector<ocean::CascadeSpectrum> spectra;
+  for (uint32_t c = 0; c < 2; ++c) spectra.push_back(ocean::make_cascade_spectrum(scene->ocean, c));
+  ocean::CpuOceanStep cpu(
+      scene->ocean, spectra,
+      [](std::vector<std::complex<double>>& d, uint32_t n, uint32_t b) { fftw_2d(d, int(n), int(b), true); });
+  cpu.step(1.25, 0.0);
+  cpu.step(1.75, 0.5);
+  for (int c = 0; c < 2; ++c) {
+    const std::string prefix = "cascade" + std::to_string(c);
+    auto disp = io::read_npy(out / (prefix + "_displacement.npy"));
+    auto foam = io::read_npy(out / (prefix + "_foam.npy"));
+    auto jac = io::read_npy(out / (prefix + "_jacobian.npy"));
+    auto normal = io::read_npy(out / (prefix + "_normal.npy"));
+    ASSERT_TRUE(disp && foam && jac && normal);
+    EXPECT_EQ(disp->shape, (std::vector<size_t>{2, 64, 64, 3}));
+    EXPECT_EQ(normal->shape, (std::vector<size_t>{2, 64, 64, 3}));
+    EXPECT_EQ(jac->shape, (std::vector<size_t>{2, 64, 64}));
+    EXPECT_EQ(foam->shape, (std::vector<size_t>{2, 64, 64}));
+    const auto& ref = cpu.cascades()[c];
+    double diff = 0, norm = 0, jdiff = 0, jnorm = 0;
+    const size_t frame1 = 64 * 64;
+    for (size_t i = 0; i < frame1; ++i) {
+      for (int k = 0; k < 3; ++k) {
+        diff += std::pow(disp->data[(frame1 + i) * 3 + k] - ref.displacement[4 * i + k], 2);
+        norm += std::pow(ref.displacement[4 * i + k], 2);
+      }
+      jdiff += std::pow(jac->data[frame1 + i] - ref.normal_jacobian[4 * i + 3], 2);
+      jnorm += std::pow(ref.normal_jacobian[4 * i + 3], 2);
+    }
+    EXPECT_LT(std::sqrt(diff / norm), 1e-5) << prefix;
+    EXPECT_LT(std::sqrt(jdiff / jnorm), 1e-5) << prefix;
+  }
+  for (const auto& e : fs::directory_iterator(dir.path()))
+    EXPECT_EQ(e.path().filename(), "fields") << "staging folder left behind";
+}
+
+TEST(OceanCli, ExportErrorsLeaveNothing) {
+  TempDir dir;
+  const std::string out = (dir / "fields").string();
+  struct Case {
+    std::string args, expected;
+    int code;
+  } cases[] = {
+      {"--frames 0", "--frames 0", 2},
+      {"--dt -1", "--dt -1", 2},
+      {"--set ocean.cascades='[{\"patch_size_m\":100,\"resolution\":300}]'", "ocean.cascades[0].resolution",
+       1},
+      {"--set ocean.spectrum.wind_speed_mps=-2", "ocean.spectrum.wind_speed_mps", 1},
+      {"--set ocean.spectrum.type=jonswep", "did you mean 'jonswap'", 1},
+      {"--set ocean.spectrum.fetch_km=0", "ocean.spectrum.fetch_km", 1},
+  };
+  for (const Case& c : cases) {
+    auto r = lagoon("export --scene " + kScene + " --out " + out + " " + c.args);
+    EXPECT_EQ(r.exit_code, c.code) << c.args << "\n" << r.output;
+    EXPECT_NE(r.output.find(c.expected), std::string::npos) << c.args << "\n" << r.output;
+    if (c.code == 1) {
+      EXPECT_NE(r.output.find("default.json"), std::string::npos) << r.output;  // the file is named
+    }
+  }
+  EXPECT_TRUE(fs::is_empty(dir.path()));
+  { std::ofstream(dir / "file") << "x"; }
+  auto r = lagoon("export --scene " + kScene + " --out " + (dir / "file").string());
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("not a folder"), std::string::npos) << r.output;
+}
+
+TEST(OceanCli, ProbePrintsOneJsonObjectPerPointMatchingTheExactSum) {
+  auto r = lagoon("probe --scene " + kScene + " --time 2.5 --at 0,0 --at 17.5,-3.25 " + kSmallOcean +
+                  " --set ocean.choppiness=0");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  auto scene = scene::load_scene(kScene, kSmallOceanOverride);
+  std::vector<ocean::CascadeSpectrum> spectra;
+  for (uint32_t c = 0; c < 2; ++c) spectra.push_back(ocean::make_cascade_spectrum(scene->ocean, c));
+  std::istringstream lines(r.output);
+  std::string line;
+  int count = 0;
+  const double xs[] = {0, 17.5}, zs[] = {0, -3.25};
+  while (std::getline(lines, line)) {
+    const auto j = nlohmann::json::parse(line);
+    for (const char* key :
+         {"x", "z", "time_s", "height_m", "normal", "velocity_mps", "error_bound_m", "converged"})
+      EXPECT_TRUE(j.contains(key)) << key << " in " << line;
+    EXPECT_EQ(j["x"].get<double>(), xs[count]);
+    const double exact = direct_sum(spectra, ocean::Field::Height, 2.5, xs[count], zs[count]);
+    EXPECT_LE(std::abs(j["height_m"].get<double>() - exact), j["error_bound_m"].get<double>()) << line;
+    ++count;
+  }
+  EXPECT_EQ(count, 2);
+}
+
+TEST(OceanCli, ProbeUsageErrors) {
+  for (const char* args : {"--time 1 --at 3", "--time soon --at 1,2", "--time 1 --at 1,2,3x", "--at 1,2"}) {
+    auto r = lagoon(std::string("probe --scene ") + kScene + " " + args);
+    EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.output;
+  }
+  auto r = lagoon("probe --scene " + kScene + " --time 1 --at 1,2 --set ocean.depth_m=-5");
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("ocean.depth_m"), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace lagoon::test
