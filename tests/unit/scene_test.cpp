@@ -164,7 +164,7 @@ TEST(SceneOcean, ReadsEveryField) {
     "spectrum": {"type": "tma", "wind_speed_mps": 17.5, "wind_direction_deg": 270, "fetch_km": 0.5,
                  "gamma": 1, "spreading": "donelan-banner", "swell": 0.25, "small_wave_cutoff_m": 0.01},
     "cascades": [{"patch_size_m": 2000, "resolution": 1024}, {"patch_size_m": 250, "resolution": 512.0},
-                 {"patch_size_m": 17, "resolution": 128}, {"patch_size_m": 0.5, "resolution": 64,
+                 {"patch_size_m": 17, "resolution": 128}, {"patch_size_m": 0.75, "resolution": 64,
                  "comment": "ripples"}],
     "foam": {"threshold": -0.25, "decay_per_s": 3}
   }})"),
@@ -190,7 +190,7 @@ TEST(SceneOcean, ReadsEveryField) {
   EXPECT_EQ(o.cascades[1].resolution, 512u);
   EXPECT_EQ(o.cascades[2].patch_size_m, 17.0);
   EXPECT_EQ(o.cascades[2].resolution, 128u);
-  EXPECT_EQ(o.cascades[3].patch_size_m, 0.5);
+  EXPECT_EQ(o.cascades[3].patch_size_m, 0.75);
   EXPECT_EQ(o.cascades[3].resolution, 64u);
   EXPECT_EQ(o.foam.threshold, -0.25);
   EXPECT_EQ(o.foam.decay_per_s, 3.0);
