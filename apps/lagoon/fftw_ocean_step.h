@@ -32,7 +32,10 @@ class FftwOceanStep {
     fftwf_plan plan = nullptr;
     std::vector<float> displacement, normal_jacobian;
   };
+  void evolve(Cascade& c, float t, uint32_t row_begin, uint32_t row_end);
+  void assemble(Cascade& c, float decay, size_t begin, size_t end);
   ocean::OceanParams params_;
+  int threads_;
   std::vector<Cascade> cascades_;
 };
 

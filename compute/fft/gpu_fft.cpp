@@ -10,13 +10,14 @@
 namespace lagoon::fft {
 
 std::vector<vk::SpecConstant> GpuFft2d::specialisation(uint32_t n, uint32_t ns, uint32_t radix, bool columns,
-                                                       bool inverse) {
+                                                       bool inverse, uint32_t fields) {
   // 8 x 8 workgroups: neighbouring lanes read neighbouring elements in both directions (see fft_pass.comp).
-  return {{0, 8}, {1, 8}, {2, radix}, {3, columns ? 1u : 0u}, {4, inverse ? 1u : 0u}, {5, n}, {6, ns}};
+  return {{0, 8}, {1, 8},  {2, radix}, {3, columns ? 1u : 0u}, {4, inverse ? 1u : 0u},
+          {5, n}, {6, ns}, {8, fields}};
 }
 
-GpuFft2d::GpuFft2d(vk::Context& ctx, uint32_t n, bool inverse)
-    : ctx_(ctx), n_(n), inverse_(inverse), radices_(stockham_radices(n)) {
+GpuFft2d::GpuFft2d(vk::Context& ctx, uint32_t n, bool inverse, uint32_t fields)
+    : ctx_(ctx), n_(n), inverse_(inverse), fields_(fields), radices_(stockham_radices(n)) {
   if (!is_supported_size(n))
     vk::throw_usage_error("GpuFft2d: size " + std::to_string(n) + " is not a power of two in [64, 1024]");
   const std::vector<float> table = twiddle_table(n);
@@ -26,8 +27,8 @@ GpuFft2d::GpuFft2d(vk::Context& ctx, uint32_t n, bool inverse)
   vk::upload_buffer(ctx, twiddles_, vk::as_bytes_of(table));
   for (size_t i = 0; i < pass_count(); ++i) {
     const Pass p = pass(i);
-    pipelines_.push_back(vk::ComputePipeline::create(ctx, shaders::fft_fft_pass_comp,
-                                                     specialisation(n, p.ns, p.radix, p.columns, inverse)));
+    pipelines_.push_back(vk::ComputePipeline::create(
+        ctx, shaders::fft_fft_pass_comp, specialisation(n, p.ns, p.radix, p.columns, inverse, fields)));
   }
 }
 
@@ -42,10 +43,14 @@ void GpuFft2d::record_pass(VkCommandBuffer cmd, size_t index, const vk::Buffer& 
                            uint32_t batches) const {
   const Pass p = pass(index);
   const vk::ComputePipeline& pipeline = pipelines_.at(index);
-  const gpu::FftPush push{.batches = batches};
+  if (batches % fields_ != 0)
+    vk::throw_usage_error("GpuFft2d: batches must be a multiple of the fields per group");
+  const uint32_t groups = batches / fields_;
+  const gpu::FftPush push{.batches = groups};
   const uint32_t butterflies = n_ / p.radix;
+  // Each invocation: two butterflies of a row, or one butterfly of two columns (fft_pass.comp).
   const std::array<uint32_t, 3> threads =
-      p.columns ? std::array{n_, butterflies, batches} : std::array{butterflies, n_, batches};
+      p.columns ? std::array{n_ / 2, butterflies, groups} : std::array{butterflies / 2, n_, groups};
   vk::dispatch(cmd, pipeline, {vk::bind(0, src), vk::bind(1, dst), vk::bind(2, twiddles_)}, push,
                vk::groups_for(pipeline, threads));
   vk::memory_barrier(cmd, vk::access::kComputeReadWrite, vk::access::kComputeReadWrite);

@@ -12,7 +12,9 @@ namespace lagoon::fft {
 class GpuFft2d {
  public:
   // n: supported size (fft_plan.h); inverse: exp(+2πi kn/N) without 1/N scaling (as FFTW_BACKWARD).
-  GpuFft2d(vk::Context& ctx, uint32_t n, bool inverse);
+  // fields: arrays per batch group that one invocation transforms together, sharing its twiddles (the
+  // ocean's 4 packed fields); record()'s `batches` must then be a multiple of it.
+  GpuFft2d(vk::Context& ctx, uint32_t n, bool inverse, uint32_t fields = 1);
 
   // Transforms `batches` arrays of vec2 in `a` (row-major, array after array) using `b` as scratch. Returns
   // the buffer holding the result (a when the pass count is even, which it is for every supported n).
@@ -37,12 +39,13 @@ class GpuFft2d {
 
   // The pipeline of one pass: shared with the ocean's fused passes through the same specialisation scheme.
   static std::vector<vk::SpecConstant> specialisation(uint32_t n, uint32_t ns, uint32_t radix, bool columns,
-                                                      bool inverse);
+                                                      bool inverse, uint32_t fields = 1);
 
  private:
   vk::Context& ctx_;
   uint32_t n_;
   bool inverse_;
+  uint32_t fields_;
   std::vector<uint32_t> radices_;
   vk::Buffer twiddles_;
   std::vector<vk::ComputePipeline> pipelines_;  // one per pass

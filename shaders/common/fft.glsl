@@ -18,32 +18,7 @@ const float FFT_SIGN = FFT_INVERSE ? 1.0 : -1.0;
 vec2 cmul(vec2 a, vec2 b) { return vec2(a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x); }
 vec2 cconj(vec2 a) { return vec2(a.x, -a.y); }
 
-// In-register DFT of FFT_RADIX values as a radix-2 network with compile-time twiddles.
-void fft_radix(inout vec2 v[FFT_RADIX]) {
-  // Bit-reversal permutation; indices are constants once the loop is unrolled.
-  const int log2_radix = findMSB(FFT_RADIX);
-  for (int i = 0; i < FFT_RADIX; ++i) {
-    int j = int(bitfieldReverse(uint(i)) >> uint(32 - log2_radix));
-    if (i < j) {
-      vec2 t = v[i];
-      v[i] = v[j];
-      v[j] = t;
-    }
-  }
-  for (int len = 2; len <= FFT_RADIX; len <<= 1) {
-    int half_len = len >> 1;
-    for (int i = 0; i < FFT_RADIX; i += len) {
-      for (int k = 0; k < half_len; ++k) {
-        float angle = FFT_SIGN * 6.283185307179586 * float(k) / float(len);
-        vec2 w = vec2(cos(angle), sin(angle));
-        vec2 a = v[i + k];
-        vec2 b = cmul(v[i + k + half_len], w);
-        v[i + k] = a + b;
-        v[i + k + half_len] = a - b;
-      }
-    }
-  }
-}
+#include "common/fft_radix.glsl"
 
 // Index helpers for butterfly j of a line at this pass's stride.
 int fft_source_index(int j, int r) { return j + r * (FFT_N / FFT_RADIX); }
@@ -53,3 +28,22 @@ vec2 fft_twiddle(vec2 table_entry) { return FFT_INVERSE ? table_entry : cconj(ta
 int fft_twiddle_index(int j, int r) { return (j % FFT_NS) * r * (FFT_N / (FFT_NS * FFT_RADIX)); }
 
 #endif
+
+// The FFT_RADIX twiddles of butterfly j, from 3 table loads (W^m, W^4m, W^8m; W = exp(2πi/N)) and at
+// most 2 complex products each: a load per element costs more than the products on lavapipe.
+#define FFT_LOAD_TWIDDLES(table, j, w)                                                     \
+  {                                                                                        \
+    int m_ = ((j) % FFT_NS) * (FFT_N / (FFT_NS * FFT_RADIX));                              \
+    w[0] = vec2(1.0, 0.0);                                                                 \
+    if (FFT_RADIX > 1) w[1] = fft_twiddle(table[m_]);                                      \
+    if (FFT_RADIX > 2) w[2] = cmul(w[1], w[1]);                                            \
+    if (FFT_RADIX > 3) w[3] = cmul(w[2], w[1]);                                            \
+    if (FFT_RADIX > 4) {                                                                   \
+      w[4] = fft_twiddle(table[4 * m_]);                                                   \
+      for (int r_ = 5; r_ < 8; ++r_) w[r_] = cmul(w[4], w[r_ - 4]);                        \
+    }                                                                                      \
+    if (FFT_RADIX > 8) {                                                                   \
+      w[8] = fft_twiddle(table[8 * m_]);                                                   \
+      for (int r_ = 9; r_ < 16; ++r_) w[r_] = cmul(w[8], w[r_ - 8]);                      \
+    }                                                                                      \
+  }

@@ -31,34 +31,6 @@ int fft_twiddle_index(int j, int r, int radix, int ns) { return (j % ns) * r * (
 // Table entries are exp(+2πi q/N); a forward transform uses their conjugates.
 vec2 fft_twiddle(vec2 table_entry) { return FFT_INVERSE ? table_entry : cconj(table_entry); }
 
-// In-register DFT of v[base .. base + radix) as a radix-2 network with compile-time twiddles.
-void fft_butterfly_registers(inout vec2 v[16], int base, int radix) {
-  int log2_radix = radix == 16 ? 4 : radix == 8 ? 3 : radix == 4 ? 2 : 1;
-  for (int i = 0; i < radix; ++i) {
-    int j = int(bitfieldReverse(uint(i)) >> uint(32 - log2_radix));
-    if (i < j) {
-      vec2 t = v[base + i];
-      v[base + i] = v[base + j];
-      v[base + j] = t;
-    }
-  }
-  for (int len = 2; len <= radix; len <<= 1) {
-    int half_len = len >> 1;
-    for (int i = 0; i < radix; i += len) {
-      for (int k = 0; k < half_len; ++k) {
-        float angle = FFT_SIGN * 6.283185307179586 * float(k) / float(len);
-        vec2 a = v[base + i + k];
-        vec2 b = cmul(v[base + i + k + half_len], vec2(cos(angle), sin(angle)));
-        v[base + i + k] = a + b;
-        v[base + i + k + half_len] = a - b;
-      }
-    }
-  }
-}
-
-// All butterflies of one stage on one work item's registers.
-void fft_stage_registers(inout vec2 v[16], int radix) {
-  for (int b = 0; b < 16 / radix; ++b) fft_butterfly_registers(v, b * radix, radix);
-}
+#include "common/fft_stage16.glsl"
 
 #endif

@@ -12,7 +12,7 @@ layout(local_size_x_id = 0, local_size_y_id = 1) in;
 
 layout(std430, binding = 0) readonly buffer Spectrum { vec4 h0_pair[]; };  // (h0(k), conj(h0(-k))) per k
 layout(std430, binding = 1) readonly buffer Omega { float omega[]; };      // ω(k), rad/s
-layout(std430, binding = 2) writeonly buffer Dst { vec2 dst[]; };         // [cascade][field][z][x]
+layout(std430, binding = 2) writeonly buffer Dst { vec4 dst[]; };  // complex pairs, [cascade][field][z][x]
 layout(push_constant) uniform Push { OceanPush p; };
 
 // ω·t reduced to [-π, π] keeping the low bits of the product (exact where fma is fused).
@@ -59,13 +59,14 @@ void main() {
   fft_radix(f1);
   fft_radix(f2);
   fft_radix(f3);
+  // Ns = 1: the butterfly's outputs are contiguous; write them two complex values at a time.
   int plane = n * n;
   int base = cascade * 4 * plane + row * n;
-  for (int r = 0; r < FFT_RADIX; ++r) {
-    int col = fft_dest_index(j, r);
-    dst[base + col] = f0[r];
-    dst[base + plane + col] = f1[r];
-    dst[base + 2 * plane + col] = f2[r];
-    dst[base + 3 * plane + col] = f3[r];
+  for (int r = 0; r < FFT_RADIX; r += 2) {
+    int at = (base + fft_dest_index(j, r)) / 2;
+    dst[at] = vec4(f0[r], f0[r + 1]);
+    dst[at + plane / 2] = vec4(f1[r], f1[r + 1]);
+    dst[at + plane] = vec4(f2[r], f2[r + 1]);
+    dst[at + 3 * plane / 2] = vec4(f3[r], f3[r + 1]);
   }
 }

@@ -9,45 +9,58 @@
 
 layout(local_size_x_id = 0, local_size_y_id = 1) in;
 
-layout(std430, binding = 0) readonly buffer Src { vec2 src[]; };
+layout(std430, binding = 0) readonly buffer Src { vec4 src[]; };  // complex pairs
 layout(std430, binding = 1) readonly buffer Twiddles { vec2 twiddles[]; };
 layout(rgba32f, binding = 2) uniform image2DArray displacement;  // (λDx, h, λDz, foam); foam read back
 layout(rgba32f, binding = 3) writeonly uniform image2DArray normal_jacobian;  // (nx, ny, nz, J)
 layout(push_constant) uniform Push { OceanPush p; };
 
+// One invocation: the same butterfly of two neighbouring columns (loads move two complex values).
 void main() {
   const int n = FFT_N;
-  int column = int(gl_GlobalInvocationID.x);
+  int column = 2 * int(gl_GlobalInvocationID.x);
   int j = int(gl_GlobalInvocationID.y);
   int cascade = int(gl_GlobalInvocationID.z);
   if (j >= n / FFT_RADIX || column >= n || cascade >= int(p.cascades)) return;
 
   int plane = n * n;
   int base = cascade * 4 * plane + column;
-  vec2 f0[FFT_RADIX], f1[FFT_RADIX], f2[FFT_RADIX], f3[FFT_RADIX];
+  vec2 w[FFT_RADIX];
+  FFT_LOAD_TWIDDLES(twiddles, j, w);
+  vec2 a0[FFT_RADIX], a1[FFT_RADIX], a2[FFT_RADIX], a3[FFT_RADIX];  // column
+  vec2 b0[FFT_RADIX], b1[FFT_RADIX], b2[FFT_RADIX], b3[FFT_RADIX];  // column + 1
   for (int r = 0; r < FFT_RADIX; ++r) {
-    vec2 w = fft_twiddle(twiddles[fft_twiddle_index(j, r)]);
-    int at = base + fft_source_index(j, r) * n;
-    f0[r] = cmul(src[at], w);
-    f1[r] = cmul(src[at + plane], w);
-    f2[r] = cmul(src[at + 2 * plane], w);
-    f3[r] = cmul(src[at + 3 * plane], w);
+    int at = (base + fft_source_index(j, r) * n) / 2;
+    vec4 p0 = src[at], p1 = src[at + plane / 2], p2 = src[at + plane], p3 = src[at + 3 * plane / 2];
+    a0[r] = cmul(p0.xy, w[r]), b0[r] = cmul(p0.zw, w[r]);
+    a1[r] = cmul(p1.xy, w[r]), b1[r] = cmul(p1.zw, w[r]);
+    a2[r] = cmul(p2.xy, w[r]), b2[r] = cmul(p2.zw, w[r]);
+    a3[r] = cmul(p3.xy, w[r]), b3[r] = cmul(p3.zw, w[r]);
   }
-  fft_radix(f0);
-  fft_radix(f1);
-  fft_radix(f2);
-  fft_radix(f3);
+  fft_radix(a0);
+  fft_radix(a1);
+  fft_radix(a2);
+  fft_radix(a3);
+  fft_radix(b0);
+  fft_radix(b1);
+  fft_radix(b2);
+  fft_radix(b3);
 
   float lambda = p.choppiness;
   float decay = exp(-p.foam_decay_per_s * p.dt_s);
   for (int r = 0; r < FFT_RADIX; ++r) {
-    ivec3 texel = ivec3(column, fft_dest_index(j, r), cascade);
-    float h = f0[r].y, sx = f1[r].y, sz = f2[r].x;
-    float jxx = 1.0 + lambda * f2[r].y, jzz = 1.0 + lambda * f3[r].x, jxz = lambda * f3[r].y;
-    float jacobian = jxx * jzz - jxz * jxz;
-    float previous = p.reset_foam != 0u ? 0.0 : imageLoad(displacement, texel).w;
-    float foam = max(previous * decay, clamp(p.foam_threshold - jacobian, 0.0, 1.0));
-    imageStore(displacement, texel, vec4(lambda * f0[r].x, h, lambda * f1[r].x, foam));
-    imageStore(normal_jacobian, texel, vec4(normalize(vec3(-sx, 1.0, -sz)), jacobian));
+    int z = fft_dest_index(j, r);
+    for (int c = 0; c < 2; ++c) {
+      vec2 f0 = c == 0 ? a0[r] : b0[r], f1 = c == 0 ? a1[r] : b1[r];
+      vec2 f2 = c == 0 ? a2[r] : b2[r], f3 = c == 0 ? a3[r] : b3[r];
+      ivec3 texel = ivec3(column + c, z, cascade);
+      float h = f0.y, sx = f1.y, sz = f2.x;
+      float jxx = 1.0 + lambda * f2.y, jzz = 1.0 + lambda * f3.x, jxz = lambda * f3.y;
+      float jacobian = jxx * jzz - jxz * jxz;
+      float previous = p.reset_foam != 0u ? 0.0 : imageLoad(displacement, texel).w;
+      float foam = max(previous * decay, clamp(p.foam_threshold - jacobian, 0.0, 1.0));
+      imageStore(displacement, texel, vec4(lambda * f0.x, h, lambda * f1.x, foam));
+      imageStore(normal_jacobian, texel, vec4(normalize(vec3(-sx, 1.0, -sz)), jacobian));
+    }
   }
 }

@@ -21,7 +21,8 @@ vk::ImageRef storage(const vk::Image& image) {
 
 class StockhamPath : public OceanFftPath {
  public:
-  StockhamPath(vk::Context& ctx, uint32_t n, uint32_t cascades) : n_(n), fft_(ctx, n, /*inverse=*/true) {
+  StockhamPath(vk::Context& ctx, uint32_t n, uint32_t cascades)
+      : n_(n), fft_(ctx, n, /*inverse=*/true, /*fields=*/4) {
     const VkDeviceSize bytes = VkDeviceSize(n) * n * 8 * 4 * cascades;
     ping_ = vk::Buffer::create(ctx, bytes, kStorage, vk::MemoryUsage::Device, "ocean fft ping");
     pong_ = vk::Buffer::create(ctx, bytes, kStorage, vk::MemoryUsage::Device, "ocean fft pong");
@@ -54,7 +55,7 @@ class StockhamPath : public OceanFftPath {
     vk::dispatch(cmd, assemble_,
                  {vk::bind(0, *src), vk::bind(1, fft_.twiddles()), vk::bind(2, storage(*b.displacement)),
                   vk::bind(3, storage(*b.normal_jacobian))},
-                 push, vk::groups_for(assemble_, {n_, n_ / last.radix, count}));
+                 push, vk::groups_for(assemble_, {n_ / 2, n_ / last.radix, count}));
   }
 
  private:
