@@ -10,46 +10,65 @@
 
 namespace lagoon::ocean {
 
-std::complex<double> field_spectrum(const CascadeSpectrum& s, uint32_t ix, uint32_t iz, double time_s,
-                                    Field field) {
+namespace {
+
+// What every field of one mode is built from, computed once per mode and time.
+struct ModeState {
+  std::complex<double> h, dh_dt;
+  double kx, kz, inv_k;
+};
+
+ModeState mode_state(const CascadeSpectrum& s, uint32_t ix, uint32_t iz, double time_s) {
   const uint32_t n = s.resolution;
   const size_t i = size_t{iz} * n + ix, mirrored = size_t{(n - iz) % n} * n + (n - ix) % n;
   const std::complex<double> h0 = s.h0[i], h0m = std::conj(std::complex<double>(s.h0[mirrored]));
   const double omega = s.omega[i];
   const std::complex<double> e = std::polar(1.0, -omega * time_s);  // e^{-iωt}
-  const std::complex<double> h = h0 * e + h0m * std::conj(e);
-  const std::complex<double> dh_dt =
-      std::complex<double>(0, -omega) * h0 * e + std::complex<double>(0, omega) * h0m * std::conj(e);
   const double dk = 2.0 * std::numbers::pi / s.patch_size_m;
-  const double kx = dk * (ix < n / 2 ? double(ix) : double(ix) - n);
-  const double kz = dk * (iz < n / 2 ? double(iz) : double(iz) - n);
-  const double k = std::hypot(kx, kz), inv_k = k > 0 ? 1.0 / k : 0.0;
+  ModeState m;
+  m.h = h0 * e + h0m * std::conj(e);
+  m.dh_dt = std::complex<double>(0, -omega) * h0 * e + std::complex<double>(0, omega) * h0m * std::conj(e);
+  m.kx = dk * (ix < n / 2 ? double(ix) : double(ix) - n);
+  m.kz = dk * (iz < n / 2 ? double(iz) : double(iz) - n);
+  const double k = std::hypot(m.kx, m.kz);
+  m.inv_k = k > 0 ? 1.0 / k : 0.0;
+  return m;
+}
+
+std::complex<double> field_of(const ModeState& m, Field field) {
   const std::complex<double> I(0, 1);
   switch (field) {
     case Field::Dx:
-      return I * (kx * inv_k) * h;
+      return I * (m.kx * m.inv_k) * m.h;
     case Field::Height:
-      return h;
+      return m.h;
     case Field::Dz:
-      return I * (kz * inv_k) * h;
+      return I * (m.kz * m.inv_k) * m.h;
     case Field::SlopeX:
-      return I * kx * h;
+      return I * m.kx * m.h;
     case Field::SlopeZ:
-      return I * kz * h;
+      return I * m.kz * m.h;
     case Field::DxDx:
-      return -kx * kx * inv_k * h;
+      return -m.kx * m.kx * m.inv_k * m.h;
     case Field::DzDz:
-      return -kz * kz * inv_k * h;
+      return -m.kz * m.kz * m.inv_k * m.h;
     case Field::DxDz:
-      return -kx * kz * inv_k * h;
+      return -m.kx * m.kz * m.inv_k * m.h;
     case Field::VelocityX:
-      return I * (kx * inv_k) * dh_dt;
+      return I * (m.kx * m.inv_k) * m.dh_dt;
     case Field::VelocityY:
-      return dh_dt;
+      return m.dh_dt;
     case Field::VelocityZ:
-      return I * (kz * inv_k) * dh_dt;
+      return I * (m.kz * m.inv_k) * m.dh_dt;
   }
   return 0.0;
+}
+
+}  // namespace
+
+std::complex<double> field_spectrum(const CascadeSpectrum& s, uint32_t ix, uint32_t iz, double time_s,
+                                    Field field) {
+  return field_of(mode_state(s, ix, iz, time_s), field);
 }
 
 InverseFft2d cpu_inverse_fft(unsigned threads) {
@@ -74,16 +93,19 @@ std::vector<std::vector<double>> evaluate_fields(const CascadeSpectrum& s, doubl
   const size_t plane = size_t{n} * n;
   const uint32_t batches = uint32_t((fields.size() + 1) / 2);
   std::vector<std::complex<double>> data(plane * batches);
-  for (uint32_t b = 0; b < batches; ++b) {
-    const Field a = fields[2 * b];
-    const bool has_b = 2 * b + 1 < fields.size();
-    for (uint32_t iz = 0; iz < n; ++iz)
-      for (uint32_t ix = 0; ix < n; ++ix) {
-        std::complex<double> v = field_spectrum(s, ix, iz, time_s, a);
-        if (has_b) v += std::complex<double>(0, 1) * field_spectrum(s, ix, iz, time_s, fields[2 * b + 1]);
-        data[plane * b + size_t{iz} * n + ix] = v;
+  for (uint32_t iz = 0; iz < n; ++iz)
+    for (uint32_t ix = 0; ix < n; ++ix) {
+      const size_t i = size_t{iz} * n + ix;
+      if (s.h0[i] == std::complex<float>(0) &&
+          s.h0[size_t{(n - iz) % n} * n + (n - ix) % n] == std::complex<float>(0))
+        continue;  // outside the band (data is zero-initialised)
+      const ModeState m = mode_state(s, ix, iz, time_s);
+      for (uint32_t b = 0; b < batches; ++b) {
+        std::complex<double> v = field_of(m, fields[2 * b]);
+        if (2 * b + 1 < fields.size()) v += std::complex<double>(0, 1) * field_of(m, fields[2 * b + 1]);
+        data[plane * b + i] = v;
       }
-  }
+    }
   fft(data, n, batches);
   std::vector<std::vector<double>> out(fields.size(), std::vector<double>(plane));
   for (size_t f = 0; f < fields.size(); ++f)
