@@ -28,6 +28,16 @@ Error not_an_object(std::string_view assignment, const std::string& path, const 
                describe_value(node) + ", not an object, so it has no field '" + key + "'; " + fix};
 }
 
+// "cascades[2]" -> ("cascades", 2); anything else -> (key, npos).
+std::pair<std::string, size_t> split_index(const std::string& key) {
+  const size_t open = key.find('[');
+  if (open == std::string::npos || open == 0 || key.back() != ']') return {key, std::string::npos};
+  const std::string digits = key.substr(open + 1, key.size() - open - 2);
+  if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos || digits.size() > 6)
+    return {key, std::string::npos};
+  return {key.substr(0, open), std::stoul(digits)};
+}
+
 }  // namespace
 
 Result<Assignment> parse_assignment(std::string_view assignment) {
@@ -61,6 +71,24 @@ Result<void> apply_override(nlohmann::json& document, std::string_view assignmen
     for (size_t i = 0; i < parsed->keys.size(); ++i) {
       const std::string& key = parsed->keys[i];
       if (!node->is_object()) return not_an_object(assignment, path, *node, key);
+      // An element of an array the document has: "ocean.cascades[1].resolution=128". When the document has
+      // no such array the literal key is set and validation explains how to give the whole array instead.
+      if (const auto [name, index] = split_index(key);
+          index != std::string::npos && node->contains(name) && (*node)[name].is_array()) {
+        nlohmann::json& array = (*node)[name];
+        const std::string array_path = path.empty() ? name : path + "." + name;
+        if (index >= array.size())
+          return Error{"--set " + std::string(assignment) + ": " + array_path + " has " +
+                       std::to_string(array.size()) + " element(s), so [" + std::to_string(index) +
+                       "] does not exist; indices start at 0, or set the whole array"};
+        path = array_path + "[" + std::to_string(index) + "]";
+        if (i + 1 == parsed->keys.size()) {
+          array[index] = std::move(parsed->value);
+          break;
+        }
+        node = &array[index];
+        continue;
+      }
       path = path.empty() ? key : path + "." + key;
       if (i + 1 == parsed->keys.size()) {
         (*node)[key] = std::move(parsed->value);

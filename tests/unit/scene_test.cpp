@@ -731,20 +731,18 @@ TEST_F(SceneFileTest, OverrideOfArrayElementSuggestsWholeArray) {
                                                 "\"resolution\":256}]'"));
   EXPECT_TRUE(Contains(message, "(value from --set ocean.cascades[0].resolution=128)"));
 
-  // The file's array, not the defaults, is the one being changed.
+  // An array the file has can be indexed: the element is changed and validated like the file.
   const fs::path two =
       Write("two.json", R"({"ocean": {"cascades": [{"patch_size_m": 50}, {"patch_size_m": 5}]}})");
   overrides = {"ocean.cascades[1].patch_size_m=2"};
-  message = ErrorOf(load_scene(two, overrides));
-  EXPECT_TRUE(Contains(message, "--set 'ocean.cascades=[{\"patch_size_m\":50},{\"patch_size_m\":2}]'"));
+  auto changed = load_scene(two, overrides);
+  ASSERT_TRUE(changed) << changed.error().message;
+  EXPECT_EQ(changed->ocean.cascades[1].patch_size_m, 2.0);
 
-  // An index past the end cannot be applied; the hint still shows the array to edit.
+  // An index past the end names the array's length.
   overrides = {"ocean.cascades[7].resolution=64"};
   message = ErrorOf(load_scene(two, overrides));
-  EXPECT_TRUE(Contains(message,
-                       "ocean.cascades[7]: unknown field; a field path cannot index into an array; "
-                       "set the whole array instead, e.g. --set 'ocean.cascades=[{\"patch_size_m\":50},"
-                       "{\"patch_size_m\":5}]'"));
+  EXPECT_TRUE(Contains(message, "ocean.cascades has 2 element(s), so [7] does not exist")) << message;
 }
 
 TEST_F(SceneFileTest, OverrideIntoArrayWithDotIsAnError) {
@@ -915,6 +913,28 @@ TEST(SceneRepository, DocsExampleIsValid) {
   ASSERT_FALSE(document.is_discarded()) << example;
   Result<Scene> scene = parse_scene(document, "docs example");
   EXPECT_TRUE(scene.ok()) << scene.error().message;
+}
+
+}  // namespace
+}  // namespace lagoon::scene
+
+namespace lagoon::scene {
+namespace {
+
+TEST(SceneOverrideIndex, SetsAnElementOfAnArrayTheFileHas) {
+  nlohmann::json doc = nlohmann::json::parse(
+      R"({"ocean": {"cascades": [{"patch_size_m": 1000, "resolution": 256}, {"patch_size_m": 100, "resolution": 256}]}})");
+  ASSERT_TRUE(apply_override(doc, "ocean.cascades[1].resolution=128"));
+  EXPECT_EQ(doc["ocean"]["cascades"][1]["resolution"], 128);
+  EXPECT_EQ(doc["ocean"]["cascades"][0]["resolution"], 256);
+  ASSERT_TRUE(apply_override(doc, R"(ocean.cascades[0]={"patch_size_m": 800, "resolution": 64})"));
+  EXPECT_EQ(doc["ocean"]["cascades"][0]["patch_size_m"], 800);
+  auto past_end = apply_override(doc, "ocean.cascades[2].resolution=64");
+  ASSERT_FALSE(past_end);
+  EXPECT_NE(past_end.error().message.find("has 2 element(s)"), std::string::npos) << past_end.error().message;
+  auto parsed = parse_scene(doc, "x.json");
+  ASSERT_TRUE(parsed) << parsed.error().message;
+  EXPECT_EQ(parsed->ocean.cascades[1].resolution, 128u);
 }
 
 }  // namespace
