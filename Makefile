@@ -1,12 +1,13 @@
 # Lagoon: the README's two commands.
 #   make run   installs what is missing, builds (Release), renders scenes/default.json to out/default.png
 #   make test  the same set-up, then the whole test suite (ctest) on lavapipe with validation on
-# Other targets: build, update-golden (rewrite tests/golden/*.png from the current renderer), format, clean.
+# Other targets: build, update-golden (rewrite tests/golden/*.png from the current renderer), update-docs
+# (regenerate the field table of docs/scene-format.md), format, clean.
 BUILD_DIR ?= build
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 
-.PHONY: run test build deps configure update-golden format clean
+.PHONY: run test build deps configure update-golden update-docs format clean
 
 run: build
 	./$(BUILD_DIR)/bin/lagoon render --scene scenes/default.json --out out/default.png
@@ -26,6 +27,10 @@ deps:
 # Renders every golden image again and overwrites tests/golden/. Review the new images (git diff) before committing.
 update-golden: build
 	cd $(BUILD_DIR) && LAGOON_UPDATE_GOLDEN=1 ctest -L render --output-on-failure -j $(JOBS)
+
+# Rewrites the generated field table in docs/scene-format.md from the scene loader's field declarations.
+update-docs: build
+	LAGOON_UPDATE_DOCS=1 ./$(BUILD_DIR)/tests/unit_tests --gtest_filter=SceneRepository.DocsFieldReferenceIsUpToDate
 
 format:
 	clang-format -i $$(git ls-files '*.cpp' '*.h')

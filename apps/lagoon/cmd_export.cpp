@@ -1,6 +1,4 @@
 // lagoon export: the GPU ocean's fields for a run of frames, as .npy arrays plus meta.json.
-#include <unistd.h>
-
 #include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -14,6 +12,7 @@
 #include "ocean/gpu/gpu_ocean.h"
 #include "ocean/initial_spectrum.h"
 #include "scene_args.h"
+#include "staged_output.h"
 
 namespace lagoon::cli {
 namespace {
@@ -104,7 +103,7 @@ int run_export(const ParsedArgs& args) {
   auto scene = load_scene_from_args(args, "export", overrides);
   if (!scene) return kExitFailure;
   std::error_code ec;
-  if (fs::exists(out, ec) && !fs::is_directory(out, ec)) {
+  if (fs::exists(out, ec) && !fs::is_directory(out, ec)) {  // checked before the GPU work, not after
     std::fprintf(stderr, "lagoon export: --out %s exists and is not a folder\n", out.c_str());
     return kExitFailure;
   }
@@ -133,19 +132,19 @@ int run_export(const ParsedArgs& args) {
   if (frames > 1) std::fprintf(stderr, "\n");
   if (int status = validation_status(*ctx); status != kExitOk) return status;
 
-  // Everything goes to a staging folder next to the output first, then is moved in: a failure leaves nothing.
-  const fs::path parent = out.has_parent_path() ? out.parent_path() : fs::path(".");
-  const fs::path staging = parent / (".lagoon-export-" + std::to_string(::getpid()));
+  // Everything goes to a staging folder next to the output first: a failure leaves nothing.
+  auto staged = StagedOutput::create(out);
+  if (!staged) {
+    std::fprintf(stderr, "lagoon export: %s\n", staged.error().message.c_str());
+    return kExitFailure;
+  }
   auto fail = [&](const std::string& message) {
-    fs::remove_all(staging, ec);
     std::fprintf(stderr, "lagoon export: %s\n", message.c_str());
     return kExitFailure;
   };
-  fs::create_directories(staging, ec);
-  if (ec) return fail("cannot create " + staging.string() + ": " + ec.message());
   const std::string meta = meta_json(*scene, gpu, times).dump(2) + "\n";
-  if (auto r =
-          io::write_file_atomic(staging / "meta.json", std::as_bytes(std::span(meta.data(), meta.size())));
+  if (auto r = io::write_file_atomic(staged->file("meta.json"),
+                                     std::as_bytes(std::span(meta.data(), meta.size())));
       !r)
     return fail(r.error().message);
   for (uint32_t c = 0; c < gpu.cascade_count(); ++c) {
@@ -156,18 +155,10 @@ int run_export(const ParsedArgs& args) {
                                      {"_normal.npy", &arrays[c].normal, &vec_shape},
                                      {"_jacobian.npy", &arrays[c].jacobian, &scalar_shape},
                                      {"_foam.npy", &arrays[c].foam, &scalar_shape}})
-      if (auto r = io::write_npy(staging / (prefix + name), *data, *shape); !r)
+      if (auto r = io::write_npy(staged->file(prefix + name), *data, *shape); !r)
         return fail(r.error().message);
   }
-  fs::create_directories(out, ec);
-  if (ec) return fail("cannot create --out " + out.string() + ": " + ec.message());
-  for (const auto& entry : fs::directory_iterator(staging)) {
-    fs::rename(entry.path(), out / entry.path().filename(), ec);
-    if (ec)
-      return fail("cannot move " + entry.path().filename().string() + " into " + out.string() + ": " +
-                  ec.message());
-  }
-  fs::remove_all(staging, ec);
+  if (auto r = staged->commit(); !r) return fail(r.error().message);
   std::printf("wrote %s: %lld frame(s), %u cascade(s), on %s\n", out.c_str(), frames, gpu.cascade_count(),
               ctx->device_info().name.c_str());
   return kExitOk;

@@ -22,5 +22,6 @@ const Command& render_command();
 const Command& bench_command();
 const Command& export_command();
 const Command& probe_command();
+const Command& lut_command();
 
 }  // namespace lagoon::cli

@@ -12,9 +12,9 @@ namespace {
 using lagoon::cli::Command;
 
 const std::vector<const Command*>& commands() {
-  static const std::vector<const Command*> list{&lagoon::cli::info_command(), &lagoon::cli::render_command(),
-                                                &lagoon::cli::export_command(), &lagoon::cli::probe_command(),
-                                                &lagoon::cli::bench_command()};
+  static const std::vector<const Command*> list{
+      &lagoon::cli::info_command(),  &lagoon::cli::render_command(), &lagoon::cli::export_command(),
+      &lagoon::cli::probe_command(), &lagoon::cli::lut_command(),    &lagoon::cli::bench_command()};
   return list;
 }
 

@@ -16,6 +16,22 @@ OptionSpec set_option() {
 std::optional<scene::Scene> load_scene_from_args(const ParsedArgs& args, const std::string& command,
                                                  std::vector<std::string> extra_overrides) {
   for (const std::string& s : args.all("set")) extra_overrides.push_back(s);
+  if (!args.has("scene")) {
+    // Commands whose --scene is optional start from an empty scene: every default, plus the overrides.
+    nlohmann::json document = nlohmann::json::object();
+    for (const std::string& s : extra_overrides) {
+      if (auto applied = scene::apply_override(document, s); !applied) {
+        std::fprintf(stderr, "lagoon %s: %s\n", command.c_str(), applied.error().message.c_str());
+        return std::nullopt;
+      }
+    }
+    auto scene = scene::parse_scene(document, "(command line)");
+    if (!scene) {
+      std::fprintf(stderr, "lagoon %s: %s\n", command.c_str(), scene.error().message.c_str());
+      return std::nullopt;
+    }
+    return std::move(scene).value();
+  }
   auto scene = scene::load_scene(*args.get("scene"), extra_overrides);
   if (!scene) {
     std::fprintf(stderr, "lagoon %s: %s\n", command.c_str(), scene.error().message.c_str());

@@ -8,6 +8,7 @@
 #include "ocean/validate.h"
 
 #include "scene/ocean_block.h"
+#include "scene/water_block.h"
 
 namespace lagoon::scene {
 namespace {
@@ -54,6 +55,8 @@ void read_scene(ObjectReader& r, Scene& s) {
   r.block("camera", s.camera, read_camera, "Viewpoint and projection.");
   r.block("sun", s.sun, read_sun, "Direction and strength of sunlight.");
   r.block("ocean", s.ocean, read_ocean, "Wind, waves and foam of the simulated sea.");
+  r.block("water", s.water, read_water,
+          "Optics of the water and the bottom: the colour LUTs (docs/optics.md).");
   r.block("render", s.render, read_render, "Output image settings.");
   r.number("time_s", s.time_s, Bounds::between(0, 86400), "s",
            "Simulation time of the rendered frame (at most one day: wave phases are 32-bit floats).");
@@ -129,7 +132,12 @@ Result<Scene> load_scene(const std::filesystem::path& path, std::span<const std:
     }
     if (!diag.ok()) return diag.to_error();
     Result<Scene> scene = validate(*document, diag);
-    if (scene) scene->source = path;
+    if (scene) {
+      scene->source = path;
+      // Files named by the scene are relative to the scene, not to the working directory.
+      if (!scene->water.table.empty() && std::filesystem::path(scene->water.table).is_relative())
+        scene->water.table = (path.parent_path() / scene->water.table).string();
+    }
     return scene;
   } catch (const std::exception& e) {  // defensive: a bug here must not take the app down
     return Error{path.string() + ": internal error while loading the scene: " + e.what()};

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "ocean/ocean_params.h"
+#include "optics/water_params.h"
 #include "scene/json_fields.h"
 #include "scene/overrides.h"
 #include "vk/result.h"
@@ -43,6 +44,7 @@ struct Scene {
   Camera camera;
   Sun sun;
   ocean::OceanParams ocean;
+  optics::WaterParams water;  // water.table, when relative, is resolved against the scene file's folder
   RenderSettings render;
   float time_s = 0.f;  // simulation time of the rendered frame
 };

@@ -1,7 +1,9 @@
 #include "scene/scene.h"
 
 #include <gtest/gtest.h>
+
 #include <unistd.h>
+#include <cstdlib>
 
 #include <cmath>
 #include <filesystem>
@@ -898,9 +900,14 @@ TEST(SceneRepository, DocsFieldReferenceIsUpToDate) {
   ASSERT_NE(e, std::string::npos);
   const size_t table_start = docs.find('\n', b) + 1;
   const std::string expected = to_markdown_table(scene_fields());
+  if (const char* update = std::getenv("LAGOON_UPDATE_DOCS"); update && std::string(update) == "1") {
+    std::ofstream(fs::path(LAGOON_SOURCE_DIR) / "docs" / "scene-format.md", std::ios::trunc)
+        << docs.substr(0, table_start) << expected << docs.substr(e);
+    std::printf("[ DOCS     ] rewrote the field reference in docs/scene-format.md\n");
+    return;
+  }
   EXPECT_EQ(docs.substr(table_start, e - table_start), expected)
-      << "Paste this table between the markers in docs/scene-format.md:\n"
-      << expected;
+      << "The field reference in docs/scene-format.md is out of date: run `make update-docs`";
 }
 
 TEST(SceneRepository, DocsExampleIsValid) {

@@ -1,0 +1,63 @@
+// The colour look-up tables of eq. 22: the refracted colour T_refr = a·T0·T_bottom + (1 − a)·T1 as a function
+// of r, the horizontal distance the refracted view ray travels under water, and h, the depth of the bottom
+// where it ends (docs/optics.md derives both and the path length l(r, h) = sqrt(r² + h²)).
+//
+// Units (scene-referred): linear sRGB relative to the downwelling light above the water: under the sun and
+// sky of the LUT, a white Lambertian surface above the water has RGB (1, 1, 1). The renderer multiplies by
+// the radiance it gives such a surface, and tone-maps the whole frame once.
+#pragma once
+#include <glm/vec3.hpp>
+#include <string>
+#include <vector>
+
+#include "optics/sky.h"
+#include "optics/spectrum.h"
+#include "optics/water_params.h"
+#include "optics/water_types.h"
+#include "vk/result.h"
+
+namespace lagoon::optics {
+
+struct WaterLut {
+  uint32_t r_count = 0, h_count = 0;
+  std::vector<double> r_m, h_m;  // axis values: r_m[i] = r_max (i/(R−1))², h_m[j] = h_max (j/(H−1))²
+  std::vector<float> t0;         // [r][h][4]: RGB of T0, alpha = a(r, h)
+  std::vector<float> t1;         // [r][h][3]: RGB of T1
+  glm::dvec3 deep_colour{0};     // T1 of bottomless water (h -> ∞, r = 0): the colour beyond the LUT
+  double build_ms = 0;
+};
+
+struct LutInputs {
+  WaterIops water;
+  WaterParams params;
+  SkyIrradiance sky;
+};
+
+// The seed's four-flow coefficients (S = σ(1 − X1/2)/ε, S2 = σ(1 − X1)/(2ε)) turn negative for strongly
+// forward scattering (ocean particles: X1 ≈ 2.75), giving negative light. Above X1 = 1 the scattering is
+// replaced by a similar one (same σ(1 − g), g = X1/3) with X1 = 1. Bouguer's α_l keeps the true σ.
+inline constexpr double kMaxModelX1 = 1.0;
+struct SimilarScattering {
+  double scattering_per_m, phase_x1;
+};
+SimilarScattering similarity_scaled(double scattering_per_m, double phase_x1);
+
+Result<LutInputs> lut_inputs(const WaterParams& params, double sun_elevation_deg, const SkyParams& sky = {});
+
+Result<WaterLut> build_water_lut(const LutInputs& inputs);
+
+// Everything behind one LUT entry, per wavelength (lagoon lut --explain).
+struct LutExplain {
+  double r_m = 0, h_m = 0, path_m = 0;
+  struct PerWavelength {
+    double wavelength_nm, chi, sigma, x1, k, s, s1, s2, e_sun, e_sky, alpha_l;
+    double surface_flows[4];  // G+, G−, F+, F− at τ = 0
+    double bottom_flows[4];   // at τ0
+  };
+  std::vector<PerWavelength> spectral;
+  glm::dvec3 t0{0}, t1{0};
+  double a = 0;
+};
+Result<LutExplain> explain_lut_point(const LutInputs& inputs, double r_m, double h_m);
+
+}  // namespace lagoon::optics

@@ -1,0 +1,88 @@
+// lagoon lut end to end: the files, the explanation, and bad input.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "io/npy.h"
+#include "io/png.h"
+#include "support/run_process.h"
+#include "support/temp_dir.h"
+
+namespace lagoon::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+ProcessResult lagoon(const std::string& args) {
+  return run_process(shell_quote(LAGOON_BINARY) + " " + args);
+}
+
+TEST(LutCli, WritesTablesMetadataAndPreviews) {
+  TempDir dir;
+  const fs::path out = dir / "lut";
+  auto r =
+      lagoon("lut --water jerlov-IA --out " + out.string() + " --sun-elevation 50 --set water.lut_size=32");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  auto t0 = io::read_npy(out / "T0.npy");
+  auto t1 = io::read_npy(out / "T1.npy");
+  ASSERT_TRUE(t0 && t1);
+  EXPECT_EQ(t0->shape, (std::vector<size_t>{32, 32, 4}));
+  EXPECT_EQ(t1->shape, (std::vector<size_t>{32, 32, 3}));
+  std::ifstream meta_file(out / "lut.json");
+  const auto meta = nlohmann::json::parse(meta_file);
+  EXPECT_EQ(meta["r_m"].size(), 32u);
+  EXPECT_EQ(meta["h_m"].size(), 32u);
+  EXPECT_EQ(meta["parameters"]["water_type"], "jerlov-IA");
+  EXPECT_EQ(meta["parameters"]["sun_elevation_deg"], 50.0);
+  EXPECT_TRUE(meta.contains("axes") && meta.contains("previews") && meta.contains("deep_colour_rgb"));
+  for (const char* png : {"T0.png", "T1.png"}) {
+    auto image = io::read_png(out / png);
+    ASSERT_TRUE(image) << png;
+    EXPECT_GE(image->width, 32u);
+  }
+}
+
+TEST(LutCli, ExplainPrintsEveryQuantityPerWavelength) {
+  auto r = lagoon("lut --water jerlov-II --explain 4,2.5");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto j = nlohmann::json::parse(r.output);
+  ASSERT_EQ(j["spectral"].size(), 81u);
+  const auto& w = j["spectral"][20];  // 480 nm
+  EXPECT_EQ(w["wavelength_nm"], 480.0);
+  for (const char* key :
+       {"chi", "sigma", "X1", "k", "S", "S1", "S2", "E_sun", "E_sky", "surface_coefficients",
+        "bottom_coefficients", "flows_at_surface", "flows_at_bottom", "alpha_l", "l_m"})
+    EXPECT_TRUE(w.contains(key)) << key;
+  for (const char* key : {"t_dd", "r_dd", "t_df", "r_df", "t_ff", "r_ff", "rw_dd", "rw_df", "rw_ff", "tw_ff"})
+    EXPECT_TRUE(w["surface_coefficients"].contains(key)) << key;
+  EXPECT_NEAR(j["l_m"].get<double>(), std::hypot(4.0, 2.5), 1e-12);
+  EXPECT_EQ(j["T0_rgb"].size(), 3u);
+  EXPECT_TRUE(j.contains("a") && j.contains("T1_rgb"));
+}
+
+TEST(LutCli, BadInputIsNamed) {
+  TempDir dir;
+  const std::string out = (dir / "lut").string();
+  auto unknown = lagoon("lut --water jerlov-IV --out " + out);
+  EXPECT_EQ(unknown.exit_code, 1) << unknown.output;
+  EXPECT_NE(unknown.output.find("water.type"), std::string::npos) << unknown.output;
+  EXPECT_NE(unknown.output.find("jerlov-IB"), std::string::npos) << unknown.output;
+  auto albedo = lagoon("lut --water jerlov-I --out " + out + " --set water.bottom_albedo=2");
+  EXPECT_EQ(albedo.exit_code, 1) << albedo.output;
+  EXPECT_NE(albedo.output.find("water.bottom_albedo"), std::string::npos) << albedo.output;
+  auto custom = lagoon("lut --set water.type=custom --out " + out);
+  EXPECT_EQ(custom.exit_code, 1) << custom.output;
+  EXPECT_NE(custom.output.find("water.table"), std::string::npos) << custom.output;
+  auto missing_table =
+      lagoon("lut --set water.type=custom --set water.table=/nonexistent/iops.csv --out " + out);
+  EXPECT_EQ(missing_table.exit_code, 1) << missing_table.output;
+  EXPECT_NE(missing_table.output.find("/nonexistent/iops.csv"), std::string::npos) << missing_table.output;
+  EXPECT_EQ(lagoon("lut --water jerlov-I --explain 3").exit_code, 2);
+  EXPECT_EQ(lagoon("lut --water jerlov-I").exit_code, 2);
+  EXPECT_TRUE(fs::is_empty(dir.path()));
+}
+
+}  // namespace
+}  // namespace lagoon::test
