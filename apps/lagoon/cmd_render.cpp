@@ -6,7 +6,7 @@
 #include "commands.h"
 #include "gpu_session.h"
 #include "io/png.h"
-#include "render/placeholder_renderer.h"
+#include "render/ocean_renderer.h"
 #include "scene/scene.h"
 #include "scene_args.h"
 
@@ -45,7 +45,7 @@ int run_render(const ParsedArgs& args) {
   std::vector<vk::PassTime> timings;
   io::Image8 image;
   {
-    render::PlaceholderRenderer renderer(*ctx);
+    render::OceanRenderer renderer(*ctx, *scene);
     image = renderer.render(*scene, &timings);
   }
   // A run with validation errors writes nothing: its image cannot be trusted.

@@ -72,12 +72,17 @@ glm::dvec3 adapted_linear_srgb(const Spectrum& f, const Spectrum& white) {
   return lms_to_rgb * adapted / white_balance();
 }
 
-double tone_map_luminance(double L_w, const ToneMapParams& p) {
-  if (!(L_w > 0.0) || !(p.world_adaptation_luminance > 0.0)) return 0.0;
+ToneMapCurve tone_map_curve(const ToneMapParams& p) {
   const double exponent = tumblin_gamma(p.world_adaptation_cd_m2) / tumblin_gamma(p.display_adaptation_cd_m2);
   const double m = std::pow(std::sqrt(p.display_max_contrast), exponent - 1.0);
-  const double L_d = m * std::pow(L_w / p.world_adaptation_luminance, exponent);  // in units of L_da
-  const double white = p.white_luminance;
+  return {m, exponent, p.world_adaptation_luminance, p.white_luminance};
+}
+
+double tone_map_luminance(double L_w, const ToneMapParams& p) {
+  if (!(L_w > 0.0) || !(p.world_adaptation_luminance > 0.0)) return 0.0;
+  const ToneMapCurve c = tone_map_curve(p);
+  const double L_d = c.m * std::pow(L_w / c.world_adaptation, c.exponent);  // in units of L_da
+  const double white = c.white;
   if (L_d >= white) return 1.0;
   return std::min(1.0, L_d * (1.0 + L_d / (white * white)) / (1.0 + L_d));
 }

@@ -53,6 +53,11 @@ struct ToneMapParams {
   double white_luminance = 1.5;             // L_white, in units of L_da: L_d at and above it shows as 1
 };
 double tone_map_luminance(double L_w, const ToneMapParams& params = {});  // L_df, in [0, 1]
+// The constants of that curve, for shaders that apply the same operator (L_d = m (L_w/L_wa)^exponent).
+struct ToneMapCurve {
+  double m, exponent, world_adaptation, white;
+};
+ToneMapCurve tone_map_curve(const ToneMapParams& params = {});
 // Scales the colour by L_df / L (L = linear_srgb_luminance) and clamps each channel to [0, 1]; (0,0,0)
 // for L <= 0.
 glm::dvec3 tone_map(glm::dvec3 linear_rgb, const ToneMapParams& params = {});

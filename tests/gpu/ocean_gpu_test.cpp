@@ -219,3 +219,19 @@ TEST_F(OceanGpu, SignificantWaveHeightMatchesTheSpectrum) {
 
 }  // namespace
 }  // namespace lagoon::test
+
+namespace lagoon::test {
+namespace {
+
+// Several steps recorded into one command buffer (as a warm-up does) must be correctly synchronised: the
+// validation layer's synchronization checks run in every test and fail it on a hazard.
+TEST_F(OceanGpu, StepsRecordedBackToBackAreSynchronised) {
+  ocean::GpuOcean gpu_ocean(ctx(), test_params());
+  ctx().submit_and_wait([&](VkCommandBuffer cmd) {
+    for (int i = 0; i < 3; ++i) gpu_ocean.record_step(cmd, 0.1 * i, 0.1);
+  });
+  EXPECT_GT(gpu_ocean.read_cascade(0).displacement.size(), 0u);
+}
+
+}  // namespace
+}  // namespace lagoon::test

@@ -134,6 +134,8 @@ void GpuOcean::record_step(VkCommandBuffer cmd, double time_s, double dt_s, vk::
     for (uint32_t layer = 0; layer < count; ++layer)
       push.patch_size_m[layer] = float(spectra_[g->cascades[layer]].patch_size_m);
 
+    // The previous step (possibly in the same command buffer) may still read the FFT buffers.
+    vk::memory_barrier(cmd, vk::access::kComputeReadWrite, vk::access::kComputeReadWrite);
     for (const vk::Image* image : {&g->displacement, &g->normal_jacobian})
       vk::image_barrier(cmd, image->handle(), image->all_subresources(), VK_IMAGE_LAYOUT_GENERAL,
                         VK_IMAGE_LAYOUT_GENERAL, readers, vk::access::kComputeReadWrite);

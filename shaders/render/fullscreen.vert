@@ -1,5 +1,5 @@
 #version 450
-// Full-screen triangle; the fragment shader reconstructs the view ray.
+// Full-screen triangle with the NDC position for ray reconstruction.
 layout(location = 0) out vec2 v_ndc;
 void main() {
   vec2 p = vec2((gl_VertexIndex << 1) & 2, gl_VertexIndex & 2);

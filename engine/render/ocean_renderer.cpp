@@ -1,0 +1,205 @@
+#include "render/ocean_renderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "lagoon_shaders/shaders.h"
+#include "optics/colour.h"
+#include "optics/lut.h"
+#include "render/camera.h"
+#include "shared/frame.h"
+#include "vk/barriers.h"
+#include "vk/rendering.h"
+#include "vk/sampler.h"
+#include "vk/transfer.h"
+
+namespace lagoon::render {
+namespace {
+
+constexpr float kFoamAlbedo = 0.85f;
+constexpr double kSunDiscRadiusRad = 0.00465;
+
+// The same shape as common/light.glsl's sky_shape; integrated here so the sky's E_sky is the model's.
+double sky_shape(glm::dvec3 dir, glm::dvec3 sun) {
+  const double up = std::max(dir.y, 0.0), horizon = 1.0 - up;
+  return 0.55 + 1.2 * std::pow(horizon, 4) + 0.6 * std::pow(std::max(glm::dot(dir, sun), 0.0), 12.0);
+}
+
+// (1/π) ∫ shape(ω) cos θ dω over the upper hemisphere: a uniform shape of 1 gives 1.
+double sky_shape_integral(glm::dvec3 sun) {
+  const int steps_theta = 64, steps_phi = 128;
+  double sum = 0;
+  for (int i = 0; i < steps_theta; ++i) {
+    const double theta = (i + 0.5) * (M_PI / 2) / steps_theta;
+    for (int j = 0; j < steps_phi; ++j) {
+      const double phi = (j + 0.5) * 2 * M_PI / steps_phi;
+      const glm::dvec3 dir(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
+      sum += sky_shape(dir, sun) * std::cos(theta) * std::sin(theta);
+    }
+  }
+  return sum * (M_PI / 2 / steps_theta) * (2 * M_PI / steps_phi) / M_PI;
+}
+
+vk::ImageRef sampled(const vk::Image& image, VkSampler sampler) {
+  return {image.view(), VK_IMAGE_LAYOUT_GENERAL, sampler};
+}
+
+}  // namespace
+
+OceanRenderer::OceanRenderer(vk::Context& ctx, const scene::Scene& scene)
+    : ctx_(ctx),
+      ocean_(std::make_unique<ocean::GpuOcean>(ctx, scene.ocean)),
+      sky_(vk::GraphicsPipeline::create(ctx, {.vertex = &shaders::render_fullscreen_vert,
+                                              .fragment = &shaders::render_sky_frag,
+                                              .color_formats = {kHdrFormat},
+                                              .depth_format = kDepthFormat})),
+      surface_(vk::GraphicsPipeline::create(ctx, {.vertex = &shaders::render_ocean_surface_vert,
+                                                  .fragment = &shaders::render_ocean_surface_frag,
+                                                  .color_formats = {kHdrFormat},
+                                                  .depth_format = kDepthFormat,
+                                                  .depth_test = true,
+                                                  .depth_write = true})),
+      post_(vk::GraphicsPipeline::create(ctx, {.vertex = &shaders::render_fullscreen_vert,
+                                               .fragment = &shaders::render_post_frag,
+                                               .color_formats = {kColorFormat}})),
+      frame_(vk::Buffer::create(ctx, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                                vk::MemoryUsage::Upload, "frame")),
+      // Anisotropic filtering is cheap in GPU hardware but runs in software on CPU devices.
+      repeat_sampler_(vk::create_sampler(
+          ctx, {.address = VK_SAMPLER_ADDRESS_MODE_REPEAT,
+                .max_anisotropy = ctx.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? 1.0f : 8.0f})),
+      clamp_sampler_(vk::create_sampler(ctx, {.address = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE})),
+      timer_(ctx, 32) {
+  // The deep-water colour of the scene's water under its sun (the LUTs' h -> ∞ limit).
+  optics::WaterParams water = scene.water;
+  water.lut_size = 2;
+  if (auto inputs = optics::lut_inputs(water, scene.sun.elevation_deg); inputs) {
+    if (auto lut = optics::build_water_lut(*inputs); lut) deep_colour_ = glm::vec3(lut->deep_colour);
+  }
+}
+
+OceanRenderer::~OceanRenderer() = default;
+
+void OceanRenderer::record_frame(VkCommandBuffer cmd, const scene::Scene& scene, const vk::Image& hdr,
+                                 const vk::Image& depth, const vk::Image& color) {
+  const VkExtent2D extent = hdr.extent();
+  const vk::BufferRef frame{frame_.handle()};
+  std::vector<vk::Binding> surface_bindings{vk::bind(0, frame)};
+  for (uint32_t slot = 0; slot < 4; ++slot) {
+    const ocean::CascadeTextures t = ocean_->cascade(std::min(slot, ocean_->cascade_count() - 1));
+    surface_bindings.push_back(vk::bind(1, sampled(*t.displacement, repeat_sampler_), slot));
+    surface_bindings.push_back(vk::bind(2, sampled(*t.normal_jacobian, repeat_sampler_), slot));
+  }
+  vk::image_barrier(cmd, hdr.handle(), hdr.all_subresources(), VK_IMAGE_LAYOUT_UNDEFINED,
+                    VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, vk::access::kNone,
+                    vk::access::kColorAttachmentWrite);
+  vk::image_barrier(cmd, depth.handle(), depth.all_subresources(), VK_IMAGE_LAYOUT_UNDEFINED,
+                    VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, vk::access::kNone,
+                    vk::access::kDepthAttachment);
+  {
+    vk::GpuScope scope(timer_, cmd, "sky");
+    vk::begin_rendering(cmd, extent, {{.view = hdr.view(), .clear = std::array{0.f, 0.f, 0.f, 1.f}}},
+                        vk::DepthTarget{.view = depth.view(), .clear = 1.0f});
+    vk::draw(cmd, sky_, {vk::bind(0, frame)}, 3);
+    vk::end_rendering(cmd);
+  }
+  {
+    // Separate render passes so the timestamps bracket real work on tilers such as lavapipe.
+    vk::GpuScope scope(timer_, cmd, "surface");
+    vk::begin_rendering(cmd, extent, {{.view = hdr.view()}},
+                        vk::DepthTarget{.view = depth.view(), .clear = {}});
+    const uint32_t quads = (kGridVertsPerSide - 1) * (kGridVertsPerSide - 1);
+    vk::draw(cmd, surface_, surface_bindings, nullptr, 0, quads * 6);
+    vk::end_rendering(cmd);
+  }
+  vk::image_barrier(cmd, hdr.handle(), hdr.all_subresources(), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                    VK_IMAGE_LAYOUT_GENERAL, vk::access::kColorAttachmentWrite, vk::access::kGraphicsSampled);
+  vk::image_barrier(cmd, color.handle(), color.all_subresources(), VK_IMAGE_LAYOUT_UNDEFINED,
+                    VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, vk::access::kNone,
+                    vk::access::kColorAttachmentWrite);
+  {
+    vk::GpuScope scope(timer_, cmd, "post");
+    vk::begin_rendering(cmd, extent, {{.view = color.view(), .clear = std::array{0.f, 0.f, 0.f, 1.f}}});
+    vk::draw(cmd, post_, {vk::bind(0, frame), vk::bind(1, sampled(hdr, clamp_sampler_))}, 3);
+    vk::end_rendering(cmd);
+  }
+  (void)scene;
+}
+
+io::Image8 OceanRenderer::render(const scene::Scene& scene, std::vector<vk::PassTime>* timings) {
+  const VkExtent2D extent{scene.render.width, scene.render.height};
+  const double t = scene.time_s;
+  // A still frame needs the foam a running ocean would have: run the last few seconds first.
+  if (ocean_time_ < 0 || t < ocean_time_ || t - ocean_time_ > kWarmupS) {
+    ctx_.submit_and_wait([&](VkCommandBuffer cmd) {
+      double previous = t - kWarmupS;
+      ocean_->record_step(cmd, previous, 0.0);
+      for (double step = previous + kWarmupStep; step < t - 1e-9; step += kWarmupStep) {
+        ocean_->record_step(cmd, step, step - previous);
+        previous = step;
+      }
+      ocean_time_ = previous;
+    });
+  }
+
+  const SkyLight light = sky_light(scene.sun);
+  const CameraMatrices cam = camera_matrices(scene.camera, float(extent.width) / float(extent.height));
+  const optics::ToneMapCurve curve = optics::tone_map_curve();
+  const float half_extent = std::min(0.8f * scene.camera.far_m, 3000.0f);
+  gpu::FrameUniforms f{
+      .view_proj = cam.view_proj,
+      .inv_view_proj = glm::inverse(cam.view_proj),
+      .camera_pos = glm::vec4(scene.camera.position, float(t)),
+      .sun_dir = glm::vec4(light.sun_direction, float(scene.water.ior)),
+      .sun_irradiance =
+          glm::vec4(light.sun_irradiance, float(1.0 / sky_shape_integral(glm::dvec3(light.sun_direction)))),
+      .sky_radiance = glm::vec4(light.sky_radiance, float(std::cos(kSunDiscRadiusRad))),
+      .sun_disc = glm::vec4(light.sun_disc_radiance, 0.0f),
+      .water_deep = glm::vec4(deep_colour_, kFoamAlbedo),
+      .grid = glm::vec4(half_extent, float(kGridVertsPerSide), 0.35f * half_extent,
+                        float(std::min(ocean_->cascade_count(), 4u))),
+      .post = glm::vec4(scene.render.exposure, scene.render.gamma, float(curve.m), float(curve.exponent)),
+      .post2 = glm::vec4(float(curve.white), float(curve.world_adaptation), 1.0f, 0.0f)};
+  for (uint32_t c = 0; c < std::min(ocean_->cascade_count(), 4u); ++c) {
+    const ocean::CascadeTextures tex = ocean_->cascade(c);
+    f.cascade_patch[c] = float(tex.patch_size_m);
+    f.cascade_layer[c] = float(tex.layer);
+    f.cascade_texel[c] = float(tex.patch_size_m / tex.resolution);
+  }
+  std::memcpy(frame_.mapped(), &f, sizeof(f));
+  frame_.flush();
+
+  vk::Image hdr =
+      vk::Image::create(ctx_, {.format = kHdrFormat,
+                               .extent = extent,
+                               .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                               .debug_name = "hdr"});
+  vk::Image depth = vk::Image::create(ctx_, {.format = kDepthFormat,
+                                             .extent = extent,
+                                             .usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
+                                             .debug_name = "depth"});
+  vk::Image color =
+      vk::Image::create(ctx_, {.format = kColorFormat,
+                               .extent = extent,
+                               .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                               .debug_name = "color"});
+  ctx_.submit_and_wait([&](VkCommandBuffer cmd) {
+    timer_.reset(cmd);
+    ocean_->record_step(cmd, t, t - ocean_time_, &timer_);
+    record_frame(cmd, scene, hdr, depth, color);
+  });
+  ocean_time_ = t;
+  if (timings) *timings = timer_.results();
+
+  const std::vector<std::byte> texels = vk::readback_image(
+      ctx_, color, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, vk::access::kColorAttachmentWrite);
+  io::Image8 image;
+  image.width = extent.width;
+  image.height = extent.height;
+  image.rgba.resize(texels.size());
+  std::memcpy(image.rgba.data(), texels.data(), texels.size());
+  return image;
+}
+
+}  // namespace lagoon::render

@@ -1,0 +1,26 @@
+// The frame's light, derived from the optics model's clear sky (compute/optics/sky.h) through the same
+// spectrum-to-RGB operator Φ as the water-colour LUTs, so sky, sun, objects and water agree.
+//
+// Units ("white units"): radiance relative to that of a white Lambertian surface lit by the sun and sky
+// above the water (E_d/π). The LUT colours are already in these units; the post pass tone-maps them.
+#pragma once
+#include <glm/vec3.hpp>
+
+#include "optics/sky.h"
+#include "scene/scene.h"
+
+namespace lagoon::render {
+
+struct SkyLight {
+  glm::vec3 sun_direction{0, 1, 0};  // unit vector towards the sun
+  // Irradiance from the sun on a surface facing it, and radiance of a uniform sky with the model's E_sky,
+  // both in white units (a white Lambertian surface facing up receives sun·cos Z + sky·1 → radiance 1).
+  glm::vec3 sun_irradiance{0};
+  glm::vec3 sky_radiance{0};
+  glm::vec3 sun_disc_radiance{0};  // radiance of the solar disc (0.53°), for the sky pass
+  float sun_elevation_deg = 0;
+};
+
+SkyLight sky_light(const scene::Sun& sun, const optics::SkyParams& params = {});
+
+}  // namespace lagoon::render

@@ -1,0 +1,33 @@
+// The frame's sky and sun (render/sky_light.h): a sky brighter towards the horizon and around the sun,
+// normalised so its cosine-weighted integral over the upper hemisphere is the model's E_sky.
+#ifndef LAGOON_COMMON_LIGHT_GLSL
+#define LAGOON_COMMON_LIGHT_GLSL
+
+// Unnormalised shape; the C++ side integrates the same function (ocean_renderer.cpp: sky_shape).
+float sky_shape(vec3 dir, vec3 sun) {
+  float up = max(dir.y, 0.0);
+  float horizon = 1.0 - up;
+  return 0.55 + 1.2 * horizon * horizon * horizon * horizon + 0.6 * pow(max(dot(dir, sun), 0.0), 12.0);
+}
+
+vec3 sky_radiance(FrameUniforms f, vec3 dir, bool with_sun) {
+  vec3 d = dir;
+  d.y = max(d.y, 0.0);  // below the horizon: the horizon's colour (distant sea haze)
+  d = normalize(d + vec3(0.0, 1e-4, 0.0));
+  vec3 sky = f.sky_radiance.rgb * sky_shape(d, f.sun_dir.xyz) * f.sun_irradiance.w;
+  if (with_sun && dir.y > 0.0 && dot(dir, f.sun_dir.xyz) > f.sky_radiance.w) sky += f.sun_disc.rgb;
+  return sky;
+}
+
+// Unpolarised Fresnel reflectance at a dielectric boundary, light coming from the side of index 1.
+float fresnel_dielectric(float cos_i, float ior) {
+  cos_i = clamp(cos_i, 0.0, 1.0);
+  float sin_t2 = (1.0 - cos_i * cos_i) / (ior * ior);
+  if (sin_t2 >= 1.0) return 1.0;
+  float cos_t = sqrt(1.0 - sin_t2);
+  float rs = (cos_i - ior * cos_t) / (cos_i + ior * cos_t);
+  float rp = (ior * cos_i - cos_t) / (ior * cos_i + cos_t);
+  return 0.5 * (rs * rs + rp * rp);
+}
+
+#endif

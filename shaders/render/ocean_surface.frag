@@ -1,0 +1,57 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+#include "shared/frame.h"
+#include "common/light.glsl"
+
+// The water surface: normal from the cascades' slopes, exact dielectric Fresnel between the reflected sky
+// (plus the sun's glint) and the water's own colour from the optics LUT (deep water), foam from the foam
+// textures, haze towards the horizon. Output: HDR radiance in white units.
+layout(std140, binding = 0) uniform Frame { FrameUniforms frame; };
+layout(binding = 1) uniform sampler2DArray displacement[4];
+layout(binding = 2) uniform sampler2DArray normal_jacobian[4];
+
+layout(location = 0) in vec3 v_world;
+layout(location = 1) in vec2 v_rest;
+layout(location = 0) out vec4 out_radiance;
+
+void main() {
+  // Constant indices into the sampler arrays (a loop index would be dynamic descriptor indexing).
+  vec2 slope = vec2(0.0);
+  float foam = 0.0;
+  int count = int(frame.grid.w);
+#define LAGOON_CASCADE(c)                                                        \
+  if (count > c) {                                                               \
+    vec3 uvw = vec3(v_rest / frame.cascade_patch[c], frame.cascade_layer[c]);    \
+    vec3 cn = texture(normal_jacobian[c], uvw).xyz;                              \
+    slope += -cn.xz / max(cn.y, 0.05); /* the cascade normal is (-sx, 1, -sz) */ \
+    foam = max(foam, texture(displacement[c], uvw).w);                           \
+  }
+  LAGOON_CASCADE(0)
+  LAGOON_CASCADE(1)
+  LAGOON_CASCADE(2)
+  LAGOON_CASCADE(3)
+  vec3 n = normalize(vec3(-slope.x, 1.0, -slope.y));  // slope = (∂h/∂x, ∂h/∂z) summed over cascades
+  vec3 v = normalize(frame.camera_pos.xyz - v_world);
+  if (dot(n, v) < 0.02) n = normalize(n + v * (0.02 - dot(n, v)));  // back-facing slopes seen at grazing angles
+  vec3 l = frame.sun_dir.xyz;
+  float ior = frame.sun_dir.w;
+  float fresnel = fresnel_dielectric(dot(n, v), ior);
+
+  vec3 r = reflect(-v, n);
+  vec3 reflected = sky_radiance(frame, r, false);
+  // Sun glint: normalised Blinn-Phong lobe (seed 001's model) with Fresnel at the half vector.
+  vec3 h = normalize(l + v);
+  float shininess = 800.0;
+  float glint = (shininess + 2.0) / 8.0 * pow(max(dot(n, h), 0.0), shininess) *
+                fresnel_dielectric(dot(h, v), ior) * max(dot(n, l), 0.0);
+  vec3 surface = fresnel * reflected + glint * frame.sun_irradiance.rgb + (1.0 - fresnel) * frame.water_deep.rgb;
+
+  vec3 lit_white = frame.sun_irradiance.rgb * max(dot(n, l), 0.0) + frame.sky_radiance.rgb;
+  surface = mix(surface, frame.water_deep.w * lit_white, clamp(foam, 0.0, 1.0));
+
+  // Aerial perspective: far water fades into the horizon sky.
+  float dist = length(v_world.xz - frame.camera_pos.xz);
+  float haze = 1.0 - exp(-dist / frame.grid.z);
+  surface = mix(surface, sky_radiance(frame, vec3(-v.x, 0.0, -v.z), false), haze);
+  out_radiance = vec4(surface, 1.0);
+}

@@ -1,0 +1,32 @@
+// Frame constants of the ocean renderer (engine/render/ocean_renderer.cpp). Uniform buffer, std140.
+// Radiances are in "white units" (render/sky_light.h): a white Lambertian surface under sun and sky = 1.
+#ifndef LAGOON_SHARED_FRAME_H
+#define LAGOON_SHARED_FRAME_H
+#include "shared/interop.h"
+
+LAGOON_GPU_BEGIN
+struct FrameUniforms {
+  mat4 view_proj;
+  mat4 inv_view_proj;
+  vec4 camera_pos;      // xyz metres, w = time s
+  vec4 sun_dir;         // xyz towards the sun, w = index of refraction of the water
+  vec4 sun_irradiance;  // rgb on a surface facing the sun, w = 1 / normalisation of the sky's shape
+  vec4 sky_radiance;    // rgb of a uniform sky with the model's E_sky, w = cos of the sun disc's radius
+  vec4 sun_disc;        // rgb radiance of the solar disc, w = unused
+  vec4 water_deep;      // rgb deep-water colour (LUT), w = foam albedo
+  vec4 grid;            // x = half extent m, y = vertices per side, z = haze distance m, w = cascade count
+  vec4 cascade_patch;   // patch size (m) of cascades 0..3
+  vec4 cascade_layer;   // array layer of cascades 0..3
+  vec4 cascade_texel;   // L/N (m) of cascades 0..3
+  vec4 post;            // x = exposure, y = display gamma, z = tone-map m, w = tone-map exponent
+  vec4 post2;           // x = tone-map white, y = tone-map world adaptation, z = tone map on (1) / clamp (0)
+};
+LAGOON_GPU_END
+
+#ifdef __cplusplus
+LAGOON_CHECK_SIZE(FrameUniforms, 320);
+LAGOON_CHECK_OFFSET(FrameUniforms, camera_pos, 128);
+LAGOON_CHECK_OFFSET(FrameUniforms, water_deep, 208);
+LAGOON_CHECK_OFFSET(FrameUniforms, post2, 304);
+#endif
+#endif

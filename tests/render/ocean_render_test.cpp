@@ -1,0 +1,93 @@
+// The frame renderer on lavapipe: a golden image with a declared tolerance, and properties that hold
+// whatever the golden file says.
+#include <gtest/gtest.h>
+
+#include "optics/lut.h"
+#include "render/ocean_renderer.h"
+#include "support/image_compare.h"
+#include "support/vk_fixture.h"
+
+namespace lagoon::test {
+namespace {
+
+class OceanRender : public GpuTest {
+ protected:
+  scene::Scene load(std::vector<std::string> overrides = {}) {
+    overrides.insert(overrides.begin(), {"render.width=160", "render.height=90"});
+    auto s = scene::load_scene(std::string(LAGOON_SOURCE_DIR) + "/scenes/default.json", overrides);
+    EXPECT_TRUE(s) << s.error().message;
+    return *s;
+  }
+  io::Image8 render(const scene::Scene& s) {
+    render::OceanRenderer renderer(ctx(), s);
+    return renderer.render(s);
+  }
+};
+
+glm::dvec3 mean_rgb(const io::Image8& img, uint32_t y0, uint32_t y1) {
+  glm::dvec3 sum(0);
+  for (uint32_t y = y0; y < y1; ++y)
+    for (uint32_t x = 0; x < img.width; ++x)
+      sum += glm::dvec3(img.pixel(x, y)[0], img.pixel(x, y)[1], img.pixel(x, y)[2]);
+  return sum / (double(y1 - y0) * img.width);
+}
+
+TEST_F(OceanRender, DefaultSceneMatchesGolden) {
+  const io::Image8 image = render(load());
+  // lavapipe is deterministic for a given Mesa build; the tolerance absorbs other LLVM/Mesa versions.
+  const CompareOptions tolerance{.channel_tolerance = 3, .max_differing_fraction = 0.01, .min_psnr_db = 35.0};
+  EXPECT_TRUE(matches_golden(image, std::string(LAGOON_SOURCE_DIR) + "/tests/golden/default_160x90.png",
+                             tolerance, std::string(LAGOON_TEST_ARTIFACTS) + "/render"));
+}
+
+TEST_F(OceanRender, SkyAboveWaterBelowAndDeterministic) {
+  const scene::Scene s = load();
+  const io::Image8 a = render(s), b = render(s);
+  EXPECT_EQ(a.rgba, b.rgba) << "two renders of the same scene differ";
+  const glm::dvec3 sky = mean_rgb(a, 0, 10), water = mean_rgb(a, 80, 90);
+  EXPECT_GT(sky.b, sky.r + 10) << "the sky is not blue";
+  EXPECT_LT(water.g, sky.g) << "the water is not darker than the sky";
+  for (size_t i = 3; i < a.rgba.size(); i += 4) ASSERT_EQ(a.rgba[i], 255);
+}
+
+TEST_F(OceanRender, TimeMovesTheWavesButNotTheSky) {
+  const io::Image8 t0 = render(load({"time_s=10"})), t1 = render(load({"time_s=12.5"}));
+  EXPECT_NEAR(mean_rgb(t0, 0, 10).b, mean_rgb(t1, 0, 10).b, 0.01);
+  long changed = 0;
+  for (uint32_t y = 50; y < 90; ++y)
+    for (uint32_t x = 0; x < t0.width; ++x)
+      if (std::abs(t0.pixel(x, y)[2] - t1.pixel(x, y)[2]) > 2) ++changed;
+  EXPECT_GT(changed, 160 * 40 / 10) << "the water did not move between t = 10 and t = 12.5 s";
+}
+
+TEST_F(OceanRender, ExposureBrightensTheFrame) {
+  const io::Image8 dim = render(load({"render.exposure=0.5"})), bright = render(load({"render.exposure=2"}));
+  EXPECT_GT(mean_rgb(bright, 0, 90).g, mean_rgb(dim, 0, 90).g + 10);
+}
+
+// Looking down into open water, the colour follows the LUT's deep colour of the water type: clear ocean
+// blue, turbid coastal water green.
+TEST_F(OceanRender, WaterTypeChangesTheDeepColourAsTheLutsSay) {
+  const std::vector<std::string> down{"camera.position=[0,12,0]", "camera.look_at=[0,0,3]",
+                                      "ocean.spectrum.wind_speed_mps=3"};
+  auto with = [&](const char* type) {
+    auto o = down;
+    o.push_back(std::string("water.type=") + type);
+    return mean_rgb(render(load(o)), 30, 60);
+  };
+  const glm::dvec3 clear = with("jerlov-I"), turbid = with("jerlov-9C");
+  EXPECT_GT(clear.b, clear.g);
+  EXPECT_GT(turbid.g / turbid.b, clear.g / clear.b + 0.1) << "9C should be greener than I";
+  // The same ordering as the LUTs' deep colours themselves.
+  auto deep = [](const char* type) {
+    optics::WaterParams w;
+    w.type = type;
+    w.lut_size = 2;
+    auto in = optics::lut_inputs(w, 30.0);
+    return optics::build_water_lut(*in)->deep_colour;
+  };
+  EXPECT_GT(deep("jerlov-9C").g / deep("jerlov-9C").b, deep("jerlov-I").g / deep("jerlov-I").b);
+}
+
+}  // namespace
+}  // namespace lagoon::test
