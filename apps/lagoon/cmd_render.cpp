@@ -45,8 +45,13 @@ int run_render(const ParsedArgs& args) {
   std::vector<vk::PassTime> timings;
   io::Image8 image;
   {
-    render::OceanRenderer renderer(*ctx, *scene);
-    image = renderer.render(*scene, &timings);
+    auto renderer = render::OceanRenderer::create(*ctx, *scene);
+    if (!renderer) {
+      std::fprintf(stderr, "lagoon render: %s: %s\n", scene->source.c_str(),
+                   renderer.error().message.c_str());
+      return kExitFailure;
+    }
+    image = (*renderer)->render(*scene, &timings);
   }
   // A run with validation errors writes nothing: its image cannot be trusted.
   if (int status = validation_status(*ctx); status != kExitOk) return status;

@@ -8,7 +8,9 @@
 #include "optics/colour.h"
 #include "optics/lut.h"
 #include "render/camera.h"
+#include "render/seafloor.h"
 #include "shared/frame.h"
+#include "shared/mesh.h"
 #include "vk/barriers.h"
 #include "vk/rendering.h"
 #include "vk/sampler.h"
@@ -70,22 +72,117 @@ OceanRenderer::OceanRenderer(vk::Context& ctx, const scene::Scene& scene)
           ctx, {.address = VK_SAMPLER_ADDRESS_MODE_REPEAT,
                 .max_anisotropy = ctx.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU ? 1.0f : 8.0f})),
       clamp_sampler_(vk::create_sampler(ctx, {.address = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE})),
+      nearest_sampler_(vk::create_sampler(ctx, {.filter = VK_FILTER_NEAREST,
+                                                .mipmap = VK_SAMPLER_MIPMAP_MODE_NEAREST,
+                                                .address = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE})),
       timer_(ctx, 32) {
-  // The deep-water colour of the scene's water under its sun (the LUTs' h -> ∞ limit).
-  optics::WaterParams water = scene.water;
-  water.lut_size = 2;
-  if (auto inputs = optics::lut_inputs(water, scene.sun.elevation_deg); inputs) {
-    if (auto lut = optics::build_water_lut(*inputs); lut) deep_colour_ = glm::vec3(lut->deep_colour);
+  mesh_refraction_ = vk::GraphicsPipeline::create(ctx, {.vertex = &shaders::render_mesh_vert,
+                                                        .fragment = &shaders::render_mesh_frag,
+                                                        .color_formats = {kHdrFormat},
+                                                        .depth_format = kDepthFormat,
+                                                        .depth_test = true,
+                                                        .depth_write = true});
+}
+
+Result<std::unique_ptr<OceanRenderer>> OceanRenderer::create(vk::Context& ctx, const scene::Scene& scene) {
+  std::unique_ptr<OceanRenderer> renderer(new OceanRenderer(ctx, scene));
+  if (auto r = renderer->init(scene); !r) return r.error();
+  return renderer;
+}
+
+Result<void> OceanRenderer::init(const scene::Scene& scene) {
+  // The colour LUTs of the scene's water under its sun, as textures (docs/optics.md).
+  auto inputs = optics::lut_inputs(scene.water, scene.sun.elevation_deg);
+  if (!inputs) return inputs.error();
+  auto lut = optics::build_water_lut(*inputs);
+  if (!lut) return lut.error();
+  deep_colour_ = glm::vec3(lut->deep_colour);
+  lut_r_max_ = scene.water.lut_r_max_m;
+  lut_h_max_ = scene.water.lut_h_max_m;
+  const uint32_t rn = lut->r_count, hn = lut->h_count;
+  std::vector<float> t0(size_t{rn} * hn * 4), t1(size_t{rn} * hn * 4);
+  for (uint32_t j = 0; j < hn; ++j)
+    for (uint32_t i = 0; i < rn; ++i) {
+      const size_t texel = (size_t{j} * rn + i) * 4,
+                   src = size_t{i} * hn + j;  // LUT is [r][h]; image rows are h
+      for (int c = 0; c < 4; ++c) t0[texel + c] = lut->t0[src * 4 + c];
+      for (int c = 0; c < 3; ++c) t1[texel + c] = lut->t1[src * 3 + c];
+      t1[texel + 3] = 1.0f;
+    }
+  for (auto [image, data, name] : {std::tuple{&lut_t0_, &t0, "lut T0"}, {&lut_t1_, &t1, "lut T1"}}) {
+    *image = vk::Image::create(ctx_, {.format = VK_FORMAT_R32G32B32A32_SFLOAT,
+                                      .extent = {rn, hn},
+                                      .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                                      .debug_name = name});
+    vk::upload_image(ctx_, *image, vk::as_bytes_of(*data), VK_IMAGE_LAYOUT_GENERAL,
+                     vk::access::kGraphicsSampled);
   }
+  const io::Image8 white{.width = 1, .height = 1, .rgba = {255, 255, 255, 255}};
+  white_texture_ = upload_texture(ctx_, white, "white");
+
+  const scene::Seafloor& floor = scene.seafloor;
+  if (floor.type == "slope") {
+    const FloorMesh mesh =
+        build_slope_floor(floor, glm::vec2(scene.camera.position.x, scene.camera.position.z));
+    floor_ = upload_mesh(ctx_, mesh.vertices, mesh.indices);
+    floor_albedo_ = floor.albedo;
+    floor_texture_scale_ = floor.texture_scale_m;
+    if (!floor.texture.empty()) {
+      auto image = io::read_png(floor.texture);
+      if (!image) return make_error("seafloor.texture: " + image.error().message);
+      floor_texture_ = upload_texture(ctx_, *image, "floor texture");
+      floor_textured_ = true;
+    }
+  } else if (floor.type == "gltf") {
+    return make_error("seafloor.type \"gltf\" is not rendered yet (use \"slope\" or \"none\")");
+  }
+  return {};
 }
 
 OceanRenderer::~OceanRenderer() = default;
 
-void OceanRenderer::record_frame(VkCommandBuffer cmd, const scene::Scene& scene, const vk::Image& hdr,
-                                 const vk::Image& depth, const vk::Image& color) {
+struct OceanRenderer::Targets {
+  vk::Image hdr, depth, color, refraction_albedo, refraction_depth;
+};
+
+void OceanRenderer::record_frame(VkCommandBuffer cmd, const Targets& t) {
+  const vk::Image &hdr = t.hdr, &depth = t.depth, &color = t.color;
   const VkExtent2D extent = hdr.extent();
   const vk::BufferRef frame{frame_.handle()};
-  std::vector<vk::Binding> surface_bindings{vk::bind(0, frame)};
+  {
+    vk::GpuScope scope(timer_, cmd, "refraction");
+    for (const vk::Image* image : {&t.refraction_albedo})
+      vk::image_barrier(cmd, image->handle(), image->all_subresources(), VK_IMAGE_LAYOUT_UNDEFINED,
+                        VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, vk::access::kNone,
+                        vk::access::kColorAttachmentWrite);
+    vk::image_barrier(cmd, t.refraction_depth.handle(), t.refraction_depth.all_subresources(),
+                      VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, vk::access::kNone,
+                      vk::access::kDepthAttachment);
+    vk::begin_rendering(cmd, extent,
+                        {{.view = t.refraction_albedo.view(), .clear = std::array{0.f, 0.f, 0.f, 0.f}}},
+                        vk::DepthTarget{.view = t.refraction_depth.view(), .clear = 1.0f});
+    if (floor_) {
+      const gpu::MeshPush push{.model = glm::mat4(1.0f),
+                               .base_colour = glm::vec4(floor_albedo_, floor_textured_ ? 1.0f : 0.0f),
+                               .params = glm::vec4(1.0f, floor_texture_scale_, 0.0f, 0.0f)};
+      const vk::Image& texture = floor_textured_ ? floor_texture_ : white_texture_;
+      vk::draw(cmd, mesh_refraction_,
+               {vk::bind(0, frame), vk::bind(1, floor_->vertices), vk::bind(2, floor_->indices),
+                vk::bind(3, sampled(texture, repeat_sampler_))},
+               push, floor_->index_count);
+    }
+    vk::end_rendering(cmd);
+    vk::image_barrier(cmd, t.refraction_albedo.handle(), t.refraction_albedo.all_subresources(),
+                      VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
+                      vk::access::kColorAttachmentWrite, vk::access::kGraphicsSampled);
+    vk::image_barrier(cmd, t.refraction_depth.handle(), t.refraction_depth.all_subresources(),
+                      VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
+                      vk::access::kDepthAttachment, vk::access::kGraphicsSampled);
+  }
+  std::vector<vk::Binding> surface_bindings{
+      vk::bind(0, frame), vk::bind(3, sampled(t.refraction_albedo, clamp_sampler_)),
+      vk::bind(4, sampled(t.refraction_depth, nearest_sampler_)),
+      vk::bind(5, sampled(lut_t0_, clamp_sampler_)), vk::bind(6, sampled(lut_t1_, clamp_sampler_))};
   for (uint32_t slot = 0; slot < 4; ++slot) {
     const ocean::CascadeTextures t = ocean_->cascade(std::min(slot, ocean_->cascade_count() - 1));
     surface_bindings.push_back(vk::bind(1, sampled(*t.displacement, repeat_sampler_), slot));
@@ -124,7 +221,6 @@ void OceanRenderer::record_frame(VkCommandBuffer cmd, const scene::Scene& scene,
     vk::draw(cmd, post_, {vk::bind(0, frame), vk::bind(1, sampled(hdr, clamp_sampler_))}, 3);
     vk::end_rendering(cmd);
   }
-  (void)scene;
 }
 
 io::Image8 OceanRenderer::render(const scene::Scene& scene, std::vector<vk::PassTime>* timings) {
@@ -160,7 +256,12 @@ io::Image8 OceanRenderer::render(const scene::Scene& scene, std::vector<vk::Pass
       .grid = glm::vec4(half_extent, float(kGridVertsPerSide), 0.35f * half_extent,
                         float(std::min(ocean_->cascade_count(), 4u))),
       .post = glm::vec4(scene.render.exposure, scene.render.gamma, float(curve.m), float(curve.exponent)),
-      .post2 = glm::vec4(float(curve.white), float(curve.world_adaptation), 1.0f, 0.0f)};
+      .post2 = glm::vec4(float(curve.white), float(curve.world_adaptation),
+                         scene.render.tone_map == "clamp" ? 0.0f : 1.0f, 0.0f),
+      .lut = glm::vec4(float(lut_r_max_), float(lut_h_max_), scene.render.effects.refraction ? 1.0f : 0.0f,
+                       0.0f),
+      .screen = glm::vec4(float(extent.width), float(extent.height), 1.0f / float(extent.width),
+                          1.0f / float(extent.height))};
   for (uint32_t c = 0; c < std::min(ocean_->cascade_count(), 4u); ++c) {
     const ocean::CascadeTextures tex = ocean_->cascade(c);
     f.cascade_patch[c] = float(tex.patch_size_m);
@@ -170,24 +271,24 @@ io::Image8 OceanRenderer::render(const scene::Scene& scene, std::vector<vk::Pass
   std::memcpy(frame_.mapped(), &f, sizeof(f));
   frame_.flush();
 
-  vk::Image hdr =
-      vk::Image::create(ctx_, {.format = kHdrFormat,
-                               .extent = extent,
-                               .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
-                               .debug_name = "hdr"});
-  vk::Image depth = vk::Image::create(ctx_, {.format = kDepthFormat,
-                                             .extent = extent,
-                                             .usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
-                                             .debug_name = "depth"});
-  vk::Image color =
-      vk::Image::create(ctx_, {.format = kColorFormat,
-                               .extent = extent,
-                               .usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                               .debug_name = "color"});
+  const VkImageUsageFlags attachment = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+  const VkImageUsageFlags depth_attachment =
+      VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+  auto target = [&](VkFormat format, VkImageUsageFlags usage, const char* name) {
+    return vk::Image::create(ctx_, {.format = format, .extent = extent, .usage = usage, .debug_name = name});
+  };
+  const Targets targets{
+      .hdr = target(kHdrFormat, attachment, "hdr"),
+      .depth = target(kDepthFormat, depth_attachment, "depth"),
+      .color = target(kColorFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                      "color"),
+      .refraction_albedo = target(kHdrFormat, attachment, "refraction albedo"),
+      .refraction_depth = target(kDepthFormat, depth_attachment, "refraction depth")};
+  const vk::Image& color = targets.color;
   ctx_.submit_and_wait([&](VkCommandBuffer cmd) {
     timer_.reset(cmd);
     ocean_->record_step(cmd, t, t - ocean_time_, &timer_);
-    record_frame(cmd, scene, hdr, depth, color);
+    record_frame(cmd, targets);
   });
   ocean_time_ = t;
   if (timings) *timings = timer_.results();

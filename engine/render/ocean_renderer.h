@@ -1,14 +1,16 @@
 // The frame renderer: the FFT ocean (compute/ocean/gpu) drawn over an analytic sky whose light comes from
 // the optics model, water colour from the optics LUTs, then tone mapping (seed 000's eq. 18) and gamma.
-// Passes: ocean step, sky, surface (HDR, RGBA16F), post (RGBA8). Reflections of objects, the refraction
-// pass and the sea floor arrive with the rest of issue 5; today the surface reflects the sky and shows the
-// deep-water colour.
+// Passes: ocean step, refraction (the floor's albedo and depth under the water), sky, surface (HDR,
+// RGBA16F: Fresnel between the reflected sky and eq. 22 with the LUTs), post (RGBA8). Objects and the
+// planar reflection pass arrive with the rest of issue 5.
 #pragma once
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "io/png.h"
 #include "ocean/gpu/gpu_ocean.h"
+#include "render/gpu_mesh.h"
 #include "render/sky_light.h"
 #include "scene/scene.h"
 #include "vk/buffer.h"
@@ -30,24 +32,34 @@ class OceanRenderer {
   static constexpr double kWarmupS = 3.0;
   static constexpr double kWarmupStep = 0.1;
 
-  // Throws lagoon::vk::VulkanError / std::logic_error only on engine bugs; scene values are validated.
-  OceanRenderer(vk::Context& ctx, const scene::Scene& scene);
+  // Fails with a message naming the file when a file the scene names (floor texture, water table) cannot be
+  // used; Vulkan failures throw (VK_CHECK).
+  static Result<std::unique_ptr<OceanRenderer>> create(vk::Context& ctx, const scene::Scene& scene);
   ~OceanRenderer();
 
   // Renders `scene` (same ocean and water as at construction) at scene.render size and time scene.time_s.
   io::Image8 render(const scene::Scene& scene, std::vector<vk::PassTime>* timings = nullptr);
 
  private:
-  void record_frame(VkCommandBuffer cmd, const scene::Scene& scene, const vk::Image& hdr,
-                    const vk::Image& depth, const vk::Image& color);
+  struct Targets;
+  OceanRenderer(vk::Context& ctx, const scene::Scene& scene);
+  Result<void> init(const scene::Scene& scene);
+  void record_frame(VkCommandBuffer cmd, const Targets& targets);
 
   vk::Context& ctx_;
   std::unique_ptr<ocean::GpuOcean> ocean_;
   double ocean_time_ = -1;
   glm::vec3 deep_colour_{0};
-  vk::GraphicsPipeline sky_, surface_, post_;
+  double lut_r_max_ = 1, lut_h_max_ = 1;
+  vk::Image lut_t0_, lut_t1_;  // the colour LUTs as textures: x = r axis, y = h axis
+  std::optional<GpuMesh> floor_;
+  vk::Image floor_texture_, white_texture_;
+  bool floor_textured_ = false;
+  glm::vec3 floor_albedo_{1};
+  float floor_texture_scale_ = 1;
+  vk::GraphicsPipeline sky_, surface_, post_, mesh_refraction_;
   vk::Buffer frame_;
-  vk::Unique<VkSampler> repeat_sampler_, clamp_sampler_;
+  vk::Unique<VkSampler> repeat_sampler_, clamp_sampler_, nearest_sampler_;
   vk::GpuTimer timer_;
 };
 

@@ -15,8 +15,10 @@ using nlohmann::json;
 
 constexpr double kFloatMax = std::numeric_limits<float>::max();
 
-std::string format_vec3(const glm::vec3& v) {
-  return "[" + format_number(v.x) + ", " + format_number(v.y) + ", " + format_number(v.z) + "]";
+std::string format_floats(std::span<const float> values) {
+  std::string out;
+  for (float v : values) out += (out.empty() ? "[" : ", ") + format_number(v);
+  return out + "]";
 }
 
 std::string with_unit(std::string text, std::string_view unit) {
@@ -269,13 +271,17 @@ void ObjectReader::describe(std::string_view name, std::string type, std::string
                        std::move(range), std::string(doc)});
 }
 
-std::optional<double> ObjectReader::read_number(std::string_view name, double current, Bounds bounds,
-                                                std::string_view unit, bool as_float) {
+bool ObjectReader::has(std::string_view name) const {
+  return !describing() && object_->find(name) != object_->end();
+}
+
+std::optional<double> ObjectReader::read_number(std::string_view name, const std::string& default_text,
+                                                Bounds bounds, std::string_view unit, bool as_float) {
   const json* j = lookup(name);
   if (!j) return std::nullopt;
   const std::string path = child_path(name);
-  const std::string fix =
-      "allowed: number " + with_unit(bounds.describe(), unit) + " (default " + format_number(current) + ")";
+  const std::string fix = "allowed: number " + with_unit(bounds.describe(), unit) +
+                          (default_text.empty() ? "" : " (default " + default_text + ")");
   const std::optional<double> v = finite_number(*j, path, fix, *diag_);
   if (!v) return std::nullopt;
   // Checked again as float so e.g. 1e-50 for a "> 0" field cannot round to 0.
@@ -289,15 +295,24 @@ std::optional<double> ObjectReader::read_number(std::string_view name, double cu
 void ObjectReader::number(std::string_view name, float& value, Bounds bounds, std::string_view unit,
                           std::string_view doc) {
   if (describing()) return describe(name, "number", unit, format_number(value), bounds.describe(), doc);
-  if (const std::optional<double> v = read_number(name, value, bounds, unit, /*as_float=*/true)) {
+  if (const std::optional<double> v =
+          read_number(name, format_number(value), bounds, unit, /*as_float=*/true))
     value = static_cast<float>(*v);
-  }
+}
+
+void ObjectReader::number(std::string_view name, std::optional<float>& value, Bounds bounds,
+                          std::string_view unit, std::string_view doc) {
+  if (describing()) return describe(name, "number", unit, "", bounds.describe(), doc);
+  if (const std::optional<double> v = read_number(name, "", bounds, unit, /*as_float=*/true))
+    value = static_cast<float>(*v);
 }
 
 void ObjectReader::number(std::string_view name, double& value, Bounds bounds, std::string_view unit,
                           std::string_view doc) {
   if (describing()) return describe(name, "number", unit, format_number(value), bounds.describe(), doc);
-  if (const std::optional<double> v = read_number(name, value, bounds, unit, /*as_float=*/false)) value = *v;
+  if (const std::optional<double> v =
+          read_number(name, format_number(value), bounds, unit, /*as_float=*/false))
+    value = *v;
 }
 
 void ObjectReader::integer(std::string_view name, uint32_t& value, Bounds bounds, std::string_view unit,
@@ -342,27 +357,60 @@ void ObjectReader::power_of_two(std::string_view name, uint32_t& value, uint32_t
   value = static_cast<uint32_t>(*v);
 }
 
-void ObjectReader::vec3(std::string_view name, glm::vec3& value, std::string_view unit,
-                        std::string_view doc) {
-  if (describing()) return describe(name, "[x, y, z]", unit, format_vec3(value), "finite", doc);
+bool ObjectReader::read_floats(std::string_view name, std::span<float> values, std::string_view form,
+                               Bounds bounds, std::string_view unit, std::string_view doc) {
+  const bool finite_only = !std::isfinite(bounds.min) && !std::isfinite(bounds.max);
+  if (describing()) {
+    describe(name, std::string(form), unit, format_floats(values),
+             finite_only ? "finite" : "each " + bounds.describe(), doc);
+    return false;
+  }
   const json* j = lookup(name);
-  if (!j) return;
+  if (!j) return false;
   const std::string path = child_path(name);
-  const std::string fix = "allowed: 3 finite numbers [x, y, z]" +
-                          (unit.empty() ? "" : " in " + std::string(unit)) + " (default " +
-                          format_vec3(value) + ")";
-  if (!j->is_array() || j->size() != 3) {
+  const std::string count = std::to_string(values.size());
+  const std::string fix = "allowed: " + count + (finite_only ? " finite numbers " : " numbers ") +
+                          std::string(form) +
+                          (finite_only ? (unit.empty() ? "" : " in " + std::string(unit))
+                                       : ", each " + with_unit(bounds.describe(), unit)) +
+                          " (default " + format_floats(values) + ")";
+  if (!j->is_array() || j->size() != values.size()) {
     const std::string got =
         describe_value(*j) + (j->is_array() ? " with " + std::to_string(j->size()) + " elements" : "");
-    return diag_->error(path, "expected [x, y, z], got " + got, fix);
+    diag_->error(path, "expected " + std::string(form) + ", got " + got, fix);
+    return false;
   }
-  glm::vec3 result;
-  for (int i = 0; i < 3; ++i) {
-    const std::optional<double> v = finite_number((*j)[i], path + "[" + std::to_string(i) + "]", fix, *diag_);
-    if (!v) return;
-    result[i] = static_cast<float>(*v);
+  for (size_t i = 0; i < values.size(); ++i) {
+    const std::string element_path = path + "[" + std::to_string(i) + "]";
+    const std::optional<double> v = finite_number((*j)[i], element_path, fix, *diag_);
+    if (!v) return false;
+    // Checked again as float, as in read_number(), so a value cannot round onto an open bound.
+    if (!bounds.contains(*v) || !bounds.contains(static_cast<float>(*v))) {
+      diag_->error(element_path, describe_value((*j)[i]) + " is out of range", fix);
+      return false;
+    }
+    values[i] = static_cast<float>(*v);  // callers keep `values` only when all of them were read
   }
-  value = result;
+  return true;
+}
+
+void ObjectReader::vec3(std::string_view name, glm::vec3& value, std::string_view unit,
+                        std::string_view doc) {
+  vec3(name, value, "[x, y, z]", Bounds::any(), unit, doc);
+}
+
+void ObjectReader::vec3(std::string_view name, glm::vec3& value, std::string_view form, Bounds bounds,
+                        std::string_view unit, std::string_view doc) {
+  float components[3] = {value.x, value.y, value.z};
+  if (read_floats(name, components, form, bounds, unit, doc))
+    value = {components[0], components[1], components[2]};
+}
+
+void ObjectReader::vec2(std::string_view name, glm::vec2& value, std::string_view unit,
+                        std::string_view doc) {
+  float components[2] = {value.x, value.y};
+  if (read_floats(name, components, "[x, z]", Bounds::any(), unit, doc))
+    value = {components[0], components[1]};
 }
 
 void ObjectReader::flag(std::string_view name, bool& value, std::string_view doc) {

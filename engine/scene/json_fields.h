@@ -5,6 +5,7 @@
 // validates a document (read mode) and lists the fields for the docs (describe mode), so the parser and
 // docs/scene-format.md cannot drift apart. Problems are collected, not thrown, so one run reports them all.
 #pragma once
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <nlohmann/json.hpp>
 
@@ -13,6 +14,7 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -81,7 +83,17 @@ class ObjectReader {
   // Power of two in [min, max], e.g. an FFT or texture size.
   void power_of_two(std::string_view name, uint32_t& value, uint32_t min, uint32_t max, std::string_view unit,
                     std::string_view doc);
+  // Optional number: no default; absent leaves `value` empty (e.g. the camera's yaw_deg, an alternative to
+  // look_at, where a default would hide which of the two the file chose).
+  void number(std::string_view name, std::optional<float>& value, Bounds bounds, std::string_view unit,
+              std::string_view doc);
   void vec3(std::string_view name, glm::vec3& value, std::string_view unit, std::string_view doc);
+  // Three numbers, each within `bounds`; `form` names them in the docs and messages: "[r, g, b]",
+  // "[yaw, pitch, roll]".
+  void vec3(std::string_view name, glm::vec3& value, std::string_view form, Bounds bounds,
+            std::string_view unit, std::string_view doc);
+  // A point on the horizontal plane, [x, z] (y is up): two finite numbers.
+  void vec2(std::string_view name, glm::vec2& value, std::string_view unit, std::string_view doc);
   void flag(std::string_view name, bool& value, std::string_view doc);
   void text(std::string_view name, std::string& value, std::string_view doc);
 
@@ -150,6 +162,10 @@ class ObjectReader {
   // ("cascades[2].patch_size_m") is documented once, on the element row ("cascades[].patch_size_m").
   void rule(std::string_view name, bool holds, std::string_view rule, std::string_view fix);
 
+  // Whether the object being read has the field (false when describing), for rules that depend on which
+  // fields a file states, not on their values: a default look_at cannot be told apart from a given one.
+  bool has(std::string_view name) const;
+
   // Reports fields nobody declared (with a did-you-mean) and a non-string "comment".
   void finish();
 
@@ -168,9 +184,14 @@ class ObjectReader {
   std::optional<std::vector<std::optional<ObjectReader>>> open_array(
       std::string_view name, const std::vector<std::vector<FieldInfo>>& defaults, size_t min_size,
       size_t max_size);
-  // Shared by both number() overloads; `as_float` also checks the value after rounding to float.
-  std::optional<double> read_number(std::string_view name, double current, Bounds bounds,
+  // Shared by the number() overloads; `as_float` also checks the value after rounding to float.
+  // `default_text` is "" for a field without a default.
+  std::optional<double> read_number(std::string_view name, const std::string& default_text, Bounds bounds,
                                     std::string_view unit, bool as_float);
+  // Shared by vec2() and vec3(): reads `values.size()` numbers written as `form` over the defaults in
+  // `values`; false (and `values` partly overwritten) unless all were read.
+  bool read_floats(std::string_view name, std::span<float> values, std::string_view form, Bounds bounds,
+                   std::string_view unit, std::string_view doc);
 
   const nlohmann::json* object_ = nullptr;
   Diagnostics* diag_ = nullptr;

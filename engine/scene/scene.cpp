@@ -1,6 +1,11 @@
 #include "scene/scene.h"
 
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -9,6 +14,7 @@
 
 #include "scene/ocean_block.h"
 #include "scene/water_block.h"
+#include "scene/world_blocks.h"
 
 namespace lagoon::scene {
 namespace {
@@ -17,9 +23,37 @@ using nlohmann::json;
 
 // ---- The format: one read function per block; each line declares one field. ----
 
+// Unit view direction for a compass yaw (clockwise from +z toward +x, like the sun's azimuth) and a pitch
+// above the horizon. In double so that pitch -90 gives x and z of ~1e-17, not float cos() noise.
+glm::vec3 view_direction(float yaw_deg, float pitch_deg) {
+  const double yaw = glm::radians(double{yaw_deg}), pitch = glm::radians(double{pitch_deg});
+  return glm::vec3(
+      glm::dvec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw)));
+}
+
 void read_camera(ObjectReader& r, Camera& c) {
   r.vec3("position", c.position, "m", "Eye position (y up; the mean water level is y = 0).");
   r.vec3("look_at", c.look_at, "m", "Point the camera looks at; the view direction is look_at - position.");
+  // Angles are an input form only: they become look_at, so the renderer reads the view one way.
+  std::optional<float> yaw_deg, pitch_deg;
+  r.number("yaw_deg", yaw_deg, Bounds::between(-360, 360), "deg",
+           "Instead of look_at: compass direction of the view, clockwise from +z (north) toward +x (east); "
+           "90 = east.");
+  r.number("pitch_deg", pitch_deg, Bounds::between(-90, 90), "deg",
+           "With yaw_deg: angle of the view above the horizon; 0 = level, -90 = straight down.");
+  // Presence, not values, decides these rules: a given but out-of-range angle gets its own error only.
+  const bool has_yaw = r.has("yaw_deg"), has_pitch = r.has("pitch_deg"), has_look_at = r.has("look_at");
+  r.rule("pitch_deg", has_pitch || !has_yaw, "given with yaw_deg",
+         "got yaw_deg alone; add pitch_deg (0 = level, negative looks down)");
+  r.rule("yaw_deg", has_yaw || !has_pitch, "given with pitch_deg",
+         "got pitch_deg alone; add yaw_deg (0 = toward +z/north, 90 = toward +x/east)");
+  r.rule("look_at", !has_look_at || (!has_yaw && !has_pitch), "left out when yaw_deg or pitch_deg is given",
+         "both aim the camera; keep either look_at or yaw_deg and pitch_deg");
+  if (yaw_deg && pitch_deg && !has_look_at) {
+    // Far enough along the ray that float rounding of a distant position does not bend the direction.
+    const float distance = std::max(1.f, glm::length(c.position));
+    c.look_at = c.position + distance * view_direction(*yaw_deg, *pitch_deg);
+  }
   r.number("fov_deg", c.fov_deg, Bounds::between(1, 170), "deg", "Vertical field of view.");
   r.number("near_m", c.near_m, Bounds::above(0), "m", "Near clipping distance.");
   r.number("far_m", c.far_m, Bounds::above(0), "m",
@@ -41,23 +75,19 @@ void read_sun(ObjectReader& r, Sun& s) {
            "Multiplier on the sun's brightness; 1 is the reference sun, 0 turns it off.");
 }
 
-void read_render(ObjectReader& r, RenderSettings& s) {
-  r.integer("width", s.width, Bounds::between(16, 8192), "px", "Output image width.");
-  r.integer("height", s.height, Bounds::between(16, 8192), "px", "Output image height.");
-  r.number("exposure", s.exposure, Bounds::between(0.01, 100), "",
-           "Linear multiplier on scene brightness before display encoding; 2 is one stop brighter.");
-  r.number("gamma", s.gamma, Bounds::between(1, 3), "", "Display gamma used to encode the output.");
-}
-
-// New blocks: write read_<block>() above (or, for a large block, in its own <block>_block.cpp like
-// ocean_block.cpp) and add one r.block() line here.
+// New blocks: write read_<block>() above (or, for a large block, in its own file like ocean_block.cpp or
+// world_blocks.cpp) and add one r.block() line here.
 void read_scene(ObjectReader& r, Scene& s) {
   r.block("camera", s.camera, read_camera, "Viewpoint and projection.");
   r.block("sun", s.sun, read_sun, "Direction and strength of sunlight.");
   r.block("ocean", s.ocean, read_ocean, "Wind, waves and foam of the simulated sea.");
   r.block("water", s.water, read_water,
           "Optics of the water and the bottom: the colour LUTs (docs/optics.md).");
-  r.block("render", s.render, read_render, "Output image settings.");
+  r.block("seafloor", s.seafloor, read_seafloor, "The sea floor: none, a procedural sloping bay, or a mesh.");
+  r.array("objects", s.objects, 0, 256, read_object,
+          "glTF models placed in the world (boats, buoys, rocks), above or below the water.");
+  r.array("lights", s.lights, 0, 64, read_light, "Point lights, in addition to the sun and sky.");
+  r.block("render", s.render, read_render, "Output image settings and effects.");
   r.number("time_s", s.time_s, Bounds::between(0, 86400), "s",
            "Simulation time of the rendered frame (at most one day: wave phases are 32-bit floats).");
 }
@@ -113,6 +143,18 @@ std::optional<std::string> read_file(const std::filesystem::path& path, Diagnost
   return text.str();
 }
 
+// Files named by the scene are relative to the scene, not to the working directory, so a scene folder can
+// be moved as a whole. Whether they exist is left to their readers, which name the file they miss.
+void resolve_files(Scene& scene, const std::filesystem::path& folder) {
+  auto resolve = [&folder](std::string& file) {
+    if (!file.empty() && std::filesystem::path(file).is_relative()) file = (folder / file).string();
+  };
+  resolve(scene.water.table);
+  resolve(scene.seafloor.texture);
+  resolve(scene.seafloor.file);
+  for (Object& object : scene.objects) resolve(object.file);
+}
+
 }  // namespace
 
 Result<Scene> load_scene(const std::filesystem::path& path, std::span<const std::string> overrides) {
@@ -134,9 +176,7 @@ Result<Scene> load_scene(const std::filesystem::path& path, std::span<const std:
     Result<Scene> scene = validate(*document, diag);
     if (scene) {
       scene->source = path;
-      // Files named by the scene are relative to the scene, not to the working directory.
-      if (!scene->water.table.empty() && std::filesystem::path(scene->water.table).is_relative())
-        scene->water.table = (path.parent_path() / scene->water.table).string();
+      resolve_files(*scene, path.parent_path());
     }
     return scene;
   } catch (const std::exception& e) {  // defensive: a bug here must not take the app down

@@ -20,6 +20,7 @@ namespace lagoon::scene {
 // World space: y is up, the mean water surface is y = 0, +z is north, +x is east; distances in metres.
 struct Camera {
   glm::vec3 position{0.f, 6.f, -40.f};
+  // The file's look_at, or a point computed from its yaw_deg/pitch_deg: the one aim there is to read.
   glm::vec3 look_at{0.f, 0.f, 0.f};
   float fov_deg = 55.f;  // vertical
   float near_m = 0.1f;
@@ -32,19 +33,61 @@ struct Sun {
   float intensity = 1.f;
 };
 
+struct RenderEffects {
+  bool reflection = true;  // planar reflection of what is above the water (else the sky alone)
+  bool refraction = true;  // the floor and submerged objects seen through the water, coloured by the LUTs
+  bool foam = true;
+};
+
 struct RenderSettings {
   uint32_t width = 1280;
   uint32_t height = 720;
   float exposure = 1.f;
   float gamma = 2.2f;
+  std::string tone_map = "belyaev";  // "belyaev": seed 000's eq. 18; "clamp": exposure and clamp only
+  RenderEffects effects;
+};
+
+// The sea floor: a procedural bay (a sandy floor that slopes from `depth_near_m` at `near` to
+// `depth_far_m` at `far`, along the line between them; flat beyond) or a glTF mesh.
+struct Seafloor {
+  std::string type = "none";    // "none" (open ocean), "slope", "gltf"
+  float depth_near_m = 0.5f;    // slope: depth below the mean water level at `near`
+  float depth_far_m = 30.f;     // slope: depth at `far` and beyond
+  glm::vec2 near{0.f, 0.f};     // slope: (x, z) of the shallow end
+  glm::vec2 far{0.f, 200.f};    // slope: (x, z) of the deep end
+  float extent_m = 600.f;       // slope: half size of the square floor around the camera's start
+  std::string texture;          // PNG tiled over the floor (albedo), relative to the scene file; "" = plain
+  float texture_scale_m = 2.f;  // size of one texture tile on the floor
+  glm::vec3 albedo{0.76f, 0.70f, 0.55f};  // plain floor colour, or multiplied with the texture
+  std::string file;                       // gltf: mesh file, relative to the scene file
+};
+
+struct Object {
+  std::string name;
+  std::string file;             // glTF 2.0 (.gltf or .glb), relative to the scene file
+  glm::vec3 position{0.f};      // metres
+  glm::vec3 rotation_deg{0.f};  // yaw (about y), pitch (about x), roll (about z), applied in that order
+  float scale = 1.f;
+};
+
+struct PointLight {
+  glm::vec3 position{0.f, 5.f, 0.f};
+  glm::vec3 colour{1.f, 0.9f, 0.7f};  // linear RGB
+  float intensity = 1.f;              // irradiance at 1 m, in units of the sun's (white = 1)
+  float range_m = 50.f;               // beyond this the light has no effect
 };
 
 struct Scene {
   std::filesystem::path source;  // file it came from ("" when parsed from memory)
   Camera camera;
   Sun sun;
+  Seafloor seafloor;
+  std::vector<Object> objects;
+  std::vector<PointLight> lights;
   ocean::OceanParams ocean;
-  optics::WaterParams water;  // water.table, when relative, is resolved against the scene file's folder
+  optics::WaterParams water;  // water.table, seafloor.texture/file and objects[].file, when relative, are
+                              // resolved against the scene file's folder
   RenderSettings render;
   float time_s = 0.f;  // simulation time of the rendered frame
 };

@@ -9,10 +9,46 @@
 layout(std140, binding = 0) uniform Frame { FrameUniforms frame; };
 layout(binding = 1) uniform sampler2DArray displacement[4];
 layout(binding = 2) uniform sampler2DArray normal_jacobian[4];
+layout(binding = 3) uniform sampler2D refraction_albedo;  // floor and submerged objects: albedo, a = coverage
+layout(binding = 4) uniform sampler2D refraction_depth;
+layout(binding = 5) uniform sampler2D lut_t0;             // (T0 RGB, a) over (u, v) = (sqrt(r/r_max), sqrt(h/h_max))
+layout(binding = 6) uniform sampler2D lut_t1;
 
 layout(location = 0) in vec3 v_world;
 layout(location = 1) in vec2 v_rest;
 layout(location = 0) out vec4 out_radiance;
+
+// The light leaving the water towards the viewer below the surface, in white units: eq. 22 with the floor
+// point C seen along the refracted ray, r and h measured along that ray (docs/optics.md), or the deep-water
+// colour where there is no floor within the LUT's depth.
+vec3 water_radiance(vec3 n, vec3 v) {
+  vec3 deep = frame.water_deep.rgb;
+  if (frame.lut.z < 0.5) return deep;
+  vec2 screen_uv = gl_FragCoord.xy * frame.screen.zw;
+  // Refraction offsets the lookup with the slope; keep it undistorted when the offset lands on something in
+  // front of the water (the usual guard against sampling objects that are not under the surface).
+  vec2 uv = screen_uv + n.xz * vec2(0.05, -0.05);
+  float depth = texture(refraction_depth, uv).r;
+  if (depth < gl_FragCoord.z) {
+    uv = screen_uv;
+    depth = texture(refraction_depth, uv).r;
+  }
+  vec4 albedo = texture(refraction_albedo, uv);
+  if (albedo.a < 0.5) return deep;
+  vec4 c = frame.inv_view_proj * vec4(uv.x * 2.0 - 1.0, 1.0 - uv.y * 2.0, depth, 1.0);
+  vec3 floor_point = c.xyz / c.w;
+  float h = max(v_world.y - floor_point.y, 0.0);
+  vec3 t = refract(-v, n, 1.0 / frame.sun_dir.w);
+  float down = max(-t.y, 0.05);
+  float l = h / down;
+  float r = l * sqrt(max(1.0 - t.y * t.y, 0.0));
+  vec2 lut_uv = vec2(sqrt(clamp(r / frame.lut.x, 0.0, 1.0)), sqrt(clamp(h / frame.lut.y, 0.0, 1.0)));
+  vec4 t0 = texture(lut_t0, lut_uv);
+  vec3 t1 = texture(lut_t1, lut_uv).rgb;
+  vec3 through = t0.a * t0.rgb * albedo.rgb + (1.0 - t0.a) * t1;
+  return mix(through, deep, smoothstep(0.8, 1.0, h / frame.lut.y));
+}
+
 
 void main() {
   // Constant indices into the sampler arrays (a loop index would be dynamic descriptor indexing).
@@ -44,7 +80,7 @@ void main() {
   float shininess = 800.0;
   float glint = (shininess + 2.0) / 8.0 * pow(max(dot(n, h), 0.0), shininess) *
                 fresnel_dielectric(dot(h, v), ior) * max(dot(n, l), 0.0);
-  vec3 surface = fresnel * reflected + glint * frame.sun_irradiance.rgb + (1.0 - fresnel) * frame.water_deep.rgb;
+  vec3 surface = fresnel * reflected + glint * frame.sun_irradiance.rgb + (1.0 - fresnel) * water_radiance(n, v);
 
   vec3 lit_white = frame.sun_irradiance.rgb * max(dot(n, l), 0.0) + frame.sky_radiance.rgb;
   surface = mix(surface, frame.water_deep.w * lit_white, clamp(foam, 0.0, 1.0));

@@ -19,8 +19,9 @@ class OceanRender : public GpuTest {
     return *s;
   }
   io::Image8 render(const scene::Scene& s) {
-    render::OceanRenderer renderer(ctx(), s);
-    return renderer.render(s);
+    auto renderer = render::OceanRenderer::create(ctx(), s);
+    EXPECT_TRUE(renderer) << renderer.error().message;
+    return (*renderer)->render(s);
   }
 };
 
@@ -87,6 +88,59 @@ TEST_F(OceanRender, WaterTypeChangesTheDeepColourAsTheLutsSay) {
     return optics::build_water_lut(*in)->deep_colour;
   };
   EXPECT_GT(deep("jerlov-9C").g / deep("jerlov-9C").b, deep("jerlov-I").g / deep("jerlov-I").b);
+}
+
+}  // namespace
+}  // namespace lagoon::test
+
+namespace lagoon::test {
+namespace {
+
+// Standard deviation of luminance over the centre of the image: how much of the floor's texture shows.
+double centre_contrast(const io::Image8& img) {
+  double sum = 0, sum2 = 0;
+  int n = 0;
+  for (uint32_t y = img.height / 4; y < 3 * img.height / 4; ++y)
+    for (uint32_t x = img.width / 4; x < 3 * img.width / 4; ++x) {
+      const uint8_t* p = img.pixel(x, y);
+      const double l = 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+      sum += l, sum2 += l * l, ++n;
+    }
+  return std::sqrt(std::max(sum2 / n - (sum / n) * (sum / n), 0.0));
+}
+
+class BayRender : public OceanRender {
+ protected:
+  // Looking straight down from 6 m onto a flat sandy floor `depth` metres under calm, clear water.
+  io::Image8 looking_down(double depth, const char* water = "jerlov-IB") {
+    return render(
+        load({"camera.position=[0,6,0]", "camera.look_at=[0,0,0.001]", "ocean.spectrum.wind_speed_mps=2",
+              "render.exposure=1", "seafloor.type=slope", "seafloor.depth_near_m=" + std::to_string(depth),
+              "seafloor.depth_far_m=" + std::to_string(depth), "seafloor.texture=assets/sand.png",
+              "seafloor.albedo=[1,1,1]", "seafloor.texture_scale_m=1", std::string("water.type=") + water}));
+  }
+};
+
+TEST_F(BayRender, ShallowWaterShowsTheFloorDeepWaterHidesIt) {
+  const io::Image8 shallow = looking_down(1.0), deep = looking_down(25.0);
+  const glm::dvec3 s = mean_rgb(shallow, 30, 60), d = mean_rgb(deep, 30, 60);
+  // Over 1 m of clear water the sand (beige, R > B) is seen; over 25 m the water's own blue.
+  EXPECT_GT(s.r, d.r + 20) << "the sand's red does not show through shallow water";
+  EXPECT_GT(d.b, d.r) << "deep water is not blue";
+}
+
+TEST_F(BayRender, FloorTextureContrastFallsWithDepth) {
+  const double c1 = centre_contrast(looking_down(0.6)), c4 = centre_contrast(looking_down(4.0)),
+               c15 = centre_contrast(looking_down(15.0));
+  EXPECT_GT(c1, c4) << "contrast at 0.6 m " << c1 << ", at 4 m " << c4;
+  EXPECT_GT(c4, c15) << "contrast at 4 m " << c4 << ", at 15 m " << c15;
+}
+
+TEST_F(BayRender, MissingFloorTextureIsAnErrorNamingIt) {
+  auto s = load({"seafloor.type=slope", "seafloor.texture=assets/no-such-sand.png"});
+  auto renderer = render::OceanRenderer::create(ctx(), s);
+  ASSERT_FALSE(renderer);
+  EXPECT_NE(renderer.error().message.find("no-such-sand.png"), std::string::npos) << renderer.error().message;
 }
 
 }  // namespace

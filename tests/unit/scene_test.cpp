@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
 #include <unistd.h>
 #include <cstdlib>
 
@@ -9,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -752,6 +756,395 @@ TEST_F(SceneFileTest, OverrideIntoArrayWithDotIsAnError) {
   const std::vector<std::string> overrides = {"ocean.cascades.0.resolution=128"};
   const std::string message = ErrorOf(load_scene(path, overrides));
   EXPECT_TRUE(Contains(message, "ocean.cascades is array [{\"patch_size_m\":50}], not an object"));
+}
+
+// ---- World blocks: seafloor, objects, lights; render's tone map and effects ----
+
+TEST(SceneWorld, AbsentBlocksGiveDefaults) {
+  Result<Scene> scene = parse_scene(json::object(), kSource);
+  ASSERT_TRUE(scene.ok()) << scene.error().message;
+  const Seafloor& f = scene->seafloor;
+  EXPECT_EQ(f.type, "none");
+  EXPECT_FLOAT_EQ(f.depth_near_m, 0.5f);
+  EXPECT_FLOAT_EQ(f.depth_far_m, 30.f);
+  EXPECT_EQ(f.near, glm::vec2(0.f, 0.f));
+  EXPECT_EQ(f.far, glm::vec2(0.f, 200.f));
+  EXPECT_FLOAT_EQ(f.extent_m, 600.f);
+  EXPECT_EQ(f.texture, "");
+  EXPECT_FLOAT_EQ(f.texture_scale_m, 2.f);
+  EXPECT_EQ(f.albedo, glm::vec3(0.76f, 0.70f, 0.55f));
+  EXPECT_EQ(f.file, "");
+  EXPECT_TRUE(scene->objects.empty());
+  EXPECT_TRUE(scene->lights.empty());
+  EXPECT_EQ(scene->render.tone_map, "belyaev");
+  EXPECT_TRUE(scene->render.effects.reflection);
+  EXPECT_TRUE(scene->render.effects.refraction);
+  EXPECT_TRUE(scene->render.effects.foam);
+}
+
+TEST(SceneWorld, ReadsEveryField) {
+  Result<Scene> scene = parse_scene(json::parse(R"({
+    "seafloor": {"type": "slope", "depth_near_m": 0, "depth_far_m": 11000, "near": [-5, 10.5],
+                 "far": [300, -20], "extent_m": 100000, "texture": "sand.png", "texture_scale_m": 1000,
+                 "albedo": [0, 0.5, 1], "comment": "bay"},
+    "objects": [{"name": "buoy", "file": "buoy.glb", "position": [1, -2, 3], "rotation_deg": [-360, 45, 360],
+                 "scale": 1000, "comment": "red"},
+                {"file": "/abs/boat.gltf", "scale": 0.25}],
+    "lights": [{"position": [4, 5, 6], "colour": [0, 50, 100], "intensity": 1000000, "range_m": 100000,
+                "comment": "lamp"}],
+    "render": {"tone_map": "clamp", "effects": {"reflection": false, "refraction": false, "foam": false}}
+  })"),
+                                    kSource);
+  ASSERT_TRUE(scene.ok()) << scene.error().message;
+  const Seafloor& f = scene->seafloor;
+  EXPECT_EQ(f.type, "slope");
+  EXPECT_FLOAT_EQ(f.depth_near_m, 0.f);
+  EXPECT_FLOAT_EQ(f.depth_far_m, 11000.f);
+  EXPECT_EQ(f.near, glm::vec2(-5.f, 10.5f));
+  EXPECT_EQ(f.far, glm::vec2(300.f, -20.f));
+  EXPECT_FLOAT_EQ(f.extent_m, 100000.f);
+  EXPECT_EQ(f.texture, "sand.png");  // parse_scene has no folder to resolve against; load_scene does
+  EXPECT_FLOAT_EQ(f.texture_scale_m, 1000.f);
+  EXPECT_EQ(f.albedo, glm::vec3(0.f, 0.5f, 1.f));
+  ASSERT_EQ(scene->objects.size(), 2u);
+  const Object& buoy = scene->objects[0];
+  EXPECT_EQ(buoy.name, "buoy");
+  EXPECT_EQ(buoy.file, "buoy.glb");
+  EXPECT_EQ(buoy.position, glm::vec3(1.f, -2.f, 3.f));
+  EXPECT_EQ(buoy.rotation_deg, glm::vec3(-360.f, 45.f, 360.f));
+  EXPECT_FLOAT_EQ(buoy.scale, 1000.f);
+  const Object& boat = scene->objects[1];  // absent fields start from a default Object
+  EXPECT_EQ(boat.name, "");
+  EXPECT_EQ(boat.file, "/abs/boat.gltf");
+  EXPECT_EQ(boat.position, glm::vec3(0.f));
+  EXPECT_EQ(boat.rotation_deg, glm::vec3(0.f));
+  EXPECT_FLOAT_EQ(boat.scale, 0.25f);
+  ASSERT_EQ(scene->lights.size(), 1u);
+  const PointLight& l = scene->lights[0];
+  EXPECT_EQ(l.position, glm::vec3(4.f, 5.f, 6.f));
+  EXPECT_EQ(l.colour, glm::vec3(0.f, 50.f, 100.f));
+  EXPECT_FLOAT_EQ(l.intensity, 1e6f);
+  EXPECT_FLOAT_EQ(l.range_m, 1e5f);
+  EXPECT_EQ(scene->render.tone_map, "clamp");
+  EXPECT_FALSE(scene->render.effects.reflection);
+  EXPECT_FALSE(scene->render.effects.refraction);
+  EXPECT_FALSE(scene->render.effects.foam);
+}
+
+TEST(SceneWorld, GltfSeafloorAndDefaultElements) {
+  Result<Scene> scene = parse_scene(
+      json::parse(R"({"seafloor": {"type": "gltf", "file": "bay.glb"}, "objects": [], "lights": [{}, {}]})"),
+      kSource);
+  ASSERT_TRUE(scene.ok()) << scene.error().message;
+  EXPECT_EQ(scene->seafloor.type, "gltf");
+  EXPECT_EQ(scene->seafloor.file, "bay.glb");
+  EXPECT_TRUE(scene->objects.empty());
+  ASSERT_EQ(scene->lights.size(), 2u);
+  EXPECT_EQ(scene->lights[1].position, glm::vec3(0.f, 5.f, 0.f));
+  EXPECT_EQ(scene->lights[1].colour, glm::vec3(1.f, 0.9f, 0.7f));
+  EXPECT_FLOAT_EQ(scene->lights[1].intensity, 1.f);
+  EXPECT_FLOAT_EQ(scene->lights[1].range_m, 50.f);
+}
+
+TEST(SceneWorld, OutOfRangeValues) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {R"({"seafloor": {"depth_near_m": -1}})",
+       "seafloor.depth_near_m: -1 is out of range; allowed: number 0 to 11000 m (default 0.5)"},
+      {R"({"seafloor": {"depth_far_m": 11001}})",
+       "seafloor.depth_far_m: 11001 is out of range; allowed: number 0 to 11000 m (default 30)"},
+      {R"({"seafloor": {"extent_m": 0}})",
+       "seafloor.extent_m: 0 is out of range; allowed: number > 0 and <= 100000 m (default 600)"},
+      {R"({"seafloor": {"extent_m": 100001}})", "seafloor.extent_m: 100001 is out of range"},
+      {R"({"seafloor": {"texture_scale_m": 0}})",
+       "seafloor.texture_scale_m: 0 is out of range; allowed: number > 0 and <= 1000 m (default 2)"},
+      {R"({"seafloor": {"texture_scale_m": 1000.5}})", "seafloor.texture_scale_m: 1000.5 is out of range"},
+      {R"({"seafloor": {"albedo": [0.5, 1.5, 0]}})",
+       "seafloor.albedo[1]: 1.5 is out of range; allowed: 3 numbers [r, g, b], each 0 to 1 (default [0.76, "
+       "0.7, 0.55])"},
+      {R"({"seafloor": {"albedo": [-0.1, 0, 0]}})", "seafloor.albedo[0]: -0.1 is out of range"},
+      {R"({"objects": [{"file": "a.glb", "scale": 0}]})",
+       "objects[0].scale: 0 is out of range; allowed: number > 0 and <= 1000 (default 1)"},
+      {R"({"objects": [{"file": "a.glb", "scale": 1001}]})", "objects[0].scale: 1001 is out of range"},
+      {R"({"objects": [{"file": "a.glb"}, {"file": "b.glb", "rotation_deg": [0, 0, 361]}]})",
+       "objects[1].rotation_deg[2]: 361 is out of range; allowed: 3 numbers [yaw, pitch, roll], each -360 "
+       "to 360 deg (default [0, 0, 0])"},
+      {R"({"objects": [{"file": "a.glb", "rotation_deg": [-360.5, 0, 0]}]})",
+       "objects[0].rotation_deg[0]: -360.5 is out of range"},
+      {R"({"objects": [{"file": "a.glb", "position": [0, 1e300, 0]}]})",
+       "objects[0].position[1]: 1e+300 is not a finite 32-bit float; allowed: 3 finite numbers [x, y, z] in "
+       "m (default [0, 0, 0])"},
+      {R"({"lights": [{"colour": [1, 101, 1]}]})",
+       "lights[0].colour[1]: 101 is out of range; allowed: 3 numbers [r, g, b], each 0 to 100 (default [1, "
+       "0.9, 0.7])"},
+      {R"({"lights": [{"colour": [-1, 1, 1]}]})", "lights[0].colour[0]: -1 is out of range"},
+      {R"({"lights": [{"intensity": -1}]})",
+       "lights[0].intensity: -1 is out of range; allowed: number 0 to 1000000 (default 1)"},
+      {R"({"lights": [{"intensity": 1000001}]})", "lights[0].intensity: 1000001 is out of range"},
+      {R"({"lights": [{"range_m": 0}]})",
+       "lights[0].range_m: 0 is out of range; allowed: number > 0 and <= 100000 m (default 50)"},
+      {R"({"lights": [{"range_m": 100001}]})", "lights[0].range_m: 100001 is out of range"},
+      {R"({"camera": {"yaw_deg": 361, "pitch_deg": 0}})",
+       "camera.yaw_deg: 361 is out of range; allowed: number -360 to 360 deg"},
+      {R"({"camera": {"yaw_deg": 0, "pitch_deg": -91}})",
+       "camera.pitch_deg: -91 is out of range; allowed: number -90 to 90 deg"},
+  };
+  for (const auto& [document, expected] : cases) {
+    EXPECT_TRUE(Contains(ParseError(document), "scenes/x.json: " + expected));
+  }
+}
+
+TEST(SceneWorld, WrongTypesAndNames) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {R"({"seafloor": {"type": "slop"}})",
+       "seafloor.type: string \"slop\" is not one of the allowed names; did you mean 'slope'? allowed: "
+       "\"none\", \"slope\", \"gltf\" (default \"none\")"},
+      {R"({"seafloor": {"near": [1, 2, 3]}})",
+       "seafloor.near: expected [x, z], got array [1,2,3] with 3 elements; allowed: 2 finite numbers [x, z] "
+       "in m (default [0, 0])"},
+      {R"({"seafloor": {"far": 5}})", "seafloor.far: expected [x, z], got 5"},
+      {R"({"seafloor": {"near": [0, "1"]}})", "seafloor.near[1]: expected a number, got string \"1\""},
+      {R"({"seafloor": {"albedo": [1, 1]}})",
+       "seafloor.albedo: expected [r, g, b], got array [1,1] with 2 elements"},
+      {R"({"seafloor": {"texture": 3}})", "seafloor.texture: expected a string, got 3"},
+      {R"({"seafloor": []})", "seafloor: expected an object {...}, got array []"},
+      {R"({"objects": {"file": "a.glb"}})",
+       "objects: expected an array of objects [{...}, ...], got object {\"file\":\"a.glb\"}; allowed: an "
+       "array of 0 to 256 objects (default [])"},
+      {R"({"objects": ["a.glb"]})", "objects[0]: expected an object {...}, got string \"a.glb\""},
+      {R"({"objects": [{"file": "a.glb", "colour": [1, 0, 0]}]})",
+       "objects[0].colour: unknown field; Fields allowed in objects[0]: name, file, position, "
+       "rotation_deg, scale, comment"},
+      {R"({"lights": [{"range": 5}]})", "lights[0].range: unknown field; did you mean 'range_m'?"},
+      {R"({"render": {"tone_map": "reinhard"}})",
+       "render.tone_map: string \"reinhard\" is not one of the allowed names; allowed: \"belyaev\", "
+       "\"clamp\" (default \"belyaev\")"},
+      {R"({"render": {"effects": {"foam": "no"}}})",
+       "render.effects.foam: expected true or false, got string \"no\""},
+      {R"({"render": {"effects": {"reflections": false}}})",
+       "render.effects.reflections: unknown field; did you mean 'reflection'?"},
+      {R"({"render": {"effects": true}})", "render.effects: expected an object {...}, got boolean true"},
+  };
+  for (const auto& [document, expected] : cases) {
+    EXPECT_TRUE(Contains(ParseError(document), "scenes/x.json: " + expected));
+  }
+}
+
+TEST(SceneWorld, ArrayLengths) {
+  json objects = json::array(), lights = json::array();
+  for (int i = 0; i < 257; ++i) objects.push_back({{"file", "a.glb"}});
+  for (int i = 0; i < 65; ++i) lights.push_back(json::object());
+  std::string message = ErrorOf(parse_scene({{"objects", objects}}, kSource));
+  EXPECT_TRUE(Contains(message, "scenes/x.json: objects: has 257 elements; allowed: an array of 0 to 256"));
+  message = ErrorOf(parse_scene({{"lights", lights}}, kSource));
+  EXPECT_TRUE(Contains(message, "scenes/x.json: lights: has 65 elements; allowed: an array of 0 to 64"));
+  objects.erase(objects.begin());
+  lights.erase(lights.begin());
+  Result<Scene> full = parse_scene({{"objects", objects}, {"lights", lights}}, kSource);
+  ASSERT_TRUE(full.ok()) << full.error().message;
+  EXPECT_EQ(full->objects.size(), 256u);
+  EXPECT_EQ(full->lights.size(), 64u);
+}
+
+TEST(SceneWorld, DepthsMustNotDecreaseTowardFar) {
+  const std::string message = ParseError(R"({"seafloor": {"depth_near_m": 10, "depth_far_m": 5}})");
+  EXPECT_TRUE(Contains(message,
+                       "scenes/x.json: seafloor.depth_far_m: must be >= depth_near_m; got depth_far_m 5 and "
+                       "depth_near_m 10; the floor deepens from near to far"));
+  Result<Scene> flat =
+      parse_scene(json::parse(R"({"seafloor": {"depth_near_m": 7, "depth_far_m": 7}})"), kSource);
+  ASSERT_TRUE(flat.ok()) << flat.error().message;
+}
+
+TEST(SceneWorld, NearMustDifferFromFar) {
+  EXPECT_TRUE(Contains(ParseError(R"({"seafloor": {"near": [3, 4], "far": [3, 4]}})"),
+                       "scenes/x.json: seafloor.far: must be different from near; near and far set the "
+                       "direction of the slope"));
+}
+
+TEST(SceneWorld, FileRulesOfSeafloorType) {
+  EXPECT_TRUE(
+      Contains(ParseError(R"({"seafloor": {"type": "gltf"}})"),
+               "scenes/x.json: seafloor.file: must be a file name when type is \"gltf\"; type \"gltf\" "
+               "reads the floor from a mesh; give its path"));
+  EXPECT_TRUE(Contains(ParseError(R"({"seafloor": {"type": "gltf", "file": ""}})"),
+                       "seafloor.file: must be a file name when type is \"gltf\""));
+  EXPECT_TRUE(Contains(ParseError(R"({"seafloor": {"type": "slope", "file": "bay.glb"}})"),
+                       "scenes/x.json: seafloor.file: must be left out when type is \"slope\"; got string "
+                       "\"bay.glb\"; a slope is generated, not loaded"));
+  // "none" ignores the floor fields, so a file prepared for later does not make the scene invalid.
+  EXPECT_TRUE(parse_scene(json::parse(R"({"seafloor": {"type": "none", "file": "bay.glb"}})"), kSource).ok());
+}
+
+TEST(SceneWorld, ObjectNeedsAFile) {
+  const std::string message =
+      ParseError(R"({"objects": [{"file": "a.glb"}, {"name": "boat"}, {"file": ""}]})");
+  EXPECT_FALSE(Contains(message, "objects[0]"));
+  EXPECT_TRUE(Contains(message,
+                       "scenes/x.json: objects[1].file: must be a file name (required); every object is "
+                       "loaded from a glTF file"));
+  EXPECT_TRUE(Contains(message, "\nscenes/x.json: objects[2].file: must be a file name (required)"));
+}
+
+TEST(SceneWorld, FieldReferenceRows) {
+  std::map<std::string, FieldInfo> rows;
+  for (const FieldInfo& f : scene_fields()) rows[f.path] = f;
+  EXPECT_EQ(rows.at("seafloor.near").type, "[x, z]");
+  EXPECT_EQ(rows.at("seafloor.far").default_value, "[0, 200]");
+  EXPECT_EQ(rows.at("seafloor.far").range, "finite, different from near");
+  EXPECT_EQ(rows.at("seafloor.albedo").type, "[r, g, b]");
+  EXPECT_EQ(rows.at("seafloor.albedo").range, "each 0 to 1");
+  EXPECT_EQ(rows.at("seafloor.file").range,
+            "any, a file name when type is \"gltf\", left out when type is \"slope\"");
+  EXPECT_EQ(rows.at("objects").default_value, "[]");
+  EXPECT_EQ(rows.at("objects").range, "0 to 256 elements");
+  EXPECT_EQ(rows.at("objects[].file").range, "any, a file name (required)");
+  EXPECT_EQ(rows.at("objects[].rotation_deg").type, "[yaw, pitch, roll]");
+  EXPECT_EQ(rows.at("lights").range, "0 to 64 elements");
+  EXPECT_EQ(rows.at("lights[].colour").range, "each 0 to 100");
+  EXPECT_EQ(rows.at("render.tone_map").default_value, "\"belyaev\"");
+  EXPECT_EQ(rows.at("render.effects.foam").default_value, "true");
+  EXPECT_EQ(rows.at("camera.yaw_deg").default_value, "");  // no default: look_at aims the camera
+  EXPECT_EQ(rows.at("camera.yaw_deg").range, "-360 to 360, given with pitch_deg");
+  EXPECT_EQ(rows.at("camera.look_at").range,
+            "finite, left out when yaw_deg or pitch_deg is given, different from position");
+}
+
+// ---- Camera: yaw_deg / pitch_deg instead of look_at ----
+
+// Unit view direction of a parsed camera.
+glm::vec3 ViewOf(const std::string& camera_block) {
+  Result<Scene> scene = parse_scene(json::parse(R"({"camera": )" + camera_block + "}"), kSource);
+  EXPECT_TRUE(scene.ok()) << scene.error().message;
+  if (!scene.ok()) return glm::vec3(0.f);
+  return glm::normalize(scene->camera.look_at - scene->camera.position);
+}
+
+void ExpectNear(glm::vec3 got, glm::vec3 expected, const std::string& what) {
+  EXPECT_NEAR(got.x, expected.x, 1e-6f) << what;
+  EXPECT_NEAR(got.y, expected.y, 1e-6f) << what;
+  EXPECT_NEAR(got.z, expected.z, 1e-6f) << what;
+}
+
+TEST(SceneCamera, YawAndPitchSetLookAt) {
+  ExpectNear(ViewOf(R"({"yaw_deg": 0, "pitch_deg": 0})"), {0, 0, 1}, "yaw 0 looks north (+z)");
+  ExpectNear(ViewOf(R"({"yaw_deg": 90, "pitch_deg": 0})"), {1, 0, 0}, "yaw 90 looks east (+x)");
+  ExpectNear(ViewOf(R"({"yaw_deg": 180, "pitch_deg": 0})"), {0, 0, -1}, "yaw 180 looks south");
+  ExpectNear(ViewOf(R"({"yaw_deg": -90, "pitch_deg": 0})"), {-1, 0, 0}, "yaw -90 = 270 looks west");
+  ExpectNear(ViewOf(R"({"yaw_deg": 270, "pitch_deg": 0})"), {-1, 0, 0}, "yaw 270 looks west");
+  ExpectNear(ViewOf(R"({"yaw_deg": 37, "pitch_deg": -90})"), {0, -1, 0}, "pitch -90 looks straight down");
+  ExpectNear(ViewOf(R"({"yaw_deg": 0, "pitch_deg": 90})"), {0, 1, 0}, "pitch 90 looks straight up");
+  const float c = std::sqrt(0.5f);
+  ExpectNear(ViewOf(R"({"yaw_deg": 0, "pitch_deg": 45})"), {0, c, c}, "pitch up is positive");
+  ExpectNear(ViewOf(R"({"yaw_deg": 90, "pitch_deg": -30})"), {std::cos(glm::radians(30.f)), -0.5f, 0},
+             "east and 30 degrees down");
+}
+
+TEST(SceneCamera, YawAndPitchLookFromThePosition) {
+  Result<Scene> scene = parse_scene(
+      json::parse(R"({"camera": {"position": [100000, 5, -100000], "yaw_deg": 90, "pitch_deg": 0}})"),
+      kSource);
+  ASSERT_TRUE(scene.ok()) << scene.error().message;
+  const glm::vec3 offset = scene->camera.look_at - scene->camera.position;
+  EXPECT_GT(offset.x, 0.f);
+  // Far from the origin the offset grows with the distance, so float rounding keeps the direction.
+  ExpectNear(glm::normalize(offset), {1, 0, 0}, "from a distant position");
+  scene = parse_scene(json::parse(R"({"camera": {"yaw_deg": 0, "pitch_deg": 0}})"), kSource);
+  ASSERT_TRUE(scene.ok()) << scene.error().message;
+  EXPECT_EQ(scene->camera.position, glm::vec3(0.f, 6.f, -40.f));  // the default position is kept
+}
+
+TEST(SceneCamera, LookAtAndAnglesTogetherIsAnError) {
+  const std::string message =
+      ParseError(R"({"camera": {"look_at": [0, 0, 10], "yaw_deg": 90, "pitch_deg": 0}})");
+  EXPECT_TRUE(Contains(message,
+                       "scenes/x.json: camera.look_at: must be left out when yaw_deg or pitch_deg is given; "
+                       "both aim the camera; keep either look_at or yaw_deg and pitch_deg"));
+  EXPECT_TRUE(Contains(ParseError(R"({"camera": {"look_at": [0, 0, 10], "yaw_deg": 90}})"),
+                       "camera.look_at: must be left out when yaw_deg or pitch_deg is given"));
+}
+
+TEST(SceneCamera, YawAndPitchComeTogether) {
+  std::string message = ParseError(R"({"camera": {"yaw_deg": 90}})");
+  EXPECT_TRUE(Contains(message,
+                       "scenes/x.json: camera.pitch_deg: must be given with yaw_deg; got yaw_deg "
+                       "alone; add pitch_deg"));
+  message = ParseError(R"({"camera": {"pitch_deg": -10}})");
+  EXPECT_TRUE(Contains(message,
+                       "scenes/x.json: camera.yaw_deg: must be given with pitch_deg; got pitch_deg "
+                       "alone; add yaw_deg"));
+  // A given but bad angle is reported as such, not also as missing.
+  message = ParseError(R"({"camera": {"yaw_deg": "east", "pitch_deg": 0}})");
+  EXPECT_TRUE(Contains(message,
+                       "camera.yaw_deg: expected a number, got string \"east\"; allowed: number -360 "
+                       "to 360 deg"));
+  EXPECT_FALSE(Contains(message, "must be given"));
+}
+
+// ---- World blocks in files: paths and overrides ----
+
+TEST_F(SceneFileTest, RelativeFilesAreResolvedAgainstTheSceneFolder) {
+  fs::create_directories(dir_ / "bay");
+  const fs::path absolute = dir_ / "models" / "rock.glb";
+  const fs::path path = Write("bay/bay.json", R"({
+    "seafloor": {"type": "gltf", "file": "floor/bay.glb", "texture": "../textures/sand.png"},
+    "objects": [{"file": "buoy.gltf"}, {"file": )" +
+                                                  json(absolute.string()).dump() + R"(}],
+    "water": {"type": "custom", "table": "water.csv"}
+  })");
+  Result<Scene> scene = load_scene(path);
+  ASSERT_TRUE(scene.ok()) << scene.error().message;
+  // Missing files are not an error here: the renderer reports them with the resolved name.
+  EXPECT_EQ(scene->seafloor.file, (dir_ / "bay" / "floor/bay.glb").string());
+  EXPECT_EQ(scene->seafloor.texture, (dir_ / "bay" / "../textures/sand.png").string());
+  ASSERT_EQ(scene->objects.size(), 2u);
+  EXPECT_EQ(scene->objects[0].file, (dir_ / "bay" / "buoy.gltf").string());
+  EXPECT_EQ(scene->objects[1].file, absolute.string());  // absolute paths are kept
+  EXPECT_EQ(scene->water.table, (dir_ / "bay" / "water.csv").string());
+
+  const fs::path plain = Write("plain.json", "{}");
+  scene = load_scene(plain);
+  ASSERT_TRUE(scene.ok()) << scene.error().message;
+  EXPECT_EQ(scene->seafloor.texture, "");  // "" means "none", not the scene's folder
+  EXPECT_EQ(scene->seafloor.file, "");
+}
+
+TEST_F(SceneFileTest, OverridesWorldBlocks) {
+  const fs::path path = Write("s.json", R"({"seafloor": {"type": "gltf", "file": "bay.glb"},
+      "objects": [{"file": "old.glb"}, {"file": "older.glb"}]})");
+  const std::vector<std::string> overrides = {"seafloor.type=slope",
+                                              "seafloor.file=",
+                                              "seafloor.near=[10,20]",
+                                              R"(objects=[{"file":"a.gltf"}])",
+                                              R"(lights=[{"position":[0,2,0],"intensity":5}])",
+                                              "render.tone_map=clamp",
+                                              "render.effects.foam=false",
+                                              "camera.look_at=[0,0,100]"};
+  Result<Scene> scene = load_scene(path, overrides);
+  ASSERT_TRUE(scene.ok()) << scene.error().message;
+  EXPECT_EQ(scene->seafloor.type, "slope");
+  EXPECT_EQ(scene->seafloor.file, "");
+  EXPECT_EQ(scene->seafloor.near, glm::vec2(10.f, 20.f));
+  ASSERT_EQ(scene->objects.size(), 1u);  // the override replaces the file's list
+  EXPECT_EQ(scene->objects[0].file, (dir_ / "a.gltf").string());
+  ASSERT_EQ(scene->lights.size(), 1u);
+  EXPECT_FLOAT_EQ(scene->lights[0].intensity, 5.f);
+  EXPECT_EQ(scene->render.tone_map, "clamp");
+  EXPECT_FALSE(scene->render.effects.foam);
+  EXPECT_TRUE(scene->render.effects.reflection);
+}
+
+TEST_F(SceneFileTest, WorldOverrideValuesAreValidated) {
+  const fs::path path = Write("s.json", R"({"camera": {"look_at": [0, 0, 1]}})");
+  const std::vector<std::string> overrides = {"seafloor.type=slope", "seafloor.file=bay.glb",
+                                              R"(objects=[{"name":"boat"}])", "camera.yaw_deg=90",
+                                              "camera.pitch_deg=0"};
+  const std::string message = ErrorOf(load_scene(path, overrides));
+  EXPECT_TRUE(Contains(message, path.string() + ": seafloor.file: must be left out when type is \"slope\""));
+  EXPECT_TRUE(Contains(message, "(value from --set seafloor.file=bay.glb)"));
+  EXPECT_TRUE(Contains(message, "objects[0].file: must be a file name (required)"));
+  EXPECT_TRUE(Contains(message, R"((value from --set objects=[{"name":"boat"}]))"));
+  // The file's look_at still aims the camera; the angles cannot silently override it.
+  EXPECT_TRUE(Contains(message, "camera.look_at: must be left out when yaw_deg or pitch_deg is given"));
 }
 
 // ---- Helpers ----

@@ -1,0 +1,22 @@
+// The procedural sea floor of the scene's "seafloor" block (type "slope"): a height field that falls from
+// depth_near_m at `near` to depth_far_m at `far` along the line between them, flat beyond both ends.
+#pragma once
+#include <vector>
+
+#include "render/gpu_mesh.h"
+#include "scene/scene.h"
+
+namespace lagoon::render {
+
+// Depth below the mean water level (m, > 0 under water) of the slope floor at (x, z).
+float slope_depth(const scene::Seafloor& floor, glm::vec2 xz);
+
+struct FloorMesh {
+  std::vector<MeshVertex> vertices;
+  std::vector<uint32_t> indices;
+};
+
+// A grid of `cells` x `cells` quads covering ±extent_m around `centre`, denser near the centre.
+FloorMesh build_slope_floor(const scene::Seafloor& floor, glm::vec2 centre, uint32_t cells = 160);
+
+}  // namespace lagoon::render

@@ -1,0 +1,93 @@
+#include "scene/world_blocks.h"
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace lagoon::scene {
+namespace {
+
+using Names = std::vector<std::pair<std::string, std::string>>;
+
+void read_effects(ObjectReader& r, RenderEffects& e) {
+  r.flag("reflection", e.reflection,
+         "Planar reflection of the objects above the water; false = the water reflects the sky alone.");
+  r.flag("refraction", e.refraction,
+         "The floor and submerged objects seen through the surface, coloured by the water LUTs; false = "
+         "the water's own colour only.");
+  r.flag("foam", e.foam, "Whitecaps from ocean.foam; false hides them.");
+}
+
+}  // namespace
+
+void read_seafloor(ObjectReader& r, Seafloor& f) {
+  r.choice("type", f.type, Names{{"none", "none"}, {"slope", "slope"}, {"gltf", "gltf"}},
+           "\"none\" = open ocean with no visible floor; \"slope\" = a procedural sandy bay (see Seafloor "
+           "below); \"gltf\" = a mesh from `file`.");
+  r.number("depth_near_m", f.depth_near_m, Bounds::between(0, 11000), "m",
+           "slope: depth of the floor below the mean water level at `near`.");
+  r.number("depth_far_m", f.depth_far_m, Bounds::between(0, 11000), "m",
+           "slope: depth at `far` and beyond; the floor is flat past both ends.");
+  r.rule("depth_far_m", f.depth_far_m >= f.depth_near_m, ">= depth_near_m",
+         "got depth_far_m " + format_number(f.depth_far_m) + " and depth_near_m " +
+             format_number(f.depth_near_m) +
+             "; the floor deepens from near to far, so swap the depths or "
+             "swap near and far");
+  r.vec2("near", f.near, "m", "slope: horizontal position of the shallow end.");
+  r.vec2("far", f.far, "m", "slope: horizontal position of the deep end; the slope runs along near -> far.");
+  r.rule("far", f.far != f.near, "different from near",
+         "near and far set the direction of the slope; move far to where the water is deepest");
+  r.number("extent_m", f.extent_m, Bounds::above_up_to(0, 100000), "m",
+           "slope: half the side of the square floor, centred on the camera's start position.");
+  r.text("texture", f.texture,
+         "PNG tiled over the floor as its albedo, relative to the scene file's folder; \"\" = plain "
+         "`albedo`.");
+  r.number("texture_scale_m", f.texture_scale_m, Bounds::above_up_to(0, 1000), "m",
+           "Side of one texture tile on the floor.");
+  r.vec3("albedo", f.albedo, "[r, g, b]", Bounds::between(0, 1), "",
+         "Linear floor colour; multiplies the texture when there is one.");
+  r.text("file", f.file, "gltf: the floor mesh (.gltf or .glb), relative to the scene file's folder.");
+  // Both directions are checked so a file never carries a mesh that is silently ignored.
+  r.rule("file", f.type != "gltf" || !f.file.empty(), "a file name when type is \"gltf\"",
+         "type \"gltf\" reads the floor from a mesh; give its path, e.g. \"file\": \"bay.glb\"");
+  r.rule("file", f.type != "slope" || f.file.empty(), "left out when type is \"slope\"",
+         "got " + describe_value(nlohmann::json(f.file)) +
+             "; a slope is generated, not loaded: remove `file`, or set type \"gltf\" to use the mesh");
+}
+
+void read_object(ObjectReader& r, Object& o) {
+  r.text("name", o.name, "Label for messages and tools; need not be unique.");
+  r.text("file", o.file, "glTF 2.0 model (.gltf or .glb), relative to the scene file's folder.");
+  r.rule("file", !o.file.empty(), "a file name (required)",
+         "every object is loaded from a glTF file; add e.g. \"file\": \"buoy.glb\"");
+  r.vec3("position", o.position, "m", "Where the model's origin goes (y up; the mean water level is y = 0).");
+  r.vec3("rotation_deg", o.rotation_deg, "[yaw, pitch, roll]", Bounds::between(-360, 360), "deg",
+         "Yaw about the vertical (clockwise from +z toward +x, like camera.yaw_deg), then pitch (positive "
+         "raises the model's +z end), then roll about the model's z axis; see Objects below.");
+  r.number("scale", o.scale, Bounds::above_up_to(0, 1000), "", "Uniform scale of the model.");
+}
+
+void read_light(ObjectReader& r, PointLight& l) {
+  r.vec3("position", l.position, "m", "Position of the light.");
+  r.vec3("colour", l.colour, "[r, g, b]", Bounds::between(0, 100), "",
+         "Linear RGB colour; multiplied by intensity.");
+  r.number("intensity", l.intensity, Bounds::between(0, 1000000), "",
+           "Irradiance 1 m from the light, in units of the reference sun's (1); falls off with the square of "
+           "the distance.");
+  r.number("range_m", l.range_m, Bounds::above_up_to(0, 100000), "m",
+           "Beyond this distance the light has no effect (bounds its cost).");
+}
+
+void read_render(ObjectReader& r, RenderSettings& s) {
+  r.integer("width", s.width, Bounds::between(16, 8192), "px", "Output image width.");
+  r.integer("height", s.height, Bounds::between(16, 8192), "px", "Output image height.");
+  r.number("exposure", s.exposure, Bounds::between(0.01, 100), "",
+           "Linear multiplier on scene brightness before display encoding; 2 is one stop brighter.");
+  r.number("gamma", s.gamma, Bounds::between(1, 3), "", "Display gamma used to encode the output.");
+  r.choice("tone_map", s.tone_map, Names{{"belyaev", "belyaev"}, {"clamp", "clamp"}},
+           "Scene brightness to display: \"belyaev\" = Belyaev's eq. 18 (Tumblin-Rushmeier with white-point "
+           "compression, docs/optics.md); \"clamp\" = exposure, then each channel clipped at 1.");
+  r.block("effects", s.effects, read_effects, "Parts of the image that can be switched off.");
+}
+
+}  // namespace lagoon::scene

@@ -1,0 +1,34 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+#include "shared/frame.h"
+#include "shared/mesh.h"
+#include "common/light.glsl"
+
+// Mode 0: lit radiance above the water. Mode 1: albedo only, for the refraction pass; the water's light
+// transport (the LUTs) lights it in the surface pass. Mode 2: lit, mirrored, only what is above the water.
+layout(std140, binding = 0) uniform Frame { FrameUniforms frame; };
+layout(binding = 3) uniform sampler2D albedo_texture;
+layout(push_constant) uniform Push { MeshPush p; };
+
+layout(location = 0) in vec3 v_world;
+layout(location = 1) in vec3 v_normal;
+layout(location = 2) in vec2 v_uv;
+layout(location = 0) out vec4 out_colour;
+
+void main() {
+  int mode = int(p.params.x + 0.5);
+  if (mode == 1 && v_world.y > 0.0) discard;  // the refraction pass sees only what is under the water
+  if (mode != 1 && v_world.y < 0.0) discard;  // above-water passes see only what is above
+  vec3 albedo = p.base_colour.rgb;
+  if (p.base_colour.a > 0.5) albedo *= texture(albedo_texture, v_uv).rgb;
+  if (mode == 1) {
+    out_colour = vec4(albedo, 1.0);
+    return;
+  }
+  vec3 n = normalize(v_normal);
+  if (!gl_FrontFacing) n = -n;
+  vec3 l = frame.sun_dir.xyz;
+  // Lambert under the sun and a sky hemisphere (brighter from above), in white units.
+  vec3 light = frame.sun_irradiance.rgb * max(dot(n, l), 0.0) + frame.sky_radiance.rgb * (0.6 + 0.4 * n.y);
+  out_colour = vec4(albedo * light, 1.0);
+}

@@ -1,0 +1,25 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+#include "shared/frame.h"
+#include "shared/mesh.h"
+
+// Vertex pulling: indices and vertices from storage buffers, no vertex-input state.
+layout(std140, binding = 0) uniform Frame { FrameUniforms frame; };
+struct Vertex { float px, py, pz, nx, ny, nz, u, v; };
+layout(std430, binding = 1) readonly buffer Vertices { Vertex vertices[]; };
+layout(std430, binding = 2) readonly buffer Indices { uint indices[]; };
+layout(push_constant) uniform Push { MeshPush p; };
+
+layout(location = 0) out vec3 v_world;
+layout(location = 1) out vec3 v_normal;
+layout(location = 2) out vec2 v_uv;
+
+void main() {
+  Vertex vtx = vertices[indices[gl_VertexIndex]];
+  vec4 world = p.model * vec4(vtx.px, vtx.py, vtx.pz, 1.0);
+  v_world = world.xyz;
+  v_normal = normalize(mat3(p.model) * vec3(vtx.nx, vtx.ny, vtx.nz));
+  v_uv = p.params.y > 0.0 ? world.xz / p.params.y : vec2(vtx.u, vtx.v);
+  if (p.params.x > 1.5) world.y = -world.y;  // reflection: the scene mirrored about the mean water level
+  gl_Position = frame.view_proj * world;
+}
