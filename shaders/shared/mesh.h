@@ -5,10 +5,10 @@
 
 LAGOON_GPU_BEGIN
 struct MeshPush {
-  mat4 model;         // model to world
-  vec4 base_colour;   // rgb albedo (linear), a = 1 if the texture is used
-  vec4 params;        // x = mode (0 lit above water, 1 albedo for refraction, 2 lit mirrored for reflection),
-                      // y = texture scale for world-space uv (0 = mesh uv), zw unused
+  mat4 model;        // model to world
+  vec4 base_colour;  // rgb albedo (linear), a = 1 if the texture is used
+  vec4 params;       // x = mode (0 lit above water, 1 albedo for refraction, 2 lit mirrored for reflection),
+                     // y = texture scale for world-space uv (0 = mesh uv), zw unused
 };
 LAGOON_GPU_END
 
