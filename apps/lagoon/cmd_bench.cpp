@@ -13,6 +13,8 @@
 #include "io/atomic_file.h"
 #include "ocean/gpu/gpu_ocean.h"
 #include "ocean/validate.h"
+#include "render/ocean_renderer.h"
+#include "scene_args.h"
 
 namespace lagoon::cli {
 namespace {
@@ -110,13 +112,80 @@ int run_bench_compute(const ParsedArgs& args) {
   return validation_status(*ctx);
 }
 
+// The frame at 1280x720: wall time of render() (submit, wait, readback) and each pass's GPU time, medians.
+int run_bench_render(const ParsedArgs& args, int rounds) {
+  ParsedArgs scene_args = args;
+  if (!args.has("scene")) scene_args.add("scene", "scenes/default.json");
+  auto scene = load_scene_from_args(scene_args, "bench", {"render.width=1280", "render.height=720"});
+  if (!scene) return kExitFailure;
+  auto ctx = open_context();
+  if (!ctx) return kExitFailure;
+  auto renderer = render::OceanRenderer::create(*ctx, *scene);
+  if (!renderer) {
+    std::fprintf(stderr, "lagoon bench: %s\n", renderer.error().message.c_str());
+    return kExitFailure;
+  }
+  std::printf("device: %s (%s); scene %s at 1280x720; %d frames after 2 warm-up frames, medians\n",
+              ctx->device_info().name.c_str(), ctx->device_info().type.c_str(), scene->source.c_str(),
+              rounds);
+  std::vector<vk::PassTime> timings;
+  const float t0 = scene->time_s;
+  for (int w = 0; w < 2; ++w) (*renderer)->render(*scene, &timings);
+  std::vector<double> frame;
+  std::vector<std::pair<std::string, std::vector<double>>> passes;
+  for (int r = 0; r < rounds; ++r) {
+    scene->time_s = t0 + float(r) / 30.0f;
+    frame.push_back(time_ms([&] { (*renderer)->render(*scene, &timings); }));
+    for (size_t i = 0; i < timings.size(); ++i) {
+      if (passes.size() <= i) passes.push_back({timings[i].name, {}});
+      passes[i].second.push_back(timings[i].ms);
+    }
+  }
+  std::printf("%-34s %12s\n", "Pass (GPU timestamps)", "Time (ms)");
+  nlohmann::json results = nlohmann::json::array();
+  for (const auto& [name, ms] : passes) {
+    std::printf("%-34s %12.3f\n", name.c_str(), median(ms));
+    results.push_back({{"name", "render/pass/" + name},
+                       {"real_time", median(ms)},
+                       {"time_unit", "ms"},
+                       {"iterations", rounds}});
+  }
+  std::printf("%-34s %12.3f\n", "frame (wall, incl. readback)", median(frame));
+  results.push_back(
+      {{"name", "render/frame"}, {"real_time", median(frame)}, {"time_unit", "ms"}, {"iterations", rounds}});
+  std::printf(
+      "GPU timestamps of passes on lavapipe can read low: its rasteriser threads may finish after the\n"
+      "closing timestamp. The frame's wall time is the reliable figure.\n");
+  if (auto path = args.get("json")) {
+    const nlohmann::json doc{{"context", {{"device", ctx->device_info().name}, {"rounds", rounds}}},
+                             {"benchmarks", results}};
+    const std::string text = doc.dump(2) + "\n";
+    if (auto written = io::write_file_atomic(*path, std::as_bytes(std::span(text.data(), text.size())));
+        !written) {
+      std::fprintf(stderr, "lagoon bench: %s\n", written.error().message.c_str());
+      return kExitFailure;
+    }
+  }
+  return validation_status(*ctx);
+}
+
 int run_bench(const ParsedArgs& args) {
   const std::string what = args.get("what").value_or("");
-  if (what != "compute") {
-    std::fprintf(stderr, "lagoon bench: unknown benchmark '%s'; available: compute\n", what.c_str());
-    return kExitUsage;
+  if (what == "compute") return run_bench_compute(args);
+  if (what == "render") {
+    int rounds = 10;
+    if (auto r = args.get("rounds")) {
+      auto v = parse_integer(*r);
+      if (!v || *v < 1 || *v > 1000) {
+        std::fprintf(stderr, "lagoon bench: --rounds %s must be a whole number from 1 to 1000\n", r->c_str());
+        return kExitUsage;
+      }
+      rounds = int(*v);
+    }
+    return run_bench_render(args, rounds);
   }
-  return run_bench_compute(args);
+  std::fprintf(stderr, "lagoon bench: unknown benchmark '%s'; available: compute, render\n", what.c_str());
+  return kExitUsage;
 }
 
 }  // namespace
@@ -128,7 +197,9 @@ const Command& bench_command() {
                    "Measures performance side by side in one run. 'compute': the GPU ocean step on the "
                    "chosen device against the same step on the CPU with FFTW (1 and 2 threads), for "
                    "N = 128, 256, 512 and 1 or 3 cascades; ratio = GPU time / CPU time.",
-               .options = {{"what", "compute", "which benchmark: compute", true},
+               .options = {{"what", "compute|render", "which benchmark: compute or render", true},
+                           {"scene", "FILE", "render: the scene (default scenes/default.json), at 1280x720"},
+                           set_option(),
                            {"json", "FILE", "also write the results as Google Benchmark-style JSON"},
                            {"rounds", "R", "measured rounds per configuration (default 15)"}},
                .positional = {"what"},

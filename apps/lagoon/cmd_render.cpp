@@ -37,30 +37,68 @@ int run_render(const ParsedArgs& args) {
     }
     overrides.push_back("time_s=" + *v);
   }
+  long long frames = 1;
+  double fps = 30.0;
+  if (auto v = args.get("frames")) {
+    auto n = parse_integer(*v);
+    if (!n || *n < 1 || *n > 100000) {
+      std::fprintf(stderr, "lagoon render: --frames %s must be a whole number from 1 to 100000\n",
+                   v->c_str());
+      return kExitUsage;
+    }
+    frames = *n;
+  }
+  if (auto v = args.get("fps")) {
+    auto f = parse_number(*v);
+    if (!f || *f <= 0 || *f > 1000) {
+      std::fprintf(stderr, "lagoon render: --fps %s must be a number of frames per second in (0, 1000]\n",
+                   v->c_str());
+      return kExitUsage;
+    }
+    fps = *f;
+  }
   auto scene = load_scene_from_args(args, "render", overrides);
   if (!scene) return kExitFailure;
   auto ctx = open_context();
   if (!ctx) return kExitFailure;
 
-  std::vector<vk::PassTime> timings;
-  io::Image8 image;
-  {
-    auto renderer = render::OceanRenderer::create(*ctx, *scene);
-    if (!renderer) {
-      std::fprintf(stderr, "lagoon render: %s: %s\n", scene->source.c_str(),
-                   renderer.error().message.c_str());
-      return kExitFailure;
-    }
-    image = (*renderer)->render(*scene, &timings);
-  }
-  // A run with validation errors writes nothing: its image cannot be trusted.
-  if (int status = validation_status(*ctx); status != kExitOk) return status;
-  if (auto written = io::write_png(out_path, image); !written) {
-    std::fprintf(stderr, "lagoon render: %s\n", written.error().message.c_str());
+  auto renderer = render::OceanRenderer::create(*ctx, *scene);
+  if (!renderer) {
+    std::fprintf(stderr, "lagoon render: %s: %s\n", scene->source.c_str(), renderer.error().message.c_str());
     return kExitFailure;
   }
-  std::printf("wrote %s (%ux%u, t = %.2f s) on %s (%s)\n", out_path.c_str(), image.width, image.height,
-              scene->time_s, ctx->device_info().name.c_str(), ctx->device_info().type.c_str());
+  // One PNG per frame: out.png for a single frame, out_0000.png, out_0001.png ... for several.
+  const std::string stem = out_path.substr(0, out_path.size() - 4);
+  const double t0 = scene->time_s;
+  std::vector<vk::PassTime> timings;
+  io::Image8 image;
+  for (long long f = 0; f < frames; ++f) {
+    scene->time_s = float(t0 + double(f) / fps);
+    image = (*renderer)->render(*scene, &timings);
+    // A frame rendered with validation errors is not written: it cannot be trusted.
+    if (int status = validation_status(*ctx); status != kExitOk) return status;
+    char suffix[16];
+    std::snprintf(suffix, sizeof(suffix), "_%04lld", f);
+    const std::string path = frames == 1 ? out_path : stem + suffix + ".png";
+    if (auto written = io::write_png(path, image); !written) {
+      std::fprintf(stderr, "lagoon render: %s\n", written.error().message.c_str());
+      return kExitFailure;
+    }
+    if (frames > 1) {
+      const int done = int(40 * (f + 1) / frames);
+      std::fprintf(stderr, "\r[%s%s] %lld/%lld frames", std::string(done, '#').c_str(),
+                   std::string(40 - done, ' ').c_str(), f + 1, frames);
+    }
+  }
+  if (frames > 1) std::fprintf(stderr, "\n");
+  if (frames == 1) {
+    std::printf("wrote %s (%ux%u, t = %.2f s) on %s (%s)\n", out_path.c_str(), image.width, image.height,
+                scene->time_s, ctx->device_info().name.c_str(), ctx->device_info().type.c_str());
+  } else {
+    std::printf("wrote %s_0000.png .. %s_%04lld.png (%lld frames at %.3g fps, %ux%u) on %s (%s)\n",
+                stem.c_str(), stem.c_str(), frames - 1, frames, fps, image.width, image.height,
+                ctx->device_info().name.c_str(), ctx->device_info().type.c_str());
+  }
   for (const auto& t : timings) std::printf("  %-10s %8.2f ms GPU\n", t.name.c_str(), t.ms);
   return kExitOk;
 }
@@ -77,6 +115,8 @@ const Command& render_command() {
                            {"width", "W", "image width in pixels (same as --set render.width=W)"},
                            {"height", "H", "image height in pixels (same as --set render.height=H)"},
                            {"time", "T", "simulation time in seconds (same as --set time_s=T)"},
+                           {"frames", "N", "render N frames: OUT_0000.png, OUT_0001.png, ... (default 1)"},
+                           {"fps", "F", "frames per second of simulation time between frames (default 30)"},
                            {"set", "PATH=VALUE", "override a scene field, e.g. --set camera.fov_deg=40",
                             false, true}},
                .details =

@@ -4,11 +4,15 @@
 #include <cmath>
 #include <cstring>
 
+#include "gltf/gltf_loader.h"
 #include "lagoon_shaders/shaders.h"
 #include "optics/colour.h"
 #include "optics/lut.h"
 #include "render/camera.h"
 #include "render/seafloor.h"
+
+#include <cstdio>
+#include <glm/gtc/matrix_transform.hpp>
 #include "shared/frame.h"
 #include "shared/mesh.h"
 #include "vk/barriers.h"
@@ -136,13 +140,63 @@ Result<void> OceanRenderer::init(const scene::Scene& scene) {
   } else if (floor.type == "gltf") {
     return make_error("seafloor.type \"gltf\" is not rendered yet (use \"slope\" or \"none\")");
   }
+  return load_objects(scene);
+}
+
+Result<void> OceanRenderer::load_objects(const scene::Scene& scene) {
+  for (size_t o = 0; o < scene.objects.size(); ++o) {
+    const scene::Object& object = scene.objects[o];
+    const std::string field = "objects[" + std::to_string(o) + "].file";
+    auto model = gltf::load_gltf(object.file);
+    if (!model) return make_error(field + ": " + model.error().message);
+    for (const std::string& warning : model->warnings)
+      std::fprintf(stderr, "lagoon: warning: %s: %s\n", object.file.c_str(), warning.c_str());
+    // T(position) · Ry(yaw) · Rx(−pitch) · Rz(roll) · S(scale) (docs/scene-format.md, Objects).
+    glm::mat4 transform = glm::translate(glm::mat4(1.0f), object.position);
+    transform = glm::rotate(transform, glm::radians(object.rotation_deg.x), glm::vec3(0, 1, 0));
+    transform = glm::rotate(transform, glm::radians(-object.rotation_deg.y), glm::vec3(1, 0, 0));
+    transform = glm::rotate(transform, glm::radians(object.rotation_deg.z), glm::vec3(0, 0, 1));
+    transform = glm::scale(transform, glm::vec3(object.scale));
+    const int texture_base = int(textures_.size());
+    for (const gltf::Texture& t : model->textures)
+      textures_.push_back(upload_texture(
+          ctx_, io::Image8{.width = t.width, .height = t.height, .rgba = t.rgba}, "object texture"));
+    for (const gltf::Instance& instance : model->instances) {
+      for (const gltf::Primitive& p : model->meshes[instance.mesh].primitives) {
+        std::vector<MeshVertex> vertices(p.positions.size());
+        for (size_t i = 0; i < vertices.size(); ++i)
+          vertices[i] = {p.positions[i], p.normals[i], i < p.uvs.size() ? p.uvs[i] : glm::vec2(0)};
+        ObjectDraw draw{.mesh = upload_mesh(ctx_, vertices, p.indices), .world = transform * instance.world};
+        if (p.material >= 0) {
+          const gltf::Material& m = model->materials[p.material];
+          draw.base_colour =
+              glm::vec4(glm::vec3(m.base_color_factor), m.base_color_texture >= 0 ? 1.0f : 0.0f);
+          if (m.base_color_texture >= 0) draw.texture = texture_base + m.base_color_texture;
+        }
+        objects_.push_back(std::move(draw));
+      }
+    }
+  }
   return {};
+}
+
+void OceanRenderer::draw_objects(VkCommandBuffer cmd, float mode) const {
+  const vk::BufferRef frame{frame_.handle()};
+  for (const ObjectDraw& o : objects_) {
+    const gpu::MeshPush push{
+        .model = o.world, .base_colour = o.base_colour, .params = glm::vec4(mode, 0, 0, 0)};
+    const vk::Image& texture = o.texture >= 0 ? textures_[o.texture] : white_texture_;
+    vk::draw(cmd, mesh_refraction_,
+             {vk::bind(0, frame), vk::bind(1, o.mesh.vertices), vk::bind(2, o.mesh.indices),
+              vk::bind(3, sampled(texture, repeat_sampler_))},
+             push, o.mesh.index_count);
+  }
 }
 
 OceanRenderer::~OceanRenderer() = default;
 
 struct OceanRenderer::Targets {
-  vk::Image hdr, depth, color, refraction_albedo, refraction_depth;
+  vk::Image hdr, depth, color, refraction_albedo, refraction_depth, reflection, reflection_depth;
 };
 
 void OceanRenderer::record_frame(VkCommandBuffer cmd, const Targets& t) {
@@ -171,6 +225,7 @@ void OceanRenderer::record_frame(VkCommandBuffer cmd, const Targets& t) {
                 vk::bind(3, sampled(texture, repeat_sampler_))},
                push, floor_->index_count);
     }
+    draw_objects(cmd, 1.0f);  // their submerged parts
     vk::end_rendering(cmd);
     vk::image_barrier(cmd, t.refraction_albedo.handle(), t.refraction_albedo.all_subresources(),
                       VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
@@ -179,10 +234,30 @@ void OceanRenderer::record_frame(VkCommandBuffer cmd, const Targets& t) {
                       VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
                       vk::access::kDepthAttachment, vk::access::kGraphicsSampled);
   }
-  std::vector<vk::Binding> surface_bindings{
-      vk::bind(0, frame), vk::bind(3, sampled(t.refraction_albedo, clamp_sampler_)),
-      vk::bind(4, sampled(t.refraction_depth, nearest_sampler_)),
-      vk::bind(5, sampled(lut_t0_, clamp_sampler_)), vk::bind(6, sampled(lut_t1_, clamp_sampler_))};
+  {
+    // Planar reflection: what is above the water, mirrored about the mean water level, seen by the main
+    // camera. Alpha marks where something was drawn; elsewhere the surface reflects the analytic sky.
+    vk::GpuScope scope(timer_, cmd, "reflection");
+    vk::image_barrier(cmd, t.reflection.handle(), t.reflection.all_subresources(), VK_IMAGE_LAYOUT_UNDEFINED,
+                      VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, vk::access::kNone,
+                      vk::access::kColorAttachmentWrite);
+    vk::image_barrier(cmd, t.reflection_depth.handle(), t.reflection_depth.all_subresources(),
+                      VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, vk::access::kNone,
+                      vk::access::kDepthAttachment);
+    vk::begin_rendering(cmd, extent, {{.view = t.reflection.view(), .clear = std::array{0.f, 0.f, 0.f, 0.f}}},
+                        vk::DepthTarget{.view = t.reflection_depth.view(), .clear = 1.0f});
+    if (reflection_on_) draw_objects(cmd, 2.0f);
+    vk::end_rendering(cmd);
+    vk::image_barrier(cmd, t.reflection.handle(), t.reflection.all_subresources(),
+                      VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
+                      vk::access::kColorAttachmentWrite, vk::access::kGraphicsSampled);
+  }
+  std::vector<vk::Binding> surface_bindings{vk::bind(7, sampled(t.reflection, clamp_sampler_)),
+                                            vk::bind(0, frame),
+                                            vk::bind(3, sampled(t.refraction_albedo, clamp_sampler_)),
+                                            vk::bind(4, sampled(t.refraction_depth, nearest_sampler_)),
+                                            vk::bind(5, sampled(lut_t0_, clamp_sampler_)),
+                                            vk::bind(6, sampled(lut_t1_, clamp_sampler_))};
   for (uint32_t slot = 0; slot < 4; ++slot) {
     const ocean::CascadeTextures t = ocean_->cascade(std::min(slot, ocean_->cascade_count() - 1));
     surface_bindings.push_back(vk::bind(1, sampled(*t.displacement, repeat_sampler_), slot));
@@ -206,6 +281,7 @@ void OceanRenderer::record_frame(VkCommandBuffer cmd, const Targets& t) {
     vk::GpuScope scope(timer_, cmd, "surface");
     vk::begin_rendering(cmd, extent, {{.view = hdr.view()}},
                         vk::DepthTarget{.view = depth.view(), .clear = {}});
+    draw_objects(cmd, 0.0f);  // above-water parts, lit; the surface depth-tests against them
     const uint32_t quads = (kGridVertsPerSide - 1) * (kGridVertsPerSide - 1);
     vk::draw(cmd, surface_, surface_bindings, nullptr, 0, quads * 6);
     vk::end_rendering(cmd);
@@ -239,6 +315,7 @@ io::Image8 OceanRenderer::render(const scene::Scene& scene, std::vector<vk::Pass
     });
   }
 
+  reflection_on_ = scene.render.effects.reflection;
   const SkyLight light = sky_light(scene.sun);
   const CameraMatrices cam = camera_matrices(scene.camera, float(extent.width) / float(extent.height));
   const optics::ToneMapCurve curve = optics::tone_map_curve();
@@ -283,7 +360,9 @@ io::Image8 OceanRenderer::render(const scene::Scene& scene, std::vector<vk::Pass
       .color = target(kColorFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                       "color"),
       .refraction_albedo = target(kHdrFormat, attachment, "refraction albedo"),
-      .refraction_depth = target(kDepthFormat, depth_attachment, "refraction depth")};
+      .refraction_depth = target(kDepthFormat, depth_attachment, "refraction depth"),
+      .reflection = target(kHdrFormat, attachment, "reflection"),
+      .reflection_depth = target(kDepthFormat, depth_attachment, "reflection depth")};
   const vk::Image& color = targets.color;
   ctx_.submit_and_wait([&](VkCommandBuffer cmd) {
     timer_.reset(cmd);

@@ -49,15 +49,26 @@ class OceanRenderer {
   vk::Context& ctx_;
   std::unique_ptr<ocean::GpuOcean> ocean_;
   double ocean_time_ = -1;
+  bool reflection_on_ = true;
   glm::vec3 deep_colour_{0};
   double lut_r_max_ = 1, lut_h_max_ = 1;
   vk::Image lut_t0_, lut_t1_;  // the colour LUTs as textures: x = r axis, y = h axis
   std::optional<GpuMesh> floor_;
+  struct ObjectDraw {
+    GpuMesh mesh;
+    glm::mat4 world{1.0f};
+    glm::vec4 base_colour{1.0f};  // a = 1 when `texture` is used
+    int texture = -1;             // index into textures_
+  };
+  std::vector<ObjectDraw> objects_;
+  std::vector<vk::Image> textures_;
   vk::Image floor_texture_, white_texture_;
   bool floor_textured_ = false;
   glm::vec3 floor_albedo_{1};
   float floor_texture_scale_ = 1;
-  vk::GraphicsPipeline sky_, surface_, post_, mesh_refraction_;
+  vk::GraphicsPipeline sky_, surface_, post_, mesh_refraction_;  // mesh_refraction_ also draws lit meshes
+  Result<void> load_objects(const scene::Scene& scene);
+  void draw_objects(VkCommandBuffer cmd, float mode) const;
   vk::Buffer frame_;
   vk::Unique<VkSampler> repeat_sampler_, clamp_sampler_, nearest_sampler_;
   vk::GpuTimer timer_;

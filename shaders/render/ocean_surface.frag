@@ -13,6 +13,7 @@ layout(binding = 3) uniform sampler2D refraction_albedo;  // floor and submerged
 layout(binding = 4) uniform sampler2D refraction_depth;
 layout(binding = 5) uniform sampler2D lut_t0;             // (T0 RGB, a) over (u, v) = (sqrt(r/r_max), sqrt(h/h_max))
 layout(binding = 6) uniform sampler2D lut_t1;
+layout(binding = 7) uniform sampler2D reflection;  // mirrored objects above the water; a = coverage
 
 layout(location = 0) in vec3 v_world;
 layout(location = 1) in vec2 v_rest;
@@ -75,6 +76,8 @@ void main() {
 
   vec3 r = reflect(-v, n);
   vec3 reflected = sky_radiance(frame, r, false);
+  vec4 mirrored = texture(reflection, gl_FragCoord.xy * frame.screen.zw + n.xz * vec2(0.03, -0.03));
+  reflected = mix(reflected, mirrored.rgb, mirrored.a);
   // Sun glint: normalised Blinn-Phong lobe (seed 001's model) with Fresnel at the half vector.
   vec3 h = normalize(l + v);
   float shininess = 800.0;

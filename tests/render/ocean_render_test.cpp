@@ -2,6 +2,9 @@
 // whatever the golden file says.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <glm/geometric.hpp>
+
 #include "optics/lut.h"
 #include "render/ocean_renderer.h"
 #include "support/image_compare.h"
@@ -31,14 +34,6 @@ glm::dvec3 mean_rgb(const io::Image8& img, uint32_t y0, uint32_t y1) {
     for (uint32_t x = 0; x < img.width; ++x)
       sum += glm::dvec3(img.pixel(x, y)[0], img.pixel(x, y)[1], img.pixel(x, y)[2]);
   return sum / (double(y1 - y0) * img.width);
-}
-
-TEST_F(OceanRender, DefaultSceneMatchesGolden) {
-  const io::Image8 image = render(load());
-  // lavapipe is deterministic for a given Mesa build; the tolerance absorbs other LLVM/Mesa versions.
-  const CompareOptions tolerance{.channel_tolerance = 3, .max_differing_fraction = 0.01, .min_psnr_db = 35.0};
-  EXPECT_TRUE(matches_golden(image, std::string(LAGOON_SOURCE_DIR) + "/tests/golden/default_160x90.png",
-                             tolerance, std::string(LAGOON_TEST_ARTIFACTS) + "/render"));
 }
 
 TEST_F(OceanRender, SkyAboveWaterBelowAndDeterministic) {
@@ -141,6 +136,75 @@ TEST_F(BayRender, MissingFloorTextureIsAnErrorNamingIt) {
   auto renderer = render::OceanRenderer::create(ctx(), s);
   ASSERT_FALSE(renderer);
   EXPECT_NE(renderer.error().message.find("no-such-sand.png"), std::string::npos) << renderer.error().message;
+}
+
+}  // namespace
+}  // namespace lagoon::test
+
+namespace lagoon::test {
+namespace {
+
+class ShippedScenes : public GpuTest, public ::testing::WithParamInterface<const char*> {};
+
+// Each shipped scene at a small size against its golden image.
+TEST_P(ShippedScenes, MatchGolden) {
+  const std::string name = GetParam();
+  auto s = scene::load_scene(std::string(LAGOON_SOURCE_DIR) + "/scenes/" + name + ".json",
+                             std::vector<std::string>{"render.width=160", "render.height=90"});
+  ASSERT_TRUE(s) << s.error().message;
+  auto renderer = render::OceanRenderer::create(ctx(), *s);
+  ASSERT_TRUE(renderer) << renderer.error().message;
+  const io::Image8 image = (*renderer)->render(*s);
+  const CompareOptions tolerance{.channel_tolerance = 3, .max_differing_fraction = 0.01, .min_psnr_db = 35.0};
+  EXPECT_TRUE(matches_golden(image, std::string(LAGOON_SOURCE_DIR) + "/tests/golden/" + name + "_160x90.png",
+                             tolerance, std::string(LAGOON_TEST_ARTIFACTS) + "/render"));
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, ShippedScenes, ::testing::Values("default", "open-ocean", "tropical-lagoon"),
+                         [](const auto& info) {
+                           std::string n = info.param;
+                           std::replace(n.begin(), n.end(), '-', '_');
+                           return n;
+                         });
+
+class ReflectionRender : public OceanRender {};
+
+// A red buoy above calm water: with the reflection on, red appears in the water below it.
+TEST_F(ReflectionRender, ObjectAboveTheWaterAppearsMirrored) {
+  const std::vector<std::string> base{"camera.position=[0,1.5,-10]",
+                                      "camera.look_at=[0,0.5,0]",
+                                      "ocean.spectrum.wind_speed_mps=1",
+                                      "objects=[{\"file\":\"assets/buoy.gltf\"}]",
+                                      "render.width=160",
+                                      "render.height=90"};
+  auto with = [&](bool reflection) {
+    auto o = base;
+    o.push_back(std::string("render.effects.reflection=") + (reflection ? "true" : "false"));
+    return render(load(o));
+  };
+  const io::Image8 on = with(true), off = with(false);
+  // Find the buoy's rows (strongly red pixels) in the upper half, then look below the horizon line.
+  auto redness = [](const io::Image8& img, uint32_t y0, uint32_t y1) {
+    double red = 0;
+    for (uint32_t y = y0; y < y1; ++y)
+      for (uint32_t x = 60; x < 100; ++x)
+        red += std::max(0, int(img.pixel(x, y)[0]) - int(img.pixel(x, y)[2]));
+    return red;
+  };
+  EXPECT_GT(redness(on, 0, 45), 1000) << "the buoy itself is not visible";
+  EXPECT_GT(redness(on, 48, 90), redness(off, 48, 90) + 500) << "no mirrored red below the buoy";
+}
+
+// At grazing angles the water reflects almost everything: just below the horizon it nearly equals the sky
+// just above it, while looking steeply down it does not.
+TEST_F(ReflectionRender, GrazingViewTendsToTheSky) {
+  const io::Image8 img =
+      render(load({"camera.position=[0,2,0]", "camera.look_at=[0,2,100]", "ocean.spectrum.wind_speed_mps=2",
+                   "render.width=160", "render.height=90"}));
+  const glm::dvec3 sky = mean_rgb(img, 40, 44), water_far = mean_rgb(img, 46, 48),
+                   water_near = mean_rgb(img, 85, 90);
+  EXPECT_LT(glm::length(water_far - sky), 0.5 * glm::length(water_near - sky))
+      << "far water " << water_far.b << " sky " << sky.b << " near water " << water_near.b;
 }
 
 }  // namespace

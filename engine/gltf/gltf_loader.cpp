@@ -1,0 +1,378 @@
+#include "gltf/gltf_loader.h"
+
+// The one translation unit that compiles tinygltf and the only one that sees its types. Images are decoded
+// by gltf/image_decode.cpp (PNG/JPEG only, size-limited) and files are read through the sandbox below, so
+// tinygltf's own stb and file system code are left out.
+//
+// tinygltf's (unused) writer needs <fstream> but includes it only along with its file system code.
+#include <fstream>
+
+#define TINYGLTF_IMPLEMENTATION
+#define TINYGLTF_NO_STB_IMAGE
+#define TINYGLTF_NO_STB_IMAGE_WRITE
+#define TINYGLTF_NO_FS
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <new>
+#include <span>
+#include <string>
+#include <system_error>
+#include <utility>
+
+#include "gltf/accessor.h"
+#include "gltf/checks.h"
+#include "gltf/geometry.h"
+#include "gltf/glb.h"
+#include "gltf/image_decode.h"
+#include "gltf/nodes.h"
+#include "gltf/prescan.h"
+#include "gltf/primitive.h"
+#include "gltf/read_file.h"
+
+namespace lagoon::gltf {
+namespace {
+
+namespace fs = std::filesystem;
+using detail::at;
+using detail::valid_index;
+using detail::warn_once;
+
+// ---- Sandboxed file access for tinygltf ------------------------------------------------------------------
+
+// tinygltf may open exactly the files the prescan resolved inside the model's folder, nothing else (it
+// also tries every URI relative to the working directory, which this shuts off too).
+struct Sandbox {
+  std::vector<fs::path> allowed;
+  size_t max_bytes = 0;
+
+  bool allows(const std::string& path) const {
+    std::error_code ec;
+    const fs::path resolved = fs::weakly_canonical(path, ec);
+    return !ec && std::find(allowed.begin(), allowed.end(), resolved) != allowed.end();
+  }
+};
+
+bool sandbox_exists(const std::string& path, void* user) {
+  return static_cast<Sandbox*>(user)->allows(path);
+}
+
+std::string sandbox_expand(const std::string& path, void*) {
+  return path;
+}  // no ~ or $VAR expansion
+
+bool sandbox_read(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
+  const auto* sandbox = static_cast<Sandbox*>(user);
+  if (!sandbox->allows(path)) {
+    if (err) *err = "outside the files the model may read";
+    return false;
+  }
+  Result<std::vector<uint8_t>> bytes = detail::read_file(path, sandbox->max_bytes);
+  if (!bytes) {
+    if (err) *err = bytes.error().message;
+    return false;
+  }
+  *out = std::move(*bytes);
+  return true;
+}
+
+bool sandbox_write(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+  if (err) *err = "the loader never writes files";
+  return false;
+}
+
+// Encoded image bytes are kept for decode_image, which only runs for images a material uses. Images in a
+// bufferView are read later from the checked bufferView, not through the pointer tinygltf passes here.
+bool keep_encoded(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                  const unsigned char* bytes, int size, void*) {
+  if (image->bufferView == -1 && bytes && size > 0) image->image.assign(bytes, bytes + size);
+  return true;
+}
+
+// tinygltf's messages end in newlines and may quote a whole data: URI; keep them readable.
+std::string tidy(const std::string& message) {
+  constexpr size_t kMaxLine = 300;
+  std::string out, line;
+  auto flush = [&] {
+    if (line.empty()) return;
+    if (line.size() > kMaxLine) line = line.substr(0, kMaxLine) + "...";
+    out += (out.empty() ? "" : "; ") + line;
+    line.clear();
+  };
+  for (char c : message) {
+    if (c == '\n' || c == '\r') {
+      flush();
+    } else {
+      line += c;
+    }
+  }
+  flush();
+  return out.empty() ? "tinygltf gave no reason" : out;
+}
+
+// ---- tinygltf model to plain structs ---------------------------------------------------------------------
+
+void warn_extensions(const tinygltf::ExtensionMap& extensions, std::vector<std::string>& warnings) {
+  for (const auto& [name, value] : extensions) {
+    warn_once(warnings, "extension '" + name + "' is not supported; ignored");
+  }
+}
+
+void warn_unsupported(const tinygltf::Model& g, std::vector<std::string>& warnings) {
+  bool skins = !g.skins.empty(), cameras = !g.cameras.empty(), morphs = false;
+  for (const tinygltf::Node& n : g.nodes) {
+    skins |= n.skin != -1;
+    cameras |= n.camera != -1;
+    morphs |= !n.weights.empty();
+    warn_extensions(n.extensions, warnings);
+  }
+  for (const tinygltf::Mesh& m : g.meshes) morphs |= !m.weights.empty();
+  if (skins) warn_once(warnings, "skins are not supported; drawn in bind pose");
+  if (!g.animations.empty()) warn_once(warnings, "animations are not supported; drawn in the rest pose");
+  if (cameras) warn_once(warnings, "cameras are not supported; ignored");
+  if (morphs) warn_once(warnings, "morph targets are not supported; drawn with the base geometry");
+  warn_extensions(g.extensions, warnings);
+}
+
+// bufferViews checked against their buffers, accessors copied as plain descriptions.
+Result<detail::Accessors> build_accessors(const tinygltf::Model& g) {
+  detail::Accessors a;
+  for (size_t i = 0; i < g.bufferViews.size(); ++i) {
+    const tinygltf::BufferView& v = g.bufferViews[i];
+    const std::string where = at("bufferViews", static_cast<int64_t>(i));
+    if (!valid_index(v.buffer, g.buffers.size())) {
+      return make_error(where + ".buffer: buffers[" + std::to_string(v.buffer) + "] does not exist");
+    }
+    const tinygltf::Buffer& b = g.buffers[static_cast<size_t>(v.buffer)];
+    size_t end = 0;
+    if (!detail::mul_add(1, v.byteOffset, v.byteLength, &end) || end > b.data.size()) {
+      return make_error(where + ": byteOffset " + std::to_string(v.byteOffset) + " + byteLength " +
+                        std::to_string(v.byteLength) + " is past the end of " + at("buffers", v.buffer) +
+                        " (" + std::to_string(b.data.size()) + " bytes)");
+    }
+    a.views.push_back({b.data.data() + v.byteOffset, v.byteLength, v.byteStride});
+  }
+  for (const tinygltf::Accessor& t : g.accessors) {
+    detail::AccessorDesc d;
+    d.view = t.bufferView;
+    d.byte_offset = t.byteOffset;
+    d.count = t.count;
+    d.component_type = t.componentType;
+    d.components = tinygltf::GetNumComponentsInType(static_cast<uint32_t>(t.type));
+    d.normalized = t.normalized;
+    if (t.sparse.isSparse) {
+      d.sparse = detail::Sparse{t.sparse.count,
+                                t.sparse.indices.bufferView,
+                                t.sparse.indices.byteOffset,
+                                t.sparse.indices.componentType,
+                                t.sparse.values.bufferView,
+                                t.sparse.values.byteOffset};
+    }
+    a.accessors.push_back(d);
+  }
+  return a;
+}
+
+// Materials, and the images their base colour textures use (image index -> Model::textures index).
+Result<std::vector<Material>> convert_materials(const tinygltf::Model& g, std::map<int, int>& image_slots,
+                                                std::vector<std::string>& warnings) {
+  std::vector<Material> materials;
+  for (size_t i = 0; i < g.materials.size(); ++i) {
+    const tinygltf::Material& m = g.materials[i];
+    const tinygltf::PbrMetallicRoughness& pbr = m.pbrMetallicRoughness;
+    const std::string where = at("materials", static_cast<int64_t>(i)) + ".pbrMetallicRoughness";
+    Material out;
+    out.name = m.name;
+    const std::vector<double>& f = pbr.baseColorFactor;
+    if (f.size() != 4 || !std::all_of(f.begin(), f.end(), [](double v) { return std::isfinite(v); })) {
+      return make_error(where + ".baseColorFactor: expected 4 finite numbers");
+    }
+    out.base_color_factor = glm::vec4(f[0], f[1], f[2], f[3]);
+    if (const int t = pbr.baseColorTexture.index; t != -1) {
+      if (!valid_index(t, g.textures.size())) {
+        return make_error(where + ".baseColorTexture.index: textures[" + std::to_string(t) +
+                          "] does not exist (the file has " + std::to_string(g.textures.size()) + ")");
+      }
+      const tinygltf::Texture& texture = g.textures[static_cast<size_t>(t)];
+      warn_extensions(texture.extensions, warnings);
+      warn_extensions(pbr.baseColorTexture.extensions, warnings);
+      if (texture.source == -1) {
+        warn_once(warnings, "textures without a PNG or JPEG image are not supported; drawn untextured");
+      } else if (!valid_index(texture.source, g.images.size())) {
+        return make_error(at("textures", t) + ".source: images[" + std::to_string(texture.source) +
+                          "] does not exist");
+      } else {
+        auto [slot, added] = image_slots.try_emplace(texture.source, static_cast<int>(image_slots.size()));
+        out.base_color_texture = slot->second;
+      }
+      if (pbr.baseColorTexture.texCoord != 0) {
+        warn_once(warnings,
+                  "base colour textures on TEXCOORD_1 or higher are not supported; TEXCOORD_0 is used");
+      }
+    }
+    if (pbr.metallicRoughnessTexture.index != -1 || m.normalTexture.index != -1 ||
+        m.occlusionTexture.index != -1 || m.emissiveTexture.index != -1) {
+      warn_once(warnings,
+                "metallic-roughness, normal, occlusion and emissive textures are not supported; ignored");
+    }
+    if (m.alphaMode != "OPAQUE")
+      warn_once(warnings, "alphaMode MASK and BLEND are not supported; drawn opaque");
+    warn_extensions(m.extensions, warnings);
+    materials.push_back(std::move(out));
+  }
+  return materials;
+}
+
+Result<std::vector<Texture>> decode_textures(const tinygltf::Model& g, const detail::Accessors& a,
+                                             const std::map<int, int>& image_slots, const Limits& limits) {
+  if (image_slots.size() > limits.max_textures) {
+    return make_error("materials: " + std::to_string(image_slots.size()) +
+                      " base colour images is more than the limit of " + std::to_string(limits.max_textures) +
+                      " textures");
+  }
+  std::vector<Texture> textures(image_slots.size());
+  for (const auto& [image_index, slot] : image_slots) {
+    const tinygltf::Image& image = g.images[static_cast<size_t>(image_index)];
+    std::string where = at("images", image_index);
+    if (!image.name.empty()) where += " '" + image.name + "'";
+    std::span<const uint8_t> bytes;
+    if (image.bufferView != -1) {
+      if (!valid_index(image.bufferView, a.views.size())) {
+        return make_error(where + ".bufferView: bufferViews[" + std::to_string(image.bufferView) +
+                          "] does not exist");
+      }
+      const detail::View& view = a.views[static_cast<size_t>(image.bufferView)];
+      bytes = {view.data, view.size};
+    } else if (!image.image.empty()) {
+      bytes = image.image;
+    } else {
+      return make_error(where + ": the image '" + image.uri + "' could not be read");
+    }
+    Result<Texture> texture = detail::decode_image(bytes, where, limits.max_texture_size);
+    if (!texture) return texture.error();
+    textures[static_cast<size_t>(slot)] = std::move(*texture);
+  }
+  return textures;
+}
+
+Result<std::vector<Mesh>> convert_meshes(const tinygltf::Model& g, const detail::Accessors& a,
+                                         size_t material_count, const Limits& limits,
+                                         std::vector<std::string>& warnings) {
+  detail::Budget budget{limits.max_vertices, limits.max_indices};
+  std::vector<Mesh> meshes;
+  for (size_t m = 0; m < g.meshes.size(); ++m) {
+    Mesh mesh;
+    mesh.name = g.meshes[m].name;
+    for (size_t p = 0; p < g.meshes[m].primitives.size(); ++p) {
+      const tinygltf::Primitive& t = g.meshes[m].primitives[p];
+      warn_extensions(t.extensions, warnings);
+      const detail::PrimitiveDesc desc{t.attributes, t.indices, t.mode, t.material, !t.targets.empty()};
+      const std::string where =
+          at("meshes", static_cast<int64_t>(m)) + at(".primitives", static_cast<int64_t>(p));
+      Result<std::optional<Primitive>> prim =
+          detail::convert_primitive(desc, where, a, material_count, budget, warnings);
+      if (!prim) return prim.error();
+      if (*prim) mesh.primitives.push_back(std::move(**prim));
+    }
+    meshes.push_back(std::move(mesh));
+  }
+  return meshes;
+}
+
+Result<std::vector<Instance>> convert_nodes(const tinygltf::Model& g, const Limits& limits) {
+  if (g.nodes.size() > limits.max_nodes) {
+    return make_error("nodes: " + std::to_string(g.nodes.size()) + " nodes is more than the limit of " +
+                      std::to_string(limits.max_nodes));
+  }
+  std::vector<detail::NodeDesc> nodes;
+  nodes.reserve(g.nodes.size());
+  for (const tinygltf::Node& n : g.nodes) {
+    nodes.push_back({n.children, n.mesh, n.matrix, n.translation, n.rotation, n.scale});
+  }
+  if (g.scenes.empty()) return detail::flatten_nodes(nodes, std::nullopt, "nodes", g.meshes.size());
+  const int scene = g.defaultScene == -1 ? 0 : g.defaultScene;
+  if (!valid_index(scene, g.scenes.size())) {
+    return make_error("scene: scenes[" + std::to_string(scene) + "] does not exist");
+  }
+  return detail::flatten_nodes(nodes, g.scenes[static_cast<size_t>(scene)].nodes,
+                               at("scenes", scene) + ".nodes", g.meshes.size());
+}
+
+Result<Model> convert(const tinygltf::Model& g, const Limits& limits, std::vector<std::string> warnings) {
+  Model model;
+  warn_unsupported(g, warnings);
+  // Cheap structural checks first, so a broken file fails before images are decoded.
+  Result<std::vector<Instance>> instances = convert_nodes(g, limits);
+  if (!instances) return instances.error();
+  Result<detail::Accessors> accessors = build_accessors(g);
+  if (!accessors) return accessors.error();
+  std::map<int, int> image_slots;
+  Result<std::vector<Material>> materials = convert_materials(g, image_slots, warnings);
+  if (!materials) return materials.error();
+  Result<std::vector<Mesh>> meshes = convert_meshes(g, *accessors, materials->size(), limits, warnings);
+  if (!meshes) return meshes.error();
+  Result<std::vector<Texture>> textures = decode_textures(g, *accessors, image_slots, limits);
+  if (!textures) return textures.error();
+  model.meshes = std::move(*meshes);
+  model.materials = std::move(*materials);
+  model.textures = std::move(*textures);
+  model.instances = std::move(*instances);
+  model.warnings = std::move(warnings);
+  detail::compute_bounds(model);
+  return model;
+}
+
+// ---- Loading ---------------------------------------------------------------------------------------------
+
+Result<Model> load(const fs::path& file, const Limits& limits) {
+  Result<std::vector<uint8_t>> bytes = detail::read_file(file, limits.max_file_bytes);
+  if (!bytes) return bytes.error();
+  if (bytes->size() > UINT32_MAX) return make_error("files of 4 GiB or more are not supported");
+  const auto size = static_cast<unsigned int>(bytes->size());
+  std::error_code ec;
+  const fs::path folder = fs::canonical(fs::absolute(file, ec).parent_path(), ec);
+  if (ec) return make_error("cannot resolve the model's folder: " + ec.message());
+
+  const bool glb = detail::is_glb(*bytes);
+  std::string_view json(reinterpret_cast<const char*>(bytes->data()), bytes->size());
+  if (glb) {
+    Result<std::string_view> chunk = detail::glb_json_chunk(*bytes);
+    if (!chunk) return chunk.error();
+    json = *chunk;
+  }
+  Result<detail::Prescan> pre = detail::prescan(json, folder, limits.max_file_bytes);
+  if (!pre) return pre.error();
+
+  Sandbox sandbox{pre->files, limits.max_file_bytes};
+  tinygltf::TinyGLTF loader;
+  loader.SetFsCallbacks({&sandbox_exists, &sandbox_expand, &sandbox_read, &sandbox_write, &sandbox});
+  loader.SetImageLoader(&keep_encoded, nullptr);
+  tinygltf::Model g;
+  std::string err, warn;
+  const bool ok =
+      glb ? loader.LoadBinaryFromMemory(&g, &err, &warn, bytes->data(), size, folder.string())
+          : loader.LoadASCIIFromString(&g, &err, &warn, reinterpret_cast<const char*>(bytes->data()), size,
+                                       folder.string());
+  if (!ok) return make_error("not a valid glTF file: " + tidy(err));
+  std::vector<uint8_t>().swap(*bytes);  // released: tinygltf copied the GLB's BIN chunk into g.buffers
+  return convert(g, limits, std::move(pre->warnings));
+}
+
+}  // namespace
+
+Result<Model> load_gltf(const fs::path& file, const Limits& limits) {
+  // Errors below carry the glTF object and the reason; the file is named once, here.
+  try {
+    Result<Model> model = load(file, limits);
+    if (!model) return make_error(file.string() + ": " + model.error().message);
+    return model;
+  } catch (const std::bad_alloc&) {
+    return make_error(file.string() + ": out of memory while loading");
+  } catch (const std::exception& e) {
+    return make_error(file.string() + ": " + e.what());
+  }
+}
+
+}  // namespace lagoon::gltf

@@ -1,0 +1,58 @@
+// Plain data of a loaded glTF 2.0 model: what the renderer uploads. Nothing here depends on tinygltf, so
+// only engine/gltf/gltf_loader.cpp sees the parser.
+//
+// Conventions are glTF's, which are also Lagoon's: right-handed, +Y up, metres; triangles wind
+// counter-clockwise when seen from the front; UV (0,0) is the top-left of the image and Texture rows are
+// stored top row first (what Vulkan samples with no flip).
+#pragma once
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace lagoon::gltf {
+
+struct Primitive {                   // triangles only (strips and fans are converted to lists)
+  std::vector<glm::vec3> positions;  // model space, metres
+  std::vector<glm::vec3> normals;    // generated (area-weighted) when the file has none
+  std::vector<glm::vec2> uvs;        // TEXCOORD_0; zero when the file has none
+  std::vector<uint32_t> indices;  // generated 0..n-1 when the file has none; every index < positions.size()
+  int material = -1;              // index into Model::materials, -1 = default material
+};
+
+// Decoded RGBA8, width*height*4 bytes. Base colour textures hold sRGB-encoded values: sample them through
+// an _SRGB format.
+struct Texture {
+  uint32_t width = 0, height = 0;
+  std::vector<uint8_t> rgba;
+};
+
+struct Material {
+  glm::vec4 base_color_factor{1.0f};  // linear, multiplies the texture
+  int base_color_texture = -1;        // index into Model::textures, -1 = none
+  std::string name;
+};
+
+struct Mesh {
+  std::vector<Primitive> primitives;
+  std::string name;
+};
+
+struct Instance {  // one node of the default scene that has a mesh; the hierarchy is flattened
+  uint32_t mesh = 0;
+  glm::mat4 world{1.0f};
+};
+
+struct Model {
+  std::vector<Mesh> meshes;
+  std::vector<Material> materials;
+  std::vector<Texture> textures;  // only the images some material uses as base colour, each once
+  std::vector<Instance> instances;
+  glm::vec3 bounds_min{0}, bounds_max{0};  // of all instances in world space; zero when there are none
+  // One per unsupported feature kind (e.g. "skins are not supported; drawn in bind pose"), not per
+  // occurrence: the model still loads, but looks different from what its author saw.
+  std::vector<std::string> warnings;
+};
+
+}  // namespace lagoon::gltf

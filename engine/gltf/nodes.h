@@ -1,0 +1,33 @@
+// The node hierarchy flattened into instances. Files are checked to be a forest (one parent per node, no
+// cycles) before it is walked, and the walk uses its own stack, so no file can make it recurse forever.
+#pragma once
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gltf/model.h"
+#include "vk/result.h"
+
+namespace lagoon::gltf::detail {
+
+// A glTF node as tinygltf parses it; empty arrays mean "absent".
+struct NodeDesc {
+  std::vector<int> children;
+  int mesh = -1;
+  std::vector<double> matrix;       // 16, column-major
+  std::vector<double> translation;  // 3
+  std::vector<double> rotation;     // 4, quaternion x, y, z, w
+  std::vector<double> scale;        // 3
+};
+
+// Deeper hierarchies are refused: no real asset nests a thousand levels, a hostile one could nest 100 000.
+constexpr size_t kMaxNodeDepth = 1000;
+
+// Instances of every node with a mesh under `roots` (a scene's node list, named `roots_where` in
+// messages), in depth-first order; without roots (a file with no scenes), under every parentless node.
+Result<std::vector<Instance>> flatten_nodes(const std::vector<NodeDesc>& nodes,
+                                            const std::optional<std::vector<int>>& roots,
+                                            const std::string& roots_where, size_t mesh_count);
+
+}  // namespace lagoon::gltf::detail
