@@ -71,6 +71,9 @@ OceanRenderer::OceanRenderer(vk::Context& ctx, const scene::Scene& scene)
                                                .color_formats = {kColorFormat}})),
       frame_(vk::Buffer::create(ctx, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                                 vk::MemoryUsage::Upload, "frame")),
+      lights_(vk::Buffer::create(ctx, sizeof(gpu::PointLightGpu) * kMaxLights,
+                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUsage::Upload,
+                                 "point lights")),
       // Anisotropic filtering is cheap in GPU hardware but runs in software on CPU devices.
       repeat_sampler_(vk::create_sampler(
           ctx, {.address = VK_SAMPLER_ADDRESS_MODE_REPEAT,
@@ -137,45 +140,50 @@ Result<void> OceanRenderer::init(const scene::Scene& scene) {
       floor_texture_ = upload_texture(ctx_, *image, "floor texture");
       floor_textured_ = true;
     }
-  } else if (floor.type == "gltf") {
-    return make_error("seafloor.type \"gltf\" is not rendered yet (use \"slope\" or \"none\")");
   }
   return load_objects(scene);
 }
 
+Result<void> OceanRenderer::load_model(const std::string& file, const glm::mat4& transform,
+                                       const std::string& field) {
+  auto model = gltf::load_gltf(file);
+  if (!model) return make_error(field + ": " + model.error().message);
+  for (const std::string& warning : model->warnings)
+    std::fprintf(stderr, "lagoon: warning: %s: %s\n", file.c_str(), warning.c_str());
+  const int texture_base = int(textures_.size());
+  for (const gltf::Texture& t : model->textures)
+    textures_.push_back(upload_texture(ctx_, io::Image8{.width = t.width, .height = t.height, .rgba = t.rgba},
+                                       "model texture"));
+  for (const gltf::Instance& instance : model->instances) {
+    for (const gltf::Primitive& p : model->meshes[instance.mesh].primitives) {
+      std::vector<MeshVertex> vertices(p.positions.size());
+      for (size_t i = 0; i < vertices.size(); ++i)
+        vertices[i] = {p.positions[i], p.normals[i], i < p.uvs.size() ? p.uvs[i] : glm::vec2(0)};
+      ObjectDraw draw{.mesh = upload_mesh(ctx_, vertices, p.indices), .world = transform * instance.world};
+      if (p.material >= 0) {
+        const gltf::Material& m = model->materials[p.material];
+        draw.base_colour = glm::vec4(glm::vec3(m.base_color_factor), m.base_color_texture >= 0 ? 1.0f : 0.0f);
+        if (m.base_color_texture >= 0) draw.texture = texture_base + m.base_color_texture;
+      }
+      objects_.push_back(std::move(draw));
+    }
+  }
+  return {};
+}
+
 Result<void> OceanRenderer::load_objects(const scene::Scene& scene) {
+  // A glTF sea floor is drawn like an object: the passes clip it at the water line like everything else.
+  if (scene.seafloor.type == "gltf")
+    if (auto r = load_model(scene.seafloor.file, glm::mat4(1.0f), "seafloor.file"); !r) return r;
   for (size_t o = 0; o < scene.objects.size(); ++o) {
     const scene::Object& object = scene.objects[o];
-    const std::string field = "objects[" + std::to_string(o) + "].file";
-    auto model = gltf::load_gltf(object.file);
-    if (!model) return make_error(field + ": " + model.error().message);
-    for (const std::string& warning : model->warnings)
-      std::fprintf(stderr, "lagoon: warning: %s: %s\n", object.file.c_str(), warning.c_str());
     // T(position) · Ry(yaw) · Rx(−pitch) · Rz(roll) · S(scale) (docs/scene-format.md, Objects).
     glm::mat4 transform = glm::translate(glm::mat4(1.0f), object.position);
     transform = glm::rotate(transform, glm::radians(object.rotation_deg.x), glm::vec3(0, 1, 0));
     transform = glm::rotate(transform, glm::radians(-object.rotation_deg.y), glm::vec3(1, 0, 0));
     transform = glm::rotate(transform, glm::radians(object.rotation_deg.z), glm::vec3(0, 0, 1));
     transform = glm::scale(transform, glm::vec3(object.scale));
-    const int texture_base = int(textures_.size());
-    for (const gltf::Texture& t : model->textures)
-      textures_.push_back(upload_texture(
-          ctx_, io::Image8{.width = t.width, .height = t.height, .rgba = t.rgba}, "object texture"));
-    for (const gltf::Instance& instance : model->instances) {
-      for (const gltf::Primitive& p : model->meshes[instance.mesh].primitives) {
-        std::vector<MeshVertex> vertices(p.positions.size());
-        for (size_t i = 0; i < vertices.size(); ++i)
-          vertices[i] = {p.positions[i], p.normals[i], i < p.uvs.size() ? p.uvs[i] : glm::vec2(0)};
-        ObjectDraw draw{.mesh = upload_mesh(ctx_, vertices, p.indices), .world = transform * instance.world};
-        if (p.material >= 0) {
-          const gltf::Material& m = model->materials[p.material];
-          draw.base_colour =
-              glm::vec4(glm::vec3(m.base_color_factor), m.base_color_texture >= 0 ? 1.0f : 0.0f);
-          if (m.base_color_texture >= 0) draw.texture = texture_base + m.base_color_texture;
-        }
-        objects_.push_back(std::move(draw));
-      }
-    }
+    if (auto r = load_model(object.file, transform, "objects[" + std::to_string(o) + "].file"); !r) return r;
   }
   return {};
 }
@@ -188,7 +196,7 @@ void OceanRenderer::draw_objects(VkCommandBuffer cmd, float mode) const {
     const vk::Image& texture = o.texture >= 0 ? textures_[o.texture] : white_texture_;
     vk::draw(cmd, mesh_refraction_,
              {vk::bind(0, frame), vk::bind(1, o.mesh.vertices), vk::bind(2, o.mesh.indices),
-              vk::bind(3, sampled(texture, repeat_sampler_))},
+              vk::bind(3, sampled(texture, repeat_sampler_)), vk::bind(4, lights_)},
              push, o.mesh.index_count);
   }
 }
@@ -222,7 +230,7 @@ void OceanRenderer::record_frame(VkCommandBuffer cmd, const Targets& t) {
       const vk::Image& texture = floor_textured_ ? floor_texture_ : white_texture_;
       vk::draw(cmd, mesh_refraction_,
                {vk::bind(0, frame), vk::bind(1, floor_->vertices), vk::bind(2, floor_->indices),
-                vk::bind(3, sampled(texture, repeat_sampler_))},
+                vk::bind(3, sampled(texture, repeat_sampler_)), vk::bind(4, lights_)},
                push, floor_->index_count);
     }
     draw_objects(cmd, 1.0f);  // their submerged parts
@@ -257,7 +265,8 @@ void OceanRenderer::record_frame(VkCommandBuffer cmd, const Targets& t) {
                                             vk::bind(3, sampled(t.refraction_albedo, clamp_sampler_)),
                                             vk::bind(4, sampled(t.refraction_depth, nearest_sampler_)),
                                             vk::bind(5, sampled(lut_t0_, clamp_sampler_)),
-                                            vk::bind(6, sampled(lut_t1_, clamp_sampler_))};
+                                            vk::bind(6, sampled(lut_t1_, clamp_sampler_)),
+                                            vk::bind(8, lights_)};
   for (uint32_t slot = 0; slot < 4; ++slot) {
     const ocean::CascadeTextures t = ocean_->cascade(std::min(slot, ocean_->cascade_count() - 1));
     surface_bindings.push_back(vk::bind(1, sampled(*t.displacement, repeat_sampler_), slot));
@@ -316,6 +325,14 @@ io::Image8 OceanRenderer::render(const scene::Scene& scene, std::vector<vk::Pass
   }
 
   reflection_on_ = scene.render.effects.reflection;
+  const uint32_t light_count = uint32_t(std::min<size_t>(scene.lights.size(), kMaxLights));
+  auto* lights = reinterpret_cast<gpu::PointLightGpu*>(lights_.mapped());
+  for (uint32_t i = 0; i < light_count; ++i) {
+    const scene::PointLight& l = scene.lights[i];
+    lights[i] = {.position_range = glm::vec4(l.position, l.range_m),
+                 .colour = glm::vec4(l.colour * l.intensity, 0)};
+  }
+  lights_.flush();
   const SkyLight light = sky_light(scene.sun);
   const CameraMatrices cam = camera_matrices(scene.camera, float(extent.width) / float(extent.height));
   const optics::ToneMapCurve curve = optics::tone_map_curve();
@@ -336,9 +353,10 @@ io::Image8 OceanRenderer::render(const scene::Scene& scene, std::vector<vk::Pass
       .post2 = glm::vec4(float(curve.white), float(curve.world_adaptation),
                          scene.render.tone_map == "clamp" ? 0.0f : 1.0f, 0.0f),
       .lut = glm::vec4(float(lut_r_max_), float(lut_h_max_), scene.render.effects.refraction ? 1.0f : 0.0f,
-                       0.0f),
+                       light.light_scale),
       .screen = glm::vec4(float(extent.width), float(extent.height), 1.0f / float(extent.width),
-                          1.0f / float(extent.height))};
+                          1.0f / float(extent.height)),
+      .lights = glm::vec4(float(light_count), 0, 0, 0)};
   for (uint32_t c = 0; c < std::min(ocean_->cascade_count(), 4u); ++c) {
     const ocean::CascadeTextures tex = ocean_->cascade(c);
     f.cascade_patch[c] = float(tex.patch_size_m);

@@ -68,8 +68,11 @@ class OceanRenderer {
   float floor_texture_scale_ = 1;
   vk::GraphicsPipeline sky_, surface_, post_, mesh_refraction_;  // mesh_refraction_ also draws lit meshes
   Result<void> load_objects(const scene::Scene& scene);
+  Result<void> load_model(const std::string& file, const glm::mat4& transform, const std::string& field);
   void draw_objects(VkCommandBuffer cmd, float mode) const;
+  static constexpr size_t kMaxLights = 64;  // the scene format's limit
   vk::Buffer frame_;
+  vk::Buffer lights_;
   vk::Unique<VkSampler> repeat_sampler_, clamp_sampler_, nearest_sampler_;
   vk::GpuTimer timer_;
 };

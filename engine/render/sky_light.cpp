@@ -23,6 +23,7 @@ SkyLight sky_light(const scene::Sun& sun, const optics::SkyParams& params) {
   const double night =
       sun.elevation_deg >= 2.0 ? 1.0 : std::clamp((sun.elevation_deg + 6.0) / 8.0, 0.02, 1.0);
   const double scale = sun.intensity * night;
+  light.light_scale = float(scale);
   light.sun_irradiance = glm::vec3(sun_h / cos_zenith * scale);
   light.sky_radiance = glm::vec3(sky_h * scale);
   // E = L·Ω for the disc: L = E_normal / Ω, times π because white units are E_d/π.

@@ -19,6 +19,9 @@ struct SkyLight {
   glm::vec3 sky_radiance{0};
   glm::vec3 sun_disc_radiance{0};  // radiance of the solar disc (0.53°), for the sky pass
   float sun_elevation_deg = 0;
+  // The light above the water relative to that of the LUTs' sun (sun.intensity, dimmed after sunset): the
+  // LUT colours are ratios to that light, so the water's own light scales with it.
+  float light_scale = 1;
 };
 
 SkyLight sky_light(const scene::Sun& sun, const optics::SkyParams& params = {});

@@ -30,4 +30,15 @@ float fresnel_dielectric(float cos_i, float ior) {
   return 0.5 * (rs * rs + rp * rp);
 }
 
+// Irradiance (white units) from point light `light` at point p with normal n: inverse square, cut at range
+// with a smooth window so lights end without a visible edge.
+vec3 point_light_irradiance(PointLightGpu light, vec3 p, vec3 n, out vec3 to_light) {
+  vec3 d = light.position_range.xyz - p;
+  float dist2 = max(dot(d, d), 1e-4);
+  to_light = d * inversesqrt(dist2);
+  float range = light.position_range.w;
+  float window = clamp(1.0 - dist2 * dist2 / (range * range * range * range), 0.0, 1.0);
+  return light.colour.rgb * (window * window / dist2) * max(dot(n, to_light), 0.0);
+}
+
 #endif

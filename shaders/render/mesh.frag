@@ -8,6 +8,7 @@
 // transport (the LUTs) lights it in the surface pass. Mode 2: lit, mirrored, only what is above the water.
 layout(std140, binding = 0) uniform Frame { FrameUniforms frame; };
 layout(binding = 3) uniform sampler2D albedo_texture;
+layout(std430, binding = 4) readonly buffer Lights { PointLightGpu point_lights[]; };
 layout(push_constant) uniform Push { MeshPush p; };
 
 layout(location = 0) in vec3 v_world;
@@ -30,5 +31,14 @@ void main() {
   vec3 l = frame.sun_dir.xyz;
   // Lambert under the sun and a sky hemisphere (brighter from above), in white units.
   vec3 light = frame.sun_irradiance.rgb * max(dot(n, l), 0.0) + frame.sky_radiance.rgb * (0.6 + 0.4 * n.y);
-  out_colour = vec4(albedo * light, 1.0);
+  // Point lights: Lambert plus a Blinn-Phong highlight (seed 001's lighting model).
+  vec3 v = normalize(frame.camera_pos.xyz - v_world);
+  vec3 highlight = vec3(0.0);
+  for (int i = 0; i < int(frame.lights.x); ++i) {
+    vec3 to_light;
+    vec3 irradiance = point_light_irradiance(point_lights[i], v_world, n, to_light);
+    light += irradiance;
+    highlight += irradiance * 0.04 * (32.0 + 2.0) / 8.0 * pow(max(dot(n, normalize(to_light + v)), 0.0), 32.0);
+  }
+  out_colour = vec4(albedo * light + highlight, 1.0);
 }

@@ -14,6 +14,7 @@ layout(binding = 4) uniform sampler2D refraction_depth;
 layout(binding = 5) uniform sampler2D lut_t0;             // (T0 RGB, a) over (u, v) = (sqrt(r/r_max), sqrt(h/h_max))
 layout(binding = 6) uniform sampler2D lut_t1;
 layout(binding = 7) uniform sampler2D reflection;  // mirrored objects above the water; a = coverage
+layout(std430, binding = 8) readonly buffer Lights { PointLightGpu point_lights[]; };
 
 layout(location = 0) in vec3 v_world;
 layout(location = 1) in vec2 v_rest;
@@ -76,14 +77,26 @@ void main() {
 
   vec3 r = reflect(-v, n);
   vec3 reflected = sky_radiance(frame, r, false);
-  vec4 mirrored = texture(reflection, gl_FragCoord.xy * frame.screen.zw + n.xz * vec2(0.03, -0.03));
-  reflected = mix(reflected, mirrored.rgb, mirrored.a);
+  vec2 mirror_uv = gl_FragCoord.xy * frame.screen.zw + n.xz * vec2(0.03, -0.03);
+  // Outside the reflection texture there is nothing mirrored to show: the sky is the fallback.
+  if (all(greaterThanEqual(mirror_uv, vec2(0.0))) && all(lessThanEqual(mirror_uv, vec2(1.0)))) {
+    vec4 mirrored = texture(reflection, mirror_uv);
+    reflected = mix(reflected, mirrored.rgb, mirrored.a);
+  }
   // Sun glint: normalised Blinn-Phong lobe (seed 001's model) with Fresnel at the half vector.
   vec3 h = normalize(l + v);
   float shininess = 800.0;
   float glint = (shininess + 2.0) / 8.0 * pow(max(dot(n, h), 0.0), shininess) *
                 fresnel_dielectric(dot(h, v), ior) * max(dot(n, l), 0.0);
-  vec3 surface = fresnel * reflected + glint * frame.sun_irradiance.rgb + (1.0 - fresnel) * water_radiance(n, v);
+  vec3 surface = fresnel * reflected + glint * frame.sun_irradiance.rgb + (1.0 - fresnel) * water_radiance(n, v) * frame.lut.w;
+  // Point lights: Blinn-Phong highlights on the water (seed 001), same lobe as the sun's.
+  for (int i = 0; i < int(frame.lights.x); ++i) {
+    vec3 to_light;
+    vec3 irradiance = point_light_irradiance(point_lights[i], v_world, n, to_light);
+    vec3 hl = normalize(to_light + v);
+    surface += irradiance * (shininess + 2.0) / 8.0 * pow(max(dot(n, hl), 0.0), shininess) *
+               fresnel_dielectric(dot(hl, v), ior);
+  }
 
   vec3 lit_white = frame.sun_irradiance.rgb * max(dot(n, l), 0.0) + frame.sky_radiance.rgb;
   surface = mix(surface, frame.water_deep.w * lit_white, clamp(foam, 0.0, 1.0));

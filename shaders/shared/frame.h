@@ -20,13 +20,21 @@ struct FrameUniforms {
   vec4 cascade_texel;   // L/N (m) of cascades 0..3
   vec4 post;            // x = exposure, y = display gamma, z = tone-map m, w = tone-map exponent
   vec4 post2;           // x = tone-map white, y = tone-map world adaptation, z = tone map on (1) / clamp (0)
-  vec4 lut;             // x = r_max m, y = h_max m of the colour LUTs, z = refraction on, w = unused
+  vec4 lut;             // x = r_max m, y = h_max m of the colour LUTs, z = refraction on, w = light scale
   vec4 screen;          // x = width, y = height (pixels), zw = 1 / (width, height)
+  vec4 lights;          // x = number of point lights in the light buffer, yzw unused
+};
+
+// One point light of the scene's "lights" block (storage buffer, std430).
+struct PointLightGpu {
+  vec4 position_range;  // xyz metres, w = range (m)
+  vec4 colour;          // rgb = colour x intensity (irradiance at 1 m in white units), w unused
 };
 LAGOON_GPU_END
 
 #ifdef __cplusplus
-LAGOON_CHECK_SIZE(FrameUniforms, 352);
+LAGOON_CHECK_SIZE(FrameUniforms, 368);
+LAGOON_CHECK_SIZE(PointLightGpu, 32);
 LAGOON_CHECK_OFFSET(FrameUniforms, camera_pos, 128);
 LAGOON_CHECK_OFFSET(FrameUniforms, water_deep, 208);
 LAGOON_CHECK_OFFSET(FrameUniforms, post2, 304);

@@ -209,3 +209,32 @@ TEST_F(ReflectionRender, GrazingViewTendsToTheSky) {
 
 }  // namespace
 }  // namespace lagoon::test
+
+namespace lagoon::test {
+namespace {
+
+class LightRender : public OceanRender {};
+
+// At night a point light above the water makes a highlight on it; without it the water stays dark.
+TEST_F(LightRender, PointLightLightsTheWaterAtNight) {
+  const std::vector<std::string> night{"sun.elevation_deg=-8",    "render.exposure=6",
+                                       "seafloor.type=none",      "objects=[]",
+                                       "camera.position=[0,4,0]", "camera.look_at=[0,0,30]"};
+  auto with = [&](bool lamp) {
+    auto o = night;
+    o.push_back(lamp ? R"(lights=[{"position":[0,4,25],"colour":[1,0.8,0.5],"intensity":40,"range_m":80}])"
+                     : "lights=[]");
+    return render(load(o));
+  };
+  const io::Image8 dark = with(false), lit = with(true);
+  int brightest_dark = 0, brightest_lit = 0;
+  for (uint32_t y = 50; y < 90; ++y)
+    for (uint32_t x = 0; x < 160; ++x) {
+      brightest_dark = std::max(brightest_dark, int(dark.pixel(x, y)[0]));
+      brightest_lit = std::max(brightest_lit, int(lit.pixel(x, y)[0]));
+    }
+  EXPECT_GT(brightest_lit, brightest_dark + 60) << "no highlight from the point light";
+}
+
+}  // namespace
+}  // namespace lagoon::test
