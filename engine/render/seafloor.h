@@ -17,6 +17,6 @@ struct FloorMesh {
 };
 
 // A grid of `cells` x `cells` quads covering ±extent_m around `centre`, denser near the centre.
-FloorMesh build_slope_floor(const scene::Seafloor& floor, glm::vec2 centre, uint32_t cells = 160);
+FloorMesh build_slope_floor(const scene::Seafloor& floor, glm::vec2 centre, uint32_t cells = 64);
 
 }  // namespace lagoon::render
