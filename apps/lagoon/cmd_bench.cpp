@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,16 +34,19 @@ double time_ms(F&& f) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
-int run_bench_compute(const ParsedArgs& args) {
-  int rounds = 15;
-  if (auto r = args.get("rounds")) {
-    auto v = parse_integer(*r);
-    if (!v || *v < 1 || *v > 1000) {
-      std::fprintf(stderr, "lagoon bench: --rounds %s must be a whole number from 1 to 1000\n", r->c_str());
-      return kExitUsage;
-    }
-    rounds = int(*v);
+// --rounds, or `fallback`; nullopt (after printing why) when the value is not a whole number in [1, 1000].
+std::optional<int> rounds_option(const ParsedArgs& args, int fallback) {
+  const auto r = args.get("rounds");
+  if (!r) return fallback;
+  const auto v = parse_integer(*r);
+  if (!v || *v < 1 || *v > 1000) {
+    std::fprintf(stderr, "lagoon bench: --rounds %s must be a whole number from 1 to 1000\n", r->c_str());
+    return std::nullopt;
   }
+  return int(*v);
+}
+
+int run_bench_compute(const ParsedArgs& args, int rounds) {
   auto ctx = open_context();
   if (!ctx) return kExitFailure;
   std::printf("device: %s (%s); %d rounds per configuration, medians; ratio = median of per-round GPU/CPU\n",
@@ -171,18 +175,10 @@ int run_bench_render(const ParsedArgs& args, int rounds) {
 
 int run_bench(const ParsedArgs& args) {
   const std::string what = args.get("what").value_or("");
-  if (what == "compute") return run_bench_compute(args);
-  if (what == "render") {
-    int rounds = 10;
-    if (auto r = args.get("rounds")) {
-      auto v = parse_integer(*r);
-      if (!v || *v < 1 || *v > 1000) {
-        std::fprintf(stderr, "lagoon bench: --rounds %s must be a whole number from 1 to 1000\n", r->c_str());
-        return kExitUsage;
-      }
-      rounds = int(*v);
-    }
-    return run_bench_render(args, rounds);
+  if (what == "compute" || what == "render") {
+    const auto rounds = rounds_option(args, what == "compute" ? 15 : 10);
+    if (!rounds) return kExitUsage;
+    return what == "compute" ? run_bench_compute(args, *rounds) : run_bench_render(args, *rounds);
   }
   std::fprintf(stderr, "lagoon bench: unknown benchmark '%s'; available: compute, render\n", what.c_str());
   return kExitUsage;
