@@ -23,7 +23,8 @@ TEST(BenchCli, UsageErrorsExit2) {
 TEST(BenchCli, RenderReportsEveryPassAndTheFrame) {
   TempDir dir;
   const std::string json = (dir / "bench.json").string();
-  auto r = lagoon("bench render --rounds 1 --json " + json);
+  auto r = lagoon("bench render --rounds 1 --scene " + std::string(LAGOON_SOURCE_DIR) +
+                  "/scenes/default.json --json " + json);
   ASSERT_EQ(r.exit_code, 0) << r.output;
   std::ifstream file(json);
   const auto doc = nlohmann::json::parse(file);
