@@ -205,7 +205,35 @@ OceanRenderer::~OceanRenderer() = default;
 
 struct OceanRenderer::Targets {
   vk::Image hdr, depth, color, refraction_albedo, refraction_depth, reflection, reflection_depth;
+  vk::Buffer readback;  // the tone-mapped colour, copied in the frame's own submit
 };
+
+const OceanRenderer::Targets& OceanRenderer::targets_for(VkExtent2D extent) {
+  if (targets_ && targets_->hdr.extent().width == extent.width &&
+      targets_->hdr.extent().height == extent.height)
+    return *targets_;
+  targets_.reset();  // free the old size first: the new one may be large
+  const VkImageUsageFlags attachment = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+  const VkImageUsageFlags depth_attachment =
+      VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+  auto target = [&](VkFormat format, VkImageUsageFlags usage, const char* name) {
+    return vk::Image::create(ctx_, {.format = format, .extent = extent, .usage = usage, .debug_name = name});
+  };
+  vk::Image color =
+      target(kColorFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, "color");
+  vk::Buffer readback = vk::Buffer::create(ctx_, vk::readback_bytes(color), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                           vk::MemoryUsage::Readback, "frame readback");
+  targets_ = std::make_unique<Targets>(
+      Targets{.hdr = target(kHdrFormat, attachment, "hdr"),
+              .depth = target(kDepthFormat, depth_attachment, "depth"),
+              .color = std::move(color),
+              .refraction_albedo = target(kHdrFormat, attachment, "refraction albedo"),
+              .refraction_depth = target(kDepthFormat, depth_attachment, "refraction depth"),
+              .reflection = target(kHdrFormat, attachment, "reflection"),
+              .reflection_depth = target(kDepthFormat, depth_attachment, "reflection depth"),
+              .readback = std::move(readback)});
+  return *targets_;
+}
 
 void OceanRenderer::record_frame(VkCommandBuffer cmd, const Targets& t) {
   const vk::Image &hdr = t.hdr, &depth = t.depth, &color = t.color;
@@ -366,37 +394,23 @@ io::Image8 OceanRenderer::render(const scene::Scene& scene, std::vector<vk::Pass
   std::memcpy(frame_.mapped(), &f, sizeof(f));
   frame_.flush();
 
-  const VkImageUsageFlags attachment = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
-  const VkImageUsageFlags depth_attachment =
-      VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
-  auto target = [&](VkFormat format, VkImageUsageFlags usage, const char* name) {
-    return vk::Image::create(ctx_, {.format = format, .extent = extent, .usage = usage, .debug_name = name});
-  };
-  const Targets targets{
-      .hdr = target(kHdrFormat, attachment, "hdr"),
-      .depth = target(kDepthFormat, depth_attachment, "depth"),
-      .color = target(kColorFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                      "color"),
-      .refraction_albedo = target(kHdrFormat, attachment, "refraction albedo"),
-      .refraction_depth = target(kDepthFormat, depth_attachment, "refraction depth"),
-      .reflection = target(kHdrFormat, attachment, "reflection"),
-      .reflection_depth = target(kDepthFormat, depth_attachment, "reflection depth")};
-  const vk::Image& color = targets.color;
+  const Targets& targets = targets_for(extent);
   ctx_.submit_and_wait([&](VkCommandBuffer cmd) {
     timer_.reset(cmd);
     ocean_->record_step(cmd, t, t - ocean_time_, &timer_);
     record_frame(cmd, targets);
+    vk::record_readback(cmd, targets.color, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                        vk::access::kColorAttachmentWrite, targets.readback);
   });
   ocean_time_ = t;
   if (timings) *timings = timer_.results();
 
-  const std::vector<std::byte> texels = vk::readback_image(
-      ctx_, color, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, vk::access::kColorAttachmentWrite);
+  targets.readback.invalidate();
   io::Image8 image;
   image.width = extent.width;
   image.height = extent.height;
-  image.rgba.resize(texels.size());
-  std::memcpy(image.rgba.data(), texels.data(), texels.size());
+  image.rgba.resize(vk::readback_bytes(targets.color));
+  std::memcpy(image.rgba.data(), targets.readback.mapped(), image.rgba.size());
   return image;
 }
 

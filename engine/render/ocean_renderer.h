@@ -45,6 +45,10 @@ class OceanRenderer {
   OceanRenderer(vk::Context& ctx, const scene::Scene& scene);
   Result<void> init(const scene::Scene& scene);
   void record_frame(VkCommandBuffer cmd, const Targets& targets);
+  // The render targets and readback buffer, kept across frames of the same size (allocating ~30 MB of
+  // images every frame cost lavapipe several ms).
+  const Targets& targets_for(VkExtent2D extent);
+  std::unique_ptr<Targets> targets_;
 
   vk::Context& ctx_;
   std::unique_ptr<ocean::GpuOcean> ocean_;

@@ -79,22 +79,30 @@ void upload_image(Context& ctx, const Image& image, std::span<const std::byte> t
   });
 }
 
+VkDeviceSize readback_bytes(const Image& image, uint32_t mip) {
+  return mip_bytes(image, mip);
+}
+
+void record_readback(VkCommandBuffer cmd, const Image& image, VkImageLayout layout, Access last_writer,
+                     const Buffer& staging, uint32_t mip) {
+  const VkImageSubresourceRange range = image.all_subresources();
+  image_barrier(cmd, image.handle(), range, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, last_writer,
+                access::kTransferRead);
+  const VkBufferImageCopy region = mip_copy(image, mip);
+  vkCmdCopyImageToBuffer(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.handle(), 1,
+                         &region);
+  image_barrier(cmd, image.handle(), range, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout,
+                access::kTransferRead, last_writer);
+  buffer_barrier(cmd, staging.handle(), access::kTransferWrite, access::kHostRead);
+}
+
 std::vector<std::byte> readback_image(Context& ctx, const Image& image, VkImageLayout layout,
                                       Access last_writer, uint32_t mip) {
   const VkDeviceSize size = mip_bytes(image, mip);
   Buffer staging =
       Buffer::create(ctx, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUsage::Readback, "readback");
-  ctx.submit_and_wait([&](VkCommandBuffer cmd) {
-    const VkImageSubresourceRange range = image.all_subresources();
-    image_barrier(cmd, image.handle(), range, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, last_writer,
-                  access::kTransferRead);
-    const VkBufferImageCopy region = mip_copy(image, mip);
-    vkCmdCopyImageToBuffer(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.handle(), 1,
-                           &region);
-    image_barrier(cmd, image.handle(), range, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout,
-                  access::kTransferRead, last_writer);
-    buffer_barrier(cmd, staging.handle(), access::kTransferWrite, access::kHostRead);
-  });
+  ctx.submit_and_wait(
+      [&](VkCommandBuffer cmd) { record_readback(cmd, image, layout, last_writer, staging, mip); });
   staging.invalidate();
   std::vector<std::byte> out(size);
   std::memcpy(out.data(), staging.mapped(), size);

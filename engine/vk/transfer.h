@@ -20,6 +20,12 @@ std::vector<std::byte> readback_buffer(Context& ctx, const Buffer& src);
 // the image is left in `final_layout`, visible to `final_access`.
 void upload_image(Context& ctx, const Image& image, std::span<const std::byte> texels,
                   VkImageLayout final_layout, Access final_access);
+// Records a copy of one mip level of every layer (tightly packed) into `staging` (a Readback buffer of at
+// least readback_bytes(image, mip)), made visible to the host once `cmd` has completed. The image must be in
+// `layout` after `last_writer`; it is returned to `layout`. Lets a frame read its result in its own submit.
+VkDeviceSize readback_bytes(const Image& image, uint32_t mip = 0);
+void record_readback(VkCommandBuffer cmd, const Image& image, VkImageLayout layout, Access last_writer,
+                     const Buffer& staging, uint32_t mip = 0);
 // Reads one mip level of every layer (tightly packed). The image must be in `layout` after `last_writer`;
 // it is returned to `layout`.
 std::vector<std::byte> readback_image(Context& ctx, const Image& image, VkImageLayout layout,
