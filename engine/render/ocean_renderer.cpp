@@ -6,6 +6,7 @@
 
 #include "gltf/gltf_loader.h"
 #include "lagoon_shaders/shaders.h"
+#include "ocean/slope_statistics.h"
 #include "optics/colour.h"
 #include "optics/lut.h"
 #include "render/camera.h"
@@ -390,7 +391,13 @@ io::Image8 OceanRenderer::render(const scene::Scene& scene, std::vector<vk::Pass
     f.cascade_patch[c] = float(tex.patch_size_m);
     f.cascade_layer[c] = float(tex.layer);
     f.cascade_texel[c] = float(tex.patch_size_m / tex.resolution);
+    f.cascade_mss[c] = float(ocean::mean_square_slope(ocean_->spectra()[c]));
   }
+  // Waves shorter than the last cascade carries still widen the glint (cheap: one 1-D integral).
+  const auto bands = ocean::cascade_bands(ocean_->params());
+  const uint32_t drawn = std::min(ocean_->cascade_count(), 4u);
+  f.glint.x = float(
+      ocean::spectrum_mean_square_slope(ocean_->params(), bands[drawn - 1].k_max, ocean::kCapillaryCutoffK));
   std::memcpy(frame_.mapped(), &f, sizeof(f));
   frame_.flush();
 

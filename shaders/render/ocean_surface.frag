@@ -57,12 +57,23 @@ void main() {
   vec2 slope = vec2(0.0);
   float foam = 0.0;
   int count = int(frame.grid.w);
-#define LAGOON_CASCADE(c)                                                        \
-  if (count > c) {                                                               \
-    vec3 uvw = vec3(v_rest / frame.cascade_patch[c], frame.cascade_layer[c]);    \
-    vec3 cn = texture(normal_jacobian[c], uvw).xyz;                              \
-    slope += -cn.xz / max(cn.y, 0.05); /* the cascade normal is (-sx, 1, -sz) */ \
-    foam = max(foam, texture(displacement[c], uvw).w);                           \
+  // Slopes the mips filter away still roughen the surface: their mean square slope widens the glint
+  // (Bruneton et al. 2010). Cascade c carries |k| from k_lo to π/(2·texel), with about equal slope variance
+  // per octave (saturation range); a mip level `lod` keeps waves up to π/(texel·2^lod), so (lod - 1)
+  // octaves of the band are lost.
+  float footprint = max(length(dFdx(v_rest)), length(dFdy(v_rest)));
+  float mss = frame.glint.x;
+#define LAGOON_CASCADE(c)                                                                    \
+  if (count > c) {                                                                           \
+    vec3 uvw = vec3(v_rest / frame.cascade_patch[c], frame.cascade_layer[c]);                \
+    vec3 cn = texture(normal_jacobian[c], uvw).xyz;                                          \
+    slope += -cn.xz / max(cn.y, 0.05); /* the cascade normal is (-sx, 1, -sz) */             \
+    foam = max(foam, texture(displacement[c], uvw).w);                                       \
+    float k_hi = 1.5707963 / frame.cascade_texel[c];                                         \
+    float k_lo = c == 0 ? 6.2831853 / frame.cascade_patch[0] : 1.5707963 / frame.cascade_texel[max(c - 1, 0)]; \
+    float octaves = max(log2(k_hi / k_lo), 0.5);                                             \
+    float lod = log2(max(footprint, 1e-6) / frame.cascade_texel[c]);                         \
+    mss += frame.cascade_mss[c] * clamp((lod - 1.0) / octaves, 0.0, 1.0);                    \
   }
   LAGOON_CASCADE(0)
   LAGOON_CASCADE(1)
@@ -83,9 +94,10 @@ void main() {
     vec4 mirrored = texture(reflection, mirror_uv);
     reflected = mix(reflected, mirrored.rgb, mirrored.a);
   }
-  // Sun glint: normalised Blinn-Phong lobe (seed 001's model) with Fresnel at the half vector.
+  // Sun glint: normalised Blinn-Phong lobe (seed 001's model) with Fresnel at the half vector; its exponent
+  // from the unresolved mean square slope (the Beckmann equivalent: s = 2/mss - 2).
   vec3 h = normalize(l + v);
-  float shininess = 800.0;
+  float shininess = clamp(2.0 / max(mss, 1e-4) - 2.0, 8.0, 4000.0);
   float glint = (shininess + 2.0) / 8.0 * pow(max(dot(n, h), 0.0), shininess) *
                 fresnel_dielectric(dot(h, v), ior) * max(dot(n, l), 0.0);
   vec3 surface = fresnel * reflected + glint * frame.sun_irradiance.rgb + (1.0 - fresnel) * water_radiance(n, v) * frame.lut.w;

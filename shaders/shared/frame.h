@@ -18,11 +18,13 @@ struct FrameUniforms {
   vec4 cascade_patch;   // patch size (m) of cascades 0..3
   vec4 cascade_layer;   // array layer of cascades 0..3
   vec4 cascade_texel;   // L/N (m) of cascades 0..3
-  vec4 post;            // x = exposure, y = display gamma, z = tone-map m, w = tone-map exponent
-  vec4 post2;           // x = tone-map white, y = tone-map world adaptation, z = tone map on (1) / clamp (0)
-  vec4 lut;             // x = r_max m, y = h_max m of the colour LUTs, z = refraction on, w = light scale
-  vec4 screen;          // x = width, y = height (pixels), zw = 1 / (width, height)
-  vec4 lights;          // x = number of point lights in the light buffer, yzw unused
+  vec4 cascade_mss;     // mean square slope (ocean/slope_statistics.h) of cascades 0..3
+  vec4 glint;   // x = mean square slope of the waves shorter than the last cascade (to 1 cm), yzw unused
+  vec4 post;    // x = exposure, y = display gamma, z = tone-map m, w = tone-map exponent
+  vec4 post2;   // x = tone-map white, y = tone-map world adaptation, z = tone map on (1) / clamp (0)
+  vec4 lut;     // x = r_max m, y = h_max m of the colour LUTs, z = refraction on, w = light scale
+  vec4 screen;  // x = width, y = height (pixels), zw = 1 / (width, height)
+  vec4 lights;  // x = number of point lights in the light buffer, yzw unused
 };
 
 // One point light of the scene's "lights" block (storage buffer, std430).
@@ -33,11 +35,11 @@ struct PointLightGpu {
 LAGOON_GPU_END
 
 #ifdef __cplusplus
-LAGOON_CHECK_SIZE(FrameUniforms, 368);
+LAGOON_CHECK_SIZE(FrameUniforms, 400);
 LAGOON_CHECK_SIZE(PointLightGpu, 32);
 LAGOON_CHECK_OFFSET(FrameUniforms, camera_pos, 128);
 LAGOON_CHECK_OFFSET(FrameUniforms, water_deep, 208);
-LAGOON_CHECK_OFFSET(FrameUniforms, post2, 304);
-LAGOON_CHECK_OFFSET(FrameUniforms, screen, 336);
+LAGOON_CHECK_OFFSET(FrameUniforms, post2, 336);
+LAGOON_CHECK_OFFSET(FrameUniforms, screen, 368);
 #endif
 #endif

@@ -1,0 +1,40 @@
+#include "ocean/slope_statistics.h"
+
+#include <cmath>
+#include <complex>
+#include <numbers>
+
+#include "ocean/spectrum.h"
+
+namespace lagoon::ocean {
+
+double mean_square_slope(const CascadeSpectrum& s) {
+  const uint32_t n = s.resolution;
+  const double dk = 2.0 * std::numbers::pi / s.patch_size_m;
+  double sum = 0;
+  for (uint32_t iz = 0; iz < n; ++iz) {
+    const double kz = dk * (iz < n / 2 ? double(iz) : double(iz) - n);
+    for (uint32_t ix = 0; ix < n; ++ix) {
+      const double kx = dk * (ix < n / 2 ? double(ix) : double(ix) - n);
+      sum += (kx * kx + kz * kz) * std::norm(std::complex<double>(s.h0[size_t{iz} * n + ix]));
+    }
+  }
+  return 2.0 * sum;
+}
+
+double spectrum_mean_square_slope(const OceanParams& params, double k_from, double k_to) {
+  if (!(k_to > k_from) || k_from <= 0) return 0;
+  const DirectionalSpectrum spectrum(params);
+  // Trapezoid in ln k: the integrand k²Ψ(k)·k varies slowly there (the saturation range gives k^0).
+  constexpr int kSteps = 512;
+  const double a = std::log(k_from), b = std::log(k_to), step = (b - a) / kSteps;
+  double sum = 0;
+  for (int i = 0; i <= kSteps; ++i) {
+    const double k = std::exp(a + i * step);
+    const double f = k * k * spectrum.omnidirectional(k) * k;
+    sum += (i == 0 || i == kSteps) ? 0.5 * f : f;
+  }
+  return sum * step;
+}
+
+}  // namespace lagoon::ocean

@@ -1,0 +1,23 @@
+// Mean square slope of the sea surface, E[(∂h/∂x)² + (∂h/∂z)²]: what the renderer adds to the sun glint's
+// width for the waves a pixel cannot resolve (those filtered away by the cascades' mips and those shorter
+// than the last cascade carries), as in Bruneton, Neyret & Holzschuch 2010, "Real-time realistic ocean
+// lighting using seamless transitions from geometry to BRDF".
+#pragma once
+#include "ocean/initial_spectrum.h"
+#include "ocean/ocean_params.h"
+
+namespace lagoon::ocean {
+
+// The cascade's own mean square slope averaged over time: Σ_k |k|² E_t|h̃(k,t)|² = 2 Σ_k |k|² |h0(k)|²
+// (h̃ = h0(k)e^{-iωt} + conj(h0(-k))e^{iωt}). Exact for the sampled amplitudes, not the expected spectrum.
+double mean_square_slope(const CascadeSpectrum& spectrum);
+
+// ∫ k² Ψ_omni(k) dk over [k_from, k_to] rad/m from the continuous spectrum (no sampling): the slopes of
+// waves no cascade carries. 0 when k_to <= k_from.
+double spectrum_mean_square_slope(const OceanParams& params, double k_from, double k_to);
+
+// Shortest wave the glint model counts, 1 cm (k = 2π/0.01): below it capillary damping dominates and the
+// gravity-wave spectra used here no longer hold (Cox & Munk's glitter slopes end about here).
+inline constexpr double kCapillaryCutoffK = 628.3;
+
+}  // namespace lagoon::ocean
