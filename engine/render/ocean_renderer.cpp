@@ -99,6 +99,14 @@ Result<std::unique_ptr<OceanRenderer>> OceanRenderer::create(vk::Context& ctx, c
 }
 
 Result<void> OceanRenderer::init(const scene::Scene& scene) {
+  // The glint's width (ocean_surface.frag): each drawn cascade's mean square slope, and that of the waves
+  // shorter than the last drawn cascade. Fixed with the ocean, so computed once here.
+  const uint32_t drawn = std::min(ocean_->cascade_count(), 4u);
+  for (uint32_t c = 0; c < drawn; ++c)
+    cascade_mss_[c] = float(ocean::mean_square_slope(ocean_->spectra()[c]));
+  const double last_k = ocean::cascade_bands(ocean_->params())[drawn - 1].k_max;
+  subgrid_mss_ = float(ocean::spectrum_mean_square_slope(ocean_->params(), last_k, ocean::kCapillaryCutoffK));
+
   // The colour LUTs of the scene's water under its sun, as textures (docs/optics.md).
   auto inputs = optics::lut_inputs(scene.water, scene.sun.elevation_deg);
   if (!inputs) return inputs.error();
@@ -378,6 +386,8 @@ io::Image8 OceanRenderer::render(const scene::Scene& scene, std::vector<vk::Pass
       .water_deep = glm::vec4(deep_colour_, kFoamAlbedo),
       .grid = glm::vec4(half_extent, float(kGridVertsPerSide), 0.35f * half_extent,
                         float(std::min(ocean_->cascade_count(), 4u))),
+      .cascade_mss = cascade_mss_,
+      .glint = glm::vec4(subgrid_mss_, 0, 0, 0),
       .post = glm::vec4(scene.render.exposure, scene.render.gamma, float(curve.m), float(curve.exponent)),
       .post2 = glm::vec4(float(curve.white), float(curve.world_adaptation),
                          scene.render.tone_map == "clamp" ? 0.0f : 1.0f, 0.0f),
@@ -391,13 +401,7 @@ io::Image8 OceanRenderer::render(const scene::Scene& scene, std::vector<vk::Pass
     f.cascade_patch[c] = float(tex.patch_size_m);
     f.cascade_layer[c] = float(tex.layer);
     f.cascade_texel[c] = float(tex.patch_size_m / tex.resolution);
-    f.cascade_mss[c] = float(ocean::mean_square_slope(ocean_->spectra()[c]));
   }
-  // Waves shorter than the last cascade carries still widen the glint (cheap: one 1-D integral).
-  const auto bands = ocean::cascade_bands(ocean_->params());
-  const uint32_t drawn = std::min(ocean_->cascade_count(), 4u);
-  f.glint.x = float(
-      ocean::spectrum_mean_square_slope(ocean_->params(), bands[drawn - 1].k_max, ocean::kCapillaryCutoffK));
   std::memcpy(frame_.mapped(), &f, sizeof(f));
   frame_.flush();
 

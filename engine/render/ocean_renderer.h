@@ -55,6 +55,8 @@ class OceanRenderer {
   double ocean_time_ = -1;
   bool reflection_on_ = true;
   glm::vec3 deep_colour_{0};
+  glm::vec4 cascade_mss_{0};  // mean square slope of cascades 0..3 (ocean/slope_statistics.h)
+  float subgrid_mss_ = 0;     // ... of the waves shorter than the last drawn cascade, to 1 cm
   double lut_r_max_ = 1, lut_h_max_ = 1;
   vk::Image lut_t0_, lut_t1_;  // the colour LUTs as textures: x = r axis, y = h axis
   std::optional<GpuMesh> floor_;
