@@ -91,6 +91,17 @@ std::optional<long long> parse_integer(const std::string& text) {
   return v;
 }
 
+Result<long long> integer_option(const ParsedArgs& args, const std::string& name, long long fallback,
+                                 long long lo, long long hi) {
+  const auto text = args.get(name);
+  if (!text) return fallback;
+  const auto v = parse_integer(*text);
+  if (!v || *v < lo || *v > hi)
+    return Error{"--" + name + " " + *text + " must be a whole number from " + std::to_string(lo) + " to " +
+                 std::to_string(hi)};
+  return *v;
+}
+
 std::optional<double> parse_number(const std::string& text) {
   if (text.empty()) return std::nullopt;
   char* end = nullptr;

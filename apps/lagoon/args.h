@@ -48,4 +48,9 @@ std::string usage(const CommandSpec& spec);
 std::optional<long long> parse_integer(const std::string& text);
 std::optional<double> parse_number(const std::string& text);
 
+// --name as a whole number in [lo, hi], or `fallback` when absent. The error reads
+// "--name VALUE must be a whole number from LO to HI" (the caller prefixes the command).
+Result<long long> integer_option(const ParsedArgs& args, const std::string& name, long long fallback,
+                                 long long lo, long long hi);
+
 }  // namespace lagoon::cli

@@ -36,14 +36,23 @@ double time_ms(F&& f) {
 
 // --rounds, or `fallback`; nullopt (after printing why) when the value is not a whole number in [1, 1000].
 std::optional<int> rounds_option(const ParsedArgs& args, int fallback) {
-  const auto r = args.get("rounds");
-  if (!r) return fallback;
-  const auto v = parse_integer(*r);
-  if (!v || *v < 1 || *v > 1000) {
-    std::fprintf(stderr, "lagoon bench: --rounds %s must be a whole number from 1 to 1000\n", r->c_str());
+  const auto rounds = integer_option(args, "rounds", fallback, 1, 1000);
+  if (!rounds) {
+    std::fprintf(stderr, "lagoon bench: %s\n", rounds.error().message.c_str());
     return std::nullopt;
   }
-  return int(*v);
+  return int(*rounds);
+}
+
+// Writes the --json report atomically (no half-written file); false, with the reason on stderr, on failure.
+bool write_report(const std::string& path, const nlohmann::json& doc) {
+  const std::string text = doc.dump(2) + "\n";
+  if (auto written = io::write_file_atomic(path, std::as_bytes(std::span(text.data(), text.size())));
+      !written) {
+    std::fprintf(stderr, "lagoon bench: %s\n", written.error().message.c_str());
+    return false;
+  }
+  return true;
 }
 
 int run_bench_compute(const ParsedArgs& args, int rounds) {
@@ -105,12 +114,7 @@ int run_bench_compute(const ParsedArgs& args, int rounds) {
           {"driver", ctx->device_info().driver_name + " " + ctx->device_info().driver_info},
           {"rounds", rounds}}},
         {"benchmarks", results}};
-    const std::string text = doc.dump(2) + "\n";
-    if (auto written = io::write_file_atomic(*path, std::as_bytes(std::span(text.data(), text.size())));
-        !written) {
-      std::fprintf(stderr, "lagoon bench: %s\n", written.error().message.c_str());
-      return kExitFailure;
-    }
+    if (!write_report(*path, doc)) return kExitFailure;
     std::printf("wrote %s\n", path->c_str());
   }
   return validation_status(*ctx);
@@ -163,12 +167,7 @@ int run_bench_render(const ParsedArgs& args, int rounds) {
   if (auto path = args.get("json")) {
     const nlohmann::json doc{{"context", {{"device", ctx->device_info().name}, {"rounds", rounds}}},
                              {"benchmarks", results}};
-    const std::string text = doc.dump(2) + "\n";
-    if (auto written = io::write_file_atomic(*path, std::as_bytes(std::span(text.data(), text.size())));
-        !written) {
-      std::fprintf(stderr, "lagoon bench: %s\n", written.error().message.c_str());
-      return kExitFailure;
-    }
+    if (!write_report(*path, doc)) return kExitFailure;
   }
   return validation_status(*ctx);
 }

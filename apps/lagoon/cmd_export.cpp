@@ -73,17 +73,13 @@ nlohmann::json meta_json(const scene::Scene& scene, const ocean::GpuOcean& gpu,
 
 int run_export(const ParsedArgs& args) {
   const fs::path out = *args.get("out");
-  long long frames = 1;
   double dt = 1.0 / 30.0;
-  if (auto v = args.get("frames")) {
-    auto n = parse_integer(*v);
-    if (!n || *n < 1 || *n > 100000) {
-      std::fprintf(stderr, "lagoon export: --frames %s must be a whole number from 1 to 100000\n",
-                   v->c_str());
-      return kExitUsage;
-    }
-    frames = *n;
+  const auto frames_arg = integer_option(args, "frames", 1, 1, 100000);
+  if (!frames_arg) {
+    std::fprintf(stderr, "lagoon export: %s\n", frames_arg.error().message.c_str());
+    return kExitUsage;
   }
+  const long long frames = *frames_arg;
   if (auto v = args.get("dt")) {
     auto d = parse_number(*v);
     if (!d || *d <= 0 || *d > 3600) {

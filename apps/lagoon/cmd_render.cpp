@@ -37,17 +37,13 @@ int run_render(const ParsedArgs& args) {
     }
     overrides.push_back("time_s=" + *v);
   }
-  long long frames = 1;
   double fps = 30.0;
-  if (auto v = args.get("frames")) {
-    auto n = parse_integer(*v);
-    if (!n || *n < 1 || *n > 100000) {
-      std::fprintf(stderr, "lagoon render: --frames %s must be a whole number from 1 to 100000\n",
-                   v->c_str());
-      return kExitUsage;
-    }
-    frames = *n;
+  const auto frames_arg = integer_option(args, "frames", 1, 1, 100000);
+  if (!frames_arg) {
+    std::fprintf(stderr, "lagoon render: %s\n", frames_arg.error().message.c_str());
+    return kExitUsage;
   }
+  const long long frames = *frames_arg;
   if (auto v = args.get("fps")) {
     auto f = parse_number(*v);
     if (!f || *f <= 0 || *f > 1000) {
@@ -77,7 +73,7 @@ int run_render(const ParsedArgs& args) {
     image = (*renderer)->render(*scene, &timings);
     // A frame rendered with validation errors is not written: it cannot be trusted.
     if (int status = validation_status(*ctx); status != kExitOk) return status;
-    char suffix[16];
+    char suffix[24];  // "_" + up to 19 digits + NUL
     std::snprintf(suffix, sizeof(suffix), "_%04lld", f);
     const std::string path = frames == 1 ? out_path : stem + suffix + ".png";
     if (auto written = io::write_png(path, image); !written) {
