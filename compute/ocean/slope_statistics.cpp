@@ -22,6 +22,12 @@ double mean_square_slope(const CascadeSpectrum& s) {
   return 2.0 * sum;
 }
 
+double height_variance(const CascadeSpectrum& s) {
+  double sum = 0;
+  for (const std::complex<float>& h : s.h0) sum += std::norm(std::complex<double>(h));
+  return 2.0 * sum;
+}
+
 double spectrum_mean_square_slope(const OceanParams& params, double k_from, double k_to) {
   if (!(k_to > k_from) || k_from <= 0) return 0;
   const DirectionalSpectrum spectrum(params);

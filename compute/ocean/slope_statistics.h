@@ -12,6 +12,10 @@ namespace lagoon::ocean {
 // (h̃ = h0(k)e^{-iωt} + conj(h0(-k))e^{iωt}). Exact for the sampled amplitudes, not the expected spectrum.
 double mean_square_slope(const CascadeSpectrum& spectrum);
 
+// The cascade's height variance averaged over time, 2 Σ_k |h0(k)|² (as above without |k|²). With choppiness
+// λ each horizontal component has at most λ² times this (|k̂_x| <= 1); the renderer culls with 6σ bounds.
+double height_variance(const CascadeSpectrum& spectrum);
+
 // ∫ k² Ψ_omni(k) dk over [k_from, k_to] rad/m from the continuous spectrum (no sampling): the slopes of
 // waves no cascade carries. 0 when k_to <= k_from.
 double spectrum_mean_square_slope(const OceanParams& params, double k_from, double k_to);

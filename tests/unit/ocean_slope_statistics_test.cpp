@@ -39,6 +39,24 @@ TEST(SlopeStatistics, CascadeSumEqualsTheFieldsMeanSquareSlope) {
   }
 }
 
+TEST(SlopeStatistics, HeightVarianceEqualsTheFieldsVariance) {
+  const auto params = ocean_with({{200.0, 128}, {20.0, 128}});
+  for (uint32_t c = 0; c < 2; ++c) {
+    const auto s = ocean::make_cascade_spectrum(params, c);
+    const Field height[] = {Field::Height};
+    double field_var = 0;
+    const double times[] = {0.0, 3.7, 11.2};
+    for (double t : times) {
+      const auto f = ocean::evaluate_fields(s, t, height, ocean::cpu_inverse_fft());
+      double sum = 0;
+      for (double h : f[0]) sum += h * h;
+      field_var += sum / double(f[0].size()) / std::size(times);
+    }
+    ASSERT_GT(ocean::height_variance(s), 0) << c;
+    EXPECT_NEAR(field_var / ocean::height_variance(s), 1.0, 0.02) << "cascade " << c;
+  }
+}
+
 TEST(SlopeStatistics, SpectrumIntegralMatchesTheSampledBand) {
   const auto params = ocean_with({{200.0, 256}, {20.0, 256}});
   const auto bands = ocean::cascade_bands(params);
