@@ -11,6 +11,7 @@
 #include "optics/lut.h"
 #include "render/camera.h"
 #include "render/seafloor.h"
+#include "render/surface_grid.h"
 
 #include <cstdio>
 #include <glm/gtc/matrix_transform.hpp>
@@ -102,8 +103,15 @@ Result<void> OceanRenderer::init(const scene::Scene& scene) {
   // The glint's width (ocean_surface.frag): each drawn cascade's mean square slope, and that of the waves
   // shorter than the last drawn cascade. Fixed with the ocean, so computed once here.
   const uint32_t drawn = std::min(ocean_->cascade_count(), 4u);
-  for (uint32_t c = 0; c < drawn; ++c)
+  double variance = 0;
+  for (uint32_t c = 0; c < drawn; ++c) {
     cascade_mss_[c] = float(ocean::mean_square_slope(ocean_->spectra()[c]));
+    variance += ocean::height_variance(ocean_->spectra()[c]);
+  }
+  // Blocks of the surface mesh are culled against the view with 6σ of the displacement (plus a metre).
+  const double sigma = std::sqrt(variance);
+  displacement_bound_ = {.horizontal_m = float(6.0 * sigma * ocean_->params().choppiness + 1.0),
+                         .vertical_m = float(6.0 * sigma + 1.0)};
   const double last_k = ocean::cascade_bands(ocean_->params())[drawn - 1].k_max;
   subgrid_mss_ = float(ocean::spectrum_mean_square_slope(ocean_->params(), last_k, ocean::kCapillaryCutoffK));
 
@@ -328,8 +336,7 @@ void OceanRenderer::record_frame(VkCommandBuffer cmd, const Targets& t) {
     vk::begin_rendering(cmd, extent, {{.view = hdr.view()}},
                         vk::DepthTarget{.view = depth.view(), .clear = {}});
     draw_objects(cmd, 0.0f);  // above-water parts, lit; the surface depth-tests against them
-    const uint32_t quads = (kGridVertsPerSide - 1) * (kGridVertsPerSide - 1);
-    vk::draw(cmd, surface_, surface_bindings, nullptr, 0, quads * 6);
+    vk::draw_ranges(cmd, surface_, surface_bindings, surface_ranges_);
     vk::end_rendering(cmd);
   }
   vk::image_barrier(cmd, hdr.handle(), hdr.all_subresources(), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
@@ -373,7 +380,10 @@ io::Image8 OceanRenderer::render(const scene::Scene& scene, std::vector<vk::Pass
   const SkyLight light = sky_light(scene.sun);
   const CameraMatrices cam = camera_matrices(scene.camera, float(extent.width) / float(extent.height));
   const optics::ToneMapCurve curve = optics::tone_map_curve();
-  const float half_extent = std::min(0.8f * scene.camera.far_m, 3000.0f);
+  const float reach = std::min(0.8f * scene.camera.far_m, 3000.0f);
+  const SurfaceGrid grid = surface_grid(scene.camera.position, reach, &cam.view_proj, displacement_bound_);
+  surface_ranges_.clear();
+  for (const VertexRange& r : grid.ranges) surface_ranges_.push_back({r.first, r.count});
   gpu::FrameUniforms f{
       .view_proj = cam.view_proj,
       .inv_view_proj = glm::inverse(cam.view_proj),
@@ -384,8 +394,9 @@ io::Image8 OceanRenderer::render(const scene::Scene& scene, std::vector<vk::Pass
       .sky_radiance = glm::vec4(light.sky_radiance, float(std::cos(kSunDiscRadiusRad))),
       .sun_disc = glm::vec4(light.sun_disc_radiance, 0.0f),
       .water_deep = glm::vec4(deep_colour_, kFoamAlbedo),
-      .grid = glm::vec4(half_extent, float(kGridVertsPerSide), 0.35f * half_extent,
-                        float(std::min(ocean_->cascade_count(), 4u))),
+      .grid =
+          glm::vec4(grid.grid.x, grid.grid.y, 0.35f * reach, float(std::min(ocean_->cascade_count(), 4u))),
+      .clipmap = grid.clipmap,
       .cascade_mss = cascade_mss_,
       .glint = glm::vec4(subgrid_mss_, 0, 0, 0),
       .post = glm::vec4(scene.render.exposure, scene.render.gamma, float(curve.m), float(curve.exponent)),

@@ -12,6 +12,7 @@
 #include "ocean/gpu/gpu_ocean.h"
 #include "render/gpu_mesh.h"
 #include "render/sky_light.h"
+#include "render/surface_grid.h"
 #include "scene/scene.h"
 #include "vk/buffer.h"
 #include "vk/context.h"
@@ -27,7 +28,6 @@ class OceanRenderer {
   static constexpr VkFormat kHdrFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
   static constexpr VkFormat kColorFormat = VK_FORMAT_R8G8B8A8_UNORM;  // display-referred after post
   static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
-  static constexpr uint32_t kGridVertsPerSide = 192;
   // Before a still frame the ocean runs this long (in kWarmupStep steps) so foam has built up.
   static constexpr double kWarmupS = 3.0;
   static constexpr double kWarmupStep = 0.1;
@@ -55,8 +55,10 @@ class OceanRenderer {
   double ocean_time_ = -1;
   bool reflection_on_ = true;
   glm::vec3 deep_colour_{0};
-  glm::vec4 cascade_mss_{0};  // mean square slope of cascades 0..3 (ocean/slope_statistics.h)
-  float subgrid_mss_ = 0;     // ... of the waves shorter than the last drawn cascade, to 1 cm
+  glm::vec4 cascade_mss_{0};              // mean square slope of cascades 0..3 (ocean/slope_statistics.h)
+  float subgrid_mss_ = 0;                 // ... of the waves shorter than the last drawn cascade, to 1 cm
+  DisplacementBound displacement_bound_;  // of the whole ocean, for culling (render/surface_grid.h)
+  std::vector<vk::DrawRange> surface_ranges_;  // of the clipmap draw for the current camera
   double lut_r_max_ = 1, lut_h_max_ = 1;
   vk::Image lut_t0_, lut_t1_;  // the colour LUTs as textures: x = r axis, y = h axis
   std::optional<GpuMesh> floor_;

@@ -309,4 +309,11 @@ void draw(VkCommandBuffer cmd, const GraphicsPipeline& pipeline, std::span<const
   vkCmdDraw(cmd, vertex_count, instance_count, 0, 0);
 }
 
+void draw_ranges(VkCommandBuffer cmd, const GraphicsPipeline& pipeline, std::span<const Binding> bindings,
+                 std::span<const DrawRange> ranges) {
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.pipeline());
+  pipeline.interface().bind(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bindings, nullptr, 0);
+  for (const DrawRange& r : ranges) vkCmdDraw(cmd, r.vertex_count, 1, r.first_vertex, 0);
+}
+
 }  // namespace lagoon::vk

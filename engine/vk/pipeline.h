@@ -161,6 +161,14 @@ class GraphicsPipeline {
 void draw(VkCommandBuffer cmd, const GraphicsPipeline& pipeline, std::span<const Binding> bindings,
           const void* push, size_t push_size, uint32_t vertex_count, uint32_t instance_count = 1);
 
+// One binding of the pipeline and descriptors, then one vkCmdDraw per range of vertices.
+struct DrawRange {
+  uint32_t first_vertex = 0;
+  uint32_t vertex_count = 0;
+};
+void draw_ranges(VkCommandBuffer cmd, const GraphicsPipeline& pipeline, std::span<const Binding> bindings,
+                 std::span<const DrawRange> ranges);
+
 template <typename Push>
 void draw(VkCommandBuffer cmd, const GraphicsPipeline& pipeline, std::initializer_list<Binding> bindings,
           const Push& push, uint32_t vertex_count, uint32_t instance_count = 1) {

@@ -14,11 +14,13 @@ struct FrameUniforms {
   vec4 sky_radiance;    // rgb of a uniform sky with the model's E_sky, w = cos of the sun disc's radius
   vec4 sun_disc;        // rgb radiance of the solar disc, w = unused
   vec4 water_deep;      // rgb deep-water colour (LUT), w = foam albedo
-  vec4 grid;            // x = half extent m, y = vertices per side, z = haze distance m, w = cascade count
-  vec4 cascade_patch;   // patch size (m) of cascades 0..3
-  vec4 cascade_layer;   // array layer of cascades 0..3
-  vec4 cascade_texel;   // L/N (m) of cascades 0..3
-  vec4 cascade_mss;     // mean square slope (ocean/slope_statistics.h) of cascades 0..3
+  vec4 grid;     // x = finest spacing m, y = cells per half side (shared/clipmap.h), z = haze distance m,
+                 // w = cascade count
+  vec4 clipmap;  // x = levels, y = fade of the finest level, z = morph zone in cells (shared/clipmap.h)
+  vec4 cascade_patch;  // patch size (m) of cascades 0..3
+  vec4 cascade_layer;  // array layer of cascades 0..3
+  vec4 cascade_texel;  // L/N (m) of cascades 0..3
+  vec4 cascade_mss;    // mean square slope (ocean/slope_statistics.h) of cascades 0..3
   vec4 glint;   // x = mean square slope of the waves shorter than the last cascade (to 1 cm), yzw unused
   vec4 post;    // x = exposure, y = display gamma, z = tone-map m, w = tone-map exponent
   vec4 post2;   // x = tone-map white, y = tone-map world adaptation, z = tone map on (1) / clamp (0)
@@ -35,11 +37,11 @@ struct PointLightGpu {
 LAGOON_GPU_END
 
 #ifdef __cplusplus
-LAGOON_CHECK_SIZE(FrameUniforms, 400);
+LAGOON_CHECK_SIZE(FrameUniforms, 416);
 LAGOON_CHECK_SIZE(PointLightGpu, 32);
 LAGOON_CHECK_OFFSET(FrameUniforms, camera_pos, 128);
 LAGOON_CHECK_OFFSET(FrameUniforms, water_deep, 208);
-LAGOON_CHECK_OFFSET(FrameUniforms, post2, 336);
-LAGOON_CHECK_OFFSET(FrameUniforms, screen, 368);
+LAGOON_CHECK_OFFSET(FrameUniforms, post2, 352);
+LAGOON_CHECK_OFFSET(FrameUniforms, screen, 384);
 #endif
 #endif

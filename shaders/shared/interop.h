@@ -11,12 +11,23 @@
 #define LAGOON_GPU_END }
 LAGOON_GPU_BEGIN
 using vec2 = glm::vec2;
+using vec3 = glm::vec3;
 using vec4 = glm::vec4;
+using ivec2 = glm::ivec2;
 using ivec4 = glm::ivec4;
 using uvec4 = glm::uvec4;
 using mat4 = glm::mat4;
 using uint = uint32_t;
+// GLSL's built-ins, for the functions shared headers define for both languages (e.g. shared/clipmap.h).
+using glm::abs;
+using glm::clamp;
+using glm::exp2;
+using glm::floor;
+using glm::max;
+using glm::min;
+using glm::mix;
 LAGOON_GPU_END
+#define LAGOON_FN inline
 // Use inside #ifdef __cplusplus: the layout GLSL assumes, checked by the C++ compiler.
 #define LAGOON_CHECK_SIZE(type, bytes) static_assert(sizeof(lagoon::gpu::type) == (bytes), #type " size")
 #define LAGOON_CHECK_OFFSET(type, member, bytes) \
@@ -24,6 +35,7 @@ LAGOON_GPU_END
 #else
 #define LAGOON_GPU_BEGIN
 #define LAGOON_GPU_END
+#define LAGOON_FN
 #endif
 
 #endif

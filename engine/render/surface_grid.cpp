@@ -1,0 +1,83 @@
+#include "render/surface_grid.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "shared/clipmap.h"
+
+namespace lagoon::render {
+namespace {
+
+static_assert((2 * kClipmapHalfCells) % gpu::kClipmapBlock == 0, "levels must split into whole blocks");
+static_assert(kClipmapMorphCells <= kClipmapHalfCells / 2 - 1.5f, "morph zone reaches the finer level");
+
+// Planes a·x + b·y + c·z + d >= 0 of the view volume (0 <= z <= w, Vulkan depth).
+std::array<glm::vec4, 6> frustum_planes(const glm::mat4& m) {
+  const glm::vec4 r0(m[0][0], m[1][0], m[2][0], m[3][0]), r1(m[0][1], m[1][1], m[2][1], m[3][1]),
+      r2(m[0][2], m[1][2], m[2][2], m[3][2]), r3(m[0][3], m[1][3], m[2][3], m[3][3]);
+  return {r3 + r0, r3 - r0, r3 + r1, r3 - r1, r2, r3 - r2};
+}
+
+bool box_may_be_visible(const std::array<glm::vec4, 6>& planes, const glm::vec3& lo, const glm::vec3& hi) {
+  for (const glm::vec4& p : planes) {
+    // The box corner furthest along the plane's normal.
+    const glm::vec3 far(p.x >= 0 ? hi.x : lo.x, p.y >= 0 ? hi.y : lo.y, p.z >= 0 ? hi.z : lo.z);
+    if (glm::dot(glm::vec3(p), far) + p.w < 0) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+SurfaceGrid surface_grid(const glm::vec3& camera, float reach_m, const glm::mat4* view_proj,
+                         DisplacementBound bound) {
+  // Continuous level of detail b: its integer part picks the finest lattice, its fraction fades that
+  // level into the next, so the mesh changes smoothly as the camera climbs.
+  const float wanted = std::max(std::abs(camera.y), kClipmapMinHeightM) * kClipmapSpacingPerHeight;
+  const float b = std::max(std::log2(wanted / kClipmapBaseSpacingM), 0.0f);
+  const float first = std::floor(b);
+  const float spacing = std::ldexp(kClipmapBaseSpacingM, int(first));
+  int levels = 1;
+  // The outermost ring's edge is at least m - 1 of its cells from the camera.
+  while (levels < kClipmapMaxLevels && std::ldexp(spacing, levels - 1) * (kClipmapHalfCells - 1) < reach_m)
+    ++levels;
+  SurfaceGrid g;
+  g.grid = glm::vec4(spacing, float(kClipmapHalfCells), 0.0f, 0.0f);
+  g.clipmap = glm::vec4(float(levels), b - first, kClipmapMorphCells, 0.0f);
+  const int cells = 2 * kClipmapHalfCells;
+  const int blocks = cells / gpu::kClipmapBlock;
+  const uint32_t block_vertices = gpu::kClipmapBlock * gpu::kClipmapBlock * 6;
+  g.vertex_count = uint32_t(levels * blocks * blocks) * block_vertices;
+
+  const glm::vec2 cam(camera.x, camera.z);
+  const auto planes = view_proj ? frustum_planes(*view_proj) : std::array<glm::vec4, 6>{};
+  for (int level = 0; level < levels; ++level) {
+    const float s = gpu::clipmap_spacing(level, g.grid);
+    const glm::vec2 origin =
+        gpu::clipmap_centre(level, cam, g.grid) - glm::vec2(float(kClipmapHalfCells) * s);
+    for (int block = 0; block < blocks * blocks; ++block) {
+      const glm::ivec2 b0 = glm::ivec2(block % blocks, block / blocks) * gpu::kClipmapBlock;
+      // Blocks the finer level covers entirely draw nothing.
+      bool any_cell = false;
+      for (int i = 0; i < gpu::kClipmapBlock * gpu::kClipmapBlock && !any_cell; ++i)
+        any_cell = gpu::clipmap_cell_visible(
+            level, b0 + glm::ivec2(i % gpu::kClipmapBlock, i / gpu::kClipmapBlock), cam, g.grid);
+      if (!any_cell) continue;
+      if (view_proj) {
+        const glm::vec2 lo = origin + glm::vec2(b0) * s - bound.horizontal_m;
+        const glm::vec2 hi = origin + glm::vec2(b0 + gpu::kClipmapBlock) * s + bound.horizontal_m;
+        if (!box_may_be_visible(planes, {lo.x, -bound.vertical_m, lo.y}, {hi.x, bound.vertical_m, hi.y}))
+          continue;
+      }
+      const uint32_t first_vertex = uint32_t(level * blocks * blocks + block) * block_vertices;
+      if (!g.ranges.empty() && g.ranges.back().first + g.ranges.back().count == first_vertex)
+        g.ranges.back().count += block_vertices;
+      else
+        g.ranges.push_back({first_vertex, block_vertices});
+    }
+  }
+  return g;
+}
+
+}  // namespace lagoon::render
