@@ -115,6 +115,14 @@ nlohmann::ordered_json element_json(const std::vector<FieldInfo>& fields) {
   return object;
 }
 
+}  // namespace
+
+nlohmann::ordered_json fields_to_json(const std::vector<FieldInfo>& fields) {
+  return element_json(fields);
+}
+
+namespace {
+
 std::string elements_json(const std::vector<std::vector<FieldInfo>>& elements) {
   nlohmann::ordered_json array = nlohmann::ordered_json::array();
   for (const std::vector<FieldInfo>& fields : elements) array.push_back(element_json(fields));
@@ -159,10 +167,14 @@ std::string format_number(double v) {
   char buf[32];
   if (std::abs(v) < 1e15 && std::floor(v) == v) {
     std::snprintf(buf, sizeof buf, "%.0f", v);  // whole numbers exactly: seeds, sizes
-  } else {
-    std::snprintf(buf, sizeof buf, "%g", v);  // 6 significant digits: 0.1f prints "0.1", not 0.100000001
+    return buf;
   }
-  return buf;
+  // The shortest text that reads back to the same value, so a saved scene reloads bit for bit; a value
+  // that came from a float is printed as that float (0.1f prints "0.1", not 0.10000000149011612).
+  const float f = static_cast<float>(v);
+  const auto [end, error] = static_cast<double>(f) == v ? std::to_chars(buf, buf + sizeof buf, f)
+                                                        : std::to_chars(buf, buf + sizeof buf, v);
+  return error == std::errc() ? std::string(buf, end) : std::string("0");
 }
 
 // ---- Bounds ----
@@ -302,7 +314,8 @@ void ObjectReader::number(std::string_view name, float& value, Bounds bounds, st
 
 void ObjectReader::number(std::string_view name, std::optional<float>& value, Bounds bounds,
                           std::string_view unit, std::string_view doc) {
-  if (describing()) return describe(name, "number", unit, "", bounds.describe(), doc);
+  if (describing())
+    return describe(name, "number", unit, value ? format_number(*value) : "", bounds.describe(), doc);
   if (const std::optional<double> v = read_number(name, "", bounds, unit, /*as_float=*/true))
     value = static_cast<float>(*v);
 }

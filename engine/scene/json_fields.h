@@ -205,6 +205,10 @@ class ObjectReader {
 // JSON parsing would silently resolve to the last one). Never throws.
 std::optional<nlohmann::json> parse_json_text(std::string_view text, Diagnostics& diag);
 
+// The JSON object whose fields have the values describe mode recorded (FieldInfo::default_value): with a
+// describer run over a live object, that object's JSON.
+nlohmann::ordered_json fields_to_json(const std::vector<FieldInfo>& fields);
+
 // The field reference as a Markdown table (embedded in docs/scene-format.md, checked by a test).
 std::string to_markdown_table(const std::vector<FieldInfo>& fields);
 

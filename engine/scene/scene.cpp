@@ -202,3 +202,48 @@ std::vector<FieldInfo> scene_fields() {
 }
 
 }  // namespace lagoon::scene
+
+namespace lagoon::scene {
+
+nlohmann::ordered_json scene_to_json(const Scene& scene, const std::filesystem::path& folder) {
+  Scene copy = scene;
+  auto relative = [&folder](std::string& file) {
+    if (file.empty() || folder.empty()) return;
+    std::error_code ec;
+    const std::filesystem::path rel = std::filesystem::relative(file, folder, ec);
+    if (!ec && !rel.empty() && *rel.begin() != "..") file = rel.generic_string();
+  };
+  relative(copy.water.table);
+  relative(copy.seafloor.texture);
+  relative(copy.seafloor.file);
+  for (Object& object : copy.objects) relative(object.file);
+  std::vector<FieldInfo> fields;
+  ObjectReader describer("", fields);
+  read_scene(describer, copy);
+  return fields_to_json(fields);
+}
+
+Result<void> save_scene(const Scene& scene, const std::filesystem::path& path) {
+  const std::filesystem::path absolute = std::filesystem::absolute(path);
+  const std::string text = scene_to_json(scene, absolute.parent_path()).dump(2) + "\n";
+  const std::filesystem::path temporary = absolute.string() + ".partial";
+  {
+    std::ofstream out(temporary, std::ios::binary);
+    out << text;
+    out.close();
+    if (!out) {
+      std::error_code ec;
+      std::filesystem::remove(temporary, ec);
+      return Error{path.string() + ": cannot write the scene (check that the folder exists and is writable)"};
+    }
+  }
+  std::error_code ec;
+  std::filesystem::rename(temporary, absolute, ec);
+  if (ec) {
+    std::filesystem::remove(temporary, ec);
+    return Error{path.string() + ": cannot write the scene: " + ec.message()};
+  }
+  return {};
+}
+
+}  // namespace lagoon::scene

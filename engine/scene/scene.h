@@ -100,6 +100,13 @@ Result<Scene> load_scene(const std::filesystem::path& path, std::span<const std:
 // Validates an already-parsed document; `source_name` prefixes error messages. Never throws.
 Result<Scene> parse_scene(const nlohmann::json& document, const std::string& source_name);
 
+// The scene as a document parse_scene() reads back to an equal scene; file paths are written relative to
+// `folder` (the folder of the file it will be saved in) when they are inside it.
+nlohmann::ordered_json scene_to_json(const Scene& scene, const std::filesystem::path& folder);
+
+// Writes scene_to_json() to `path` (via a temporary file and a rename, so a failure leaves no half file).
+Result<void> save_scene(const Scene& scene, const std::filesystem::path& path);
+
 // Every field of the format with its type, unit, default, range and meaning (the docs' reference table).
 std::vector<FieldInfo> scene_fields();
 
