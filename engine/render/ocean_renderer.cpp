@@ -71,11 +71,6 @@ OceanRenderer::OceanRenderer(vk::Context& ctx, const scene::Scene& scene)
       post_(vk::GraphicsPipeline::create(ctx, {.vertex = &shaders::render_fullscreen_vert,
                                                .fragment = &shaders::render_post_frag,
                                                .color_formats = {kColorFormat}})),
-      frame_(vk::Buffer::create(ctx, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                                vk::MemoryUsage::Upload, "frame")),
-      lights_(vk::Buffer::create(ctx, sizeof(gpu::PointLightGpu) * kMaxLights,
-                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUsage::Upload,
-                                 "point lights")),
       // Anisotropic filtering is cheap in GPU hardware but runs in software on CPU devices.
       repeat_sampler_(vk::create_sampler(
           ctx, {.address = VK_SAMPLER_ADDRESS_MODE_REPEAT,
@@ -83,8 +78,15 @@ OceanRenderer::OceanRenderer(vk::Context& ctx, const scene::Scene& scene)
       clamp_sampler_(vk::create_sampler(ctx, {.address = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE})),
       nearest_sampler_(vk::create_sampler(ctx, {.filter = VK_FILTER_NEAREST,
                                                 .mipmap = VK_SAMPLER_MIPMAP_MODE_NEAREST,
-                                                .address = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE})),
-      timer_(ctx, 32) {
+                                                .address = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE})) {
+  for (Slot& slot : slots_) {
+    slot.frame = vk::Buffer::create(ctx, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                                    vk::MemoryUsage::Upload, "frame");
+    slot.lights =
+        vk::Buffer::create(ctx, sizeof(gpu::PointLightGpu) * kMaxLights, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                           vk::MemoryUsage::Upload, "point lights");
+    slot.timer = vk::GpuTimer(ctx, 32);
+  }
   mesh_refraction_ = vk::GraphicsPipeline::create(ctx, {.vertex = &shaders::render_mesh_vert,
                                                         .fragment = &shaders::render_mesh_frag,
                                                         .color_formats = {kHdrFormat},
@@ -206,14 +208,14 @@ Result<void> OceanRenderer::load_objects(const scene::Scene& scene) {
 }
 
 void OceanRenderer::draw_objects(VkCommandBuffer cmd, float mode) const {
-  const vk::BufferRef frame{frame_.handle()};
+  const vk::BufferRef frame{slots_[slot_].frame.handle()};
   for (const ObjectDraw& o : objects_) {
     const gpu::MeshPush push{
         .model = o.world, .base_colour = o.base_colour, .params = glm::vec4(mode, 0, 0, 0)};
     const vk::Image& texture = o.texture >= 0 ? textures_[o.texture] : white_texture_;
     vk::draw(cmd, mesh_refraction_,
              {vk::bind(0, frame), vk::bind(1, o.mesh.vertices), vk::bind(2, o.mesh.indices),
-              vk::bind(3, sampled(texture, repeat_sampler_)), vk::bind(4, lights_)},
+              vk::bind(3, sampled(texture, repeat_sampler_)), vk::bind(4, slots_[slot_].lights)},
              push, o.mesh.index_count);
   }
 }
@@ -229,7 +231,8 @@ const OceanRenderer::Targets& OceanRenderer::targets_for(VkExtent2D extent) {
   if (targets_ && targets_->hdr.extent().width == extent.width &&
       targets_->hdr.extent().height == extent.height)
     return *targets_;
-  targets_.reset();  // free the old size first: the new one may be large
+  if (targets_) ctx_.wait_idle();  // frames in flight may still use the old size
+  targets_.reset();                // free the old size first: the new one may be large
   const VkImageUsageFlags attachment = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
   const VkImageUsageFlags depth_attachment =
       VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
@@ -255,9 +258,9 @@ const OceanRenderer::Targets& OceanRenderer::targets_for(VkExtent2D extent) {
 void OceanRenderer::record_frame(VkCommandBuffer cmd, const Targets& t) {
   const vk::Image &hdr = t.hdr, &depth = t.depth, &color = t.color;
   const VkExtent2D extent = hdr.extent();
-  const vk::BufferRef frame{frame_.handle()};
+  const vk::BufferRef frame{slots_[slot_].frame.handle()};
   {
-    vk::GpuScope scope(timer_, cmd, "refraction");
+    vk::GpuScope scope(slots_[slot_].timer, cmd, "refraction");
     for (const vk::Image* image : {&t.refraction_albedo})
       vk::image_barrier(cmd, image->handle(), image->all_subresources(), VK_IMAGE_LAYOUT_UNDEFINED,
                         VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, vk::access::kNone,
@@ -275,7 +278,7 @@ void OceanRenderer::record_frame(VkCommandBuffer cmd, const Targets& t) {
       const vk::Image& texture = floor_textured_ ? floor_texture_ : white_texture_;
       vk::draw(cmd, mesh_refraction_,
                {vk::bind(0, frame), vk::bind(1, floor_->vertices), vk::bind(2, floor_->indices),
-                vk::bind(3, sampled(texture, repeat_sampler_)), vk::bind(4, lights_)},
+                vk::bind(3, sampled(texture, repeat_sampler_)), vk::bind(4, slots_[slot_].lights)},
                push, floor_->index_count);
     }
     draw_objects(cmd, 1.0f);  // their submerged parts
@@ -290,7 +293,7 @@ void OceanRenderer::record_frame(VkCommandBuffer cmd, const Targets& t) {
   {
     // Planar reflection: what is above the water, mirrored about the mean water level, seen by the main
     // camera. Alpha marks where something was drawn; elsewhere the surface reflects the analytic sky.
-    vk::GpuScope scope(timer_, cmd, "reflection");
+    vk::GpuScope scope(slots_[slot_].timer, cmd, "reflection");
     vk::image_barrier(cmd, t.reflection.handle(), t.reflection.all_subresources(), VK_IMAGE_LAYOUT_UNDEFINED,
                       VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, vk::access::kNone,
                       vk::access::kColorAttachmentWrite);
@@ -311,7 +314,7 @@ void OceanRenderer::record_frame(VkCommandBuffer cmd, const Targets& t) {
                                             vk::bind(4, sampled(t.refraction_depth, nearest_sampler_)),
                                             vk::bind(5, sampled(lut_t0_, clamp_sampler_)),
                                             vk::bind(6, sampled(lut_t1_, clamp_sampler_)),
-                                            vk::bind(8, lights_)};
+                                            vk::bind(8, slots_[slot_].lights)};
   for (uint32_t slot = 0; slot < 4; ++slot) {
     const ocean::CascadeTextures t = ocean_->cascade(std::min(slot, ocean_->cascade_count() - 1));
     surface_bindings.push_back(vk::bind(1, sampled(*t.displacement, repeat_sampler_), slot));
@@ -324,7 +327,7 @@ void OceanRenderer::record_frame(VkCommandBuffer cmd, const Targets& t) {
                     VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, vk::access::kNone,
                     vk::access::kDepthAttachment);
   {
-    vk::GpuScope scope(timer_, cmd, "sky");
+    vk::GpuScope scope(slots_[slot_].timer, cmd, "sky");
     vk::begin_rendering(cmd, extent, {{.view = hdr.view(), .clear = std::array{0.f, 0.f, 0.f, 1.f}}},
                         vk::DepthTarget{.view = depth.view(), .clear = 1.0f});
     vk::draw(cmd, sky_, {vk::bind(0, frame)}, 3);
@@ -332,7 +335,7 @@ void OceanRenderer::record_frame(VkCommandBuffer cmd, const Targets& t) {
   }
   {
     // Separate render passes so the timestamps bracket real work on tilers such as lavapipe.
-    vk::GpuScope scope(timer_, cmd, "surface");
+    vk::GpuScope scope(slots_[slot_].timer, cmd, "surface");
     vk::begin_rendering(cmd, extent, {{.view = hdr.view()}},
                         vk::DepthTarget{.view = depth.view(), .clear = {}});
     draw_objects(cmd, 0.0f);  // above-water parts, lit; the surface depth-tests against them
@@ -345,15 +348,17 @@ void OceanRenderer::record_frame(VkCommandBuffer cmd, const Targets& t) {
                     VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, vk::access::kNone,
                     vk::access::kColorAttachmentWrite);
   {
-    vk::GpuScope scope(timer_, cmd, "post");
+    vk::GpuScope scope(slots_[slot_].timer, cmd, "post");
     vk::begin_rendering(cmd, extent, {{.view = color.view(), .clear = std::array{0.f, 0.f, 0.f, 1.f}}});
     vk::draw(cmd, post_, {vk::bind(0, frame), vk::bind(1, sampled(hdr, clamp_sampler_))}, 3);
     vk::end_rendering(cmd);
   }
 }
 
-io::Image8 OceanRenderer::render(const scene::Scene& scene, std::vector<vk::PassTime>* timings) {
-  const VkExtent2D extent{scene.render.width, scene.render.height};
+const vk::Image& OceanRenderer::record(VkCommandBuffer cmd, const scene::Scene& scene, VkExtent2D extent,
+                                       uint32_t slot) {
+  slot_ = slot % kSlots;
+  Slot& frame_slot = slots_[slot_];
   const double t = scene.time_s;
   // A still frame needs the foam a running ocean would have: run the last few seconds first.
   if (ocean_time_ < 0 || t < ocean_time_ || t - ocean_time_ > kWarmupS) {
@@ -370,13 +375,13 @@ io::Image8 OceanRenderer::render(const scene::Scene& scene, std::vector<vk::Pass
 
   reflection_on_ = scene.render.effects.reflection;
   const uint32_t light_count = uint32_t(std::min<size_t>(scene.lights.size(), kMaxLights));
-  auto* lights = reinterpret_cast<gpu::PointLightGpu*>(lights_.mapped());
+  auto* lights = reinterpret_cast<gpu::PointLightGpu*>(frame_slot.lights.mapped());
   for (uint32_t i = 0; i < light_count; ++i) {
     const scene::PointLight& l = scene.lights[i];
     lights[i] = {.position_range = glm::vec4(l.position, l.range_m),
                  .colour = glm::vec4(l.colour * l.intensity, 0)};
   }
-  lights_.flush();
+  frame_slot.lights.flush();
   const SkyLight light = sky_light(scene.sun);
   const CameraMatrices cam = camera_matrices(scene.camera, float(extent.width) / float(extent.height));
   const optics::ToneMapCurve curve = optics::tone_map_curve();
@@ -413,26 +418,41 @@ io::Image8 OceanRenderer::render(const scene::Scene& scene, std::vector<vk::Pass
     f.cascade_layer[c] = float(tex.layer);
     f.cascade_texel[c] = float(tex.patch_size_m / tex.resolution);
   }
-  std::memcpy(frame_.mapped(), &f, sizeof(f));
-  frame_.flush();
+  std::memcpy(frame_slot.frame.mapped(), &f, sizeof(f));
+  frame_slot.frame.flush();
 
   const Targets& targets = targets_for(extent);
-  ctx_.submit_and_wait([&](VkCommandBuffer cmd) {
-    timer_.reset(cmd);
-    ocean_->record_step(cmd, t, t - ocean_time_, &timer_);
-    record_frame(cmd, targets);
-    vk::record_readback(cmd, targets.color, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                        vk::access::kColorAttachmentWrite, targets.readback);
-  });
+  // Frames may be recorded while the previous one runs; they share the ocean's textures and the render
+  // targets, so this frame's work starts after everything submitted before it.
+  vk::memory_barrier(cmd, vk::access::kAllCommands, vk::access::kAllCommands);
+  frame_slot.timer.reset(cmd);
+  ocean_->record_step(cmd, t, t - ocean_time_, &frame_slot.timer);
+  record_frame(cmd, targets);
   ocean_time_ = t;
-  if (timings) *timings = timer_.results();
+  return targets.color;
+}
 
-  targets.readback.invalidate();
+std::vector<vk::PassTime> OceanRenderer::timings(uint32_t slot) const {
+  return slots_[slot % kSlots].timer.results();
+}
+
+io::Image8 OceanRenderer::render(const scene::Scene& scene, std::vector<vk::PassTime>* timings) {
+  const VkExtent2D extent{scene.render.width, scene.render.height};
+  const Targets* targets = nullptr;
+  ctx_.submit_and_wait([&](VkCommandBuffer cmd) {
+    record(cmd, scene, extent, 0);
+    targets = targets_.get();
+    vk::record_readback(cmd, targets->color, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                        vk::access::kColorAttachmentWrite, targets->readback);
+  });
+  if (timings) *timings = this->timings(0);
+
+  targets->readback.invalidate();
   io::Image8 image;
   image.width = extent.width;
   image.height = extent.height;
-  image.rgba.resize(vk::readback_bytes(targets.color));
-  std::memcpy(image.rgba.data(), targets.readback.mapped(), image.rgba.size());
+  image.rgba.resize(vk::readback_bytes(targets->color));
+  std::memcpy(image.rgba.data(), targets->readback.mapped(), image.rgba.size());
   return image;
 }
 

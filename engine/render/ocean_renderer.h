@@ -4,6 +4,7 @@
 // RGBA16F: Fresnel between the reflected sky and eq. 22 with the LUTs), post (RGBA8). Objects and the
 // planar reflection pass arrive with the rest of issue 5.
 #pragma once
+#include <array>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -37,8 +38,20 @@ class OceanRenderer {
   static Result<std::unique_ptr<OceanRenderer>> create(vk::Context& ctx, const scene::Scene& scene);
   ~OceanRenderer();
 
-  // Renders `scene` (same ocean and water as at construction) at scene.render size and time scene.time_s.
+  // Frames that may be in flight at once: each slot has its own host-written buffers and timer.
+  static constexpr uint32_t kSlots = 2;
+
+  // Renders `scene` (same ocean and water as at construction) at scene.render size and time scene.time_s,
+  // and waits for it.
   io::Image8 render(const scene::Scene& scene, std::vector<vk::PassTime>* timings = nullptr);
+
+  // Records the frame (the ocean stepped to scene.time_s, then every pass) into `cmd` for a window's frame
+  // loop. Uses slot `slot` (mod kSlots): the caller must have waited for the last frame recorded with it.
+  // Returns the display-referred image (kColorFormat), in COLOR_ATTACHMENT_OPTIMAL after colour writes.
+  // A slow warm-up runs first, synchronously, when the time jumps (kWarmupS).
+  const vk::Image& record(VkCommandBuffer cmd, const scene::Scene& scene, VkExtent2D extent, uint32_t slot);
+  // The per-pass GPU times of the last frame recorded with `slot`, once it has finished.
+  std::vector<vk::PassTime> timings(uint32_t slot) const;
 
  private:
   struct Targets;
@@ -79,10 +92,14 @@ class OceanRenderer {
   Result<void> load_model(const std::string& file, const glm::mat4& transform, const std::string& field);
   void draw_objects(VkCommandBuffer cmd, float mode) const;
   static constexpr size_t kMaxLights = 64;  // the scene format's limit
-  vk::Buffer frame_;
-  vk::Buffer lights_;
+  struct Slot {
+    vk::Buffer frame;   // gpu::FrameUniforms
+    vk::Buffer lights;  // gpu::PointLightGpu[kMaxLights]
+    vk::GpuTimer timer;
+  };
+  std::array<Slot, kSlots> slots_;
+  uint32_t slot_ = 0;  // of the frame being recorded
   vk::Unique<VkSampler> repeat_sampler_, clamp_sampler_, nearest_sampler_;
-  vk::GpuTimer timer_;
 };
 
 }  // namespace lagoon::render
