@@ -279,8 +279,14 @@ const json* ObjectReader::lookup(std::string_view name) {
 
 void ObjectReader::describe(std::string_view name, std::string type, std::string_view unit,
                             std::string default_value, std::string range, std::string_view doc) {
-  catalog_->push_back({child_path(name), std::move(type), std::string(unit), std::move(default_value),
-                       std::move(range), std::string(doc)});
+  FieldInfo info;
+  info.path = child_path(name);
+  info.type = std::move(type);
+  info.unit = std::string(unit);
+  info.default_value = std::move(default_value);
+  info.range = std::move(range);
+  info.doc = std::string(doc);
+  catalog_->push_back(std::move(info));
 }
 
 bool ObjectReader::has(std::string_view name) const {
@@ -306,7 +312,11 @@ std::optional<double> ObjectReader::read_number(std::string_view name, const std
 
 void ObjectReader::number(std::string_view name, float& value, Bounds bounds, std::string_view unit,
                           std::string_view doc) {
-  if (describing()) return describe(name, "number", unit, format_number(value), bounds.describe(), doc);
+  if (describing()) {
+    describe(name, "number", unit, format_number(value), bounds.describe(), doc);
+    catalog_->back().bounds = bounds;
+    return;
+  }
   if (const std::optional<double> v =
           read_number(name, format_number(value), bounds, unit, /*as_float=*/true))
     value = static_cast<float>(*v);
@@ -314,15 +324,22 @@ void ObjectReader::number(std::string_view name, float& value, Bounds bounds, st
 
 void ObjectReader::number(std::string_view name, std::optional<float>& value, Bounds bounds,
                           std::string_view unit, std::string_view doc) {
-  if (describing())
-    return describe(name, "number", unit, value ? format_number(*value) : "", bounds.describe(), doc);
+  if (describing()) {
+    describe(name, "number", unit, value ? format_number(*value) : "", bounds.describe(), doc);
+    catalog_->back().bounds = bounds;
+    return;
+  }
   if (const std::optional<double> v = read_number(name, "", bounds, unit, /*as_float=*/true))
     value = static_cast<float>(*v);
 }
 
 void ObjectReader::number(std::string_view name, double& value, Bounds bounds, std::string_view unit,
                           std::string_view doc) {
-  if (describing()) return describe(name, "number", unit, format_number(value), bounds.describe(), doc);
+  if (describing()) {
+    describe(name, "number", unit, format_number(value), bounds.describe(), doc);
+    catalog_->back().bounds = bounds;
+    return;
+  }
   if (const std::optional<double> v =
           read_number(name, format_number(value), bounds, unit, /*as_float=*/false))
     value = *v;
@@ -331,7 +348,9 @@ void ObjectReader::number(std::string_view name, double& value, Bounds bounds, s
 void ObjectReader::integer(std::string_view name, uint32_t& value, Bounds bounds, std::string_view unit,
                            std::string_view doc) {
   if (describing()) {
-    return describe(name, "integer", unit, std::to_string(value), bounds.describe(), doc);
+    describe(name, "integer", unit, std::to_string(value), bounds.describe(), doc);
+    catalog_->back().bounds = bounds;
+    return;
   }
   const json* j = lookup(name);
   if (!j) return;
@@ -350,8 +369,12 @@ void ObjectReader::power_of_two(std::string_view name, uint32_t& value, uint32_t
                                 std::string_view unit, std::string_view doc) {
   const std::string between = std::to_string(min) + " and " + std::to_string(max);
   if (describing()) {
-    return describe(name, "integer", unit, std::to_string(value),
-                    "power of two, " + std::to_string(min) + " to " + std::to_string(max), doc);
+    describe(name, "integer", unit, std::to_string(value),
+             "power of two, " + std::to_string(min) + " to " + std::to_string(max), doc);
+    catalog_->back().bounds = Bounds::between(min, max);
+    for (uint64_t p = std::bit_ceil(std::max<uint32_t>(min, 1)); p <= max; p *= 2)
+      catalog_->back().choices.push_back(std::to_string(p));
+    return;
   }
   const json* j = lookup(name);
   if (!j) return;
@@ -376,6 +399,7 @@ bool ObjectReader::read_floats(std::string_view name, std::span<float> values, s
   if (describing()) {
     describe(name, std::string(form), unit, format_floats(values),
              finite_only ? "finite" : "each " + bounds.describe(), doc);
+    catalog_->back().bounds = bounds;
     return false;
   }
   const json* j = lookup(name);
@@ -472,6 +496,7 @@ std::optional<size_t> ObjectReader::choose(std::string_view name, const std::vec
   const std::string default_text = current < names.size() ? dump_json(names[current]) : "";
   if (describing()) {
     describe(name, "string", "", default_text, "one of " + quoted, doc);
+    catalog_->back().choices = names;
     return std::nullopt;
   }
   const json* j = lookup(name);
@@ -497,6 +522,8 @@ ObjectReader ObjectReader::describe_array(std::string_view name,
                                           size_t min_size, size_t max_size, std::string_view doc) {
   describe(name, "array of objects", "", elements_json(defaults),
            std::to_string(min_size) + " to " + std::to_string(max_size) + " elements", doc);
+  catalog_->back().min_elements = min_size;
+  catalog_->back().max_elements = max_size;
   return ObjectReader(child_path(name) + "[]", *catalog_);
 }
 

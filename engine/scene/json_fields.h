@@ -48,6 +48,11 @@ struct FieldInfo {
   std::string default_value;
   std::string range;
   std::string doc;
+  // For editors (the demo's panel): numeric limits (numbers, integers, each element of a vector), the
+  // allowed values of a choice or a power-of-two size, and the element count limits of an array.
+  Bounds bounds;
+  std::vector<std::string> choices;
+  size_t min_elements = 0, max_elements = 0;
 };
 
 // Collects problems as "<source>: <json path>: <what is wrong>; <how to fix it>" lines.

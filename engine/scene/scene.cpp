@@ -194,10 +194,14 @@ Result<Scene> parse_scene(const nlohmann::json& document, const std::string& sou
 }
 
 std::vector<FieldInfo> scene_fields() {
+  return scene_fields(Scene{});
+}
+
+std::vector<FieldInfo> scene_fields(const Scene& scene) {
   std::vector<FieldInfo> fields;
-  Scene defaults;
+  Scene copy = scene;  // describing never writes, but the readers take a mutable reference
   ObjectReader reader("", fields);
-  read_scene(reader, defaults);
+  read_scene(reader, copy);
   return fields;
 }
 

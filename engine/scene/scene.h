@@ -109,5 +109,7 @@ Result<void> save_scene(const Scene& scene, const std::filesystem::path& path);
 
 // Every field of the format with its type, unit, default, range and meaning (the docs' reference table).
 std::vector<FieldInfo> scene_fields();
+// The same rows with `scene`'s values in FieldInfo::default_value (for editors).
+std::vector<FieldInfo> scene_fields(const Scene& scene);
 
 }  // namespace lagoon::scene
