@@ -31,6 +31,8 @@ LAGOON_DESTROY_TRAIT(VkFence, vkDestroyFence)
 LAGOON_DESTROY_TRAIT(VkSemaphore, vkDestroySemaphore)
 LAGOON_DESTROY_TRAIT(VkQueryPool, vkDestroyQueryPool)
 LAGOON_DESTROY_TRAIT(VkSwapchainKHR, vkDestroySwapchainKHR)
+LAGOON_DESTROY_TRAIT(VkRenderPass, vkDestroyRenderPass)
+LAGOON_DESTROY_TRAIT(VkFramebuffer, vkDestroyFramebuffer)
 #undef LAGOON_DESTROY_TRAIT
 
 template <typename T>

@@ -1,0 +1,96 @@
+#include "window/swapchain.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "vk/check.h"
+
+namespace lagoon {
+namespace {
+
+VkSurfaceFormatKHR pick_format(VkPhysicalDevice gpu, VkSurfaceKHR surface) {
+  uint32_t count = 0;
+  VK_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(gpu, surface, &count, nullptr));
+  std::vector<VkSurfaceFormatKHR> formats(count);
+  VK_CHECK(vkGetPhysicalDeviceSurfaceFormatsKHR(gpu, surface, &count, formats.data()));
+  for (VkFormat wanted : {VK_FORMAT_B8G8R8A8_UNORM, VK_FORMAT_R8G8B8A8_UNORM})
+    for (const VkSurfaceFormatKHR& f : formats)
+      if (f.format == wanted && f.colorSpace == VK_COLOR_SPACE_SRGB_NONLINEAR_KHR) return f;
+  throw std::runtime_error("the window's surface offers no B8G8R8A8 or R8G8B8A8 UNORM format");
+}
+
+VkPresentModeKHR pick_present_mode(VkPhysicalDevice gpu, VkSurfaceKHR surface, bool vsync) {
+  if (vsync) return VK_PRESENT_MODE_FIFO_KHR;
+  uint32_t count = 0;
+  VK_CHECK(vkGetPhysicalDeviceSurfacePresentModesKHR(gpu, surface, &count, nullptr));
+  std::vector<VkPresentModeKHR> modes(count);
+  VK_CHECK(vkGetPhysicalDeviceSurfacePresentModesKHR(gpu, surface, &count, modes.data()));
+  for (VkPresentModeKHR wanted : {VK_PRESENT_MODE_MAILBOX_KHR, VK_PRESENT_MODE_IMMEDIATE_KHR})
+    if (std::find(modes.begin(), modes.end(), wanted) != modes.end()) return wanted;
+  return VK_PRESENT_MODE_FIFO_KHR;
+}
+
+}  // namespace
+
+Swapchain::Swapchain(vk::Context& ctx, VkExtent2D extent, bool vsync, Swapchain* previous) : ctx_(ctx) {
+  const VkPhysicalDevice gpu = ctx.physical_device();
+  const VkSurfaceKHR surface = ctx.surface();
+  VkSurfaceCapabilitiesKHR caps{};
+  VK_CHECK(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(gpu, surface, &caps));
+  // currentExtent is the window's size unless the surface lets the swapchain choose (0xFFFFFFFF).
+  if (caps.currentExtent.width != UINT32_MAX) {
+    extent_ = caps.currentExtent;
+  } else {
+    extent_ = {std::clamp(extent.width, caps.minImageExtent.width, caps.maxImageExtent.width),
+               std::clamp(extent.height, caps.minImageExtent.height, caps.maxImageExtent.height)};
+  }
+  const VkSurfaceFormatKHR format = pick_format(gpu, surface);
+  format_ = format.format;
+  present_mode_ = pick_present_mode(gpu, surface, vsync);
+  min_images_ = std::max(caps.minImageCount + 1, 2u);
+  if (caps.maxImageCount > 0) min_images_ = std::min(min_images_, caps.maxImageCount);
+  // Copies in (the rendered frame) and out (screenshots), and the UI drawn on top.
+  const VkImageUsageFlags usage =
+      VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+  if ((caps.supportedUsageFlags & usage) != usage)
+    throw std::runtime_error("the window's surface cannot be copied to and from (transfer usage missing)");
+
+  const VkSwapchainCreateInfoKHR info{.sType = VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR,
+                                      .surface = surface,
+                                      .minImageCount = min_images_,
+                                      .imageFormat = format.format,
+                                      .imageColorSpace = format.colorSpace,
+                                      .imageExtent = extent_,
+                                      .imageArrayLayers = 1,
+                                      .imageUsage = usage,
+                                      .imageSharingMode = VK_SHARING_MODE_EXCLUSIVE,
+                                      .preTransform = caps.currentTransform,
+                                      .compositeAlpha = VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR,
+                                      .presentMode = present_mode_,
+                                      .clipped = VK_TRUE,
+                                      .oldSwapchain = previous ? previous->handle() : VK_NULL_HANDLE};
+  VkSwapchainKHR swapchain = VK_NULL_HANDLE;
+  VK_CHECK(vkCreateSwapchainKHR(ctx.device(), &info, nullptr, &swapchain));
+  swapchain_ = vk::Unique<VkSwapchainKHR>(ctx.device(), swapchain);
+
+  uint32_t count = 0;
+  VK_CHECK(vkGetSwapchainImagesKHR(ctx.device(), swapchain, &count, nullptr));
+  images_.resize(count);
+  VK_CHECK(vkGetSwapchainImagesKHR(ctx.device(), swapchain, &count, images_.data()));
+  for (uint32_t i = 0; i < count; ++i) {
+    const VkImageViewCreateInfo view_info{.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO,
+                                          .image = images_[i],
+                                          .viewType = VK_IMAGE_VIEW_TYPE_2D,
+                                          .format = format_,
+                                          .subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1}};
+    VkImageView view = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateImageView(ctx.device(), &view_info, nullptr, &view));
+    views_.emplace_back(ctx.device(), view);
+    const VkSemaphoreCreateInfo semaphore_info{.sType = VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
+    VkSemaphore semaphore = VK_NULL_HANDLE;
+    VK_CHECK(vkCreateSemaphore(ctx.device(), &semaphore_info, nullptr, &semaphore));
+    rendered_.emplace_back(ctx.device(), semaphore);
+  }
+}
+
+}  // namespace lagoon
