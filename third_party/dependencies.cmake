@@ -21,3 +21,18 @@ endif()
 if(LAGOON_BUILD_BENCHMARKS)
   find_package(benchmark REQUIRED)
 endif()
+
+# Dear ImGui for the demo: the library from libimgui-dev, and the GLFW and Vulkan backends that the package
+# ships as sources under its documentation (install-deps.sh extracts them from the .deb into
+# /usr/local/share/lagoon/imgui-backends where dpkg is told to skip /usr/share/doc, as in Docker images).
+pkg_check_modules(IMGUI REQUIRED IMPORTED_TARGET GLOBAL imgui)
+find_path(IMGUI_BACKENDS_DIR imgui_impl_vulkan.cpp
+          PATHS /usr/share/doc/libimgui-dev/examples/backends /usr/local/share/lagoon/imgui-backends
+          NO_DEFAULT_PATH)
+if(NOT IMGUI_BACKENDS_DIR)
+  message(FATAL_ERROR "imgui_impl_vulkan.cpp (from libimgui-dev) not found; run tools/install-deps.sh")
+endif()
+find_path(IMGUI_BACKEND_HEADERS imgui_impl_vulkan.h PATH_SUFFIXES imgui/backends REQUIRED)
+add_library(lagoon_imgui STATIC ${IMGUI_BACKENDS_DIR}/imgui_impl_glfw.cpp ${IMGUI_BACKENDS_DIR}/imgui_impl_vulkan.cpp)
+target_include_directories(lagoon_imgui SYSTEM PUBLIC ${IMGUI_BACKEND_HEADERS})
+target_link_libraries(lagoon_imgui PUBLIC PkgConfig::IMGUI PkgConfig::GLFW Vulkan::Vulkan)

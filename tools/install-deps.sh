@@ -22,7 +22,13 @@ for p in "${packages[@]}"; do
   [[ "$status" == "install ok installed" ]] || missing+=("$p")
 done
 
-if [[ ${#missing[@]} -eq 0 ]]; then
+# libimgui-dev ships its GLFW and Vulkan backends as sources under /usr/share/doc, which images built with
+# a dpkg path-exclude for docs (Docker's Debian) leave out; then they are taken from the same .deb.
+backends=/usr/share/doc/libimgui-dev/examples/backends
+extracted=/usr/local/share/lagoon/imgui-backends
+need_backends() { [[ ! -f $backends/imgui_impl_vulkan.cpp && ! -f $extracted/imgui_impl_vulkan.cpp ]]; }
+
+if [[ ${#missing[@]} -eq 0 ]] && ! need_backends; then
   echo "install-deps: all ${#packages[@]} packages present"
   exit 0
 fi
@@ -33,7 +39,21 @@ if [[ $(id -u) -ne 0 ]]; then
   sudo_cmd=(sudo)
 fi
 
-echo "install-deps: installing ${missing[*]}"
 export DEBIAN_FRONTEND=noninteractive
-"${sudo_cmd[@]}" apt-get update -q
-"${sudo_cmd[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
+if [[ ${#missing[@]} -gt 0 ]]; then
+  echo "install-deps: installing ${missing[*]}"
+  "${sudo_cmd[@]}" apt-get update -q
+  "${sudo_cmd[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi
+
+if need_backends; then
+  echo "install-deps: extracting the ImGui backends from libimgui-dev into $extracted"
+  tmp=$(mktemp -d)
+  trap 'rm -rf "$tmp"' EXIT
+  version=$(dpkg-query -W -f='${Version}' libimgui-dev)
+  [[ ${#missing[@]} -gt 0 ]] || "${sudo_cmd[@]}" apt-get update -q  # download needs the package lists
+  (cd "$tmp" && apt-get download -q "libimgui-dev=$version")
+  dpkg-deb -x "$tmp"/libimgui-dev_*.deb "$tmp/root"
+  "${sudo_cmd[@]}" mkdir -p "$extracted"
+  "${sudo_cmd[@]}" cp "$tmp/root$backends"/imgui_impl_{glfw,vulkan}.cpp "$extracted/"
+fi

@@ -61,7 +61,7 @@ Result<ParsedArgs> parse_args(const CommandSpec& spec, std::span<const std::stri
 }
 
 std::string usage(const CommandSpec& spec) {
-  std::string out = "usage: lagoon " + spec.name;
+  std::string out = "usage: " + spec.program + (spec.name.empty() ? "" : " " + spec.name);
   for (const auto& name : spec.positional)
     for (const auto& o : spec.options)
       if (o.name == name) out += " " + o.value_name;

@@ -20,8 +20,9 @@ struct OptionSpec {
 };
 
 struct CommandSpec {
-  std::string name;     // "render"
-  std::string summary;  // one line
+  std::string name;                // "render"
+  std::string program = "lagoon";  // what the usage line starts with; "lagoon-demo" with an empty name
+  std::string summary;             // one line
   std::vector<OptionSpec> options;
   // Options that may also be given as plain words, in this order ("lagoon bench compute").
   std::vector<std::string> positional;

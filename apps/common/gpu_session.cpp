@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "commands.h"
+#include "exit_codes.h"
 
 namespace lagoon::cli {
 

@@ -4,13 +4,9 @@
 #include <string>
 
 #include "args.h"
+#include "exit_codes.h"
 
 namespace lagoon::cli {
-
-inline constexpr int kExitOk = 0;
-inline constexpr int kExitFailure = 1;     // missing/unreadable/invalid file, no device, Vulkan error
-inline constexpr int kExitUsage = 2;       // bad command line
-inline constexpr int kExitValidation = 3;  // LAGOON_VALIDATION=1 and the validation layer reported errors
 
 struct Command {
   CommandSpec spec;

@@ -1,0 +1,159 @@
+// lagoon-demo end to end, under a virtual X server (xvfb-run) on lavapipe with validation: its screenshot
+// matches `lagoon render` of the same scene and time, a saved scene renders the same image from the CLI,
+// scripted edits (valid and invalid, light and heavy) every frame end cleanly, and bad input fails clearly.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "io/png.h"
+#include "support/image_compare.h"
+#include "support/run_process.h"
+
+namespace lagoon::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kScene = std::string(LAGOON_SOURCE_DIR) + "/scenes/default.json";
+// The render tests' tolerance (tests/render): a few pixels may differ slightly (foam builds up over the
+// demo's 1/30 s steps, over the CLI's 0.1 s warm-up steps).
+const CompareOptions kTolerance{.channel_tolerance = 3, .max_differing_fraction = 0.01, .min_psnr_db = 35.0};
+
+class Demo : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::path(LAGOON_TEST_ARTIFACTS) / "demo" /
+           ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  ProcessResult demo(const std::string& args) {
+    return run_process(shell_quote(LAGOON_XVFB_RUN) + " -a " + shell_quote(LAGOON_DEMO_BINARY) + " " + args);
+  }
+  ProcessResult lagoon(const std::string& args) {
+    return run_process(shell_quote(LAGOON_BINARY) + " " + args);
+  }
+  std::string out(const std::string& name) { return (dir_ / name).string(); }
+  io::Image8 png(const std::string& path) {
+    auto image = io::read_png(path);
+    EXPECT_TRUE(image) << image.error().message;
+    return image ? *image : io::Image8{};
+  }
+  fs::path dir_;
+};
+
+TEST_F(Demo, ScreenshotMatchesTheCliRenderOfTheSameSceneAndTime) {
+  // 30 frames from t = 6 s at 1/30 s: the last is at 6 + 29/30 s.
+  auto d = demo("--scene " + shell_quote(kScene) + " --width 320 --height 180 --frames 30 --screenshot " +
+                shell_quote(out("demo.png")) + " --hide-ui --exit");
+  ASSERT_EQ(d.exit_code, 0) << d.output;
+  auto c = lagoon("render --scene " + shell_quote(kScene) +
+                  " --width 320 --height 180 --time 6.9666667 --out " + shell_quote(out("cli.png")));
+  ASSERT_EQ(c.exit_code, 0) << c.output;
+  const CompareResult r = compare_images(png(out("demo.png")), png(out("cli.png")), kTolerance);
+  EXPECT_TRUE(r.passed) << r.summary();
+}
+
+TEST_F(Demo, ScreenshotWithThePanelDiffersFromTheFrameAlone) {
+  // Control for the test above: the comparison can fail, and the UI is really drawn into the screenshot.
+  auto d = demo("--scene " + shell_quote(kScene) + " --width 320 --height 180 --frames 2 --screenshot " +
+                shell_quote(out("ui.png")) + " --exit");
+  ASSERT_EQ(d.exit_code, 0) << d.output;
+  auto c = lagoon("render --scene " + shell_quote(kScene) +
+                  " --width 320 --height 180 --time 6.0333333 --out " + shell_quote(out("cli.png")));
+  ASSERT_EQ(c.exit_code, 0) << c.output;
+  const CompareResult r = compare_images(png(out("ui.png")), png(out("cli.png")), kTolerance);
+  EXPECT_FALSE(r.passed) << r.summary();
+  EXPECT_GT(r.differing_fraction, 0.05) << r.summary();
+}
+
+TEST_F(Demo, SavedSceneRendersTheSameImageFromTheCli) {
+  // Edit the scene the way the panel does (light and heavy fields), save it, render it with the CLI.
+  {
+    std::ofstream script(out("edits.txt"));
+    script << "0 sun.azimuth_deg=150\n"
+              "1 camera.fov_deg=40\n"
+              "2 ocean.spectrum.wind_speed_mps=14\n"
+              "3 water.type=\"jerlov-II\"\n";
+  }
+  auto d = demo("--scene " + shell_quote(kScene) + " --width 256 --height 144 --frames 8 --script " +
+                shell_quote(out("edits.txt")) + " --screenshot " + shell_quote(out("demo.png")) +
+                " --hide-ui --save-scene " + shell_quote(out("saved.json")) + " --exit");
+  ASSERT_EQ(d.exit_code, 0) << d.output;
+  auto c =
+      lagoon("render --scene " + shell_quote(out("saved.json")) + " --out " + shell_quote(out("cli.png")));
+  ASSERT_EQ(c.exit_code, 0) << c.output;
+  const io::Image8 cli = png(out("cli.png"));
+  EXPECT_EQ(cli.width, 256u);
+  const CompareResult r = compare_images(png(out("demo.png")), cli, kTolerance);
+  EXPECT_TRUE(r.passed) << r.summary();
+  // The edits are in the saved file, and its asset paths still resolve (the CLI found the boat and buoy).
+  std::ifstream saved(out("saved.json"));
+  const std::string text((std::istreambuf_iterator<char>(saved)), {});
+  EXPECT_NE(text.find("\"jerlov-II\""), std::string::npos) << text;
+  EXPECT_NE(text.find("\"wind_speed_mps\": 14"), std::string::npos) << text;
+}
+
+TEST_F(Demo, ScriptedChangesEveryFrameIncludingInvalidOnesEndCleanly) {
+  {
+    std::ofstream script(out("chaos.txt"));
+    script
+        << "# one change per frame: cheap, heavy (renderer rebuilt) and invalid (rejected with a message)\n"
+           "0 sun.elevation_deg=12\n"
+           "1 camera.fov_deg=500\n"
+           "2 "
+           "ocean.cascades=[{\"patch_size_m\":80,\"resolution\":64},{\"patch_size_m\":9,\"resolution\":64}]\n"
+           "3 ocean.cascades[0].resolution=100\n"
+           "4 water.type=\"jerlov-9C\"\n"
+           "5 water.type=\"jerlov-99\"\n"
+           "6 render.exposure=-1\n"
+           "7 camera.position=[0,-3,0]\n"
+           "8 ocean.spectrum.type=\"tma\"\n"
+           "9 ocean.depth_m=0\n"
+           "10 lights=[{\"position\":[0,2,5],\"colour\":[1,0.5,0.2],\"intensity\":3}]\n"
+           "11 render.effects.reflection=false\n"
+           "12 seafloor.type=\"none\"\n"
+           "13 no.such.field=1\n";
+  }
+  auto d = demo("--scene " + shell_quote(kScene) + " --width 200 --height 120 --frames 16 --script " +
+                shell_quote(out("chaos.txt")) + " --exit");
+  EXPECT_EQ(d.exit_code, 0) << d.output;  // 3 would mean validation errors
+  // Each invalid edit is reported with the loader's message naming the field; the valid ones are not.
+  for (const char* field :
+       {"camera.fov_deg", "ocean.cascades", "water.type", "render.exposure", "ocean.depth_m", "no"})
+    EXPECT_NE(d.output.find(field), std::string::npos) << field << "\n" << d.output;
+  EXPECT_EQ(d.output.find("frame 0:"), std::string::npos) << d.output;
+  EXPECT_EQ(d.output.find("frame 2:"), std::string::npos) << d.output;
+}
+
+TEST_F(Demo, BadInputFailsWithAClearMessage) {
+  auto no_frames = demo("--exit");
+  EXPECT_EQ(no_frames.exit_code, 2) << no_frames.output;
+  EXPECT_NE(no_frames.output.find("--frames"), std::string::npos) << no_frames.output;
+
+  auto missing = demo("--scene " + shell_quote(out("nope.json")) + " --frames 1 --exit");
+  EXPECT_EQ(missing.exit_code, 1) << missing.output;
+  EXPECT_NE(missing.output.find("nope.json"), std::string::npos) << missing.output;
+
+  {
+    std::ofstream script(out("bad.txt"));
+    script << "3 sun.elevation_deg=10\nsoon sun.elevation_deg=20\n";
+  }
+  auto script = demo("--script " + shell_quote(out("bad.txt")) + " --frames 1 --exit");
+  EXPECT_EQ(script.exit_code, 1) << script.output;
+  EXPECT_NE(script.output.find("bad.txt:2"), std::string::npos) << script.output;
+
+  auto screenshot = demo("--frames 1 --screenshot " + shell_quote(out("shot.jpg")) + " --exit");
+  EXPECT_EQ(screenshot.exit_code, 2) << screenshot.output;
+  EXPECT_FALSE(fs::exists(out("shot.jpg")));
+}
+
+TEST_F(Demo, NoDisplaySaysWhatToDo) {
+  auto r = run_process(shell_quote(LAGOON_DEMO_BINARY) + " --frames 1 --exit", "DISPLAY= WAYLAND_DISPLAY=");
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("xvfb-run"), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace lagoon::test
