@@ -168,6 +168,17 @@ void Demo::recreate_swapchain() {
 void Demo::apply_script(long long frame) {
   for (const ScriptStep& step : options_.script) {
     if (step.frame != frame) continue;
+    // Not a scene field: resizes the window, as a user dragging its corner would.
+    if (step.assignment.rfind("window.size=", 0) == 0) {
+      unsigned w = 0, h = 0;
+      if (std::sscanf(step.assignment.c_str() + 12, "%ux%u", &w, &h) == 2 && w >= 16 && h >= 16 &&
+          w <= 16384 && h <= 16384)
+        glfwSetWindowSize(window_->handle(), int(w), int(h));
+      else
+        message("script, frame " + std::to_string(frame) + ": " + step.assignment +
+                ": expected window.size=WIDTHxHEIGHT, 16 to 16384 pixels each");
+      continue;
+    }
     if (auto r = edit_scene(scene_, step.assignment); !r)
       message("script, frame " + std::to_string(frame) + ": " + step.assignment + ": " + r.error().message);
     else

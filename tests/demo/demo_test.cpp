@@ -127,6 +127,21 @@ TEST_F(Demo, ScriptedChangesEveryFrameIncludingInvalidOnesEndCleanly) {
   EXPECT_EQ(d.output.find("frame 2:"), std::string::npos) << d.output;
 }
 
+TEST_F(Demo, ResizingTheWindowRecreatesTheSwapchain) {
+  {
+    std::ofstream script(out("resize.txt"));
+    script << "2 window.size=300x200\n4 window.size=7x7\n";
+  }
+  auto d =
+      demo("--scene " + shell_quote(kScene) + " --width 200 --height 120 --frames 8 --script " +
+           shell_quote(out("resize.txt")) + " --screenshot " + shell_quote(out("resized.png")) + " --exit");
+  ASSERT_EQ(d.exit_code, 0) << d.output;
+  const io::Image8 shot = png(out("resized.png"));
+  EXPECT_EQ(shot.width, 300u);
+  EXPECT_EQ(shot.height, 200u);
+  EXPECT_NE(d.output.find("window.size=7x7: expected"), std::string::npos) << d.output;
+}
+
 TEST_F(Demo, BadInputFailsWithAClearMessage) {
   auto no_frames = demo("--exit");
   EXPECT_EQ(no_frames.exit_code, 2) << no_frames.output;
