@@ -13,8 +13,8 @@ glm::vec3 direction(float yaw_deg, float pitch_deg) {
 
 }  // namespace
 
-CameraController::CameraController(const scene::Camera& camera)
-    : position_(camera.position), target_(camera.look_at) {
+CameraController::CameraController(const scene::Camera& camera, Mode mode)
+    : mode_(mode), position_(camera.position), target_(camera.look_at) {
   const glm::vec3 d = glm::normalize(camera.look_at - camera.position);
   yaw_deg_ = glm::degrees(std::atan2(d.x, d.z));
   pitch_deg_ = std::clamp(glm::degrees(std::asin(std::clamp(d.y, -1.0f, 1.0f))), -kMaxPitchDeg, kMaxPitchDeg);
@@ -29,7 +29,8 @@ void CameraController::set_mode(Mode mode) {
   if (mode == Mode::Orbit && mode_ == Mode::Fly) {
     // Orbit what is in front: the point where the view meets the water, or a point ahead.
     const glm::vec3 f = forward();
-    const float t = f.y < -0.05f ? -position_.y / f.y : 20.0f;
+    // Only from above the water: below it, looking down never meets the surface in front.
+    const float t = f.y < -0.05f && position_.y > 0.0f ? -position_.y / f.y : 20.0f;
     target_ = position_ + f * std::min(t, 200.0f);
   }
   mode_ = mode;

@@ -18,8 +18,8 @@ class CameraController {
  public:
   enum class Mode { Fly, Orbit };
 
-  // Starts where `camera` is, looking where it looks; the orbit target is its look_at point.
-  explicit CameraController(const scene::Camera& camera);
+  // Starts where `camera` is, looking where it looks; the orbit centre is its look_at point.
+  explicit CameraController(const scene::Camera& camera, Mode mode = Mode::Fly);
 
   void update(const CameraInput& input, float dt_s);
   // Writes position and look_at (the rest of `camera` is left alone).

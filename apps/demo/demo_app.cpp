@@ -63,7 +63,7 @@ std::string heavy_key(const scene::Scene& s) {
   for (const char* block : {"ocean", "water", "seafloor", "objects"})
     if (j.contains(block)) key[block] = j[block];
   key["sun_elevation_deg"] = s.sun.elevation_deg;  // the LUTs depend on the sun's height
-  return key.dump();
+  return safe_dump(key);
 }
 
 std::string timestamped(const char* prefix, const char* extension) {
@@ -118,6 +118,7 @@ class Demo {
   KeyEdges keys_;
 
   double time_s_ = 0;
+  long long scripted_frame_ = -1;
   bool paused_ = false, step_once_ = false;
   bool show_ui_ = true, show_help_ = false;
   bool vsync_ = true, swapchain_dirty_ = false;
@@ -159,6 +160,10 @@ Result<void> Demo::rebuild_renderer() {
 
 void Demo::recreate_swapchain() {
   ctx_->wait_idle();
+  // The window may have been minimised since the loop looked: try again next frame.
+  VkSurfaceCapabilitiesKHR caps{};
+  VK_CHECK(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(ctx_->physical_device(), ctx_->surface(), &caps));
+  if (caps.currentExtent.width == 0 || caps.currentExtent.height == 0) return;
   auto next = std::make_unique<Swapchain>(*ctx_, window_->framebuffer_extent(), vsync_, swapchain_.get());
   swapchain_ = std::move(next);
   ui_->on_swapchain(*swapchain_);
@@ -179,10 +184,11 @@ void Demo::apply_script(long long frame) {
                 ": expected window.size=WIDTHxHEIGHT, 16 to 16384 pixels each");
       continue;
     }
+    const scene::Camera before = scene_.camera;
     if (auto r = edit_scene(scene_, step.assignment); !r)
       message("script, frame " + std::to_string(frame) + ": " + step.assignment + ": " + r.error().message);
-    else
-      camera_.emplace(scene_.camera);
+    else if (scene_.camera.position != before.position || scene_.camera.look_at != before.look_at)
+      camera_.emplace(scene_.camera, camera_->mode());
   }
 }
 
@@ -240,8 +246,9 @@ void Demo::draw_probe() {
     last_probe_ = Clock::now();
     const auto m = render::camera_matrices(scene_.camera, float(e.width) / float(e.height));
     const glm::mat4 inv = glm::inverse(m.view_proj);
-    const float x = 2.0f * io.MousePos.x / float(e.width) - 1.0f,
-                y = 1.0f - 2.0f * io.MousePos.y / float(e.height);
+    // Window coordinates (io.DisplaySize), which differ from framebuffer pixels on HiDPI screens.
+    const float x = 2.0f * io.MousePos.x / io.DisplaySize.x - 1.0f;
+    const float y = 1.0f - 2.0f * io.MousePos.y / io.DisplaySize.y;
     const glm::vec4 near = inv * glm::vec4(x, y, 0.0f, 1.0f), far = inv * glm::vec4(x, y, 1.0f, 1.0f);
     const glm::dvec3 a = glm::dvec3(near) / double(near.w), b = glm::dvec3(far) / double(far.w);
     const glm::dvec3 dir = b - a;
@@ -310,9 +317,7 @@ void Demo::draw_ui() {
     if (ImGui::BeginTabItem("scene")) {
       const glm::vec3 position = scene_.camera.position, look_at = scene_.camera.look_at;
       if (panel_.draw(scene_) && (scene_.camera.position != position || scene_.camera.look_at != look_at)) {
-        const CameraController::Mode m = camera_->mode();
-        camera_.emplace(scene_.camera);
-        camera_->set_mode(m);
+        camera_.emplace(scene_.camera, camera_->mode());
       }
       ImGui::EndTabItem();
     }
@@ -419,7 +424,10 @@ int Demo::run() {
 
     ui_->new_frame();
     handle_input(dt);
-    if (options_.frames) apply_script(frame);
+    if (options_.frames && frame != scripted_frame_) {  // once per frame, even if the frame is retried
+      apply_script(frame);
+      scripted_frame_ = frame;
+    }
     draw_ui();
     ImGui::Render();
     // Heavy edits (spectrum, cascades, water type...) rebuild the renderer once the widget is released.

@@ -126,6 +126,8 @@ Result<DemoOptions> parse_demo_options(std::span<const std::string> args, int& e
   o.vsync = !parsed->has("no-vsync");
   if (o.exit_after_frames && !o.frames)
     return usage_error("--exit needs --frames N (how many frames to run)");
+  if (parsed->has("script") && !o.frames)
+    return usage_error("--script needs --frames N (scripts count frames of a fixed time step)");
   if (auto script = parsed->get("script")) {
     auto steps = read_script(*script);
     if (!steps) {

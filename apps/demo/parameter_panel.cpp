@@ -1,6 +1,7 @@
 #include "parameter_panel.h"
 
 #include <imgui.h>
+#include <imgui_stdlib.h>
 
 #include <algorithm>
 #include <cmath>
@@ -45,7 +46,7 @@ bool edit_value(const scene::FieldInfo& f, const std::string& label, ordered_jso
   limits(f.bounds, lo, hi);
   bool changed = false;
   if (!f.choices.empty()) {
-    const std::string current = v.is_string() ? v.get<std::string>() : v.dump();
+    const std::string current = v.is_string() ? v.get<std::string>() : safe_dump(v);
     if (ImGui::BeginCombo(label.c_str(), current.c_str())) {
       for (const std::string& choice : f.choices) {
         if (ImGui::Selectable(choice.c_str(), choice == current)) {
@@ -72,19 +73,19 @@ bool edit_value(const scene::FieldInfo& f, const std::string& label, ordered_jso
     changed = ImGui::Checkbox(label.c_str(), &x);
     if (changed) v = x;
   } else if (f.type == "string" && v.is_string()) {
-    char buffer[512];
-    std::snprintf(buffer, sizeof buffer, "%s", v.get<std::string>().c_str());
+    std::string text = v.get<std::string>();
     // Applied on Enter or when leaving the field: a half-typed file name is not worth a reload.
-    if (ImGui::InputText(label.c_str(), buffer, sizeof buffer, ImGuiInputTextFlags_EnterReturnsTrue) ||
+    if (ImGui::InputText(label.c_str(), &text, ImGuiInputTextFlags_EnterReturnsTrue) ||
         ImGui::IsItemDeactivatedAfterEdit()) {
-      changed = v.get<std::string>() != buffer;
-      v = std::string(buffer);
+      changed = v.get<std::string>() != text;
+      v = text;
     }
   } else if (f.type.front() == '[' && v.is_array() && (v.size() == 2 || v.size() == 3)) {
     float x[3] = {0, 0, 0};
     for (size_t i = 0; i < v.size(); ++i) x[i] = v[i].get<float>();
     if (f.type == "[r, g, b]") {
-      changed = ImGui::ColorEdit3(label.c_str(), x, ImGuiColorEditFlags_Float);
+      // HDR: light colours may exceed 1 (the field's bounds clamp them below).
+      changed = ImGui::ColorEdit3(label.c_str(), x, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
       for (float& c : x) c = std::clamp(c, float(lo), float(hi));
     } else {
       const float flo = float(lo), fhi = float(hi);
@@ -96,7 +97,7 @@ bool edit_value(const scene::FieldInfo& f, const std::string& label, ordered_jso
     if (changed)
       for (size_t i = 0; i < v.size(); ++i) v[i] = x[i];
   } else {
-    ImGui::TextDisabled("%s: %s", label.c_str(), v.dump().c_str());
+    ImGui::TextDisabled("%s: %s", label.c_str(), safe_dump(v).c_str());
   }
   tooltip(f);
   return changed;
@@ -142,8 +143,16 @@ bool edit_array(const std::vector<scene::FieldInfo>& fields, size_t a, ordered_j
     ImGui::PopID();
   }
   if (array.size() < f.max_elements && ImGui::SmallButton(("add to " + f.path).c_str())) {
-    // A copy of the last element (or the format's default element) is a valid start for most arrays.
+    // A copy of the last element, or the format's default element, with every field present so that
+    // required ones (an object's file) can be typed in.
     ordered_json element = array.empty() ? ordered_json::object() : array.back();
+    if (array.empty())
+      for (const scene::FieldInfo* e : elements) {
+        if (e->default_value.empty()) continue;
+        ordered_json value = ordered_json::parse(e->default_value, nullptr, false);
+        element[pointer(e->path.substr(prefix.size()))] =
+            value.is_discarded() ? ordered_json(e->default_value) : value;
+      }
     array.push_back(element);
     changed = true;
   }
@@ -151,6 +160,10 @@ bool edit_array(const std::vector<scene::FieldInfo>& fields, size_t a, ordered_j
 }
 
 }  // namespace
+
+std::string safe_dump(const nlohmann::ordered_json& value) {
+  return value.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
+}
 
 Result<void> replace_scene(scene::Scene& scene, const nlohmann::json& document) {
   auto parsed = scene::parse_scene(document, scene.source.empty() ? "(panel)" : scene.source.string());
@@ -162,7 +175,7 @@ Result<void> replace_scene(scene::Scene& scene, const nlohmann::json& document) 
 
 Result<void> edit_scene(scene::Scene& scene, const std::string& assignment) {
   // File paths stay as the scene holds them (already resolved against its folder).
-  nlohmann::json document = nlohmann::json::parse(scene::scene_to_json(scene, {}).dump());
+  nlohmann::json document = nlohmann::json::parse(safe_dump(scene::scene_to_json(scene, {})));
   if (auto r = scene::apply_override(document, assignment); !r) return r.error();
   return replace_scene(scene, document);
 }
@@ -205,7 +218,7 @@ bool ParameterPanel::draw(scene::Scene& scene) {
     if (ImGui::Button("revert the invalid edit")) discard_pending();
   }
   if (!edited) return false;
-  if (auto r = replace_scene(scene, nlohmann::json::parse(document.dump())); !r) {
+  if (auto r = replace_scene(scene, nlohmann::json::parse(safe_dump(document))); !r) {
     pending_ = document;
     error_ = r.error().message;
     return false;

@@ -11,6 +11,10 @@
 
 namespace lagoon::demo {
 
+// JSON text of `value`; invalid UTF-8 (a file name from a non-UTF-8 folder) becomes U+FFFD instead of
+// throwing.
+std::string safe_dump(const nlohmann::ordered_json& value);
+
 // Applies one "path=value" edit to `scene` through the loader. On failure `scene` is unchanged and the
 // error is the loader's message (naming the field and the fix). Used by the panel and by --script.
 Result<void> edit_scene(scene::Scene& scene, const std::string& assignment);

@@ -55,6 +55,17 @@ Swapchain::Swapchain(vk::Context& ctx, VkExtent2D extent, bool vsync, Swapchain*
   if ((caps.supportedUsageFlags & usage) != usage)
     throw std::runtime_error("the window's surface cannot be copied to and from (transfer usage missing)");
 
+  // Opaque where the compositor allows it; some (Wayland, Android) offer only the other modes.
+  VkCompositeAlphaFlagBitsKHR alpha = VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR;
+  for (VkCompositeAlphaFlagBitsKHR a :
+       {VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR, VK_COMPOSITE_ALPHA_INHERIT_BIT_KHR,
+        VK_COMPOSITE_ALPHA_PRE_MULTIPLIED_BIT_KHR, VK_COMPOSITE_ALPHA_POST_MULTIPLIED_BIT_KHR})
+    if (caps.supportedCompositeAlpha & a) {
+      alpha = a;
+      break;
+    }
+  if (extent_.width == 0 || extent_.height == 0)
+    throw std::runtime_error("cannot create a swapchain for a minimised window (0 x 0)");
   const VkSwapchainCreateInfoKHR info{.sType = VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR,
                                       .surface = surface,
                                       .minImageCount = min_images_,
@@ -65,7 +76,7 @@ Swapchain::Swapchain(vk::Context& ctx, VkExtent2D extent, bool vsync, Swapchain*
                                       .imageUsage = usage,
                                       .imageSharingMode = VK_SHARING_MODE_EXCLUSIVE,
                                       .preTransform = caps.currentTransform,
-                                      .compositeAlpha = VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR,
+                                      .compositeAlpha = alpha,
                                       .presentMode = present_mode_,
                                       .clipped = VK_TRUE,
                                       .oldSwapchain = previous ? previous->handle() : VK_NULL_HANDLE};

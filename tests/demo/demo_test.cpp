@@ -159,6 +159,10 @@ TEST_F(Demo, BadInputFailsWithAClearMessage) {
   EXPECT_EQ(script.exit_code, 1) << script.output;
   EXPECT_NE(script.output.find("bad.txt:2"), std::string::npos) << script.output;
 
+  auto script_alone = demo("--script " + shell_quote(out("bad.txt")));
+  EXPECT_EQ(script_alone.exit_code, 2) << script_alone.output;
+  EXPECT_NE(script_alone.output.find("--script needs --frames"), std::string::npos) << script_alone.output;
+
   auto screenshot = demo("--frames 1 --screenshot " + shell_quote(out("shot.jpg")) + " --exit");
   EXPECT_EQ(screenshot.exit_code, 2) << screenshot.output;
   EXPECT_FALSE(fs::exists(out("shot.jpg")));

@@ -92,6 +92,28 @@ TEST(DemoCamera, OrbitTurnsAroundAFixedCentre) {
   EXPECT_LT(glm::distance(z.position, z.look_at), glm::distance(b.position, b.look_at));
 }
 
+TEST(DemoCamera, OrbitFromBelowTheWaterCentresInFront) {
+  scene::Camera c;
+  c.position = {0, -5, 0};
+  c.look_at = {0, -10, 5};  // looking down and ahead, under the surface
+  CameraController controller(c);
+  controller.set_mode(CameraController::Mode::Orbit);
+  scene::Camera out;
+  controller.apply(out);
+  EXPECT_GT(glm::dot(out.look_at - c.position, c.look_at - c.position), 0.0f) << "centre behind the camera";
+  controller.update({}, 0.016f);  // no input: the camera stays put
+  EXPECT_LT(glm::distance(controller.position(), c.position), 1e-3f);
+}
+
+TEST(DemoCamera, KeepsTheModeWhenRestartedFromAnEditedScene) {
+  scene::Camera c = start();
+  CameraController controller(c, CameraController::Mode::Orbit);
+  EXPECT_EQ(controller.mode(), CameraController::Mode::Orbit);
+  scene::Camera out;
+  controller.apply(out);
+  EXPECT_EQ(out.look_at, c.look_at);  // a typed look_at stays the orbit centre
+}
+
 TEST(DemoCamera, ALongStallDoesNotFlingTheCamera) {
   CameraController controller(start());
   const glm::vec3 p = controller.position();
