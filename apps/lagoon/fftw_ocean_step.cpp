@@ -37,6 +37,7 @@ FftwOceanStep::FftwOceanStep(const ocean::OceanParams& params,
                                  int(texels), FFTW_BACKWARD, FFTW_MEASURE);
     c.displacement.assign(texels * 4, 0.0f);
     c.normal_jacobian.resize(texels * 4);
+    c.jacobian_terms.resize(texels * 4);
     cascades_.push_back(std::move(c));
   }
 }
@@ -90,6 +91,8 @@ void FftwOceanStep::assemble(Cascade& c, float decay, size_t begin, size_t end) 
     out[0] = lambda * c.fields[i][0], out[1] = h, out[2] = lambda * c.fields[plane + i][0], out[3] = foam;
     float* nj = &c.normal_jacobian[4 * i];
     nj[0] = -sx * inv_len, nj[1] = inv_len, nj[2] = -sz * inv_len, nj[3] = jacobian;
+    float* terms = &c.jacobian_terms[4 * i];
+    terms[0] = jxx - 1, terms[1] = jzz - 1, terms[2] = jxz, terms[3] = 0;
   }
 }
 

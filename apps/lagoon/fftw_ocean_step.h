@@ -30,7 +30,7 @@ class FftwOceanStep {
     std::vector<float> omega;
     fftwf_complex* fields = nullptr;  // 4 planes
     fftwf_plan plan = nullptr;
-    std::vector<float> displacement, normal_jacobian;
+    std::vector<float> displacement, normal_jacobian, jacobian_terms;
   };
   void evolve(Cascade& c, float t, uint32_t row_begin, uint32_t row_end);
   void assemble(Cascade& c, float decay, size_t begin, size_t end);

@@ -20,6 +20,7 @@ void CpuOceanStep::step(double time_s, double dt_s) {
     out.resolution = spectra_[c].resolution;
     out.displacement.resize(texels * 4, 0.0);
     out.normal_jacobian.resize(texels * 4);
+    out.jacobian_terms.resize(texels * 4);
     for (size_t i = 0; i < texels; ++i) {
       const double jxx = 1 + lambda * f[5][i], jzz = 1 + lambda * f[6][i], jxz = lambda * f[7][i];
       const double jacobian = jxx * jzz - jxz * jxz;
@@ -30,6 +31,8 @@ void CpuOceanStep::step(double time_s, double dt_s) {
       const double n[4] = {-f[3][i] * inv_len, inv_len, -f[4][i] * inv_len, jacobian};
       std::copy(d, d + 4, &out.displacement[4 * i]);
       std::copy(n, n + 4, &out.normal_jacobian[4 * i]);
+      const double terms[4] = {jxx - 1, jzz - 1, jxz, 0.0};
+      std::copy(terms, terms + 4, &out.jacobian_terms[4 * i]);
     }
   }
   first_ = false;

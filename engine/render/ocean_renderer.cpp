@@ -318,6 +318,7 @@ void OceanRenderer::record_frame(VkCommandBuffer cmd, const Targets& t) {
   for (uint32_t slot = 0; slot < 4; ++slot) {
     const ocean::CascadeTextures t = ocean_->cascade(std::min(slot, ocean_->cascade_count() - 1));
     surface_bindings.push_back(vk::bind(1, sampled(*t.displacement, repeat_sampler_), slot));
+    surface_bindings.push_back(vk::bind(9, sampled(*t.jacobian_terms, repeat_sampler_), slot));
     surface_bindings.push_back(vk::bind(2, sampled(*t.normal_jacobian, repeat_sampler_), slot));
   }
   vk::image_barrier(cmd, hdr.handle(), hdr.all_subresources(), VK_IMAGE_LAYOUT_UNDEFINED,
@@ -333,6 +334,13 @@ void OceanRenderer::record_frame(VkCommandBuffer cmd, const Targets& t) {
     vk::draw(cmd, sky_, {vk::bind(0, frame)}, 3);
     vk::end_rendering(cmd);
   }
+  // Two rendering instances on the same attachments: the surface pass loads what the sky pass wrote.
+  vk::image_barrier(cmd, hdr.handle(), hdr.all_subresources(), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                    VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, vk::access::kColorAttachmentWrite,
+                    vk::access::kColorAttachmentWrite);
+  vk::image_barrier(cmd, depth.handle(), depth.all_subresources(), VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+                    VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, vk::access::kDepthAttachment,
+                    vk::access::kDepthAttachment);
   {
     // Separate render passes so the timestamps bracket real work on tilers such as lavapipe.
     vk::GpuScope scope(slots_[slot_].timer, cmd, "surface");
@@ -403,7 +411,7 @@ const vk::Image& OceanRenderer::record(VkCommandBuffer cmd, const scene::Scene& 
           glm::vec4(grid.grid.x, grid.grid.y, 0.35f * reach, float(std::min(ocean_->cascade_count(), 4u))),
       .clipmap = grid.clipmap,
       .cascade_mss = cascade_mss_,
-      .glint = glm::vec4(subgrid_mss_, 0, 0, 0),
+      .glint = glm::vec4(subgrid_mss_, float(ocean_->params().foam.threshold), 0, 0),
       .post = glm::vec4(scene.render.exposure, scene.render.gamma, float(curve.m), float(curve.exponent)),
       .post2 = glm::vec4(float(curve.white), float(curve.world_adaptation),
                          scene.render.tone_map == "clamp" ? 0.0f : 1.0f, 0.0f),

@@ -13,6 +13,8 @@ layout(std430, binding = 0) readonly buffer Src { vec4 src[]; };  // complex pai
 layout(std430, binding = 1) readonly buffer Twiddles { vec2 twiddles[]; };
 layout(rgba32f, binding = 2) uniform image2DArray displacement;  // (λDx, h, λDz, foam); foam read back
 layout(rgba32f, binding = 3) writeonly uniform image2DArray normal_jacobian;  // (nx, ny, nz, J)
+// (λ∂Dx/∂x, λ∂Dz/∂z, λ∂Dx/∂z, 0): the renderer sums them over cascades for the whole sea's Jacobian.
+layout(rgba16f, binding = 4) writeonly uniform image2DArray jacobian_terms;
 layout(push_constant) uniform Push { OceanPush p; };
 
 // One invocation: the same butterfly of two neighbouring columns (loads move two complex values).
@@ -61,6 +63,7 @@ void main() {
       float foam = max(previous * decay, clamp(p.foam_threshold - jacobian, 0.0, 1.0));
       imageStore(displacement, texel, vec4(lambda * f0.x, h, lambda * f1.x, foam));
       imageStore(normal_jacobian, texel, vec4(normalize(vec3(-sx, 1.0, -sz)), jacobian));
+      imageStore(jacobian_terms, texel, vec4(jxx - 1.0, jzz - 1.0, jxz, 0.0));
     }
   }
 }

@@ -15,6 +15,7 @@ layout(binding = 5) uniform sampler2D lut_t0;             // (T0 RGB, a) over (u
 layout(binding = 6) uniform sampler2D lut_t1;
 layout(binding = 7) uniform sampler2D reflection;  // mirrored objects above the water; a = coverage
 layout(std430, binding = 8) readonly buffer Lights { PointLightGpu point_lights[]; };
+layout(binding = 9) uniform sampler2DArray jacobian_terms[4];  // (λ∂Dx/∂x, λ∂Dz/∂z, λ∂Dx/∂z, 0)
 
 layout(location = 0) in vec3 v_world;
 layout(location = 1) in vec2 v_rest;
@@ -56,6 +57,7 @@ void main() {
   // Constant indices into the sampler arrays (a loop index would be dynamic descriptor indexing).
   vec2 slope = vec2(0.0);
   float foam = 0.0;
+  vec3 terms = vec3(0.0);  // the Jacobian terms of the whole sea: each cascade's summed
   int count = int(frame.grid.w);
   // Slopes the mips filter away still roughen the surface: their mean square slope widens the glint
   // (Bruneton et al. 2010). Cascade c carries |k| from k_lo to π/(2·texel), with about equal slope variance
@@ -69,6 +71,7 @@ void main() {
     vec3 cn = texture(normal_jacobian[c], uvw).xyz;                                          \
     slope += -cn.xz / max(cn.y, 0.05); /* the cascade normal is (-sx, 1, -sz) */             \
     foam = max(foam, texture(displacement[c], uvw).w);                                       \
+    terms += texture(jacobian_terms[c], uvw).xyz;                                            \
     float k_hi = 1.5707963 / frame.cascade_texel[c];                                         \
     float k_lo = c == 0 ? 6.2831853 / frame.cascade_patch[0] : 1.5707963 / frame.cascade_texel[max(c - 1, 0)]; \
     float octaves = max(log2(k_hi / k_lo), 0.5);                                             \
@@ -79,6 +82,10 @@ void main() {
   LAGOON_CASCADE(1)
   LAGOON_CASCADE(2)
   LAGOON_CASCADE(3)
+  // Each cascade keeps its own foam with its decay; where the cascades fold the surface only together
+  // (long waves squeezing shorter ones), the whole sea's Jacobian adds the foam no single cascade shows.
+  float jacobian = (1.0 + terms.x) * (1.0 + terms.y) - terms.z * terms.z;
+  foam = max(foam, clamp(frame.glint.y - jacobian, 0.0, 1.0));
   vec3 n = normalize(vec3(-slope.x, 1.0, -slope.y));  // slope = (∂h/∂x, ∂h/∂z) summed over cascades
   vec3 v = normalize(frame.camera_pos.xyz - v_world);
   if (dot(n, v) < 0.02) n = normalize(n + v * (0.02 - dot(n, v)));  // back-facing slopes seen at grazing angles

@@ -1,8 +1,11 @@
 #include "ocean/gpu/gpu_ocean.h"
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <optional>
+
+#include <glm/gtc/packing.hpp>
 
 #include "lagoon_shaders/shaders.h"
 #include "ocean/validate.h"
@@ -21,7 +24,10 @@ struct GpuOcean::Group {
   vk::Buffer spectrum;  // vec4 (h0(k), conj(h0(-k))) per k, cascade after cascade
   vk::Buffer omega;     // float ω(k)
   std::unique_ptr<OceanFftPath> fft;
-  vk::Image displacement, normal_jacobian;
+  vk::Image displacement, normal_jacobian, jacobian_terms;
+  std::array<const vk::Image*, 3> images() const {
+    return {&displacement, &normal_jacobian, &jacobian_terms};
+  }
 };
 
 namespace {
@@ -107,8 +113,13 @@ void GpuOcean::build(std::vector<CascadeSpectrum> spectra) {
     g->displacement = vk::Image::create(ctx_, d);
     d.debug_name = "ocean normal+jacobian";
     g->normal_jacobian = vk::Image::create(ctx_, d);
+    // Half floats: the terms only decide where foam shows (relative error 5e-4), and half the bytes keep
+    // their mips and sampling cheap on CPU devices.
+    d.debug_name = "ocean jacobian terms";
+    d.format = VK_FORMAT_R16G16B16A16_SFLOAT;
+    g->jacobian_terms = vk::Image::create(ctx_, d);
     ctx_.submit_and_wait([&](VkCommandBuffer cmd) {
-      for (const vk::Image* image : {&g->displacement, &g->normal_jacobian})
+      for (const vk::Image* image : g->images())
         vk::image_barrier(cmd, image->handle(), image->all_subresources(), VK_IMAGE_LAYOUT_UNDEFINED,
                           VK_IMAGE_LAYOUT_GENERAL, vk::access::kNone, vk::access::kComputeReadWrite);
     });
@@ -136,13 +147,14 @@ void GpuOcean::record_step(VkCommandBuffer cmd, double time_s, double dt_s, vk::
 
     // The previous step (possibly in the same command buffer) may still read the FFT buffers.
     vk::memory_barrier(cmd, vk::access::kComputeReadWrite, vk::access::kComputeReadWrite);
-    for (const vk::Image* image : {&g->displacement, &g->normal_jacobian})
+    for (const vk::Image* image : g->images())
       vk::image_barrier(cmd, image->handle(), image->all_subresources(), VK_IMAGE_LAYOUT_GENERAL,
                         VK_IMAGE_LAYOUT_GENERAL, readers, vk::access::kComputeReadWrite);
-    g->fft->record(cmd, {&g->spectrum, &g->omega, &g->displacement, &g->normal_jacobian}, push, timer);
+    g->fft->record(cmd, {&g->spectrum, &g->omega, &g->displacement, &g->normal_jacobian, &g->jacobian_terms},
+                   push, timer);
     {
       vk::GpuScope scope(timer, cmd, "ocean mips " + std::to_string(n));
-      for (const vk::Image* image : {&g->displacement, &g->normal_jacobian})
+      for (const vk::Image* image : g->images())
         vk::generate_mipmaps(cmd, *image, VK_IMAGE_LAYOUT_GENERAL, vk::access::kComputeWrite, readers);
     }
   }
@@ -152,7 +164,7 @@ void GpuOcean::record_step(VkCommandBuffer cmd, double time_s, double dt_s, vk::
 CascadeTextures GpuOcean::cascade(uint32_t index) const {
   const auto [group, layer] = cascade_slots_.at(index);
   const Group& g = *groups_[group];
-  return {&g.displacement, &g.normal_jacobian, layer, g.n, spectra_[index].patch_size_m};
+  return {&g.displacement, &g.normal_jacobian, &g.jacobian_terms, layer, g.n, spectra_[index].patch_size_m};
 }
 
 CascadeReadback GpuOcean::read_cascade(uint32_t index) {
@@ -166,6 +178,15 @@ CascadeReadback GpuOcean::read_cascade(uint32_t index) {
     const std::vector<std::byte> bytes = vk::readback_image(ctx_, *image, VK_IMAGE_LAYOUT_GENERAL, writer);
     target->resize(layer_floats);
     std::memcpy(target->data(), bytes.data() + layer_floats * 4 * t.layer, layer_floats * 4);
+  }
+  // Half floats, widened.
+  const std::vector<std::byte> halves =
+      vk::readback_image(ctx_, *t.jacobian_terms, VK_IMAGE_LAYOUT_GENERAL, writer);
+  out.jacobian_terms.resize(layer_floats);
+  for (size_t i = 0; i < layer_floats; ++i) {
+    uint16_t h = 0;
+    std::memcpy(&h, halves.data() + (layer_floats * t.layer + i) * 2, 2);
+    out.jacobian_terms[i] = glm::unpackHalf1x16(h);
   }
   return out;
 }

@@ -20,6 +20,9 @@ namespace lagoon::ocean {
 struct CascadeTextures {
   const vk::Image* displacement = nullptr;     // RGBA32F array: (λDx, h, λDz, foam), metres
   const vk::Image* normal_jacobian = nullptr;  // RGBA32F array: (nx, ny, nz, J)
+  // RGBA16F array: (λ∂Dx/∂x, λ∂Dz/∂z, λ∂Dx/∂z, 0). Summed over cascades they give the whole sea's
+  // Jacobian, which no single cascade's J shows.
+  const vk::Image* jacobian_terms = nullptr;
   uint32_t layer = 0;
   uint32_t resolution = 0;
   double patch_size_m = 0;
@@ -30,6 +33,7 @@ struct CascadeReadback {
   uint32_t resolution = 0;
   std::vector<float> displacement;
   std::vector<float> normal_jacobian;
+  std::vector<float> jacobian_terms;  // from half floats
 };
 
 class GpuOcean {

@@ -54,7 +54,7 @@ class StockhamPath : public OceanFftPath {
     vk::GpuScope s(timer, cmd, "ocean columns+assemble " + std::to_string(n_));
     vk::dispatch(cmd, assemble_,
                  {vk::bind(0, *src), vk::bind(1, fft_.twiddles()), vk::bind(2, storage(*b.displacement)),
-                  vk::bind(3, storage(*b.normal_jacobian))},
+                  vk::bind(3, storage(*b.normal_jacobian)), vk::bind(4, storage(*b.jacobian_terms))},
                  push, vk::groups_for(assemble_, {n_ / 2, n_ / last.radix, count}));
   }
 
@@ -97,7 +97,7 @@ class WorkgroupPath : public OceanFftPath {
     vk::GpuScope s(timer, cmd, "ocean columns+assemble " + std::to_string(n_));
     vk::dispatch(cmd, columns_,
                  {vk::bind(0, fields_), vk::bind(1, twiddles_), vk::bind(2, storage(*b.displacement)),
-                  vk::bind(3, storage(*b.normal_jacobian))},
+                  vk::bind(3, storage(*b.normal_jacobian)), vk::bind(4, storage(*b.jacobian_terms))},
                  push, {n_ / lines_, 1, count});
   }
 

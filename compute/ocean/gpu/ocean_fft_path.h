@@ -22,6 +22,7 @@ struct OceanFftBindings {
   const vk::Buffer* omega = nullptr;     // float ω(k)
   const vk::Image* displacement = nullptr;
   const vk::Image* normal_jacobian = nullptr;
+  const vk::Image* jacobian_terms = nullptr;
 };
 
 class OceanFftPath {
