@@ -29,13 +29,26 @@ void limits(const scene::Bounds& b, double& lo, double& hi) {
   if (b.max_open) hi = std::nextafter(float(hi), -std::numeric_limits<float>::infinity());
 }
 
+// ImGui's built-in font is ASCII only: spell out the symbols the field docs use instead of showing '?'.
+std::string ascii(std::string text) {
+  static const std::pair<const char*, const char*> symbols[] = {
+      {"²", "^2"},     {"³", "^3"},    {"·", "*"},     {"−", "-"},     {"×", "x"},
+      {"–", "-"},      {"…", "..."},   {"≤", "<="},    {"≥", ">="},    {"→", "->"},
+      {"°", " deg"},   {"γ", "gamma"}, {"θ", "theta"}, {"ω", "omega"}, {"π", "pi"},
+      {"λ", "lambda"}, {"σ", "sigma"}, {"Ψ", "Psi"},   {"\u0302", ""}};  // U+0302: the hat of R-hat
+  for (const auto& [from, to] : symbols)
+    for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + std::strlen(to)))
+      text.replace(at, std::strlen(from), to);
+  return text;
+}
+
 void tooltip(const scene::FieldInfo& f) {
   if (!ImGui::IsItemHovered()) return;
   ImGui::BeginTooltip();
   ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30.0f);
   ImGui::TextUnformatted(f.path.c_str());
-  ImGui::TextUnformatted(f.doc.c_str());
-  ImGui::TextDisabled("%s%s%s", f.range.c_str(), f.unit.empty() ? "" : ", in ", f.unit.c_str());
+  ImGui::TextUnformatted(ascii(f.doc).c_str());
+  ImGui::TextDisabled("%s%s%s", ascii(f.range).c_str(), f.unit.empty() ? "" : ", in ", f.unit.c_str());
   ImGui::PopTextWrapPos();
   ImGui::EndTooltip();
 }
@@ -192,7 +205,7 @@ bool ParameterPanel::draw(scene::Scene& scene) {
     if (top_level) {
       if (f.type == "object" || f.type == "array of objects") {
         section_open = ImGui::CollapsingHeader(f.path.c_str());
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", f.doc.c_str());
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", ascii(f.doc).c_str());
         if (!section_open || f.type == "object") continue;
       } else {
         section_open = ImGui::CollapsingHeader("other");  // top-level values such as time_s
