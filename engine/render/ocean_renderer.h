@@ -1,8 +1,8 @@
 // The frame renderer: the FFT ocean (compute/ocean/gpu) drawn over an analytic sky whose light comes from
 // the optics model, water colour from the optics LUTs, then tone mapping (seed 000's eq. 18) and gamma.
-// Passes: ocean step, refraction (the floor's albedo and depth under the water), sky, surface (HDR,
-// RGBA16F: Fresnel between the reflected sky and eq. 22 with the LUTs), post (RGBA8). Objects and the
-// planar reflection pass arrive with the rest of issue 5.
+// Passes: ocean step, refraction (the floor's and submerged objects' albedo and depth), reflection (objects
+// above the water, mirrored), sky, surface (HDR, RGBA16F: the clipmap mesh, Fresnel between the reflection
+// and eq. 22 with the LUTs, foam), post (tone map, gamma, RGBA8). docs/rendering.md has the details.
 #pragma once
 #include <array>
 #include <memory>
