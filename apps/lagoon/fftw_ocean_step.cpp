@@ -92,7 +92,7 @@ void FftwOceanStep::assemble(Cascade& c, float decay, size_t begin, size_t end) 
     float* nj = &c.normal_jacobian[4 * i];
     nj[0] = -sx * inv_len, nj[1] = inv_len, nj[2] = -sz * inv_len, nj[3] = jacobian;
     float* terms = &c.jacobian_terms[4 * i];
-    terms[0] = jxx - 1, terms[1] = jzz - 1, terms[2] = jxz, terms[3] = 0;
+    terms[0] = jxx - 1, terms[1] = jzz - 1, terms[2] = jxz, terms[3] = foam;
   }
 }
 

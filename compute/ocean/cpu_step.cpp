@@ -31,7 +31,7 @@ void CpuOceanStep::step(double time_s, double dt_s) {
       const double n[4] = {-f[3][i] * inv_len, inv_len, -f[4][i] * inv_len, jacobian};
       std::copy(d, d + 4, &out.displacement[4 * i]);
       std::copy(n, n + 4, &out.normal_jacobian[4 * i]);
-      const double terms[4] = {jxx - 1, jzz - 1, jxz, 0.0};
+      const double terms[4] = {jxx - 1, jzz - 1, jxz, foam};
       std::copy(terms, terms + 4, &out.jacobian_terms[4 * i]);
     }
   }

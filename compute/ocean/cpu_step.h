@@ -13,7 +13,7 @@ struct CpuCascadeFields {
   // Row-major [z][x]; 4 values per texel as in the GPU textures.
   std::vector<double> displacement;     // (λDx, h, λDz, foam)
   std::vector<double> normal_jacobian;  // (nx, ny, nz, J)
-  std::vector<double> jacobian_terms;   // (λ∂Dx/∂x, λ∂Dz/∂z, λ∂Dx/∂z, 0)
+  std::vector<double> jacobian_terms;   // (λ∂Dx/∂x, λ∂Dz/∂z, λ∂Dx/∂z, foam)
 };
 
 class CpuOceanStep {

@@ -16,7 +16,8 @@ layout(std430, binding = 0) readonly buffer Src { vec2 src[]; };
 layout(std430, binding = 1) readonly buffer Twiddles { vec2 twiddles[]; };
 layout(rgba32f, binding = 2) uniform image2DArray displacement;  // (λDx, h, λDz, foam); foam read back
 layout(rgba32f, binding = 3) writeonly uniform image2DArray normal_jacobian;  // (nx, ny, nz, J)
-// (λ∂Dx/∂x, λ∂Dz/∂z, λ∂Dx/∂z, 0): the renderer sums them over cascades for the whole sea's Jacobian.
+// (λ∂Dx/∂x, λ∂Dz/∂z, λ∂Dx/∂z, foam): the renderer sums the terms over cascades for the whole sea's
+// Jacobian; foam is repeated here so that the surface shader needs this texture and the normals only.
 layout(rgba16f, binding = 4) writeonly uniform image2DArray jacobian_terms;
 layout(push_constant) uniform Push { OceanPush p; };
 
@@ -90,7 +91,7 @@ void main() {
       float foam = max(previous * decay, clamp(p.foam_threshold - jacobian, 0.0, 1.0));
       imageStore(displacement, texel, vec4(lambda * f0[q].x, h, lambda * f1[q].x, foam));
       imageStore(normal_jacobian, texel, vec4(normalize(vec3(-sx, 1.0, -sz)), jacobian));
-      imageStore(jacobian_terms, texel, vec4(jxx - 1.0, jzz - 1.0, jxz, 0.0));
+      imageStore(jacobian_terms, texel, vec4(jxx - 1.0, jzz - 1.0, jxz, foam));
     }
   }
 }

@@ -7,7 +7,6 @@
 // (plus the sun's glint) and the water's own colour from the optics LUT (deep water), foam from the foam
 // textures, haze towards the horizon. Output: HDR radiance in white units.
 layout(std140, binding = 0) uniform Frame { FrameUniforms frame; };
-layout(binding = 1) uniform sampler2DArray displacement[4];
 layout(binding = 2) uniform sampler2DArray normal_jacobian[4];
 layout(binding = 3) uniform sampler2D refraction_albedo;  // floor and submerged objects: albedo, a = coverage
 layout(binding = 4) uniform sampler2D refraction_depth;
@@ -15,7 +14,7 @@ layout(binding = 5) uniform sampler2D lut_t0;             // (T0 RGB, a) over (u
 layout(binding = 6) uniform sampler2D lut_t1;
 layout(binding = 7) uniform sampler2D reflection;  // mirrored objects above the water; a = coverage
 layout(std430, binding = 8) readonly buffer Lights { PointLightGpu point_lights[]; };
-layout(binding = 9) uniform sampler2DArray jacobian_terms[4];  // (λ∂Dx/∂x, λ∂Dz/∂z, λ∂Dx/∂z, 0)
+layout(binding = 9) uniform sampler2DArray jacobian_terms[4];  // (λ∂Dx/∂x, λ∂Dz/∂z, λ∂Dx/∂z, foam)
 
 layout(location = 0) in vec3 v_world;
 layout(location = 1) in vec2 v_rest;
@@ -70,8 +69,9 @@ void main() {
     vec3 uvw = vec3(v_rest / frame.cascade_patch[c], frame.cascade_layer[c]);                \
     vec3 cn = texture(normal_jacobian[c], uvw).xyz;                                          \
     slope += -cn.xz / max(cn.y, 0.05); /* the cascade normal is (-sx, 1, -sz) */             \
-    foam = max(foam, texture(displacement[c], uvw).w);                                       \
-    terms += texture(jacobian_terms[c], uvw).xyz;                                            \
+    vec4 jt = texture(jacobian_terms[c], uvw);                                               \
+    foam = max(foam, jt.w);                                                                  \
+    terms += jt.xyz;                                                                         \
     float k_hi = 1.5707963 / frame.cascade_texel[c];                                         \
     float k_lo = c == 0 ? 6.2831853 / frame.cascade_patch[0] : 1.5707963 / frame.cascade_texel[max(c - 1, 0)]; \
     float octaves = max(log2(k_hi / k_lo), 0.5);                                             \

@@ -20,8 +20,8 @@ namespace lagoon::ocean {
 struct CascadeTextures {
   const vk::Image* displacement = nullptr;     // RGBA32F array: (λDx, h, λDz, foam), metres
   const vk::Image* normal_jacobian = nullptr;  // RGBA32F array: (nx, ny, nz, J)
-  // RGBA16F array: (λ∂Dx/∂x, λ∂Dz/∂z, λ∂Dx/∂z, 0). Summed over cascades they give the whole sea's
-  // Jacobian, which no single cascade's J shows.
+  // RGBA16F array: (λ∂Dx/∂x, λ∂Dz/∂z, λ∂Dx/∂z, foam). Summed over cascades the terms give the whole sea's
+  // Jacobian, which no single cascade's J shows; foam repeats displacement.w for the surface shader.
   const vk::Image* jacobian_terms = nullptr;
   uint32_t layer = 0;
   uint32_t resolution = 0;
