@@ -86,6 +86,9 @@ OceanRenderer::OceanRenderer(vk::Context& ctx, const scene::Scene& scene)
         vk::Buffer::create(ctx, sizeof(gpu::PointLightGpu) * kMaxLights, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                            vk::MemoryUsage::Upload, "point lights");
     slot.timer = vk::GpuTimer(ctx, 32);
+    slot.surface_indices =
+        vk::Buffer::create(ctx, kClipmapMaxIndices * sizeof(uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
+                           vk::MemoryUsage::Upload, "surface indices");
   }
   mesh_refraction_ = vk::GraphicsPipeline::create(ctx, {.vertex = &shaders::render_mesh_vert,
                                                         .fragment = &shaders::render_mesh_frag,
@@ -347,7 +350,8 @@ void OceanRenderer::record_frame(VkCommandBuffer cmd, const Targets& t) {
     vk::begin_rendering(cmd, extent, {{.view = hdr.view()}},
                         vk::DepthTarget{.view = depth.view(), .clear = {}});
     draw_objects(cmd, 0.0f);  // above-water parts, lit; the surface depth-tests against them
-    vk::draw_ranges(cmd, surface_, surface_bindings, surface_ranges_);
+    vk::draw_indexed(cmd, surface_, surface_bindings, slots_[slot_].surface_indices.handle(),
+                     surface_indices_);
     vk::end_rendering(cmd);
   }
   vk::image_barrier(cmd, hdr.handle(), hdr.all_subresources(), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
@@ -395,8 +399,10 @@ const vk::Image& OceanRenderer::record(VkCommandBuffer cmd, const scene::Scene& 
   const optics::ToneMapCurve curve = optics::tone_map_curve();
   const float reach = std::min(0.8f * scene.camera.far_m, 3000.0f);
   const SurfaceGrid grid = surface_grid(scene.camera.position, reach, &cam.view_proj, displacement_bound_);
-  surface_ranges_.clear();
-  for (const VertexRange& r : grid.ranges) surface_ranges_.push_back({r.first, r.count});
+  surface_indices_ = uint32_t(grid.indices.size());
+  std::memcpy(frame_slot.surface_indices.mapped(), grid.indices.data(),
+              grid.indices.size() * sizeof(uint32_t));
+  frame_slot.surface_indices.flush();
   gpu::FrameUniforms f{
       .view_proj = cam.view_proj,
       .inv_view_proj = glm::inverse(cam.view_proj),

@@ -71,7 +71,7 @@ class OceanRenderer {
   glm::vec4 cascade_mss_{0};              // mean square slope of cascades 0..3 (ocean/slope_statistics.h)
   float subgrid_mss_ = 0;                 // ... of the waves shorter than the last drawn cascade, to 1 cm
   DisplacementBound displacement_bound_;  // of the whole ocean, for culling (render/surface_grid.h)
-  std::vector<vk::DrawRange> surface_ranges_;  // of the clipmap draw for the current camera
+  uint32_t surface_indices_ = 0;  // in the slot's index buffer: the clipmap cells drawn for this camera
   double lut_r_max_ = 1, lut_h_max_ = 1;
   vk::Image lut_t0_, lut_t1_;  // the colour LUTs as textures: x = r axis, y = h axis
   std::optional<GpuMesh> floor_;
@@ -93,8 +93,9 @@ class OceanRenderer {
   void draw_objects(VkCommandBuffer cmd, float mode) const;
   static constexpr size_t kMaxLights = 64;  // the scene format's limit
   struct Slot {
-    vk::Buffer frame;   // gpu::FrameUniforms
-    vk::Buffer lights;  // gpu::PointLightGpu[kMaxLights]
+    vk::Buffer frame;            // gpu::FrameUniforms
+    vk::Buffer lights;           // gpu::PointLightGpu[kMaxLights]
+    vk::Buffer surface_indices;  // the clipmap's triangles (render/surface_grid.h)
     vk::GpuTimer timer;
   };
   std::array<Slot, kSlots> slots_;

@@ -30,8 +30,7 @@ bool box_may_be_visible(const std::array<glm::vec4, 6>& planes, const glm::vec3&
 
 }  // namespace
 
-SurfaceGrid surface_grid(const glm::vec3& camera, float reach_m, const glm::mat4* view_proj,
-                         DisplacementBound bound) {
+SurfaceGrid surface_grid_parameters(const glm::vec3& camera, float reach_m) {
   // Continuous level of detail b: its integer part picks the finest lattice, its fraction fades that
   // level into the next, so the mesh changes smoothly as the camera climbs.
   const float wanted = std::max(std::abs(camera.y), kClipmapMinHeightM) * kClipmapSpacingPerHeight;
@@ -45,10 +44,16 @@ SurfaceGrid surface_grid(const glm::vec3& camera, float reach_m, const glm::mat4
   SurfaceGrid g;
   g.grid = glm::vec4(spacing, float(kClipmapHalfCells), 0.0f, 0.0f);
   g.clipmap = glm::vec4(float(levels), b - first, kClipmapMorphCells, 0.0f);
+  return g;
+}
+
+SurfaceGrid surface_grid(const glm::vec3& camera, float reach_m, const glm::mat4* view_proj,
+                         DisplacementBound bound) {
+  SurfaceGrid g = surface_grid_parameters(camera, reach_m);
+  const int levels = int(g.clipmap.x);
   const int cells = 2 * kClipmapHalfCells;
   const int blocks = cells / gpu::kClipmapBlock;
-  const uint32_t block_vertices = gpu::kClipmapBlock * gpu::kClipmapBlock * 6;
-  g.vertex_count = uint32_t(levels * blocks * blocks) * block_vertices;
+  const uint32_t side = uint32_t(cells + 1);
 
   const glm::vec2 cam(camera.x, camera.z);
   const auto planes = view_proj ? frustum_planes(*view_proj) : std::array<glm::vec4, 6>{};
@@ -56,25 +61,22 @@ SurfaceGrid surface_grid(const glm::vec3& camera, float reach_m, const glm::mat4
     const float s = gpu::clipmap_spacing(level, g.grid);
     const glm::vec2 origin =
         gpu::clipmap_centre(level, cam, g.grid) - glm::vec2(float(kClipmapHalfCells) * s);
+    const uint32_t base = uint32_t(level) * side * side;
     for (int block = 0; block < blocks * blocks; ++block) {
       const glm::ivec2 b0 = glm::ivec2(block % blocks, block / blocks) * gpu::kClipmapBlock;
-      // Blocks the finer level covers entirely draw nothing.
-      bool any_cell = false;
-      for (int i = 0; i < gpu::kClipmapBlock * gpu::kClipmapBlock && !any_cell; ++i)
-        any_cell = gpu::clipmap_cell_visible(
-            level, b0 + glm::ivec2(i % gpu::kClipmapBlock, i / gpu::kClipmapBlock), cam, g.grid);
-      if (!any_cell) continue;
       if (view_proj) {
         const glm::vec2 lo = origin + glm::vec2(b0) * s - bound.horizontal_m;
         const glm::vec2 hi = origin + glm::vec2(b0 + gpu::kClipmapBlock) * s + bound.horizontal_m;
         if (!box_may_be_visible(planes, {lo.x, -bound.vertical_m, lo.y}, {hi.x, bound.vertical_m, hi.y}))
           continue;
       }
-      const uint32_t first_vertex = uint32_t(level * blocks * blocks + block) * block_vertices;
-      if (!g.ranges.empty() && g.ranges.back().first + g.ranges.back().count == first_vertex)
-        g.ranges.back().count += block_vertices;
-      else
-        g.ranges.push_back({first_vertex, block_vertices});
+      for (int j = b0.y; j < b0.y + gpu::kClipmapBlock; ++j)
+        for (int i = b0.x; i < b0.x + gpu::kClipmapBlock; ++i) {
+          if (!gpu::clipmap_cell_visible(level, {i, j}, cam, g.grid)) continue;  // the finer level's
+          const uint32_t v00 = base + uint32_t(j) * side + uint32_t(i), v10 = v00 + 1, v01 = v00 + side,
+                         v11 = v01 + 1;
+          g.indices.insert(g.indices.end(), {v00, v10, v11, v00, v11, v01});
+        }
     }
   }
   return g;

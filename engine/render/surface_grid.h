@@ -6,16 +6,12 @@
 
 namespace lagoon::render {
 
-struct VertexRange {
-  uint32_t first = 0;
-  uint32_t count = 0;
-};
-
 struct SurfaceGrid {
   glm::vec4 grid{0.0f};     // x = spacing of the finest drawn level (m), y = m (cells per half side)
   glm::vec4 clipmap{0.0f};  // x = levels, y = fade of the finest level into the next, z = morph zone (cells)
-  std::vector<VertexRange> ranges;  // of the non-indexed draw; blocks outside the view are left out
-  uint32_t vertex_count = 0;        // of all the levels, drawn or not
+  // Triangle list over clipmap_indexed_vertex ids: the visible cells of every level, except blocks outside
+  // the view. Two triangles per cell, (0,0) (1,0) (1,1) and (0,0) (1,1) (0,1).
+  std::vector<uint32_t> indices;
 };
 
 // Cells per half side of a level: a cell spans at most 1/(m/2) of its distance from the camera, 1/12.
@@ -36,7 +32,15 @@ struct DisplacementBound {
   float vertical_m = 0.0f;
 };
 
-// Levels reach at least `reach_m` from the camera (Chebyshev distance) or stop at kClipmapMaxLevels.
+// The most indices a grid can have (all levels, every cell).
+inline constexpr size_t kClipmapMaxIndices =
+    size_t(kClipmapMaxLevels) * (2 * kClipmapHalfCells) * (2 * kClipmapHalfCells) * 6;
+
+// The grid's parameters only (no indices): levels reach at least `reach_m` from the camera (Chebyshev
+// distance) or stop at kClipmapMaxLevels.
+SurfaceGrid surface_grid_parameters(const glm::vec3& camera, float reach_m);
+
+// The parameters and the indices of the cells to draw.
 // With `view_proj`, blocks whose displaced surface cannot reach the view volume are not drawn.
 SurfaceGrid surface_grid(const glm::vec3& camera, float reach_m, const glm::mat4* view_proj = nullptr,
                          DisplacementBound bound = {});

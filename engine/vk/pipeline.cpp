@@ -309,11 +309,13 @@ void draw(VkCommandBuffer cmd, const GraphicsPipeline& pipeline, std::span<const
   vkCmdDraw(cmd, vertex_count, instance_count, 0, 0);
 }
 
-void draw_ranges(VkCommandBuffer cmd, const GraphicsPipeline& pipeline, std::span<const Binding> bindings,
-                 std::span<const DrawRange> ranges) {
+void draw_indexed(VkCommandBuffer cmd, const GraphicsPipeline& pipeline, std::span<const Binding> bindings,
+                  VkBuffer index_buffer, uint32_t index_count) {
+  if (index_count == 0) return;
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.pipeline());
   pipeline.interface().bind(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, bindings, nullptr, 0);
-  for (const DrawRange& r : ranges) vkCmdDraw(cmd, r.vertex_count, 1, r.first_vertex, 0);
+  vkCmdBindIndexBuffer(cmd, index_buffer, 0, VK_INDEX_TYPE_UINT32);
+  vkCmdDrawIndexed(cmd, index_count, 1, 0, 0, 0);
 }
 
 }  // namespace lagoon::vk

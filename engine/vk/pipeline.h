@@ -161,13 +161,10 @@ class GraphicsPipeline {
 void draw(VkCommandBuffer cmd, const GraphicsPipeline& pipeline, std::span<const Binding> bindings,
           const void* push, size_t push_size, uint32_t vertex_count, uint32_t instance_count = 1);
 
-// One binding of the pipeline and descriptors, then one vkCmdDraw per range of vertices.
-struct DrawRange {
-  uint32_t first_vertex = 0;
-  uint32_t vertex_count = 0;
-};
-void draw_ranges(VkCommandBuffer cmd, const GraphicsPipeline& pipeline, std::span<const Binding> bindings,
-                 std::span<const DrawRange> ranges);
+// An indexed draw (32-bit indices from `index_buffer`): unlike indices pulled from a storage buffer, the
+// device's vertex cache shades a vertex that several triangles share once.
+void draw_indexed(VkCommandBuffer cmd, const GraphicsPipeline& pipeline, std::span<const Binding> bindings,
+                  VkBuffer index_buffer, uint32_t index_count);
 
 template <typename Push>
 void draw(VkCommandBuffer cmd, const GraphicsPipeline& pipeline, std::initializer_list<Binding> bindings,

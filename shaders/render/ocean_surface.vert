@@ -32,14 +32,8 @@ vec3 clipmap_displacement(vec2 rest, float spacing) {
 #include "shared/clipmap_morph.h"
 
 void main() {
-  ClipmapVertex v = clipmap_draw_vertex(gl_VertexIndex, frame.camera_pos.xz, frame.grid, frame.clipmap);
+  ClipmapVertex v = clipmap_indexed_vertex(gl_VertexIndex, frame.camera_pos.xz, frame.grid, frame.clipmap);
   v_rest = v.rest;
-  if (!v.visible) {
-    // The finer ring draws this cell: put the whole quad outside the view volume.
-    v_world = vec3(0.0);
-    gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
-    return;
-  }
   v_world = clipmap_displaced(v);
   gl_Position = frame.view_proj * vec4(v_world, 1.0);
 }

@@ -21,7 +21,6 @@ struct ClipmapVertex {
   vec2 coarse_b;
   float spacing;  // s_i (m)
   float morph;    // 0 = this level's mesh, 1 = the next coarser level's mesh
-  bool visible;   // false for cells the finer level covers: the vertex shader collapses them
 };
 
 LAGOON_FN float clipmap_spacing(int level, vec4 grid) {
@@ -66,33 +65,26 @@ LAGOON_FN ClipmapVertex clipmap_vertex(int level, ivec2 vertex, vec2 camera, vec
   float width = clipmap.z;
   v.morph = clamp((max(d.x, d.y) - (float(m - 1) - width)) / width, 0.0f, 1.0f);
   if (level == 0) v.morph = max(v.morph, clipmap.y);
-  v.visible = true;
   return v;
 }
 
-// Cells are drawn in blocks of kClipmapBlock^2 so that the CPU can skip blocks outside the view
-// (render/surface_grid.h). 2m must be a multiple of the block size.
+// The CPU culls the rings against the view in blocks of kClipmapBlock^2 cells (render/surface_grid.h);
+// 2m must be a multiple of the block size.
 const int kClipmapBlock = 8;
 
-// Decodes vertex `index` of a non-indexed draw of clipmap.x levels x (2m)^2 quads x 6 vertices, ordered
-// level, block (row-major), cell within the block (row-major), corner.
-LAGOON_FN ClipmapVertex clipmap_draw_vertex(int index, vec2 camera, vec4 grid, vec4 clipmap) {
-  int cells = clipmap_cells_per_side(grid);
-  int blocks = cells / kClipmapBlock;
-  int quad = index / 6;
-  int corner = index - quad * 6;
-  int level = quad / (cells * cells);
-  int in_level = quad - level * cells * cells;
-  int block = in_level / (kClipmapBlock * kClipmapBlock);
-  int in_block = in_level - block * kClipmapBlock * kClipmapBlock;
-  ivec2 cell = ivec2(block % blocks, block / blocks) * kClipmapBlock +
-               ivec2(in_block % kClipmapBlock, in_block / kClipmapBlock);
-  // Triangles (0,0) (1,0) (1,1) and (0,0) (1,1) (0,1).
-  ivec2 corner_offset = ivec2(corner == 1 || corner == 2 || corner == 4 ? 1 : 0,
-                              corner == 2 || corner == 4 || corner == 5 ? 1 : 0);
-  ClipmapVertex v = clipmap_vertex(level, cell + corner_offset, camera, grid, clipmap);
-  v.visible = clipmap_cell_visible(level, cell, camera, grid);
-  return v;
+// Vertices per level of the indexed draw: the (2m+1)^2 lattice points of its square.
+LAGOON_FN int clipmap_vertices_per_level(vec4 grid) {
+  int side = clipmap_cells_per_side(grid) + 1;
+  return side * side;
+}
+
+// The vertex an index of the indexed draw names: level * (2m+1)^2 + j * (2m+1) + i. Indexed, so that each
+// lattice point is shaded once rather than once per triangle using it.
+LAGOON_FN ClipmapVertex clipmap_indexed_vertex(int index, vec2 camera, vec4 grid, vec4 clipmap) {
+  int side = clipmap_cells_per_side(grid) + 1;
+  int level = index / (side * side);
+  int in_level = index - level * side * side;
+  return clipmap_vertex(level, ivec2(in_level % side, in_level / side), camera, grid, clipmap);
 }
 LAGOON_GPU_END
 

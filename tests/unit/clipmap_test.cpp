@@ -7,6 +7,7 @@
 #include <cmath>
 #include <map>
 #include <random>
+#include <set>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -66,7 +67,7 @@ SurfaceSample surface_at(vec2 p, vec2 camera, const render::SurfaceGrid& g, bool
     ++out.claims;
     out.level = level;
     const vec2 local = f - vec2(cell);
-    // Triangles (0,0) (1,0) (1,1) and (0,0) (1,1) (0,1), as clipmap_draw_vertex emits them.
+    // Triangles (0,0) (1,0) (1,1) and (0,0) (1,1) (0,1), as render::surface_grid lists them.
     const glm::ivec2 c1 = local.x >= local.y ? glm::ivec2(1, 0) : glm::ivec2(1, 1);
     const glm::ivec2 c2 = local.x >= local.y ? glm::ivec2(1, 1) : glm::ivec2(0, 1);
     auto height = [&](glm::ivec2 corner) {
@@ -117,7 +118,7 @@ TEST(Clipmap, RingsTileThePlaneExactlyOnceToTheRequestedReach) {
       const vec2 p = vec2(cam.x, cam.z) + r * glm::normalize(vec2(unit(rng), unit(rng)) + vec2(1e-6f));
       ASSERT_EQ(surface_at(p, vec2(cam.x, cam.z), g).claims, 1) << "at " << p.x << ", " << p.y;
     }
-    EXPECT_LE(g.vertex_count, 16u * 64u * 64u * 6u);
+    EXPECT_LE(g.indices.size(), render::kClipmapMaxIndices);
   }
 }
 
@@ -159,7 +160,7 @@ float largest_change_while_flying(float step, bool morph) {
     // ring: 3 m * 1/16 = 2^-2.4 m, 9 m -> 2^-0.8 m).
     const float t = float(i) * step;
     const glm::vec3 cam(0.37f + 3.0f * t, 3.0f + t, -1.1f + 2.1f * t);
-    const render::SurfaceGrid g = render::surface_grid(cam, 3000.0f);
+    const render::SurfaceGrid g = render::surface_grid_parameters(cam, 3000.0f);
     std::vector<float> heights;
     for (const vec2& p : points) heights.push_back(surface_at(p, vec2(cam.x, cam.z), g, morph).height);
     if (!previous.empty())
@@ -179,28 +180,32 @@ TEST(Clipmap, SurfaceDoesNotPopAsTheCameraMovesAndClimbs) {
   EXPECT_GT(popping, 20.0f * smooth);
 }
 
-TEST(Clipmap, DrawOrderEmitsEveryCellOnceAsTwoTriangles) {
+TEST(Clipmap, IndicesCoverEveryVisibleCellOnceAsTwoTriangles) {
   const vec2 camera(-7.3f, 12.9f);
   const render::SurfaceGrid g = render::surface_grid({camera.x, 5.0f, camera.y}, 3000.0f);
-  std::map<std::pair<int, std::pair<float, float>>, int> quads;  // (spacing octave, lowest corner) -> corners
-  int visible_quads = 0;
-  for (int index = 0; index < int(g.vertex_count); index += 6) {
-    const gpu::ClipmapVertex v0 = gpu::clipmap_draw_vertex(index, camera, g.grid, g.clipmap);
-    const gpu::ClipmapVertex v2 = gpu::clipmap_draw_vertex(index + 2, camera, g.grid, g.clipmap);
-    const gpu::ClipmapVertex v5 = gpu::clipmap_draw_vertex(index + 5, camera, g.grid, g.clipmap);
-    ASSERT_EQ(v2.rest, v0.rest + vec2(v0.spacing));  // the shared diagonal
-    ASSERT_EQ(v5.rest, v0.rest + vec2(0.0f, v0.spacing));
-    if (!v0.visible) continue;
-    ++visible_quads;
-    ++quads[{int(std::log2(v0.spacing / g.grid.x)), {v0.rest.x, v0.rest.y}}];
+  ASSERT_EQ(g.indices.size() % 6, 0u);
+  std::map<std::pair<int, std::pair<float, float>>, int> quads;  // (level, lowest corner) -> count
+  for (size_t q = 0; q < g.indices.size(); q += 6) {
+    gpu::ClipmapVertex v[6];
+    for (int k = 0; k < 6; ++k)
+      v[k] = gpu::clipmap_indexed_vertex(int(g.indices[q + k]), camera, g.grid, g.clipmap);
+    const float s = v[0].spacing;
+    ASSERT_EQ(v[1].rest, v[0].rest + vec2(s, 0.0f));
+    ASSERT_EQ(v[2].rest, v[0].rest + vec2(s));  // the shared (0,0)-(1,1) diagonal
+    ASSERT_EQ(v[3].rest, v[0].rest);
+    ASSERT_EQ(v[4].rest, v[0].rest + vec2(s));
+    ASSERT_EQ(v[5].rest, v[0].rest + vec2(0.0f, s));
+    for (const auto& corner : v) ASSERT_EQ(corner.spacing, s);  // one level per quad
+    ++quads[{int(std::log2(s / g.grid.x)), {v[0].rest.x, v[0].rest.y}}];
   }
   for (const auto& [key, count] : quads) ASSERT_EQ(count, 1);
   // Level 0 is whole; every other level misses the quarter the finer one draws.
   const int per_level = 4 * render::kClipmapHalfCells * render::kClipmapHalfCells;
-  EXPECT_EQ(visible_quads, per_level + (int(g.clipmap.x) - 1) * per_level * 3 / 4);
+  EXPECT_EQ(int(quads.size()), per_level + (int(g.clipmap.x) - 1) * per_level * 3 / 4);
+  EXPECT_LE(g.indices.size(), render::kClipmapMaxIndices);
 }
 
-TEST(Clipmap, CullingKeepsEveryBlockThatCanReachTheView) {
+TEST(Clipmap, CullingKeepsEveryCellThatCanReachTheView) {
   std::mt19937 rng(3);
   std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
   const render::DisplacementBound bound{.horizontal_m = 4.0f, .vertical_m = 3.0f};
@@ -211,19 +216,14 @@ TEST(Clipmap, CullingKeepsEveryBlockThatCanReachTheView) {
                                 glm::lookAt(eye, target, {0, 1, 0});
     const render::SurfaceGrid all = render::surface_grid(eye, 3000.0f);
     const render::SurfaceGrid culled = render::surface_grid(eye, 3000.0f, &view_proj, bound);
-    auto drawn = [&](int index) {
-      for (const render::VertexRange& r : culled.ranges)
-        if (uint32_t(index) >= r.first && uint32_t(index) < r.first + r.count) return true;
-      return false;
-    };
-    size_t culled_vertices = 0;
-    for (const render::VertexRange& r : culled.ranges) culled_vertices += r.count;
-    EXPECT_LT(culled_vertices, all.vertex_count / 2) << "culling should drop most blocks of a 60° view";
-    // Any vertex of a visible cell that, displaced anywhere within the bound, lands in the view volume
-    // must be drawn.
-    for (int index = 0; index < int(all.vertex_count); ++index) {
-      const gpu::ClipmapVertex v = gpu::clipmap_draw_vertex(index, vec2(eye.x, eye.z), all.grid, all.clipmap);
-      if (!v.visible) continue;
+    EXPECT_LT(culled.indices.size(), all.indices.size() / 2)
+        << "culling should drop most cells of a 60° view";
+    std::set<uint32_t> drawn(culled.indices.begin(), culled.indices.end());
+    // Any vertex of a drawn cell of the full grid that, displaced anywhere within the bound, lands in the
+    // view volume must still be drawn.
+    for (uint32_t index : all.indices) {
+      const gpu::ClipmapVertex v =
+          gpu::clipmap_indexed_vertex(int(index), vec2(eye.x, eye.z), all.grid, all.clipmap);
       const float h = bound.horizontal_m, y = bound.vertical_m;
       for (const glm::vec3 d : {glm::vec3(-h, -y, -h), glm::vec3(h, 0, -h), glm::vec3(0, 0, 0),
                                 glm::vec3(-h, y, h), glm::vec3(h, y, h), glm::vec3(0, -y, h)}) {
@@ -231,7 +231,7 @@ TEST(Clipmap, CullingKeepsEveryBlockThatCanReachTheView) {
         const bool inside = clip.w > 0 && std::abs(clip.x) <= clip.w && std::abs(clip.y) <= clip.w &&
                             clip.z >= 0 && clip.z <= clip.w;
         if (inside) {
-          ASSERT_TRUE(drawn(index)) << "vertex " << index << " of trial " << trial;
+          ASSERT_TRUE(drawn.count(index)) << "vertex " << index << " of trial " << trial;
         }
       }
     }
