@@ -13,6 +13,15 @@ OptionSpec set_option() {
           false, true};
 }
 
+namespace {
+
+// "render" -> "lagoon render"; a whole program name ("lagoon-demo") is kept.
+std::string program(const std::string& command) {
+  return command.rfind("lagoon", 0) == 0 ? command : "lagoon " + command;
+}
+
+}  // namespace
+
 std::optional<scene::Scene> load_scene_from_args(const ParsedArgs& args, const std::string& command,
                                                  std::vector<std::string> extra_overrides) {
   for (const std::string& s : args.all("set")) extra_overrides.push_back(s);
@@ -21,20 +30,20 @@ std::optional<scene::Scene> load_scene_from_args(const ParsedArgs& args, const s
     nlohmann::json document = nlohmann::json::object();
     for (const std::string& s : extra_overrides) {
       if (auto applied = scene::apply_override(document, s); !applied) {
-        std::fprintf(stderr, "lagoon %s: %s\n", command.c_str(), applied.error().message.c_str());
+        std::fprintf(stderr, "%s: %s\n", program(command).c_str(), applied.error().message.c_str());
         return std::nullopt;
       }
     }
     auto scene = scene::parse_scene(document, "(command line)");
     if (!scene) {
-      std::fprintf(stderr, "lagoon %s: %s\n", command.c_str(), scene.error().message.c_str());
+      std::fprintf(stderr, "%s: %s\n", program(command).c_str(), scene.error().message.c_str());
       return std::nullopt;
     }
     return std::move(scene).value();
   }
   auto scene = scene::load_scene(*args.get("scene"), extra_overrides);
   if (!scene) {
-    std::fprintf(stderr, "lagoon %s: %s\n", command.c_str(), scene.error().message.c_str());
+    std::fprintf(stderr, "%s: %s\n", program(command).c_str(), scene.error().message.c_str());
     return std::nullopt;
   }
   return std::move(scene).value();

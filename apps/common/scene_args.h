@@ -13,7 +13,8 @@ namespace lagoon::cli {
 OptionSpec scene_option();
 OptionSpec set_option();
 
-// Prints the problems (prefixed with the command) and returns nullopt on failure. Without --scene (for
+// Prints the problems (prefixed with "lagoon <command>", or with `command` itself when it is a program name
+// such as "lagoon-demo") and returns nullopt on failure. Without --scene (for
 // commands where it is optional) the scene is all defaults plus the overrides.
 std::optional<scene::Scene> load_scene_from_args(const ParsedArgs& args, const std::string& command,
                                                  std::vector<std::string> extra_overrides = {});

@@ -137,7 +137,7 @@ Result<DemoOptions> parse_demo_options(std::span<const std::string> args, int& e
     }
     o.script = std::move(*steps);
   }
-  auto scene = cli::load_scene_from_args(*parsed, "demo");
+  auto scene = cli::load_scene_from_args(*parsed, "lagoon-demo");
   if (!scene) {
     exit_code = cli::kExitFailure;
     return make_error("scene");
