@@ -150,6 +150,7 @@ TEST_F(Demo, BadInputFailsWithAClearMessage) {
   auto missing = demo("--scene " + shell_quote(out("nope.json")) + " --frames 1 --exit");
   EXPECT_EQ(missing.exit_code, 1) << missing.output;
   EXPECT_NE(missing.output.find("nope.json"), std::string::npos) << missing.output;
+  EXPECT_NE(missing.output.find("lagoon-demo: "), std::string::npos) << missing.output;
 
   {
     std::ofstream script(out("bad.txt"));
