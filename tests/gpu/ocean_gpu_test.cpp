@@ -10,6 +10,10 @@
 #include "ocean/spectrum.h"
 #include "support/fftw_reference.h"
 #include "support/vk_fixture.h"
+#include "vk/transfer.h"
+
+#include <cstring>
+#include <glm/gtc/packing.hpp>
 
 namespace lagoon::test {
 namespace {
@@ -94,6 +98,57 @@ INSTANTIATE_TEST_SUITE_P(Variants, OceanGpuVariant,
                          [](const auto& info) {
                            return info.param == ocean::FftVariant::Stockham ? "Stockham" : "Workgroup";
                          });
+
+// Every texel of a mip level as floats (RGBA32F or RGBA16F), all layers.
+std::vector<float> read_level(vk::Context& ctx, const vk::Image& image, uint32_t mip) {
+  const vk::Access writer{VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT};
+  const std::vector<std::byte> bytes = vk::readback_image(ctx, image, VK_IMAGE_LAYOUT_GENERAL, writer, mip);
+  std::vector<float> out;
+  if (image.format() == VK_FORMAT_R16G16B16A16_SFLOAT) {
+    out.resize(bytes.size() / 2);
+    for (size_t i = 0; i < out.size(); ++i) {
+      uint16_t h = 0;
+      std::memcpy(&h, bytes.data() + 2 * i, 2);
+      out[i] = glm::unpackHalf1x16(h);
+    }
+  } else {
+    out.resize(bytes.size() / 4);
+    std::memcpy(out.data(), bytes.data(), bytes.size());
+  }
+  return out;
+}
+
+TEST_F(OceanGpu, MipLevelsAreTheMeanOfTheirParents) {
+  const OceanParams params = test_params();
+  ocean::GpuOcean gpu_ocean(ctx(), params);
+  run_gpu(gpu_ocean, {1.5});
+  const ocean::CascadeTextures t = gpu_ocean.cascade(0);
+  for (const vk::Image* image : {t.displacement, t.normal_jacobian, t.jacobian_terms}) {
+    const bool half = image->format() == VK_FORMAT_R16G16B16A16_SFLOAT;
+    for (uint32_t mip : {1u, 2u, image->mip_levels() - 1}) {
+      const std::vector<float> parent = read_level(ctx(), *image, mip - 1),
+                               level = read_level(ctx(), *image, mip);
+      const uint32_t n = std::max(image->extent().width >> mip, 1u), pn = n * 2;
+      const uint32_t layers = image->layers();
+      ASSERT_EQ(level.size(), size_t(n) * n * 4 * layers);
+      double diff = 0, ref = 0;
+      for (uint32_t layer = 0; layer < layers; ++layer)
+        for (uint32_t z = 0; z < n; ++z)
+          for (uint32_t x = 0; x < n; ++x)
+            for (uint32_t c = 0; c < 4; ++c) {
+              auto at = [&](uint32_t px, uint32_t pz) {
+                return double(parent[((size_t(layer) * pn + pz) * pn + px) * 4 + c]);
+              };
+              const double mean = 0.25 * (at(2 * x, 2 * z) + at(2 * x + 1, 2 * z) + at(2 * x, 2 * z + 1) +
+                                          at(2 * x + 1, 2 * z + 1));
+              const double got = level[((size_t(layer) * n + z) * n + x) * 4 + c];
+              diff += (got - mean) * (got - mean);
+              ref += mean * mean;
+            }
+      EXPECT_LT(std::sqrt(diff / std::max(ref, 1e-30)), half ? 2e-3 : 1e-6) << "mip " << mip;
+    }
+  }
+}
 
 TEST_F(OceanGpu, RepeatedRunsAreBitIdentical) {
   const OceanParams params = test_params();

@@ -12,7 +12,6 @@
 #include "shared/ocean.h"
 #include "vk/barriers.h"
 #include "vk/check.h"
-#include "vk/mipmaps.h"
 #include "vk/transfer.h"
 
 namespace lagoon::ocean {
@@ -37,7 +36,10 @@ constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_
 }  // namespace
 
 GpuOcean::GpuOcean(vk::Context& ctx, const OceanParams& params, FftVariant variant)
-    : ctx_(ctx), params_(params), variant_(variant) {
+    : ctx_(ctx),
+      params_(params),
+      variant_(variant),
+      mips_(vk::ComputePipeline::create(ctx, shaders::ocean_mips_comp)) {
   if (auto valid = validate(params); !valid) vk::throw_usage_error(valid.error().message);
   std::vector<CascadeSpectrum> spectra;
   for (uint32_t c = 0; c < params.cascades.size(); ++c) spectra.push_back(make_cascade_spectrum(params, c));
@@ -46,7 +48,10 @@ GpuOcean::GpuOcean(vk::Context& ctx, const OceanParams& params, FftVariant varia
 
 GpuOcean::GpuOcean(vk::Context& ctx, const OceanParams& params, std::vector<CascadeSpectrum> spectra,
                    FftVariant variant)
-    : ctx_(ctx), params_(params), variant_(variant) {
+    : ctx_(ctx),
+      params_(params),
+      variant_(variant),
+      mips_(vk::ComputePipeline::create(ctx, shaders::ocean_mips_comp)) {
   if (spectra.size() != params.cascades.size()) vk::throw_usage_error("GpuOcean: one spectrum per cascade");
   build(std::move(spectra));
 }
@@ -154,8 +159,21 @@ void GpuOcean::record_step(VkCommandBuffer cmd, double time_s, double dt_s, vk::
                    push, timer);
     {
       vk::GpuScope scope(timer, cmd, "ocean mips " + std::to_string(n));
-      for (const vk::Image* image : g->images())
-        vk::generate_mipmaps(cmd, *image, VK_IMAGE_LAYOUT_GENERAL, vk::access::kComputeWrite, readers);
+      // Level by level, each from the one above; the three textures in one dispatch per level.
+      for (uint32_t mip = 1; mip < g->displacement.mip_levels(); ++mip) {
+        vk::memory_barrier(cmd, vk::access::kComputeWrite, vk::access::kComputeRead);
+        auto level = [&](const vk::Image& image, uint32_t m) {
+          return vk::ImageRef{image.mip_view(m), VK_IMAGE_LAYOUT_GENERAL};
+        };
+        const uint32_t size = std::max(n >> mip, 1u);
+        vk::dispatch(
+            cmd, mips_,
+            {vk::bind(0, level(g->displacement, mip - 1)), vk::bind(1, level(g->normal_jacobian, mip - 1)),
+             vk::bind(2, level(g->jacobian_terms, mip - 1)), vk::bind(3, level(g->displacement, mip)),
+             vk::bind(4, level(g->normal_jacobian, mip)), vk::bind(5, level(g->jacobian_terms, mip))},
+            vk::groups_for(mips_, {size, size, count}));
+      }
+      vk::memory_barrier(cmd, vk::access::kComputeWrite, readers);
     }
   }
   reset_foam_ = false;

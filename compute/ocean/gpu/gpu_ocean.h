@@ -13,6 +13,7 @@
 #include "vk/context.h"
 #include "vk/gpu_timer.h"
 #include "vk/image.h"
+#include "vk/pipeline.h"
 
 namespace lagoon::ocean {
 
@@ -73,6 +74,7 @@ class GpuOcean {
   std::vector<std::unique_ptr<Group>> groups_;
   std::vector<std::pair<uint32_t, uint32_t>> cascade_slots_;  // cascade -> (group, layer)
   bool reset_foam_ = true;
+  vk::ComputePipeline mips_;  // shaders/ocean/mips.comp: a mip level of a group's three textures
 };
 
 }  // namespace lagoon::ocean
