@@ -195,7 +195,8 @@ Result<void> edit_scene(scene::Scene& scene, const std::string& assignment) {
 
 bool ParameterPanel::draw(scene::Scene& scene) {
   const std::vector<scene::FieldInfo> fields = scene::scene_fields(scene);
-  ordered_json document = pending_.is_null() ? scene::scene_to_json(scene, {}) : pending_;
+  // The values come with the field rows: one pass over the scene per frame, not two.
+  ordered_json document = pending_.is_null() ? scene::fields_to_json(fields) : pending_;
   bool edited = false;
   bool section_open = false;
   for (size_t i = 0; i < fields.size(); ++i) {

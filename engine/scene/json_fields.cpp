@@ -278,7 +278,8 @@ const json* ObjectReader::lookup(std::string_view name) {
 }
 
 void ObjectReader::describe(std::string_view name, std::string type, std::string_view unit,
-                            std::string default_value, std::string range, std::string_view doc) {
+                            std::string default_value, std::string range, std::string_view doc,
+                            Bounds bounds) {
   FieldInfo info;
   info.path = child_path(name);
   info.type = std::move(type);
@@ -286,6 +287,7 @@ void ObjectReader::describe(std::string_view name, std::string type, std::string
   info.default_value = std::move(default_value);
   info.range = std::move(range);
   info.doc = std::string(doc);
+  info.bounds = bounds;
   catalog_->push_back(std::move(info));
 }
 
@@ -312,11 +314,8 @@ std::optional<double> ObjectReader::read_number(std::string_view name, const std
 
 void ObjectReader::number(std::string_view name, float& value, Bounds bounds, std::string_view unit,
                           std::string_view doc) {
-  if (describing()) {
-    describe(name, "number", unit, format_number(value), bounds.describe(), doc);
-    catalog_->back().bounds = bounds;
-    return;
-  }
+  if (describing())
+    return describe(name, "number", unit, format_number(value), bounds.describe(), doc, bounds);
   if (const std::optional<double> v =
           read_number(name, format_number(value), bounds, unit, /*as_float=*/true))
     value = static_cast<float>(*v);
@@ -324,22 +323,16 @@ void ObjectReader::number(std::string_view name, float& value, Bounds bounds, st
 
 void ObjectReader::number(std::string_view name, std::optional<float>& value, Bounds bounds,
                           std::string_view unit, std::string_view doc) {
-  if (describing()) {
-    describe(name, "number", unit, value ? format_number(*value) : "", bounds.describe(), doc);
-    catalog_->back().bounds = bounds;
-    return;
-  }
+  if (describing())
+    return describe(name, "number", unit, value ? format_number(*value) : "", bounds.describe(), doc, bounds);
   if (const std::optional<double> v = read_number(name, "", bounds, unit, /*as_float=*/true))
     value = static_cast<float>(*v);
 }
 
 void ObjectReader::number(std::string_view name, double& value, Bounds bounds, std::string_view unit,
                           std::string_view doc) {
-  if (describing()) {
-    describe(name, "number", unit, format_number(value), bounds.describe(), doc);
-    catalog_->back().bounds = bounds;
-    return;
-  }
+  if (describing())
+    return describe(name, "number", unit, format_number(value), bounds.describe(), doc, bounds);
   if (const std::optional<double> v =
           read_number(name, format_number(value), bounds, unit, /*as_float=*/false))
     value = *v;
@@ -347,11 +340,8 @@ void ObjectReader::number(std::string_view name, double& value, Bounds bounds, s
 
 void ObjectReader::integer(std::string_view name, uint32_t& value, Bounds bounds, std::string_view unit,
                            std::string_view doc) {
-  if (describing()) {
-    describe(name, "integer", unit, std::to_string(value), bounds.describe(), doc);
-    catalog_->back().bounds = bounds;
-    return;
-  }
+  if (describing())
+    return describe(name, "integer", unit, std::to_string(value), bounds.describe(), doc, bounds);
   const json* j = lookup(name);
   if (!j) return;
   const std::string path = child_path(name);
@@ -370,8 +360,8 @@ void ObjectReader::power_of_two(std::string_view name, uint32_t& value, uint32_t
   const std::string between = std::to_string(min) + " and " + std::to_string(max);
   if (describing()) {
     describe(name, "integer", unit, std::to_string(value),
-             "power of two, " + std::to_string(min) + " to " + std::to_string(max), doc);
-    catalog_->back().bounds = Bounds::between(min, max);
+             "power of two, " + std::to_string(min) + " to " + std::to_string(max), doc,
+             Bounds::between(min, max));
     for (uint64_t p = std::bit_ceil(std::max<uint32_t>(min, 1)); p <= max; p *= 2)
       catalog_->back().choices.push_back(std::to_string(p));
     return;
@@ -398,8 +388,7 @@ bool ObjectReader::read_floats(std::string_view name, std::span<float> values, s
   const bool finite_only = !std::isfinite(bounds.min) && !std::isfinite(bounds.max);
   if (describing()) {
     describe(name, std::string(form), unit, format_floats(values),
-             finite_only ? "finite" : "each " + bounds.describe(), doc);
-    catalog_->back().bounds = bounds;
+             finite_only ? "finite" : "each " + bounds.describe(), doc, bounds);
     return false;
   }
   const json* j = lookup(name);

@@ -179,7 +179,7 @@ class ObjectReader {
   std::string child_path(std::string_view name) const;
   const nlohmann::json* lookup(std::string_view name);  // declares `name`; null if absent or describing
   void describe(std::string_view name, std::string type, std::string_view unit, std::string default_value,
-                std::string range, std::string_view doc);
+                std::string range, std::string_view doc, Bounds bounds = {});
   std::optional<ObjectReader> open_block(std::string_view name, std::string_view doc);
   std::optional<size_t> choose(std::string_view name, const std::vector<std::string>& names, size_t current,
                                std::string_view doc);

@@ -221,10 +221,7 @@ nlohmann::ordered_json scene_to_json(const Scene& scene, const std::filesystem::
   relative(copy.seafloor.texture);
   relative(copy.seafloor.file);
   for (Object& object : copy.objects) relative(object.file);
-  std::vector<FieldInfo> fields;
-  ObjectReader describer("", fields);
-  read_scene(describer, copy);
-  return fields_to_json(fields);
+  return fields_to_json(scene_fields(copy));
 }
 
 Result<void> save_scene(const Scene& scene, const std::filesystem::path& path) {
