@@ -119,6 +119,7 @@ class Demo {
 
   double time_s_ = 0;
   long long scripted_frame_ = -1;
+  bool scene_edited_ = false;  // by the panel, a script or reset since the last rebuild check
   bool paused_ = false, step_once_ = false;
   bool show_ui_ = true, show_help_ = false;
   bool vsync_ = true, swapchain_dirty_ = false;
@@ -185,9 +186,12 @@ void Demo::apply_script(long long frame) {
       continue;
     }
     const scene::Camera before = scene_.camera;
-    if (auto r = edit_scene(scene_, step.assignment); !r)
+    if (auto r = edit_scene(scene_, step.assignment); !r) {
       message("script, frame " + std::to_string(frame) + ": " + step.assignment + ": " + r.error().message);
-    else if (scene_.camera.position != before.position || scene_.camera.look_at != before.look_at)
+      continue;
+    }
+    scene_edited_ = true;
+    if (scene_.camera.position != before.position || scene_.camera.look_at != before.look_at)
       camera_.emplace(scene_.camera, camera_->mode());
   }
 }
@@ -215,6 +219,7 @@ void Demo::handle_input(float dt) {
     if (keys_.pressed(w, GLFW_KEY_S) && ctrl) save_scene_to(save_path_);
     if (keys_.pressed(w, GLFW_KEY_R) && ctrl) {
       scene_ = file_scene_;
+      scene_edited_ = true;
       panel_.discard_pending();
       camera_.emplace(scene_.camera);
       time_s_ = scene_.time_s;
@@ -293,6 +298,7 @@ void Demo::draw_ui() {
   ImGui::SameLine();
   if (ImGui::Button("reset")) {
     scene_ = file_scene_;
+    scene_edited_ = true;
     panel_.discard_pending();
     camera_.emplace(scene_.camera);
     time_s_ = scene_.time_s;
@@ -316,8 +322,10 @@ void Demo::draw_ui() {
   if (ImGui::BeginTabBar("tabs")) {
     if (ImGui::BeginTabItem("scene")) {
       const glm::vec3 position = scene_.camera.position, look_at = scene_.camera.look_at;
-      if (panel_.draw(scene_) && (scene_.camera.position != position || scene_.camera.look_at != look_at)) {
-        camera_.emplace(scene_.camera, camera_->mode());
+      if (panel_.draw(scene_)) {
+        scene_edited_ = true;
+        if (scene_.camera.position != position || scene_.camera.look_at != look_at)
+          camera_.emplace(scene_.camera, camera_->mode());
       }
       ImGui::EndTabItem();
     }
@@ -430,9 +438,12 @@ int Demo::run() {
     }
     draw_ui();
     ImGui::Render();
-    // Heavy edits (spectrum, cascades, water type...) rebuild the renderer once the widget is released.
-    if (!ImGui::IsAnyItemActive())
+    // Heavy edits (spectrum, cascades, water type...) rebuild the renderer once the widget is released;
+    // rebuild_renderer() itself checks whether the edit touched what the renderer is built from.
+    if (scene_edited_ && !ImGui::IsAnyItemActive()) {
+      scene_edited_ = false;
       if (auto r = rebuild_renderer(); !r) message(r.error().message);
+    }
 
     // Time: exactly 1/fps per frame in scripted runs, the wall clock otherwise.
     if (options_.frames) {
