@@ -137,12 +137,24 @@ void PipelineInterface::bind(VkCommandBuffer cmd, VkPipelineBindPoint point,
     throw_usage_error("pass " + name_ + ": " + std::to_string(bindings.size()) +
                       " bindings given, the shaders declare " + std::to_string(expected));
 
+  // One write per run of consecutive array elements (elements 0..n-1 of a binding in one write, with
+  // dstArrayElement 0). Mesa 22.3's lavapipe applies push-descriptor writes with dstArrayElement > 0 to
+  // element 0 and leaves the rest unbound, so sampler arrays written element by element lost every element
+  // but the first there (issue 10: the second and third ocean cascades vanished on lavapipe only).
+  std::vector<const Binding*> order;
+  for (const Binding& b : bindings) order.push_back(&b);
+  std::stable_sort(order.begin(), order.end(), [](const Binding* a, const Binding* b) {
+    return std::pair(a->binding, a->array_element) < std::pair(b->binding, b->array_element);
+  });
   std::vector<VkWriteDescriptorSet> writes;
   std::vector<VkDescriptorBufferInfo> buffers;
   std::vector<VkDescriptorImageInfo> images;
+  std::vector<VkBufferView> texel_views;
   buffers.reserve(bindings.size());
   images.reserve(bindings.size());
-  for (const Binding& b : bindings) {
+  texel_views.reserve(bindings.size());
+  for (size_t i = 0; i < order.size(); ++i) {
+    const Binding& b = *order[i];
     auto it = std::find_if(bindings_.begin(), bindings_.end(),
                            [&](const auto& d) { return d.binding == b.binding; });
     if (it == bindings_.end() || b.array_element >= it->count)
@@ -152,6 +164,11 @@ void PipelineInterface::bind(VkCommandBuffer cmd, VkPipelineBindPoint point,
       throw_usage_error("pass " + name_ + ": binding " + std::to_string(b.binding) + " (" + it->name +
                         ") is given a resource of the wrong kind for descriptor type " +
                         std::to_string(it->type));
+    if (i > 0 && order[i - 1]->binding == b.binding && order[i - 1]->array_element == b.array_element)
+      throw_usage_error("pass " + name_ + ": binding " + std::to_string(b.binding) + "[" +
+                        std::to_string(b.array_element) + "] is given twice");
+    const bool continues = !writes.empty() && writes.back().dstBinding == b.binding &&
+                           writes.back().dstArrayElement + writes.back().descriptorCount == b.array_element;
     VkWriteDescriptorSet w{.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
                            .dstBinding = b.binding,
                            .dstArrayElement = b.array_element,
@@ -164,9 +181,13 @@ void PipelineInterface::bind(VkCommandBuffer cmd, VkPipelineBindPoint point,
       images.push_back({img->sampler, img->view, img->layout});
       w.pImageInfo = &images.back();
     } else {
-      w.pTexelBufferView = &std::get<TexelBufferRef>(b.resource).view;
+      texel_views.push_back(std::get<TexelBufferRef>(b.resource).view);
+      w.pTexelBufferView = &texel_views.back();
     }
-    writes.push_back(w);
+    if (continues)
+      ++writes.back().descriptorCount;  // the infos of one write lie next to each other in their vector
+    else
+      writes.push_back(w);
   }
   if (!writes.empty())
     push_descriptors_(cmd, point, layout_, 0, static_cast<uint32_t>(writes.size()), writes.data());
