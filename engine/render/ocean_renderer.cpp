@@ -318,12 +318,7 @@ void OceanRenderer::record_frame(VkCommandBuffer cmd, const Targets& t) {
                                             vk::bind(5, sampled(lut_t0_, clamp_sampler_)),
                                             vk::bind(6, sampled(lut_t1_, clamp_sampler_)),
                                             vk::bind(8, slots_[slot_].lights)};
-  for (uint32_t slot = 0; slot < 4; ++slot) {
-    const ocean::CascadeTextures t = ocean_->cascade(std::min(slot, ocean_->cascade_count() - 1));
-    surface_bindings.push_back(vk::bind(1, sampled(*t.displacement, repeat_sampler_), slot));
-    surface_bindings.push_back(vk::bind(9, sampled(*t.jacobian_terms, repeat_sampler_), slot));
-    surface_bindings.push_back(vk::bind(2, sampled(*t.normal_jacobian, repeat_sampler_), slot));
-  }
+  for (vk::Binding& b : cascade_bindings()) surface_bindings.push_back(b);
   vk::image_barrier(cmd, hdr.handle(), hdr.all_subresources(), VK_IMAGE_LAYOUT_UNDEFINED,
                     VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, vk::access::kNone,
                     vk::access::kColorAttachmentWrite);
@@ -367,8 +362,27 @@ void OceanRenderer::record_frame(VkCommandBuffer cmd, const Targets& t) {
   }
 }
 
+std::vector<vk::Binding> OceanRenderer::cascade_bindings() const {
+  std::vector<vk::Binding> bindings;
+  for (uint32_t slot = 0; slot < 4; ++slot) {
+    const ocean::CascadeTextures t = ocean_->cascade(std::min(slot, ocean_->cascade_count() - 1));
+    bindings.push_back(vk::bind(1, sampled(*t.displacement, repeat_sampler_), slot));
+    bindings.push_back(vk::bind(9, sampled(*t.jacobian_terms, repeat_sampler_), slot));
+    bindings.push_back(vk::bind(2, sampled(*t.normal_jacobian, repeat_sampler_), slot));
+  }
+  return bindings;
+}
+
 const vk::Image& OceanRenderer::record(VkCommandBuffer cmd, const scene::Scene& scene, VkExtent2D extent,
                                        uint32_t slot) {
+  prepare_frame(cmd, scene, extent, slot);
+  const Targets& targets = targets_for(extent);
+  record_frame(cmd, targets);
+  return targets.color;
+}
+
+void OceanRenderer::prepare_frame(VkCommandBuffer cmd, const scene::Scene& scene, VkExtent2D extent,
+                                  uint32_t slot) {
   slot_ = slot % kSlots;
   Slot& frame_slot = slots_[slot_];
   const double t = scene.time_s;
@@ -435,15 +449,63 @@ const vk::Image& OceanRenderer::record(VkCommandBuffer cmd, const scene::Scene& 
   std::memcpy(frame_slot.frame.mapped(), &f, sizeof(f));
   frame_slot.frame.flush();
 
-  const Targets& targets = targets_for(extent);
   // Frames may be recorded while the previous one runs; they share the ocean's textures and the render
   // targets, so this frame's work starts after everything submitted before it.
   vk::memory_barrier(cmd, vk::access::kAllCommands, vk::access::kAllCommands);
   frame_slot.timer.reset(cmd);
   ocean_->record_step(cmd, t, t - ocean_time_, &frame_slot.timer);
-  record_frame(cmd, targets);
   ocean_time_ = t;
-  return targets.color;
+}
+
+OceanRenderer::SurfaceAov OceanRenderer::render_surface_aov(const scene::Scene& scene) {
+  constexpr VkFormat kAovFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+  if (surface_aov_.pipeline() == VK_NULL_HANDLE)
+    surface_aov_ = vk::GraphicsPipeline::create(ctx_, {.vertex = &shaders::render_ocean_surface_vert,
+                                                       .fragment = &shaders::render_ocean_surface_aov_frag,
+                                                       .color_formats = {kAovFormat, kAovFormat},
+                                                       .depth_format = kDepthFormat,
+                                                       .depth_test = true,
+                                                       .depth_write = true});
+  const VkExtent2D extent{scene.render.width, scene.render.height};
+  auto target = [&](VkFormat format, VkImageUsageFlags usage, const char* name) {
+    return vk::Image::create(ctx_, {.format = format, .extent = extent, .usage = usage, .debug_name = name});
+  };
+  const VkImageUsageFlags out = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+  const vk::Image normal = target(kAovFormat, out, "aov normal"), world = target(kAovFormat, out, "aov world"),
+                  depth = target(kDepthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, "aov depth");
+  auto staging = [&](const vk::Image& image) {
+    return vk::Buffer::create(ctx_, vk::readback_bytes(image), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                              vk::MemoryUsage::Readback, "aov readback");
+  };
+  const vk::Buffer normal_out = staging(normal), world_out = staging(world);
+  ctx_.submit_and_wait([&](VkCommandBuffer cmd) {
+    prepare_frame(cmd, scene, extent, 0);
+    for (const vk::Image* image : {&normal, &world})
+      vk::image_barrier(cmd, image->handle(), image->all_subresources(), VK_IMAGE_LAYOUT_UNDEFINED,
+                        VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, vk::access::kNone,
+                        vk::access::kColorAttachmentWrite);
+    vk::image_barrier(cmd, depth.handle(), depth.all_subresources(), VK_IMAGE_LAYOUT_UNDEFINED,
+                      VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, vk::access::kNone, vk::access::kDepthAttachment);
+    vk::begin_rendering(cmd, extent,
+                        {{.view = normal.view(), .clear = std::array{0.f, 0.f, 0.f, 0.f}},
+                         {.view = world.view(), .clear = std::array{0.f, 0.f, 0.f, 0.f}}},
+                        vk::DepthTarget{.view = depth.view(), .clear = 1.0f});
+    std::vector<vk::Binding> bindings = cascade_bindings();
+    bindings.push_back(vk::bind(0, vk::BufferRef{slots_[slot_].frame.handle()}));
+    vk::draw_indexed(cmd, surface_aov_, bindings, slots_[slot_].surface_indices.handle(), surface_indices_);
+    vk::end_rendering(cmd);
+    vk::record_readback(cmd, normal, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, vk::access::kColorAttachmentWrite,
+                        normal_out);
+    vk::record_readback(cmd, world, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, vk::access::kColorAttachmentWrite,
+                        world_out);
+  });
+  SurfaceAov aov{.width = extent.width, .height = extent.height};
+  for (auto [buffer, values] : {std::pair{&normal_out, &aov.normal_foam}, {&world_out, &aov.world}}) {
+    buffer->invalidate();
+    values->resize(size_t{extent.width} * extent.height);
+    std::memcpy(values->data(), buffer->mapped(), values->size() * sizeof(glm::vec4));
+  }
+  return aov;
 }
 
 std::vector<vk::PassTime> OceanRenderer::timings(uint32_t slot) const {

@@ -53,11 +53,26 @@ class OceanRenderer {
   // The per-pass GPU times of the last frame recorded with `slot`, once it has finished.
   std::vector<vk::PassTime> timings(uint32_t slot) const;
 
+  // Ground truth of the water surface in the frame render() would draw (shaders/render/ocean_surface_aov.frag):
+  // per pixel, rows from the top, the shading normal the surface pass uses (xyz, w = foam) and the world
+  // point it is evaluated at (xyz m, w = 1; 0 where no water is drawn). Objects are not drawn.
+  struct SurfaceAov {
+    uint32_t width = 0, height = 0;
+    std::vector<glm::vec4> normal_foam, world;
+    const glm::vec4& normal_at(uint32_t x, uint32_t y) const { return normal_foam[size_t{y} * width + x]; }
+    const glm::vec4& world_at(uint32_t x, uint32_t y) const { return world[size_t{y} * width + x]; }
+  };
+  SurfaceAov render_surface_aov(const scene::Scene& scene);
+
  private:
   struct Targets;
   OceanRenderer(vk::Context& ctx, const scene::Scene& scene);
   Result<void> init(const scene::Scene& scene);
   void record_frame(VkCommandBuffer cmd, const Targets& targets);
+  // Steps the ocean to scene.time_s in `cmd` and fills the slot's uniforms and surface indices.
+  void prepare_frame(VkCommandBuffer cmd, const scene::Scene& scene, VkExtent2D extent, uint32_t slot);
+  // The cascades' textures as bound by the surface pipelines (bindings 1, 2 and 9, four elements each).
+  std::vector<vk::Binding> cascade_bindings() const;
   // The render targets and readback buffer, kept across frames of the same size (allocating ~30 MB of
   // images every frame cost lavapipe several ms).
   const Targets& targets_for(VkExtent2D extent);
@@ -88,6 +103,7 @@ class OceanRenderer {
   glm::vec3 floor_albedo_{1};
   float floor_texture_scale_ = 1;
   vk::GraphicsPipeline sky_, surface_, post_, mesh_refraction_;  // mesh_refraction_ also draws lit meshes
+  vk::GraphicsPipeline surface_aov_;  // created on first use of render_surface_aov
   Result<void> load_objects(const scene::Scene& scene);
   Result<void> load_model(const std::string& file, const glm::mat4& transform, const std::string& field);
   void draw_objects(VkCommandBuffer cmd, float mode) const;

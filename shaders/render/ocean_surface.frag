@@ -20,6 +20,8 @@ layout(location = 0) in vec3 v_world;
 layout(location = 1) in vec2 v_rest;
 layout(location = 0) out vec4 out_radiance;
 
+#include "common/surface_normal.glsl"
+
 // The light leaving the water towards the viewer below the surface, in white units: eq. 22 with the floor
 // point C seen along the refracted ray, r and h measured along that ray (docs/optics.md), or the deep-water
 // colour where there is no floor within the LUT's depth.
@@ -53,42 +55,10 @@ vec3 water_radiance(vec3 n, vec3 v) {
 
 
 void main() {
-  // Constant indices into the sampler arrays (a loop index would be dynamic descriptor indexing).
-  vec2 slope = vec2(0.0);
-  float foam = 0.0;
-  vec3 terms = vec3(0.0);  // the Jacobian terms of the whole sea: each cascade's summed
-  int count = int(frame.grid.w);
-  // Slopes the mips filter away still roughen the surface: their mean square slope widens the glint
-  // (Bruneton et al. 2010). Cascade c carries |k| from k_lo to π/(2·texel), with about equal slope variance
-  // per octave (saturation range); a mip level `lod` keeps waves up to π/(texel·2^lod), so (lod - 1)
-  // octaves of the band are lost.
-  float footprint = max(length(dFdx(v_rest)), length(dFdy(v_rest)));
-  float mss = frame.glint.x;
-#define LAGOON_CASCADE(c)                                                                    \
-  if (count > c) {                                                                           \
-    vec3 uvw = vec3(v_rest / frame.cascade_patch[c], frame.cascade_layer[c]);                \
-    vec3 cn = texture(normal_jacobian[c], uvw).xyz;                                          \
-    slope += -cn.xz / max(cn.y, 0.05); /* the cascade normal is (-sx, 1, -sz) */             \
-    vec4 jt = texture(jacobian_terms[c], uvw);                                               \
-    foam = max(foam, jt.w);                                                                  \
-    terms += jt.xyz;                                                                         \
-    float k_hi = 1.5707963 / frame.cascade_texel[c];                                         \
-    float k_lo = c == 0 ? 6.2831853 / frame.cascade_patch[0] : 1.5707963 / frame.cascade_texel[max(c - 1, 0)]; \
-    float octaves = max(log2(k_hi / k_lo), 0.5);                                             \
-    float lod = log2(max(footprint, 1e-6) / frame.cascade_texel[c]);                         \
-    mss += frame.cascade_mss[c] * clamp((lod - 1.0) / octaves, 0.0, 1.0);                    \
-  }
-  LAGOON_CASCADE(0)
-  LAGOON_CASCADE(1)
-  LAGOON_CASCADE(2)
-  LAGOON_CASCADE(3)
-  // Each cascade keeps its own foam with its decay; where the cascades fold the surface only together
-  // (long waves squeezing shorter ones), the whole sea's Jacobian adds the foam no single cascade shows.
-  float jacobian = (1.0 + terms.x) * (1.0 + terms.y) - terms.z * terms.z;
-  foam = max(foam, clamp(frame.glint.y - jacobian, 0.0, 1.0));
-  vec3 n = normalize(vec3(-slope.x, 1.0, -slope.y));  // slope = (∂h/∂x, ∂h/∂z) summed over cascades
   vec3 v = normalize(frame.camera_pos.xyz - v_world);
-  if (dot(n, v) < 0.02) n = normalize(n + v * (0.02 - dot(n, v)));  // back-facing slopes seen at grazing angles
+  SurfaceSample ss = surface_sample(v);
+  vec3 n = ss.normal;
+  float foam = ss.foam, mss = ss.mss;
   vec3 l = frame.sun_dir.xyz;
   float ior = frame.sun_dir.w;
   float fresnel = fresnel_dielectric(dot(n, v), ior);

@@ -9,6 +9,7 @@
 // shorter than the spacing fade instead of aliasing.
 layout(std140, binding = 0) uniform Frame { FrameUniforms frame; };
 layout(binding = 1) uniform sampler2DArray displacement[4];
+#include "common/cascade_uv.glsl"
 
 layout(location = 0) out vec3 v_world;
 layout(location = 1) out vec2 v_rest;
@@ -20,7 +21,7 @@ vec3 clipmap_displacement(vec2 rest, float spacing) {
 #define LAGOON_CASCADE(c)                                                                                  \
   if (count > c) {                                                                                         \
     float lod = max(0.0, log2(spacing / frame.cascade_texel[c]));                                          \
-    d += textureLod(displacement[c], vec3(rest / frame.cascade_patch[c], frame.cascade_layer[c]), lod).xyz; \
+    d += textureLod(displacement[c], cascade_uvw(rest, c), lod).xyz;                                      \
   }
   LAGOON_CASCADE(0)
   LAGOON_CASCADE(1)
