@@ -58,10 +58,14 @@ vk::ImageRef sampled(const vk::Image& image, VkSampler sampler) {
 OceanRenderer::OceanRenderer(vk::Context& ctx, const scene::Scene& scene)
     : ctx_(ctx),
       ocean_(std::make_unique<ocean::GpuOcean>(ctx, scene.ocean)),
+      // At the far plane (fullscreen.vert's z = 1), drawn where the depth buffer is still clear.
       sky_(vk::GraphicsPipeline::create(ctx, {.vertex = &shaders::render_fullscreen_vert,
                                               .fragment = &shaders::render_sky_frag,
                                               .color_formats = {kHdrFormat},
-                                              .depth_format = kDepthFormat})),
+                                              .depth_format = kDepthFormat,
+                                              .depth_test = true,
+                                              .depth_write = false,
+                                              .depth_compare = VK_COMPARE_OP_EQUAL})),
       surface_(vk::GraphicsPipeline::create(ctx, {.vertex = &shaders::render_ocean_surface_vert,
                                                   .fragment = &shaders::render_ocean_surface_frag,
                                                   .color_formats = {kHdrFormat},
@@ -326,13 +330,16 @@ void OceanRenderer::record_frame(VkCommandBuffer cmd, const Targets& t) {
                     VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, vk::access::kNone,
                     vk::access::kDepthAttachment);
   {
-    vk::GpuScope scope(slots_[slot_].timer, cmd, "sky");
+    // Separate render passes so the timestamps bracket real work on tilers such as lavapipe.
+    vk::GpuScope scope(slots_[slot_].timer, cmd, "surface");
     vk::begin_rendering(cmd, extent, {{.view = hdr.view(), .clear = std::array{0.f, 0.f, 0.f, 1.f}}},
                         vk::DepthTarget{.view = depth.view(), .clear = 1.0f});
-    vk::draw(cmd, sky_, {vk::bind(0, frame)}, 3);
+    draw_objects(cmd, 0.0f);  // above-water parts, lit; the surface depth-tests against them
+    vk::draw_indexed(cmd, surface_, surface_bindings, slots_[slot_].surface_indices.handle(),
+                     surface_indices_);
     vk::end_rendering(cmd);
   }
-  // Two rendering instances on the same attachments: the surface pass loads what the sky pass wrote.
+  // The sky last, at the far plane and depth-tested: it is shaded only where nothing else was drawn.
   vk::image_barrier(cmd, hdr.handle(), hdr.all_subresources(), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                     VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, vk::access::kColorAttachmentWrite,
                     vk::access::kColorAttachmentWrite);
@@ -340,13 +347,9 @@ void OceanRenderer::record_frame(VkCommandBuffer cmd, const Targets& t) {
                     VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, vk::access::kDepthAttachment,
                     vk::access::kDepthAttachment);
   {
-    // Separate render passes so the timestamps bracket real work on tilers such as lavapipe.
-    vk::GpuScope scope(slots_[slot_].timer, cmd, "surface");
-    vk::begin_rendering(cmd, extent, {{.view = hdr.view()}},
-                        vk::DepthTarget{.view = depth.view(), .clear = {}});
-    draw_objects(cmd, 0.0f);  // above-water parts, lit; the surface depth-tests against them
-    vk::draw_indexed(cmd, surface_, surface_bindings, slots_[slot_].surface_indices.handle(),
-                     surface_indices_);
+    vk::GpuScope scope(slots_[slot_].timer, cmd, "sky");
+    vk::begin_rendering(cmd, extent, {{.view = hdr.view()}}, vk::DepthTarget{.view = depth.view(), .clear = {}});
+    vk::draw(cmd, sky_, {vk::bind(0, frame)}, 3);
     vk::end_rendering(cmd);
   }
   vk::image_barrier(cmd, hdr.handle(), hdr.all_subresources(), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
@@ -390,9 +393,10 @@ void OceanRenderer::prepare_frame(VkCommandBuffer cmd, const scene::Scene& scene
   if (ocean_time_ < 0 || t < ocean_time_ || t - ocean_time_ > kWarmupS) {
     ctx_.submit_and_wait([&](VkCommandBuffer cmd) {
       double previous = t - kWarmupS;
-      ocean_->record_step(cmd, previous, 0.0);
+      // The warm-up's textures are not drawn: only the last step (the frame's own) rebuilds the mips.
+      ocean_->record_step(cmd, previous, 0.0, nullptr, ocean::GpuOcean::Mips::Skip);
       for (double step = previous + kWarmupStep; step < t - 1e-9; step += kWarmupStep) {
-        ocean_->record_step(cmd, step, step - previous);
+        ocean_->record_step(cmd, step, step - previous, nullptr, ocean::GpuOcean::Mips::Skip);
         previous = step;
       }
       ocean_time_ = previous;

@@ -1,8 +1,9 @@
 // The frame renderer: the FFT ocean (compute/ocean/gpu) drawn over an analytic sky whose light comes from
 // the optics model, water colour from the optics LUTs, then tone mapping (seed 000's eq. 18) and gamma.
 // Passes: ocean step, refraction (the floor's and submerged objects' albedo and depth), reflection (objects
-// above the water, mirrored), sky, surface (HDR, RGBA16F: the clipmap mesh, Fresnel between the reflection
-// and eq. 22 with the LUTs, foam), post (tone map, gamma, RGBA8). docs/rendering.md has the details.
+// above the water, mirrored), surface (HDR, RGBA16F: the objects, then the clipmap mesh, Fresnel between the
+// reflection and eq. 22 with the LUTs, foam), sky (depth-tested at the far plane, so only where nothing else
+// was drawn), post (tone map, gamma, RGBA8). docs/rendering.md has the details.
 #pragma once
 #include <array>
 #include <memory>

@@ -221,6 +221,26 @@ TEST(Png, WritesIntoMissingNestedFolder) {
   EXPECT_EQ(back->rgba, random_image(4, 4, 1).rgba);
 }
 
+// Byte 25 of a PNG is the IHDR colour type: 2 = RGB, 6 = RGBA.
+TEST(Png, OpaqueImagesAreWrittenAsRgbAndReadBackExactly) {
+  TempDir dir;
+  Image8 opaque = random_image(19, 7, 99);
+  for (size_t i = 3; i < opaque.rgba.size(); i += 4) opaque.rgba[i] = 255;
+  ASSERT_TRUE(write_png(dir / "opaque.png", opaque));
+  EXPECT_EQ(read_text(dir / "opaque.png")[25], 2) << "an opaque image should be stored as RGB";
+  Result<Image8> back = read_png(dir / "opaque.png");
+  ASSERT_TRUE(back) << back.error().message;
+  EXPECT_EQ(back->rgba, opaque.rgba);
+
+  Image8 one_translucent = opaque;
+  one_translucent.rgba.back() = 254;  // the last pixel's alpha: the scan must reach the end
+  ASSERT_TRUE(write_png(dir / "rgba.png", one_translucent));
+  EXPECT_EQ(read_text(dir / "rgba.png")[25], 6) << "an image with alpha should keep it";
+  back = read_png(dir / "rgba.png");
+  ASSERT_TRUE(back) << back.error().message;
+  EXPECT_EQ(back->rgba, one_translucent.rgba);
+}
+
 TEST(Png, FileStartsWithPngSignature) {
   TempDir dir;
   ASSERT_TRUE(write_png(dir / "img.png", random_image(2, 2, 3)));

@@ -131,7 +131,7 @@ void GpuOcean::build(std::vector<CascadeSpectrum> spectra) {
   }
 }
 
-void GpuOcean::record_step(VkCommandBuffer cmd, double time_s, double dt_s, vk::GpuTimer* timer) {
+void GpuOcean::record_step(VkCommandBuffer cmd, double time_s, double dt_s, vk::GpuTimer* timer, Mips mips) {
   // Readers of last step's textures (graphics sampling, readback) must finish before they are rewritten.
   const vk::Access readers{vk::access::kGraphicsSampled.stage | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT |
                                VK_PIPELINE_STAGE_2_TRANSFER_BIT,
@@ -157,7 +157,7 @@ void GpuOcean::record_step(VkCommandBuffer cmd, double time_s, double dt_s, vk::
                         VK_IMAGE_LAYOUT_GENERAL, readers, vk::access::kComputeReadWrite);
     g->fft->record(cmd, {&g->spectrum, &g->omega, &g->displacement, &g->normal_jacobian, &g->jacobian_terms},
                    push, timer);
-    {
+    if (mips == Mips::Rebuild) {
       vk::GpuScope scope(timer, cmd, "ocean mips " + std::to_string(n));
       // Level by level, each from the one above; the three textures in one dispatch per level.
       for (uint32_t mip = 1; mip < g->displacement.mip_levels(); ++mip) {

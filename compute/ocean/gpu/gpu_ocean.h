@@ -50,8 +50,11 @@ class GpuOcean {
 
   // Records the step to `time_s`; `dt_s` is the time since the previous step (foam decay). The first step
   // after construction or set_params starts foam from zero. Textures are ready for fragment/vertex/compute
-  // sampling (GENERAL layout) when the command buffer completes.
-  void record_step(VkCommandBuffer cmd, double time_s, double dt_s, vk::GpuTimer* timer = nullptr);
+  // sampling (GENERAL layout) when the command buffer completes. Mip levels above 0 are only rebuilt with
+  // `mips` (steps whose textures nobody samples, such as a foam warm-up, can leave them stale).
+  enum class Mips { Rebuild, Skip };
+  void record_step(VkCommandBuffer cmd, double time_s, double dt_s, vk::GpuTimer* timer = nullptr,
+                   Mips mips = Mips::Rebuild);
 
   // New parameters: recomputes and uploads the spectrum; rebuilds resources when cascades change.
   void set_params(const OceanParams& params);
