@@ -15,11 +15,13 @@ layout(location = 0) out vec3 v_world;
 layout(location = 1) out vec2 v_rest;
 
 vec3 clipmap_displacement(vec2 rest, float spacing) {
-  // Constant indices into the sampler array (a loop index would be dynamic descriptor indexing).
+  // Constant indices into the sampler array (a loop index would be dynamic descriptor indexing). A cascade
+  // whose patch is no larger than the spacing would be read at its 1x1 mip, the patch's mean displacement,
+  // which is zero (no k = 0 mode): such lookups are skipped (a third of them on a far-reaching clipmap).
   vec3 d = vec3(0.0);
   int count = int(frame.grid.w);
 #define LAGOON_CASCADE(c)                                                                                  \
-  if (count > c) {                                                                                         \
+  if (count > c && spacing < frame.cascade_patch[c]) {                                                     \
     float lod = max(0.0, log2(spacing / frame.cascade_texel[c]));                                          \
     d += textureLod(displacement[c], cascade_uvw(rest, c), lod).xyz;                                      \
   }
