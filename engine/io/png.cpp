@@ -44,8 +44,7 @@ Result<void> write_png(const std::filesystem::path& path, const Image8& image) {
   for (size_t i = 3; i < image.rgba.size() && opaque; i += 4) opaque = image.rgba[i] == 255;
   if (opaque) {
     rgb.resize(size_t{image.width} * image.height * 3);
-    for (size_t i = 0, n = rgb.size() / 3; i < n; ++i)
-      std::memcpy(&rgb[i * 3], &image.rgba[i * 4], 3);
+    for (size_t i = 0, n = rgb.size() / 3; i < n; ++i) std::memcpy(&rgb[i * 3], &image.rgba[i * 4], 3);
   }
   const int channels = opaque ? 3 : 4;
   const void* pixels = opaque ? static_cast<const void*>(rgb.data()) : image.rgba.data();

@@ -348,7 +348,8 @@ void OceanRenderer::record_frame(VkCommandBuffer cmd, const Targets& t) {
                     vk::access::kDepthAttachment);
   {
     vk::GpuScope scope(slots_[slot_].timer, cmd, "sky");
-    vk::begin_rendering(cmd, extent, {{.view = hdr.view()}}, vk::DepthTarget{.view = depth.view(), .clear = {}});
+    vk::begin_rendering(cmd, extent, {{.view = hdr.view()}},
+                        vk::DepthTarget{.view = depth.view(), .clear = {}});
     vk::draw(cmd, sky_, {vk::bind(0, frame)}, 3);
     vk::end_rendering(cmd);
   }
@@ -475,7 +476,8 @@ OceanRenderer::SurfaceAov OceanRenderer::render_surface_aov(const scene::Scene& 
     return vk::Image::create(ctx_, {.format = format, .extent = extent, .usage = usage, .debug_name = name});
   };
   const VkImageUsageFlags out = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-  const vk::Image normal = target(kAovFormat, out, "aov normal"), world = target(kAovFormat, out, "aov world"),
+  const vk::Image normal = target(kAovFormat, out, "aov normal"),
+                  world = target(kAovFormat, out, "aov world"),
                   depth = target(kDepthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, "aov depth");
   auto staging = [&](const vk::Image& image) {
     return vk::Buffer::create(ctx_, vk::readback_bytes(image), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
@@ -489,7 +491,8 @@ OceanRenderer::SurfaceAov OceanRenderer::render_surface_aov(const scene::Scene& 
                         VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, vk::access::kNone,
                         vk::access::kColorAttachmentWrite);
     vk::image_barrier(cmd, depth.handle(), depth.all_subresources(), VK_IMAGE_LAYOUT_UNDEFINED,
-                      VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, vk::access::kNone, vk::access::kDepthAttachment);
+                      VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, vk::access::kNone,
+                      vk::access::kDepthAttachment);
     vk::begin_rendering(cmd, extent,
                         {{.view = normal.view(), .clear = std::array{0.f, 0.f, 0.f, 0.f}},
                          {.view = world.view(), .clear = std::array{0.f, 0.f, 0.f, 0.f}}},
@@ -498,10 +501,10 @@ OceanRenderer::SurfaceAov OceanRenderer::render_surface_aov(const scene::Scene& 
     bindings.push_back(vk::bind(0, vk::BufferRef{slots_[slot_].frame.handle()}));
     vk::draw_indexed(cmd, surface_aov_, bindings, slots_[slot_].surface_indices.handle(), surface_indices_);
     vk::end_rendering(cmd);
-    vk::record_readback(cmd, normal, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, vk::access::kColorAttachmentWrite,
-                        normal_out);
-    vk::record_readback(cmd, world, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, vk::access::kColorAttachmentWrite,
-                        world_out);
+    vk::record_readback(cmd, normal, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                        vk::access::kColorAttachmentWrite, normal_out);
+    vk::record_readback(cmd, world, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                        vk::access::kColorAttachmentWrite, world_out);
   });
   SurfaceAov aov{.width = extent.width, .height = extent.height};
   for (auto [buffer, values] : {std::pair{&normal_out, &aov.normal_foam}, {&world_out, &aov.world}}) {

@@ -54,9 +54,10 @@ class OceanRenderer {
   // The per-pass GPU times of the last frame recorded with `slot`, once it has finished.
   std::vector<vk::PassTime> timings(uint32_t slot) const;
 
-  // Ground truth of the water surface in the frame render() would draw (shaders/render/ocean_surface_aov.frag):
-  // per pixel, rows from the top, the shading normal the surface pass uses (xyz, w = foam) and the world
-  // point it is evaluated at (xyz m, w = 1; 0 where no water is drawn). Objects are not drawn.
+  // Ground truth of the water surface in the frame render() would draw
+  // (shaders/render/ocean_surface_aov.frag): per pixel, rows from the top, the shading normal the surface
+  // pass uses (xyz, w = foam) and the world point it is evaluated at (xyz m, w = 1; 0 where no water is
+  // drawn). Objects are not drawn.
   struct SurfaceAov {
     uint32_t width = 0, height = 0;
     std::vector<glm::vec4> normal_foam, world;
@@ -104,7 +105,7 @@ class OceanRenderer {
   glm::vec3 floor_albedo_{1};
   float floor_texture_scale_ = 1;
   vk::GraphicsPipeline sky_, surface_, post_, mesh_refraction_;  // mesh_refraction_ also draws lit meshes
-  vk::GraphicsPipeline surface_aov_;  // created on first use of render_surface_aov
+  vk::GraphicsPipeline surface_aov_;                             // created on first use of render_surface_aov
   Result<void> load_objects(const scene::Scene& scene);
   Result<void> load_model(const std::string& file, const glm::mat4& transform, const std::string& field);
   void draw_objects(VkCommandBuffer cmd, float mode) const;

@@ -110,15 +110,16 @@ class BayRender : public OceanRender {
  protected:
   // Looking straight down from 6 m onto a flat sandy floor `depth` metres under calm, clear water.
   io::Image8 looking_down(double depth, const char* water = "jerlov-IB", bool textured = true) {
-    return render(load({"camera.position=[0,6,0]", "camera.look_at=[0,0,0.001]",
-                        "ocean.spectrum.wind_speed_mps=2", "render.exposure=1", "seafloor.type=slope",
-                        "seafloor.depth_near_m=" + std::to_string(depth),
-                        "seafloor.depth_far_m=" + std::to_string(depth),
-                        textured ? "seafloor.texture=assets/sand.png" : "seafloor.texture=",
-                        "seafloor.albedo=[1,1,1]", "seafloor.texture_scale_m=1",
-                        std::string("water.type=") + water}));
+    return render(
+        load({"camera.position=[0,6,0]", "camera.look_at=[0,0,0.001]", "ocean.spectrum.wind_speed_mps=2",
+              "render.exposure=1", "seafloor.type=slope", "seafloor.depth_near_m=" + std::to_string(depth),
+              "seafloor.depth_far_m=" + std::to_string(depth),
+              textured ? "seafloor.texture=assets/sand.png" : "seafloor.texture=", "seafloor.albedo=[1,1,1]",
+              "seafloor.texture_scale_m=1", std::string("water.type=") + water}));
   }
-  double floor_contrast(double depth) { return centre_contrast(looking_down(depth), looking_down(depth, "jerlov-IB", false)); }
+  double floor_contrast(double depth) {
+    return centre_contrast(looking_down(depth), looking_down(depth, "jerlov-IB", false));
+  }
 };
 
 TEST_F(BayRender, ShallowWaterShowsTheFloorDeepWaterHidesIt) {
@@ -164,8 +165,9 @@ TEST_P(ShippedScenes, MatchGolden) {
   const io::Image8 image = (*renderer)->render(*s);
   const bool golden_device = ctx().properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
   const CompareOptions tolerance =
-      golden_device ? CompareOptions{.channel_tolerance = 3, .max_differing_fraction = 0.01, .min_psnr_db = 40.0}
-                    : CompareOptions{.channel_tolerance = 8, .max_differing_fraction = 0.01, .min_psnr_db = 35.0};
+      golden_device
+          ? CompareOptions{.channel_tolerance = 3, .max_differing_fraction = 0.01, .min_psnr_db = 40.0}
+          : CompareOptions{.channel_tolerance = 8, .max_differing_fraction = 0.01, .min_psnr_db = 35.0};
   EXPECT_TRUE(matches_golden(image, std::string(LAGOON_SOURCE_DIR) + "/tests/golden/" + name + "_320x180.png",
                              tolerance, std::string(LAGOON_TEST_ARTIFACTS) + "/render"));
 }

@@ -16,7 +16,9 @@
 namespace lagoon::test {
 namespace {
 
-glm::dvec2 slope_of(glm::dvec3 n) { return {-n.x / n.y, -n.z / n.y}; }
+glm::dvec2 slope_of(glm::dvec3 n) {
+  return {-n.x / n.y, -n.z / n.y};
+}
 
 struct BandError {
   double rms = 0;           // rms |s_shader - s_ref| over the band's blocks
@@ -30,9 +32,8 @@ class SurfaceNormal : public GpuTest {
   void SetUp() override {
     GpuTest::SetUp();
     // 12 m above the water, looking 21° down: water from ~14 m to the horizon.
-    std::vector<std::string> o{"render.width=320", "render.height=180",
-                                                        "camera.position=[0,12,0]", "camera.look_at=[8,0,30]",
-                                                        "time_s=6"};
+    std::vector<std::string> o{"render.width=320", "render.height=180", "camera.position=[0,12,0]",
+                               "camera.look_at=[8,0,30]", "time_s=6"};
     auto s = scene::load_scene(std::string(LAGOON_SOURCE_DIR) + "/scenes/default.json", o);
     ASSERT_TRUE(s) << s.error().message;
     scene_ = *s;
@@ -54,12 +55,14 @@ class SurfaceNormal : public GpuTest {
     for (uint32_t y = y0; y < y0 + kBlock; ++y)
       for (uint32_t x = x0; x < x0 + columns; ++x) {
         const glm::vec4 n = aov_.normal_at(x, y);
-        EXPECT_TRUE(std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z)) << "pixel " << x << ", " << y;
+        EXPECT_TRUE(std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z))
+            << "pixel " << x << ", " << y;
         if (aov_.world_at(x, y).w < 0.5 || aov_.world_at(x + 1, y).w < 0.5 || aov_.world_at(x, y + 1).w < 0.5)
           return false;
         shader += slope_of(glm::dvec3(n));
         const glm::dvec3 p(aov_.world_at(x, y));
-        const glm::dvec3 ex = glm::dvec3(aov_.world_at(x + 1, y)) - p, ey = glm::dvec3(aov_.world_at(x, y + 1)) - p;
+        const glm::dvec3 ex = glm::dvec3(aov_.world_at(x + 1, y)) - p,
+                         ey = glm::dvec3(aov_.world_at(x, y + 1)) - p;
         for (double u : {-1.0 / 3, 0.0, 1.0 / 3})
           for (double v : {-1.0 / 3, 0.0, 1.0 / 3}) {
             const glm::dvec3 q = p + u * ex + v * ey;
@@ -130,12 +133,13 @@ TEST_F(SurfaceNormal, ShaderNormalAgreesWithWaveQueryNearMidFar) {
     const char* name;
     double near_m, far_m, max_relative, max_rms;
   };
-  for (const Band b : {Band{"near", 13, 20, 0.25, 1.0}, Band{"mid", 30, 50, 0.3, 1.0},
-                       Band{"far", 80, 160, 1e9, 0.01}}) {
+  for (const Band b :
+       {Band{"near", 13, 20, 0.25, 1.0}, Band{"mid", 30, 50, 0.3, 1.0}, Band{"far", 80, 160, 1e9, 0.01}}) {
     const BandError e = band(b.near_m, b.far_m);
     ASSERT_GT(e.blocks, 10) << b.name;
-    std::printf("%s band %g-%g m: rms slope error %.4f, relative %.3f, over %d blocks (reference rms slope %.4f)\n",
-                b.name, b.near_m, b.far_m, e.rms, e.relative_rms, e.blocks, e.reference_rms);
+    std::printf(
+        "%s band %g-%g m: rms slope error %.4f, relative %.3f, over %d blocks (reference rms slope %.4f)\n",
+        b.name, b.near_m, b.far_m, e.rms, e.relative_rms, e.blocks, e.reference_rms);
     EXPECT_LT(e.relative_rms, b.max_relative) << b.name << " band: relative rms slope error";
     EXPECT_LT(e.rms, b.max_rms) << b.name << " band: rms slope error";
   }
