@@ -46,7 +46,7 @@ TEST_F(Cli, UnknownCommandExits2) {
 }
 
 TEST_F(Cli, EveryCommandHasHelp) {
-  for (const char* command : {"info", "render"}) {
+  for (const char* command : {"info", "render", "export", "probe", "lut", "bench", "compare-images"}) {
     auto r = lagoon(std::string(command) + " --help");
     EXPECT_EQ(r.exit_code, 0) << command;
     EXPECT_NE(r.output.find(std::string("usage: lagoon ") + command), std::string::npos) << r.output;
