@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <sstream>
 
 namespace lagoon::cli {
 
@@ -55,8 +56,13 @@ Result<ParsedArgs> parse_args(const CommandSpec& spec, std::span<const std::stri
       parsed.add(name, *inline_value);
     }
   }
-  for (const auto& o : spec.options)
-    if (o.required && !parsed.has(o.name)) return make_error("missing --" + o.name + " " + o.value_name);
+  for (const auto& o : spec.options) {
+    if (!o.required || parsed.has(o.name)) continue;
+    // A word given by position is named as the usage line shows it ("missing B.png"), not as its --option.
+    const bool positional =
+        std::find(spec.positional.begin(), spec.positional.end(), o.name) != spec.positional.end();
+    return make_error(positional ? "missing " + o.value_name : "missing --" + o.name + " " + o.value_name);
+  }
   return parsed;
 }
 
@@ -99,6 +105,19 @@ Result<long long> integer_option(const ParsedArgs& args, const std::string& name
   if (!v || *v < lo || *v > hi)
     return Error{"--" + name + " " + *text + " must be a whole number from " + std::to_string(lo) + " to " +
                  std::to_string(hi)};
+  return *v;
+}
+
+Result<double> number_option(const ParsedArgs& args, const std::string& name, double fallback, double lo,
+                             double hi) {
+  const auto text = args.get(name);
+  if (!text) return fallback;
+  const auto v = parse_number(*text);
+  if (!v || *v < lo || *v > hi) {
+    std::ostringstream bounds;
+    bounds << lo << " to " << hi;
+    return Error{"--" + name + " " + *text + " must be a number from " + bounds.str()};
+  }
   return *v;
 }
 

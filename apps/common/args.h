@@ -53,5 +53,8 @@ std::optional<double> parse_number(const std::string& text);
 // "--name VALUE must be a whole number from LO to HI" (the caller prefixes the command).
 Result<long long> integer_option(const ParsedArgs& args, const std::string& name, long long fallback,
                                  long long lo, long long hi);
+// The same for a number (decimals allowed): "--name VALUE must be a number from LO to HI".
+Result<double> number_option(const ParsedArgs& args, const std::string& name, double fallback, double lo,
+                             double hi);
 
 }  // namespace lagoon::cli

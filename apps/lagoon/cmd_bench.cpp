@@ -16,15 +16,51 @@
 #include "ocean/validate.h"
 #include "render/ocean_renderer.h"
 #include "scene_args.h"
+#include "vk/device_select.h"
+#include "vk/gpu_timer.h"
 
 namespace lagoon::cli {
 namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double median(std::vector<double> v) {
+struct Spread {
+  double median = 0, min = 0, max = 0;
+};
+
+// The median of an even count is the mean of the middle two (with 2 rounds, not simply the larger one).
+Spread spread(std::vector<double> v) {
+  if (v.empty()) return {};
   std::sort(v.begin(), v.end());
-  return v.empty() ? 0.0 : v[v.size() / 2];
+  const size_t mid = v.size() / 2;
+  const double median = v.size() % 2 ? v[mid] : 0.5 * (v[mid - 1] + v[mid]);
+  return {median, v.front(), v.back()};
+}
+
+double median(std::vector<double> v) {
+  return spread(std::move(v)).median;
+}
+
+// One result in Google Benchmark's shape: real_time is the median over the rounds; min_time and max_time
+// show the spread; `measure` says which clock: "gpu timestamps" (device time of the recorded commands) or
+// "wall" (host time around submit and wait, what a user waits for).
+nlohmann::json result_entry(const std::string& name, const std::vector<double>& ms, const char* measure) {
+  const Spread s = spread(ms);
+  return {{"name", name},      {"run_type", "iteration"}, {"iterations", ms.size()}, {"real_time", s.median},
+          {"min_time", s.min}, {"max_time", s.max},       {"time_unit", "ms"},       {"measure", measure}};
+}
+
+// The report's "context": what the figures were measured on, so reports from two machines can be told
+// apart (and a lavapipe figure is never mistaken for a GPU's).
+nlohmann::json report_context(const vk::Context& ctx, int rounds) {
+  const vk::DeviceInfo& info = ctx.device_info();
+  return {{"device", info.name},
+          {"device_type", info.type},
+          {"driver_name", info.driver_name},
+          {"driver_info", info.driver_info},
+          {"driver_version", info.driver_version},
+          {"vulkan_api_version", vk::api_version_string(info.api_version)},
+          {"rounds", rounds}};
 }
 
 template <typename F>
@@ -58,19 +94,18 @@ bool write_report(const std::string& path, const nlohmann::json& doc) {
 int run_bench_compute(const ParsedArgs& args, int rounds) {
   auto ctx = open_context();
   if (!ctx) return kExitFailure;
-  std::printf("device: %s (%s); %d rounds per configuration, medians; ratio = median of per-round GPU/CPU\n",
-              ctx->device_info().name.c_str(), ctx->device_info().type.c_str(), rounds);
-  std::printf("%-34s %12s %12s\n", "Benchmark", "Time (ms)", "Ratio");
+  std::printf(
+      "device: %s (%s); %d rounds per configuration, medians; ratio = median of per-round GPU/CPU wall "
+      "time\n",
+      ctx->device_info().name.c_str(), ctx->device_info().type.c_str(), rounds);
+  std::printf("%-44s %12s %12s\n", "Benchmark", "Time (ms)", "Ratio");
 
   nlohmann::json results = nlohmann::json::array();
-  auto report = [&](const std::string& name, double ms, double ratio) {
-    std::printf("%-34s %12.3f %12s\n", name.c_str(), ms,
+  auto report = [&](const std::string& name, const std::vector<double>& ms, const char* measure,
+                    double ratio) {
+    std::printf("%-44s %12.3f %12s\n", name.c_str(), median(ms),
                 ratio > 0 ? (std::to_string(ratio).substr(0, 6) + "x").c_str() : "");
-    nlohmann::json entry{{"name", name},
-                         {"run_type", "iteration"},
-                         {"iterations", rounds},
-                         {"real_time", ms},
-                         {"time_unit", "ms"}};
+    nlohmann::json entry = result_entry(name, ms, measure);
     if (ratio > 0) entry["ratio_gpu_over_cpu"] = ratio;
     results.push_back(entry);
   };
@@ -87,44 +122,109 @@ int run_bench_compute(const ParsedArgs& args, int rounds) {
       }
       ocean::GpuOcean gpu(*ctx, params);
       FftwOceanStep cpu1(params, gpu.spectra(), 1), cpu2(params, gpu.spectra(), 2);
+      // One scope around the whole step: its device time, without the submit and wait the wall time has.
+      vk::GpuTimer timer(*ctx, 1);
       float t = 0;
       auto gpu_step = [&] {
-        ctx->submit_and_wait([&](VkCommandBuffer cmd) { gpu.record_step(cmd, t, 1 / 60.0); });
+        ctx->submit_and_wait([&](VkCommandBuffer cmd) {
+          timer.reset(cmd);
+          vk::GpuScope scope(timer, cmd, "ocean step");
+          gpu.record_step(cmd, t, 1 / 60.0);
+        });
       };
       for (int w = 0; w < 3; ++w) gpu_step(), cpu1.step(t, 1 / 60.f), cpu2.step(t, 1 / 60.f);  // JIT, caches
-      std::vector<double> g, c1, c2, r1, r2;
+      std::vector<double> g, g_device, c1, c2, r1, r2;
       for (int r = 0; r < rounds; ++r) {
         t += 1 / 60.f;
         g.push_back(time_ms(gpu_step));
+        if (const auto times = timer.results(); !times.empty()) g_device.push_back(times[0].ms);
         c1.push_back(time_ms([&] { cpu1.step(t, 1 / 60.f); }));
         c2.push_back(time_ms([&] { cpu2.step(t, 1 / 60.f); }));
         r1.push_back(g.back() / c1.back());
         r2.push_back(g.back() / c2.back());
       }
       const std::string config = "/N=" + std::to_string(n) + "/cascades=" + std::to_string(count);
-      report("ocean_step/gpu" + config, median(g), 0);
-      report("ocean_step/fftw_1thread" + config, median(c1), median(r1));
-      report("ocean_step/fftw_2threads" + config, median(c2), median(r2));
+      report("ocean_step/gpu" + config, g, "wall", 0);
+      if (!g_device.empty()) report("ocean_step/gpu_timestamps" + config, g_device, "gpu timestamps", 0);
+      report("ocean_step/fftw_1thread" + config, c1, "wall", median(r1));
+      report("ocean_step/fftw_2threads" + config, c2, "wall", median(r2));
     }
   }
   if (auto path = args.get("json")) {
-    const nlohmann::json doc{
-        {"context",
-         {{"device", ctx->device_info().name},
-          {"driver", ctx->device_info().driver_name + " " + ctx->device_info().driver_info},
-          {"rounds", rounds}}},
-        {"benchmarks", results}};
+    const nlohmann::json doc{{"context", report_context(*ctx, rounds)}, {"benchmarks", results}};
     if (!write_report(*path, doc)) return kExitFailure;
     std::printf("wrote %s\n", path->c_str());
   }
   return validation_status(*ctx);
 }
 
-// The frame at 1280x720: wall time of render() (submit, wait, readback) and each pass's GPU time, medians.
+struct FrameSize {
+  long long width = 1280, height = 720;
+};
+
+// --width and --height of bench render; nullopt (after printing why) when either is out of range.
+std::optional<FrameSize> frame_size_option(const ParsedArgs& args) {
+  FrameSize size;
+  for (auto [name, value] : {std::pair{"width", &size.width}, std::pair{"height", &size.height}}) {
+    const auto v = integer_option(args, name, *value, 16, 8192);
+    if (!v) {
+      std::fprintf(stderr, "lagoon bench render: %s\n", v.error().message.c_str());
+      return std::nullopt;
+    }
+    *value = *v;
+  }
+  return size;
+}
+
+// Each pass's GPU time and the frame's wall time over `rounds` frames, after two warm-up frames.
+struct RenderTimes {
+  std::vector<std::pair<std::string, std::vector<double>>> passes;  // in recording order
+  std::vector<double> frame;
+};
+
+RenderTimes time_frames(render::OceanRenderer& renderer, scene::Scene& scene, int rounds) {
+  RenderTimes times;
+  std::vector<vk::PassTime> timings;
+  const float t0 = scene.time_s;
+  for (int w = 0; w < 2; ++w) renderer.render(scene, &timings);
+  for (int r = 0; r < rounds; ++r) {
+    scene.time_s = t0 + float(r) / 30.0f;
+    times.frame.push_back(time_ms([&] { renderer.render(scene, &timings); }));
+    for (size_t i = 0; i < timings.size(); ++i) {
+      if (times.passes.size() <= i) times.passes.push_back({timings[i].name, {}});
+      times.passes[i].second.push_back(timings[i].ms);
+    }
+  }
+  return times;
+}
+
+// Prints the table and returns the "benchmarks" array of the JSON report.
+nlohmann::json report_render(const RenderTimes& times) {
+  std::printf("%-34s %12s\n", "Pass (GPU timestamps)", "Time (ms)");
+  nlohmann::json results = nlohmann::json::array();
+  for (const auto& [name, ms] : times.passes) {
+    std::printf("%-34s %12.3f\n", name.c_str(), median(ms));
+    results.push_back(result_entry("render/pass/" + name, ms, "gpu timestamps"));
+  }
+  const Spread frame = spread(times.frame);
+  std::printf("%-34s %12.3f (min %.3f, max %.3f)\n", "frame (wall, incl. readback)", frame.median, frame.min,
+              frame.max);
+  results.push_back(result_entry("render/frame", times.frame, "wall"));
+  std::printf(
+      "GPU timestamps of passes on lavapipe can read low: its rasteriser threads may finish after the\n"
+      "closing timestamp. The frame's wall time is the reliable figure.\n");
+  return results;
+}
+
+// One frame of a scene: wall time of render() (submit, wait, readback) and each pass's GPU time.
 int run_bench_render(const ParsedArgs& args, int rounds) {
+  const auto size = frame_size_option(args);
+  if (!size) return kExitUsage;
   ParsedArgs scene_args = args;
   if (!args.has("scene")) scene_args.add("scene", "scenes/default.json");
-  auto scene = load_scene_from_args(scene_args, "bench", {"render.width=1280", "render.height=720"});
+  auto scene = load_scene_from_args(
+      scene_args, "bench",
+      {"render.width=" + std::to_string(size->width), "render.height=" + std::to_string(size->height)});
   if (!scene) return kExitFailure;
   auto ctx = open_context();
   if (!ctx) return kExitFailure;
@@ -133,48 +233,35 @@ int run_bench_render(const ParsedArgs& args, int rounds) {
     std::fprintf(stderr, "lagoon bench: %s\n", renderer.error().message.c_str());
     return kExitFailure;
   }
-  std::printf("device: %s (%s); scene %s at 1280x720; %d frames after 2 warm-up frames, medians\n",
+  std::printf("device: %s (%s); scene %s at %lldx%lld; %d frames after 2 warm-up frames, medians\n",
               ctx->device_info().name.c_str(), ctx->device_info().type.c_str(), scene->source.c_str(),
-              rounds);
-  std::vector<vk::PassTime> timings;
-  const float t0 = scene->time_s;
-  for (int w = 0; w < 2; ++w) (*renderer)->render(*scene, &timings);
-  std::vector<double> frame;
-  std::vector<std::pair<std::string, std::vector<double>>> passes;
-  for (int r = 0; r < rounds; ++r) {
-    scene->time_s = t0 + float(r) / 30.0f;
-    frame.push_back(time_ms([&] { (*renderer)->render(*scene, &timings); }));
-    for (size_t i = 0; i < timings.size(); ++i) {
-      if (passes.size() <= i) passes.push_back({timings[i].name, {}});
-      passes[i].second.push_back(timings[i].ms);
-    }
-  }
-  std::printf("%-34s %12s\n", "Pass (GPU timestamps)", "Time (ms)");
-  nlohmann::json results = nlohmann::json::array();
-  for (const auto& [name, ms] : passes) {
-    std::printf("%-34s %12.3f\n", name.c_str(), median(ms));
-    results.push_back({{"name", "render/pass/" + name},
-                       {"real_time", median(ms)},
-                       {"time_unit", "ms"},
-                       {"iterations", rounds}});
-  }
-  std::printf("%-34s %12.3f\n", "frame (wall, incl. readback)", median(frame));
-  results.push_back(
-      {{"name", "render/frame"}, {"real_time", median(frame)}, {"time_unit", "ms"}, {"iterations", rounds}});
-  std::printf(
-      "GPU timestamps of passes on lavapipe can read low: its rasteriser threads may finish after the\n"
-      "closing timestamp. The frame's wall time is the reliable figure.\n");
+              size->width, size->height, rounds);
+  const nlohmann::json results = report_render(time_frames(**renderer, *scene, rounds));
   if (auto path = args.get("json")) {
-    const nlohmann::json doc{{"context", {{"device", ctx->device_info().name}, {"rounds", rounds}}},
-                             {"benchmarks", results}};
-    if (!write_report(*path, doc)) return kExitFailure;
+    nlohmann::json context = report_context(*ctx, rounds);
+    context["scene"] = scene->source;
+    context["width"] = size->width;
+    context["height"] = size->height;
+    if (!write_report(*path, {{"context", context}, {"benchmarks", results}})) return kExitFailure;
+    std::printf("wrote %s\n", path->c_str());
   }
   return validation_status(*ctx);
+}
+
+// Options that only bench render reads; bench compute refuses them rather than silently ignoring them.
+std::optional<std::string> render_only_option(const ParsedArgs& args) {
+  for (const char* name : {"scene", "set", "width", "height"})
+    if (args.has(name)) return std::string(name);
+  return std::nullopt;
 }
 
 int run_bench(const ParsedArgs& args) {
   const std::string what = args.get("what").value_or("");
   if (what == "compute" || what == "render") {
+    if (const auto option = render_only_option(args); what == "compute" && option) {
+      std::fprintf(stderr, "lagoon bench: --%s applies to 'bench render' only\n", option->c_str());
+      return kExitUsage;
+    }
     const auto rounds = rounds_option(args, what == "compute" ? 15 : 10);
     if (!rounds) return kExitUsage;
     return what == "compute" ? run_bench_compute(args, *rounds) : run_bench_render(args, *rounds);
@@ -190,17 +277,27 @@ const Command& bench_command() {
       .spec = {.name = "bench",
                .summary =
                    "Measures performance side by side in one run. 'compute': the GPU ocean step on the "
-                   "chosen device against the same step on the CPU with FFTW (1 and 2 threads), for "
-                   "N = 128, 256, 512 and 1 or 3 cascades; ratio = GPU time / CPU time.",
+                   "chosen device (wall time and GPU timestamps) against the same step on the CPU with FFTW "
+                   "(1 and 2 threads), for N = 128, 256, 512 and 1 or 3 cascades; ratio = GPU wall time / "
+                   "CPU time. 'render': each pass of a scene's frame (GPU timestamps) and the whole frame "
+                   "(wall time, with readback).",
                .options = {{"what", "compute|render", "which benchmark: compute or render", true},
-                           {"scene", "FILE", "render: the scene (default scenes/default.json), at 1280x720"},
+                           {"scene", "FILE", "render: the scene (default scenes/default.json)"},
                            set_option(),
-                           {"json", "FILE", "also write the results as Google Benchmark-style JSON"},
-                           {"rounds", "R", "measured rounds per configuration (default 15)"}},
+                           {"width", "W", "render: frame width in pixels, 16 to 8192 (default 1280)"},
+                           {"height", "H", "render: frame height in pixels, 16 to 8192 (default 720)"},
+                           {"json", "FILE",
+                            "also write the results as Google Benchmark-style JSON: a \"context\" object "
+                            "(device, type, driver, driver version, Vulkan API version, rounds) and "
+                            "\"benchmarks\" (median real_time, min_time, max_time in ms; measure = \"gpu "
+                            "timestamps\" or \"wall\")"},
+                           {"rounds", "R",
+                            "measured rounds per configuration (default 15 compute, 10 render)"}},
                .positional = {"what"},
-               .details =
-                   "Timings are wall-clock medians after a warm-up (lavapipe compiles shaders at their "
-                   "first dispatch). The machine's noise makes single numbers unreliable; compare ratios.\n"},
+               .details = "Timings are medians after a warm-up (lavapipe compiles shaders at their first "
+                          "dispatch). The machine's noise makes single numbers unreliable; compare ratios.\n"
+                          "examples:\n  lagoon bench compute --rounds 5 --json out/compute.json\n"
+                          "  lagoon bench render --scene scenes/open-ocean.json --width 640 --height 360\n"},
       .run = run_bench};
   return command;
 }

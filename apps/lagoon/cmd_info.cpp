@@ -5,14 +5,10 @@
 
 #include "commands.h"
 #include "gpu_session.h"
+#include "vk/device_select.h"
 
 namespace lagoon::cli {
 namespace {
-
-std::string version_string(uint32_t v) {
-  return std::to_string(VK_API_VERSION_MAJOR(v)) + "." + std::to_string(VK_API_VERSION_MINOR(v)) + "." +
-         std::to_string(VK_API_VERSION_PATCH(v));
-}
 
 int run_info(const ParsedArgs&) {
   auto ctx = open_context();
@@ -25,8 +21,9 @@ int run_info(const ParsedArgs&) {
   vkGetPhysicalDeviceProperties2(ctx->physical_device(), &props);
 
   std::printf("device            %s (%s), index %u\n", info.name.c_str(), info.type.c_str(), info.index);
-  std::printf("driver            %s %s\n", info.driver_name.c_str(), info.driver_info.c_str());
-  std::printf("vulkan api        %s\n", version_string(info.api_version).c_str());
+  std::printf("driver            %s %s, version %s\n", info.driver_name.c_str(), info.driver_info.c_str(),
+              info.driver_version.c_str());
+  std::printf("vulkan api        %s\n", vk::api_version_string(info.api_version).c_str());
   std::printf("validation        %s\n",
               ctx->validation_enabled() ? "on" : "off (LAGOON_VALIDATION=1 turns it on)");
   std::printf("pipeline cache    %s\n",

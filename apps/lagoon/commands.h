@@ -19,5 +19,6 @@ const Command& bench_command();
 const Command& export_command();
 const Command& probe_command();
 const Command& lut_command();
+const Command& compare_images_command();
 
 }  // namespace lagoon::cli

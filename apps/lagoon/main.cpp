@@ -13,15 +13,17 @@ using lagoon::cli::Command;
 
 const std::vector<const Command*>& commands() {
   static const std::vector<const Command*> list{
-      &lagoon::cli::info_command(),  &lagoon::cli::render_command(), &lagoon::cli::export_command(),
-      &lagoon::cli::probe_command(), &lagoon::cli::lut_command(),    &lagoon::cli::bench_command()};
+      &lagoon::cli::info_command(),           &lagoon::cli::render_command(), &lagoon::cli::export_command(),
+      &lagoon::cli::probe_command(),          &lagoon::cli::lut_command(),    &lagoon::cli::bench_command(),
+      &lagoon::cli::compare_images_command(),
+  };
   return list;
 }
 
 void print_overview(FILE* out) {
   std::fprintf(out, "usage: lagoon <command> [options]\n\ncommands:\n");
   for (const Command* c : commands())
-    std::fprintf(out, "  %-10s %s\n", c->spec.name.c_str(), c->spec.summary.c_str());
+    std::fprintf(out, "  %-14s %s\n", c->spec.name.c_str(), c->spec.summary.c_str());
   std::fprintf(out, "\n'lagoon <command> --help' describes a command's options.\n");
 }
 

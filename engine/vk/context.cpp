@@ -213,6 +213,7 @@ Result<void> Context::pick_device(const ContextOptions& options) {
            .type = device_type_name(properties_.deviceType),
            .driver_name = driver.driverName,
            .driver_info = driver.driverInfo,
+           .driver_version = driver_version_string(driver.driverID, properties_.driverVersion),
            .api_version = properties_.apiVersion,
            .index = static_cast<uint32_t>(*chosen)};
   return {};

@@ -36,9 +36,10 @@ struct ContextOptions {
 
 struct DeviceInfo {
   std::string name;
-  std::string type;  // "discrete GPU", "CPU", ...
-  std::string driver_name;
-  std::string driver_info;
+  std::string type;            // "discrete GPU", "CPU", ...
+  std::string driver_name;     // VkPhysicalDeviceDriverProperties: "llvmpipe", "NVIDIA", ...
+  std::string driver_info;     // its driverInfo: "Mesa 22.3.6 (LLVM 15.0.6)", "550.54.14", ...
+  std::string driver_version;  // VkPhysicalDeviceProperties::driverVersion decoded the vendor's way
   uint32_t api_version = 0;
   uint32_t index = 0;  // in vkEnumeratePhysicalDevices order, as LAGOON_DEVICE counts
 };

@@ -55,6 +55,26 @@ const char* device_type_name(VkPhysicalDeviceType type) {
   }
 }
 
+std::string api_version_string(uint32_t version) {
+  return std::to_string(VK_API_VERSION_MAJOR(version)) + "." + std::to_string(VK_API_VERSION_MINOR(version)) +
+         "." + std::to_string(VK_API_VERSION_PATCH(version));
+}
+
+std::string driver_version_string(VkDriverId driver, uint32_t version) {
+  if (driver == VK_DRIVER_ID_NVIDIA_PROPRIETARY) {
+    std::string text = std::to_string(version >> 22) + "." + std::to_string((version >> 14) & 0xff) + "." +
+                       std::to_string((version >> 6) & 0xff);
+    if (const uint32_t fourth = version & 0x3f; fourth != 0) text += "." + std::to_string(fourth);
+    return text;
+  }
+  if (driver == VK_DRIVER_ID_INTEL_PROPRIETARY_WINDOWS)
+    return std::to_string(version >> 14) + "." + std::to_string(version & 0x3fff);
+  // VK_VERSION_* rather than VK_API_VERSION_*: drivers fill the top bits too, which API_VERSION reads as
+  // a variant and drops.
+  return std::to_string(version >> 22) + "." + std::to_string((version >> 12) & 0x3ff) + "." +
+         std::to_string(version & 0xfff);
+}
+
 Result<size_t> choose_device(const std::vector<DeviceCandidate>& devices, std::string_view override_spec) {
   if (devices.empty()) {
     return make_error(

@@ -2,8 +2,13 @@
 // measured, never tested).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <regex>
+#include <string>
+#include <vector>
 
 #include "support/run_process.h"
 #include "support/temp_dir.h"
@@ -18,21 +23,93 @@ ProcessResult lagoon(const std::string& args) {
 TEST(BenchCli, UsageErrorsExit2) {
   for (const char* args : {"bench", "bench nope", "bench compute --rounds 0", "bench render --rounds x"})
     EXPECT_EQ(lagoon(args).exit_code, 2) << args;
+  struct Case {
+    const char* args;
+    const char* expected;
+  } cases[] = {
+      {"bench render --width 0", "--width 0 must be a whole number from 16 to 8192"},
+      {"bench render --height 8193", "--height 8193 must be a whole number from 16 to 8192"},
+      {"bench render --width 64.5", "--width 64.5"},
+      {"bench compute --width 64", "--width applies to 'bench render' only"},
+  };
+  for (const Case& c : cases) {
+    auto r = lagoon(c.args);
+    EXPECT_EQ(r.exit_code, 2) << c.args << "\n" << r.output;
+    EXPECT_NE(r.output.find(c.expected), std::string::npos) << c.args << "\n" << r.output;
+  }
 }
 
-TEST(BenchCli, RenderReportsEveryPassAndTheFrame) {
+// The "context" both reports share: enough to tell which device and driver the figures come from.
+void expect_device_context(const nlohmann::json& context) {
+  for (const char* key : {"device", "device_type", "driver_name", "driver_info", "driver_version"}) {
+    ASSERT_TRUE(context.contains(key) && context[key].is_string()) << key << " in " << context;
+    EXPECT_FALSE(context[key].get<std::string>().empty()) << key << " in " << context;
+  }
+  ASSERT_TRUE(context.contains("vulkan_api_version")) << context;
+  EXPECT_TRUE(
+      std::regex_match(context["vulkan_api_version"].get<std::string>(), std::regex(R"(1\.\d+\.\d+)")))
+      << context;
+}
+
+// real_time is the median of `rounds` figures, between their min and max.
+void expect_spread(const nlohmann::json& entry, int rounds, const char* measure) {
+  EXPECT_EQ(entry["iterations"], rounds) << entry;
+  EXPECT_EQ(entry["measure"], measure) << entry;
+  EXPECT_EQ(entry["time_unit"], "ms") << entry;
+  const double median = entry["real_time"], min = entry["min_time"], max = entry["max_time"];
+  EXPECT_LE(min, median) << entry;
+  EXPECT_LE(median, max) << entry;
+  EXPECT_GE(min, 0.0) << entry;
+}
+
+TEST(BenchCli, RenderReportsEveryPassAndTheFrameAtTheGivenSize) {
   TempDir dir;
   const std::string json = (dir / "bench.json").string();
-  auto r = lagoon("bench render --rounds 1 --scene " + std::string(LAGOON_SOURCE_DIR) +
+  auto r = lagoon("bench render --rounds 3 --width 64 --height 32 --scene " + std::string(LAGOON_SOURCE_DIR) +
                   "/scenes/default.json --json " + json);
   ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("at 64x32"), std::string::npos) << r.output;
   std::ifstream file(json);
   const auto doc = nlohmann::json::parse(file);
+  expect_device_context(doc["context"]);
+  EXPECT_EQ(doc["context"]["width"], 64) << doc["context"];
+  EXPECT_EQ(doc["context"]["height"], 32) << doc["context"];
+  EXPECT_EQ(doc["context"]["rounds"], 3) << doc["context"];
+  EXPECT_NE(doc["context"]["scene"].get<std::string>().find("default.json"), std::string::npos);
+
   std::vector<std::string> names;
-  for (const auto& b : doc["benchmarks"]) names.push_back(b["name"]);
+  for (const auto& b : doc["benchmarks"]) {
+    names.push_back(b["name"]);
+    const bool frame = b["name"] == "render/frame";
+    expect_spread(b, 3, frame ? "wall" : "gpu timestamps");
+  }
   for (const char* expected : {"render/pass/refraction", "render/pass/reflection", "render/pass/sky",
                                "render/pass/surface", "render/pass/post", "render/frame"})
     EXPECT_NE(std::find(names.begin(), names.end(), expected), names.end()) << expected << "\n" << r.output;
+}
+
+TEST(BenchCli, ComputeReportsWallAndGpuTimeOfTheStep) {
+  TempDir dir;
+  const std::string json = (dir / "bench.json").string();
+  auto r = lagoon("bench compute --rounds 1 --json " + json);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::ifstream file(json);
+  const auto doc = nlohmann::json::parse(file);
+  expect_device_context(doc["context"]);
+  EXPECT_EQ(doc["context"]["rounds"], 1) << doc["context"];
+  std::map<std::string, nlohmann::json> by_name;
+  for (const auto& b : doc["benchmarks"]) by_name[b["name"]] = b;
+  for (const char* config : {"/N=128/cascades=1", "/N=512/cascades=3"}) {
+    const std::string wall = std::string("ocean_step/gpu") + config,
+                      device = std::string("ocean_step/gpu_timestamps") + config;
+    ASSERT_TRUE(by_name.count(wall)) << wall << "\n" << r.output;
+    ASSERT_TRUE(by_name.count(device)) << device << "\n" << r.output;
+    expect_spread(by_name[wall], 1, "wall");
+    expect_spread(by_name[device], 1, "gpu timestamps");
+    // The step's device time is inside the wall time around its submit and wait.
+    EXPECT_LE(by_name[device]["real_time"].get<double>(), by_name[wall]["real_time"].get<double>()) << config;
+    EXPECT_GT(by_name[device]["real_time"].get<double>(), 0.0) << config;
+  }
 }
 
 }  // namespace

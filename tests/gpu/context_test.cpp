@@ -84,7 +84,9 @@ TEST_F(ContextTest, TimestampsTimeEachScope) {
 }
 
 TEST_F(ContextTest, PipelineCachePersistsAndForeignFilesAreIgnored) {
-  const auto dir = temp_dir("pipeline-cache");
+  // Not "pipeline-cache": test_main points every test process's LAGOON_PIPELINE_CACHE there, so under
+  // ctest -j other tests write into it while this one expects to be its only writer.
+  const auto dir = temp_dir("pipeline-cache-persist-test");
   vk::ContextOptions options = vk::ContextOptions::from_environment();
   options.validation = true;
   options.pipeline_cache_dir = dir;

@@ -53,5 +53,16 @@ TEST(DeviceSelect, NoDeviceNamesThePackage) {
   EXPECT_NE(none.error().message.find("mesa-vulkan-drivers"), std::string::npos);
 }
 
+TEST(DeviceSelect, VersionsAreDecodedTheVendorsWay) {
+  EXPECT_EQ(api_version_string(VK_MAKE_API_VERSION(0, 1, 3, 255)), "1.3.255");
+  EXPECT_EQ(driver_version_string(VK_DRIVER_ID_NVIDIA_PROPRIETARY, (550u << 22) | (54u << 14) | (14u << 6)),
+            "550.54.14");
+  EXPECT_EQ(
+      driver_version_string(VK_DRIVER_ID_NVIDIA_PROPRIETARY, (535u << 22) | (1u << 14) | (2u << 6) | 3u),
+      "535.1.2.3");
+  EXPECT_EQ(driver_version_string(VK_DRIVER_ID_INTEL_PROPRIETARY_WINDOWS, (101u << 14) | 5333u), "101.5333");
+  EXPECT_EQ(driver_version_string(VK_DRIVER_ID_MESA_LLVMPIPE, VK_MAKE_VERSION(22, 3, 6)), "22.3.6");
+}
+
 }  // namespace
 }  // namespace lagoon::vk
