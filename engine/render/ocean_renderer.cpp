@@ -61,20 +61,19 @@ OceanRenderer::OceanRenderer(vk::Context& ctx, const scene::Scene& scene)
       // At the far plane (fullscreen.vert's z = 1), drawn where the depth buffer is still clear.
       sky_(vk::GraphicsPipeline::create(ctx, {.vertex = &shaders::render_fullscreen_vert,
                                               .fragment = &shaders::render_sky_frag,
-                                              .color_formats = {kHdrFormat},
+                                              .color_formats = {kColorFormat},
                                               .depth_format = kDepthFormat,
                                               .depth_test = true,
                                               .depth_write = false,
                                               .depth_compare = VK_COMPARE_OP_EQUAL})),
+      // The surface pass writes display-referred colour: each of its shaders tone-maps its own output
+      // (common/tonemap.glsl), so there is no HDR frame and no full-screen post pass.
       surface_(vk::GraphicsPipeline::create(ctx, {.vertex = &shaders::render_ocean_surface_vert,
                                                   .fragment = &shaders::render_ocean_surface_frag,
-                                                  .color_formats = {kHdrFormat},
+                                                  .color_formats = {kColorFormat},
                                                   .depth_format = kDepthFormat,
                                                   .depth_test = true,
                                                   .depth_write = true})),
-      post_(vk::GraphicsPipeline::create(ctx, {.vertex = &shaders::render_fullscreen_vert,
-                                               .fragment = &shaders::render_post_frag,
-                                               .color_formats = {kColorFormat}})),
       // Anisotropic filtering is cheap in GPU hardware but runs in software on CPU devices.
       repeat_sampler_(vk::create_sampler(
           ctx, {.address = VK_SAMPLER_ADDRESS_MODE_REPEAT,
@@ -94,12 +93,13 @@ OceanRenderer::OceanRenderer(vk::Context& ctx, const scene::Scene& scene)
         vk::Buffer::create(ctx, kClipmapMaxIndices * sizeof(uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
                            vk::MemoryUsage::Upload, "surface indices");
   }
-  mesh_refraction_ = vk::GraphicsPipeline::create(ctx, {.vertex = &shaders::render_mesh_vert,
-                                                        .fragment = &shaders::render_mesh_frag,
-                                                        .color_formats = {kHdrFormat},
-                                                        .depth_format = kDepthFormat,
-                                                        .depth_test = true,
-                                                        .depth_write = true});
+  for (auto [pipeline, format] : {std::pair{&mesh_hdr_, kHdrFormat}, {&mesh_display_, kColorFormat}})
+    *pipeline = vk::GraphicsPipeline::create(ctx, {.vertex = &shaders::render_mesh_vert,
+                                                   .fragment = &shaders::render_mesh_frag,
+                                                   .color_formats = {format},
+                                                   .depth_format = kDepthFormat,
+                                                   .depth_test = true,
+                                                   .depth_write = true});
 }
 
 Result<std::unique_ptr<OceanRenderer>> OceanRenderer::create(vk::Context& ctx, const scene::Scene& scene) {
@@ -216,11 +216,13 @@ Result<void> OceanRenderer::load_objects(const scene::Scene& scene) {
 
 void OceanRenderer::draw_objects(VkCommandBuffer cmd, float mode) const {
   const vk::BufferRef frame{slots_[slot_].frame.handle()};
+  // Mode 0 draws into the display-referred frame (mesh.frag tone-maps it), the others into HDR targets.
+  const vk::GraphicsPipeline& pipeline = mode < 0.5f ? mesh_display_ : mesh_hdr_;
   for (const ObjectDraw& o : objects_) {
     const gpu::MeshPush push{
         .model = o.world, .base_colour = o.base_colour, .params = glm::vec4(mode, 0, 0, 0)};
     const vk::Image& texture = o.texture >= 0 ? textures_[o.texture] : white_texture_;
-    vk::draw(cmd, mesh_refraction_,
+    vk::draw(cmd, pipeline,
              {vk::bind(0, frame), vk::bind(1, o.mesh.vertices), vk::bind(2, o.mesh.indices),
               vk::bind(3, sampled(texture, repeat_sampler_)), vk::bind(4, slots_[slot_].lights)},
              push, o.mesh.index_count);
@@ -230,13 +232,13 @@ void OceanRenderer::draw_objects(VkCommandBuffer cmd, float mode) const {
 OceanRenderer::~OceanRenderer() = default;
 
 struct OceanRenderer::Targets {
-  vk::Image hdr, depth, color, refraction_albedo, refraction_depth, reflection, reflection_depth;
+  vk::Image depth, color, refraction_albedo, refraction_depth, reflection, reflection_depth;
   vk::Buffer readback;  // the tone-mapped colour, copied in the frame's own submit
 };
 
 const OceanRenderer::Targets& OceanRenderer::targets_for(VkExtent2D extent) {
-  if (targets_ && targets_->hdr.extent().width == extent.width &&
-      targets_->hdr.extent().height == extent.height)
+  if (targets_ && targets_->color.extent().width == extent.width &&
+      targets_->color.extent().height == extent.height)
     return *targets_;
   if (targets_) ctx_.wait_idle();  // frames in flight may still use the old size
   targets_.reset();                // free the old size first: the new one may be large
@@ -251,8 +253,7 @@ const OceanRenderer::Targets& OceanRenderer::targets_for(VkExtent2D extent) {
   vk::Buffer readback = vk::Buffer::create(ctx_, vk::readback_bytes(color), VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                            vk::MemoryUsage::Readback, "frame readback");
   targets_ = std::make_unique<Targets>(
-      Targets{.hdr = target(kHdrFormat, attachment, "hdr"),
-              .depth = target(kDepthFormat, depth_attachment, "depth"),
+      Targets{.depth = target(kDepthFormat, depth_attachment, "depth"),
               .color = std::move(color),
               .refraction_albedo = target(kHdrFormat, attachment, "refraction albedo"),
               .refraction_depth = target(kDepthFormat, depth_attachment, "refraction depth"),
@@ -263,8 +264,8 @@ const OceanRenderer::Targets& OceanRenderer::targets_for(VkExtent2D extent) {
 }
 
 void OceanRenderer::record_frame(VkCommandBuffer cmd, const Targets& t) {
-  const vk::Image &hdr = t.hdr, &depth = t.depth, &color = t.color;
-  const VkExtent2D extent = hdr.extent();
+  const vk::Image &depth = t.depth, &color = t.color;
+  const VkExtent2D extent = color.extent();
   const vk::BufferRef frame{slots_[slot_].frame.handle()};
   {
     vk::GpuScope scope(slots_[slot_].timer, cmd, "refraction");
@@ -283,7 +284,7 @@ void OceanRenderer::record_frame(VkCommandBuffer cmd, const Targets& t) {
                                .base_colour = glm::vec4(floor_albedo_, floor_textured_ ? 1.0f : 0.0f),
                                .params = glm::vec4(1.0f, floor_texture_scale_, 0.0f, 0.0f)};
       const vk::Image& texture = floor_textured_ ? floor_texture_ : white_texture_;
-      vk::draw(cmd, mesh_refraction_,
+      vk::draw(cmd, mesh_hdr_,
                {vk::bind(0, frame), vk::bind(1, floor_->vertices), vk::bind(2, floor_->indices),
                 vk::bind(3, sampled(texture, repeat_sampler_)), vk::bind(4, slots_[slot_].lights)},
                push, floor_->index_count);
@@ -323,7 +324,7 @@ void OceanRenderer::record_frame(VkCommandBuffer cmd, const Targets& t) {
                                             vk::bind(6, sampled(lut_t1_, clamp_sampler_)),
                                             vk::bind(8, slots_[slot_].lights)};
   for (vk::Binding& b : cascade_bindings()) surface_bindings.push_back(b);
-  vk::image_barrier(cmd, hdr.handle(), hdr.all_subresources(), VK_IMAGE_LAYOUT_UNDEFINED,
+  vk::image_barrier(cmd, color.handle(), color.all_subresources(), VK_IMAGE_LAYOUT_UNDEFINED,
                     VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, vk::access::kNone,
                     vk::access::kColorAttachmentWrite);
   vk::image_barrier(cmd, depth.handle(), depth.all_subresources(), VK_IMAGE_LAYOUT_UNDEFINED,
@@ -332,7 +333,7 @@ void OceanRenderer::record_frame(VkCommandBuffer cmd, const Targets& t) {
   {
     // Separate render passes so the timestamps bracket real work on tilers such as lavapipe.
     vk::GpuScope scope(slots_[slot_].timer, cmd, "surface");
-    vk::begin_rendering(cmd, extent, {{.view = hdr.view(), .clear = std::array{0.f, 0.f, 0.f, 1.f}}},
+    vk::begin_rendering(cmd, extent, {{.view = color.view(), .clear = std::array{0.f, 0.f, 0.f, 1.f}}},
                         vk::DepthTarget{.view = depth.view(), .clear = 1.0f});
     draw_objects(cmd, 0.0f);  // above-water parts, lit; the surface depth-tests against them
     vk::draw_indexed(cmd, surface_, surface_bindings, slots_[slot_].surface_indices.handle(),
@@ -340,7 +341,7 @@ void OceanRenderer::record_frame(VkCommandBuffer cmd, const Targets& t) {
     vk::end_rendering(cmd);
   }
   // The sky last, at the far plane and depth-tested: it is shaded only where nothing else was drawn.
-  vk::image_barrier(cmd, hdr.handle(), hdr.all_subresources(), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+  vk::image_barrier(cmd, color.handle(), color.all_subresources(), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                     VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, vk::access::kColorAttachmentWrite,
                     vk::access::kColorAttachmentWrite);
   vk::image_barrier(cmd, depth.handle(), depth.all_subresources(), VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
@@ -348,20 +349,9 @@ void OceanRenderer::record_frame(VkCommandBuffer cmd, const Targets& t) {
                     vk::access::kDepthAttachment);
   {
     vk::GpuScope scope(slots_[slot_].timer, cmd, "sky");
-    vk::begin_rendering(cmd, extent, {{.view = hdr.view()}},
+    vk::begin_rendering(cmd, extent, {{.view = color.view()}},
                         vk::DepthTarget{.view = depth.view(), .clear = {}});
     vk::draw(cmd, sky_, {vk::bind(0, frame)}, 3);
-    vk::end_rendering(cmd);
-  }
-  vk::image_barrier(cmd, hdr.handle(), hdr.all_subresources(), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                    VK_IMAGE_LAYOUT_GENERAL, vk::access::kColorAttachmentWrite, vk::access::kGraphicsSampled);
-  vk::image_barrier(cmd, color.handle(), color.all_subresources(), VK_IMAGE_LAYOUT_UNDEFINED,
-                    VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, vk::access::kNone,
-                    vk::access::kColorAttachmentWrite);
-  {
-    vk::GpuScope scope(slots_[slot_].timer, cmd, "post");
-    vk::begin_rendering(cmd, extent, {{.view = color.view(), .clear = std::array{0.f, 0.f, 0.f, 1.f}}});
-    vk::draw(cmd, post_, {vk::bind(0, frame), vk::bind(1, sampled(hdr, clamp_sampler_))}, 3);
     vk::end_rendering(cmd);
   }
 }

@@ -1,9 +1,10 @@
 // The frame renderer: the FFT ocean (compute/ocean/gpu) drawn over an analytic sky whose light comes from
 // the optics model, water colour from the optics LUTs, then tone mapping (seed 000's eq. 18) and gamma.
 // Passes: ocean step, refraction (the floor's and submerged objects' albedo and depth), reflection (objects
-// above the water, mirrored), surface (HDR, RGBA16F: the objects, then the clipmap mesh, Fresnel between the
-// reflection and eq. 22 with the LUTs, foam), sky (depth-tested at the far plane, so only where nothing else
-// was drawn), post (tone map, gamma, RGBA8). docs/rendering.md has the details.
+// above the water, mirrored), surface (the objects, then the clipmap mesh, Fresnel between the reflection
+// and eq. 22 with the LUTs, foam), sky (depth-tested at the far plane, so only where nothing else was
+// drawn). Surface and sky shaders tone-map their own output (exposure, eq. 18, gamma) into RGBA8.
+// docs/rendering.md has the details.
 #pragma once
 #include <array>
 #include <memory>
@@ -28,7 +29,7 @@ namespace lagoon::render {
 class OceanRenderer {
  public:
   static constexpr VkFormat kHdrFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
-  static constexpr VkFormat kColorFormat = VK_FORMAT_R8G8B8A8_UNORM;  // display-referred after post
+  static constexpr VkFormat kColorFormat = VK_FORMAT_R8G8B8A8_UNORM;  // display-referred (tone-mapped)
   static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
   // Before a still frame the ocean runs this long (in kWarmupStep steps) so foam has built up.
   static constexpr double kWarmupS = 3.0;
@@ -104,7 +105,8 @@ class OceanRenderer {
   bool floor_textured_ = false;
   glm::vec3 floor_albedo_{1};
   float floor_texture_scale_ = 1;
-  vk::GraphicsPipeline sky_, surface_, post_, mesh_refraction_;  // mesh_refraction_ also draws lit meshes
+  vk::GraphicsPipeline sky_, surface_;
+  vk::GraphicsPipeline mesh_hdr_, mesh_display_;  // objects into HDR targets / into the displayed frame
   vk::GraphicsPipeline surface_aov_;                             // created on first use of render_surface_aov
   Result<void> load_objects(const scene::Scene& scene);
   Result<void> load_model(const std::string& file, const glm::mat4& transform, const std::string& field);

@@ -3,8 +3,9 @@
 #include "shared/frame.h"
 #include "shared/mesh.h"
 #include "common/light.glsl"
+#include "common/tonemap.glsl"
 
-// Mode 0: lit radiance above the water. Mode 1: albedo only, for the refraction pass; the water's light
+// Mode 0: lit radiance above the water, tone-mapped for display (the surface pass writes the final frame). Mode 1: albedo only, for the refraction pass; the water's light
 // transport (the LUTs) lights it in the surface pass. Mode 2: lit, mirrored, only what is above the water.
 layout(std140, binding = 0) uniform Frame { FrameUniforms frame; };
 layout(binding = 3) uniform sampler2D albedo_texture;
@@ -40,5 +41,6 @@ void main() {
     light += irradiance;
     highlight += irradiance * 0.04 * (32.0 + 2.0) / 8.0 * pow(max(dot(n, normalize(to_light + v)), 0.0), 32.0);
   }
-  out_colour = vec4(albedo * light + highlight, 1.0);
+  vec3 radiance = albedo * light + highlight;
+  out_colour = vec4(mode == 0 ? display_encode(frame, radiance) : radiance, 1.0);
 }

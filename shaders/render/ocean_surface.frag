@@ -2,10 +2,11 @@
 #extension GL_GOOGLE_include_directive : require
 #include "shared/frame.h"
 #include "common/light.glsl"
+#include "common/tonemap.glsl"
 
 // The water surface: normal from the cascades' slopes, exact dielectric Fresnel between the reflected sky
 // (plus the sun's glint) and the water's own colour from the optics LUT (deep water), foam from the foam
-// textures, haze towards the horizon. Output: HDR radiance in white units.
+// textures, haze towards the horizon. Output: the radiance (white units), tone-mapped for display.
 layout(std140, binding = 0) uniform Frame { FrameUniforms frame; };
 layout(binding = 2) uniform sampler2DArray normal_jacobian[4];
 layout(binding = 3) uniform sampler2D refraction_albedo;  // floor and submerged objects: albedo, a = coverage
@@ -18,7 +19,7 @@ layout(binding = 9) uniform sampler2DArray jacobian_terms[4];  // (λ∂Dx/∂x,
 
 layout(location = 0) in vec3 v_world;
 layout(location = 1) in vec2 v_rest;
-layout(location = 0) out vec4 out_radiance;
+layout(location = 0) out vec4 out_colour;
 
 #include "common/surface_normal.glsl"
 
@@ -94,5 +95,5 @@ void main() {
   float dist = length(v_world.xz - frame.camera_pos.xz);
   float haze = 1.0 - exp(-dist / frame.grid.z);
   surface = mix(surface, sky_radiance(frame, vec3(-v.x, 0.0, -v.z), false), haze);
-  out_radiance = vec4(surface, 1.0);
+  out_colour = vec4(display_encode(frame, surface), 1.0);
 }
