@@ -107,7 +107,7 @@ class OceanRenderer {
   float floor_texture_scale_ = 1;
   vk::GraphicsPipeline sky_, surface_;
   vk::GraphicsPipeline mesh_hdr_, mesh_display_;  // objects into HDR targets / into the displayed frame
-  vk::GraphicsPipeline surface_aov_;                             // created on first use of render_surface_aov
+  vk::GraphicsPipeline surface_aov_;              // created on first use of render_surface_aov
   Result<void> load_objects(const scene::Scene& scene);
   Result<void> load_model(const std::string& file, const glm::mat4& transform, const std::string& field);
   void draw_objects(VkCommandBuffer cmd, float mode) const;

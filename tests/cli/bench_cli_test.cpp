@@ -84,7 +84,7 @@ TEST(BenchCli, RenderReportsEveryPassAndTheFrameAtTheGivenSize) {
     expect_spread(b, 3, frame ? "wall" : "gpu timestamps");
   }
   for (const char* expected : {"render/pass/refraction", "render/pass/reflection", "render/pass/sky",
-                               "render/pass/surface", "render/pass/post", "render/frame"})
+                               "render/pass/surface", "render/frame"})
     EXPECT_NE(std::find(names.begin(), names.end(), expected), names.end()) << expected << "\n" << r.output;
 }
 
