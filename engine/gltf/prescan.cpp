@@ -9,6 +9,7 @@
 
 #include "gltf/checks.h"
 #include "gltf/uri.h"
+#include "io/json_limits.h"
 
 namespace lagoon::gltf::detail {
 namespace {
@@ -18,30 +19,10 @@ using nlohmann::json;
 
 // tinygltf converts "extras" and "extensions" recursively; a few kB of "[[[[..." would overflow the stack.
 // Real files nest about 10 levels.
-constexpr int kMaxJsonDepth = 64;
-
-int json_depth(std::string_view text) {
-  int depth = 0, max_depth = 0;
-  bool in_string = false, escaped = false;
-  for (char c : text) {
-    if (in_string) {
-      if (escaped) {
-        escaped = false;
-      } else if (c == '\\') {
-        escaped = true;
-      } else if (c == '"') {
-        in_string = false;
-      }
-    } else if (c == '"') {
-      in_string = true;
-    } else if (c == '[' || c == '{') {
-      max_depth = std::max(max_depth, ++depth);
-    } else if (c == ']' || c == '}') {
-      --depth;
-    }
-  }
-  return max_depth;
-}
+// glTF arrays (nodes, accessors) and strings (base64 data URIs) can be large: only the nesting is bounded
+// here; the file size bounds the rest.
+constexpr io::JsonLimits kGltfJsonLimits{
+    .max_depth = 64, .max_array_length = size_t{1} << 24, .max_string_bytes = SIZE_MAX};
 
 const json* member(const json& object, const char* name) {
   if (!object.is_object()) return nullptr;
@@ -197,9 +178,8 @@ Result<void> check_image_buffer_view(const json& root, const json& image, const 
 
 Result<Prescan> prescan(std::string_view text, const fs::path& folder, size_t max_file_bytes) {
   Prescan out;
-  if (json_depth(text) > kMaxJsonDepth) {
-    return make_error("JSON: nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
-  }
+  if (const auto exceeded = io::json_limit_exceeded(text, kGltfJsonLimits))
+    return make_error("JSON: " + *exceeded);
   const json root = json::parse(text.begin(), text.end(), nullptr, /*allow_exceptions=*/false);
   if (root.is_discarded() || !root.is_object()) return out;
   out.parsed = true;

@@ -1,5 +1,7 @@
 #include "scene/json_fields.h"
 
+#include "io/json_limits.h"
+
 #include <algorithm>
 #include <bit>
 #include <cctype>
@@ -589,6 +591,12 @@ void ObjectReader::finish() {
 // ---- free functions ----
 
 std::optional<json> parse_json_text(std::string_view text, Diagnostics& diag) {
+  if (const auto exceeded = io::json_limit_exceeded(text, kSceneJsonLimits)) {
+    diag.file_error("JSON: " + *exceeded,
+                    "a scene is a few nested objects with short strings and small arrays "
+                    "(docs/scene-format.md); check that this is the scene file you meant");
+    return std::nullopt;
+  }
   // The parser callback sees keys but not paths, so track the path of the container being parsed.
   struct Frame {
     bool is_object;

@@ -8,6 +8,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <nlohmann/json.hpp>
+#include "io/json_limits.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -206,8 +207,13 @@ class ObjectReader {
   std::map<std::string, std::string, std::less<>> array_defaults_;  // name -> JSON, for finish()'s hints
 };
 
+// What scene JSON may hold (a scene nests about five deep; the longest strings are file paths): text beyond
+// these is refused before parsing, so hostile input cannot exhaust the stack or memory.
+inline constexpr io::JsonLimits kSceneJsonLimits{
+    .max_depth = 32, .max_array_length = 4096, .max_string_bytes = 4096};
+
 // Parses JSON text, reporting syntax errors with nlohmann's line/column and duplicate keys (which plain
-// JSON parsing would silently resolve to the last one). Never throws.
+// JSON parsing would silently resolve to the last one), and text beyond kSceneJsonLimits. Never throws.
 std::optional<nlohmann::json> parse_json_text(std::string_view text, Diagnostics& diag);
 
 // The JSON object whose fields have the values describe mode recorded (FieldInfo::default_value): with a

@@ -56,6 +56,9 @@ Result<Assignment> parse_assignment(std::string_view assignment) {
   }
   // Not JSON (e.g. --set name=reef) means a bare string, which saves shell-quoting "\"reef\"".
   const std::string_view text = assignment.substr(eq + 1);
+  if (const auto exceeded = io::json_limit_exceeded(text, kSceneJsonLimits))
+    return assignment_error(assignment.substr(0, std::min<size_t>(eq + 1 + 40, assignment.size())),
+                            "the value has " + *exceeded);
   result.value = nlohmann::json::parse(text.begin(), text.end(), nullptr, /*allow_exceptions=*/false);
   if (result.value.is_discarded()) result.value = std::string(text);
   return result;

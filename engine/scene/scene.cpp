@@ -128,6 +128,13 @@ std::optional<std::string> read_file(const std::filesystem::path& path, Diagnost
     diag.file_error("is a directory, not a scene file", "pass a .json file such as scenes/default.json");
     return std::nullopt;
   }
+  // Scene files are a few kilobytes; a huge one is the wrong file, and reading it whole would cost its size.
+  constexpr std::uintmax_t kMaxSceneBytes = std::uintmax_t{16} << 20;
+  if (const std::uintmax_t size = std::filesystem::file_size(path, ec); !ec && size > kMaxSceneBytes) {
+    diag.file_error("is " + std::to_string(size >> 20) + " MiB; scene files are limited to 16 MiB",
+                    "check that this is the scene file you meant (scenes/default.json is about 2 KB)");
+    return std::nullopt;
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     diag.file_error(std::string("cannot be opened: ") + std::strerror(errno),

@@ -552,6 +552,41 @@ TEST_F(SceneFileTest, MalformedJsonReportsLineAndColumn) {
   EXPECT_TRUE(Contains(message, "no comments or trailing commas"));
 }
 
+// The issue 11 report: 100,000 nested arrays overflowed the parser's stack (SIGSEGV).
+TEST_F(SceneFileTest, HundredThousandNestedArraysAreRefusedNamingTheLimit) {
+  const fs::path path =
+      Write("deep.json", "{\"ocean\": " + std::string(100000, '[') + std::string(100000, ']') + "}");
+  const std::string message = ErrorOf(load_scene(path));
+  EXPECT_TRUE(
+      Contains(message, path.string() + ": JSON: arrays or objects nested more than 32 deep at line 1"))
+      << message;
+}
+
+TEST_F(SceneFileTest, LongStringsAndArraysAreRefusedNamingTheLimit) {
+  const fs::path name =
+      Write("name.json", "{\n  \"objects\": [{\"file\": \"" + std::string(5000, 'a') + "\"}]}");
+  EXPECT_TRUE(Contains(ErrorOf(load_scene(name)), "a string longer than 4096 bytes at line 2"));
+  std::string lights = "{\"lights\": [";
+  for (int i = 0; i < 5000; ++i) lights += i ? ",{}" : "{}";
+  const fs::path many = Write("lights.json", lights + "]}");
+  EXPECT_TRUE(Contains(ErrorOf(load_scene(many)), "an array of more than 4096 elements"));
+}
+
+TEST_F(SceneFileTest, HugeFileIsRefusedWithoutReadingIt) {
+  const fs::path path = Write("huge.json", "{}");
+  fs::resize_file(path, std::uintmax_t{17} << 20);  // sparse: nothing is written
+  EXPECT_TRUE(
+      Contains(ErrorOf(load_scene(path)), path.string() + ": is 17 MiB; scene files are limited to 16 MiB"));
+}
+
+TEST_F(SceneFileTest, DeeplyNestedOverrideIsRefused) {
+  const fs::path path = Write("ok.json", "{}");
+  const std::vector<std::string> overrides{"ocean.choppiness=" + std::string(50000, '[')};
+  const std::string message = ErrorOf(load_scene(path, overrides));
+  EXPECT_TRUE(Contains(message, "--set ocean.choppiness=[[[")) << message;
+  EXPECT_TRUE(Contains(message, "nested more than 32 deep")) << message;
+}
+
 TEST_F(SceneFileTest, EmptyFile) {
   const fs::path path = Write("empty.json", "");
   EXPECT_TRUE(Contains(ErrorOf(load_scene(path)), path.string() + ": invalid JSON: parse error at line 1"));
