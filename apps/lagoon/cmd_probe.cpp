@@ -1,4 +1,6 @@
 // lagoon probe: wave height, normal and velocity at points, from WaveQuery (CPU, exact time, no GPU).
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <glm/vec2.hpp>
 #include <nlohmann/json.hpp>
@@ -20,10 +22,22 @@ std::optional<glm::dvec2> parse_point(const std::string& text) {
   return glm::dvec2(*x, *z);
 }
 
+// The spacing of doubles at v: the finest difference an input of that size can express.
+double resolution(double v) {
+  return std::nextafter(std::abs(v), HUGE_VAL) - std::abs(v);
+}
+
 int run_probe(const ParsedArgs& args) {
   const auto time = parse_number(*args.get("time"));
   if (!time) {
     std::fprintf(stderr, "lagoon probe: --time %s is not a number of seconds\n", args.get("time")->c_str());
+    return kExitUsage;
+  }
+  if (std::abs(*time) > ocean::kWaveQueryMaxTimeS) {
+    std::fprintf(stderr,
+                 "lagoon probe: --time %s is beyond ±%.0f s: a double that large is resolved only to %.3g s, "
+                 "so the phases of the waves would be noise; give a time within that range\n",
+                 args.get("time")->c_str(), ocean::kWaveQueryMaxTimeS, resolution(*time));
     return kExitUsage;
   }
   std::vector<glm::dvec2> points;
@@ -32,6 +46,15 @@ int run_probe(const ParsedArgs& args) {
     if (!p) {
       std::fprintf(stderr, "lagoon probe: --at %s must be two numbers X,Z in metres, e.g. --at 12.5,-3\n",
                    at.c_str());
+      return kExitUsage;
+    }
+    if (std::max(std::abs(p->x), std::abs(p->y)) > ocean::kWaveQueryMaxCoordinateM) {
+      std::fprintf(stderr,
+                   "lagoon probe: --at %s is beyond ±%.0f m: a double that large is resolved only to %.3g m, "
+                   "so the answer would not describe that point; the ocean repeats, so probe an equivalent "
+                   "point nearer the origin\n",
+                   at.c_str(), ocean::kWaveQueryMaxCoordinateM,
+                   resolution(std::max(std::abs(p->x), std::abs(p->y))));
       return kExitUsage;
     }
     points.push_back(*p);

@@ -35,6 +35,13 @@ struct WaveSample {
   bool converged = true;           // false where the inversion did not converge (folded surface)
 };
 
+// Where answers still describe the point asked about: beyond 2^32 m (4.3e6 km) a double's spacing exceeds
+// 1 µm, and beyond 2^32 s (136 years) that of the time exceeds 1 µs (a phase error below 1e-4 rad for the
+// shortest waves Lagoon draws). Further out the inputs themselves are no longer resolved (at 1e30 m the next
+// double is 1.4e14 m away), so callers refuse them rather than answer for a different point.
+inline constexpr double kWaveQueryMaxCoordinateM = 4294967296.0;
+inline constexpr double kWaveQueryMaxTimeS = 4294967296.0;
+
 class WaveQuery {
  public:
   explicit WaveQuery(const OceanParams& params, unsigned threads = 2);

@@ -143,6 +143,15 @@ TEST(OceanCli, ProbeUsageErrors) {
     auto r = lagoon(std::string("probe --scene ") + kScene + " " + args);
     EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.output;
   }
+  // Positions and times beyond what a double resolves (issue 11: 1e30 answered "converged").
+  for (const char* args : {"--time 1 --at 1e30,5", "--time 1 --at 5,-5e9", "--time 1e10 --at 1,2"}) {
+    auto r = lagoon(std::string("probe --scene ") + kScene + " " + args);
+    EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.output;
+    EXPECT_NE(r.output.find("is beyond ±4294967296"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("resolved only to"), std::string::npos) << r.output;
+  }
+  auto near_limit = lagoon("probe --scene " + kScene + " --time 1e9 --at 4e9,-4e9 " + kSmallOcean);
+  EXPECT_EQ(near_limit.exit_code, 0) << near_limit.output;
   auto r = lagoon("probe --scene " + kScene + " --time 1 --at 1,2 --set ocean.depth_m=-5");
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("ocean.depth_m"), std::string::npos) << r.output;
