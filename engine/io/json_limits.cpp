@@ -27,16 +27,17 @@ std::optional<std::string> json_limit_exceeded(std::string_view text, const Json
     ++column;
     if (c == '\n') line += 1, column = 0;
     if (in_string) {
-      if (++string_bytes > limits.max_string_bytes)
-        return "a string longer than " + std::to_string(limits.max_string_bytes) + " bytes" +
-               where(line, column);
       if (escaped) {
         escaped = false;
       } else if (c == '\\') {
         escaped = true;
       } else if (c == '"') {
         in_string = false;
+        continue;  // the closing quote is not part of the string
       }
+      if (++string_bytes > limits.max_string_bytes)
+        return "a string longer than " + std::to_string(limits.max_string_bytes) + " bytes" +
+               where(line, column);
       continue;
     }
     const bool space = c == ' ' || c == '\t' || c == '\n' || c == '\r';

@@ -35,7 +35,8 @@ TEST(JsonLimits, ArrayLengthCountsElementsOfEachArrayOnItsOwn) {
 }
 
 TEST(JsonLimits, StringLengthIsBounded) {
-  EXPECT_EQ(exceeded(R"(["1234567"])"), "within the limits");  // 7 characters and the closing quote
+  EXPECT_EQ(exceeded(R"(["1234567"])"), "within the limits");
+  EXPECT_EQ(exceeded(R"(["12345678"])"), "within the limits");  // exactly the limit
   EXPECT_EQ(exceeded(R"(["123456789"])"), "a string longer than 8 bytes at line 1, column 11");
   EXPECT_EQ(exceeded(R"({"123456789": 1})"),
             "a string longer than 8 bytes at line 1, column 11");  // keys too
