@@ -7,8 +7,10 @@
 
 #include "commands.h"
 #include "gpu_session.h"
+#include "interrupt_guard.h"
 #include "io/atomic_file.h"
-#include "io/npy.h"
+#include "io/disk_space.h"
+#include "io/npy_stream.h"
 #include "ocean/gpu/gpu_ocean.h"
 #include "ocean/initial_spectrum.h"
 #include "scene_args.h"
@@ -19,6 +21,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// One frame of one cascade, split into the four arrays' layouts.
 struct CascadeArrays {
   std::vector<float> displacement, normal, jacobian, foam;
 };
@@ -71,6 +74,89 @@ nlohmann::json meta_json(const scene::Scene& scene, const ocean::GpuOcean& gpu,
        "map (1 = undisturbed, <= 0 folded). foam in [0, 1]. A scene's surface is the sum over cascades."}};
 }
 
+// The four arrays of one cascade, each streamed to its own .npy file a frame at a time.
+struct CascadeStreams {
+  io::NpyStreamWriter displacement, normal, jacobian, foam;
+};
+
+std::vector<size_t> vector_shape(size_t frames, size_t n) {
+  return {frames, n, n, 3};
+}
+std::vector<size_t> scalar_shape(size_t frames, size_t n) {
+  return {frames, n, n};
+}
+std::string cascade_prefix(uint32_t c) {
+  return "cascade" + std::to_string(c);
+}
+
+// What the export will put on disk: the arrays exactly, meta.json generously (it lists every frame's time).
+uint64_t export_bytes(const ocean::OceanParams& params, size_t frames) {
+  uint64_t bytes = 16384 + 32 * uint64_t(frames);
+  for (const ocean::CascadeParams& c : params.cascades)
+    for (const auto& shape : {vector_shape(frames, c.resolution), vector_shape(frames, c.resolution),
+                              scalar_shape(frames, c.resolution), scalar_shape(frames, c.resolution)})
+      bytes += io::npy_file_bytes(shape).value();  // shapes of at most 1e5 · 1024² · 3 floats never overflow
+  return bytes;
+}
+
+Result<CascadeStreams> open_streams(const StagedOutput& staged, uint32_t c, size_t frames, size_t n) {
+  const std::string prefix = cascade_prefix(c);
+  auto displacement =
+      io::NpyStreamWriter::create(staged.file(prefix + "_displacement.npy"), vector_shape(frames, n));
+  if (!displacement) return displacement.error();
+  auto normal = io::NpyStreamWriter::create(staged.file(prefix + "_normal.npy"), vector_shape(frames, n));
+  if (!normal) return normal.error();
+  auto jacobian = io::NpyStreamWriter::create(staged.file(prefix + "_jacobian.npy"), scalar_shape(frames, n));
+  if (!jacobian) return jacobian.error();
+  auto foam = io::NpyStreamWriter::create(staged.file(prefix + "_foam.npy"), scalar_shape(frames, n));
+  if (!foam) return foam.error();
+  return CascadeStreams{std::move(*displacement), std::move(*normal), std::move(*jacobian), std::move(*foam)};
+}
+
+// Splits one readback's interleaved texels into the four arrays' slabs and appends them. `scratch` is reused
+// from frame to frame, so memory holds one frame of one cascade whatever the number of frames.
+Result<void> append_frame(CascadeStreams& streams, const ocean::CascadeReadback& r, CascadeArrays& scratch) {
+  const size_t texels = r.displacement.size() / 4;
+  scratch.displacement.resize(3 * texels);
+  scratch.normal.resize(3 * texels);
+  scratch.jacobian.resize(texels);
+  scratch.foam.resize(texels);
+  for (size_t t = 0; t < texels; ++t) {
+    for (size_t k = 0; k < 3; ++k) {
+      scratch.displacement[3 * t + k] = r.displacement[4 * t + k];
+      scratch.normal[3 * t + k] = r.normal_jacobian[4 * t + k];
+    }
+    scratch.foam[t] = r.displacement[4 * t + 3];
+    scratch.jacobian[t] = r.normal_jacobian[4 * t + 3];
+  }
+  for (auto [stream, data] : {std::pair{&streams.displacement, &scratch.displacement},
+                              {&streams.normal, &scratch.normal},
+                              {&streams.jacobian, &scratch.jacobian},
+                              {&streams.foam, &scratch.foam}})
+    if (auto a = stream->append(*data); !a) return a;
+  return {};
+}
+
+Result<void> commit_streams(std::vector<CascadeStreams>& streams) {
+  for (CascadeStreams& s : streams)
+    for (io::NpyStreamWriter* w : {&s.displacement, &s.normal, &s.jacobian, &s.foam})
+      if (auto r = w->commit(); !r) return r;
+  return {};
+}
+
+// Refuses an export larger than the free space at --out before any work, with both figures.
+Result<void> check_space(const fs::path& out, uint64_t bytes) {
+  std::fprintf(stderr, "lagoon export: will write %s to %s\n", io::format_bytes(bytes).c_str(), out.c_str());
+  auto available = io::available_bytes(out);
+  if (!available) return available.error();
+  if (bytes > *available) {
+    return make_error("the output needs " + io::format_bytes(bytes) + " but only " +
+                      io::format_bytes(*available) + " is free at " + out.string() +
+                      "; choose fewer --frames, fewer or smaller cascades, or another --out");
+  }
+  return {};
+}
+
 int run_export(const ParsedArgs& args) {
   const fs::path out = *args.get("out");
   double dt = 1.0 / 30.0;
@@ -98,62 +184,55 @@ int run_export(const ParsedArgs& args) {
   }
   auto scene = load_scene_from_args(args, "export", overrides);
   if (!scene) return kExitFailure;
-  std::error_code ec;
-  if (fs::exists(out, ec) && !fs::is_directory(out, ec)) {  // checked before the GPU work, not after
-    std::fprintf(stderr, "lagoon export: --out %s exists and is not a folder\n", out.c_str());
+  auto fail = [&](const std::string& message) {
+    std::fprintf(stderr, "lagoon export: %s\n", message.c_str());
     return kExitFailure;
-  }
+  };
+  std::error_code ec;
+  if (fs::exists(out, ec) && !fs::is_directory(out, ec))  // checked before the GPU work, not after
+    return fail("--out " + out.string() + " exists and is not a folder");
+  if (auto space = check_space(out, export_bytes(scene->ocean, size_t(frames))); !space)
+    return fail(space.error().message);
   auto ctx = open_context();
   if (!ctx) return kExitFailure;
 
+  // Frames go straight into a staging folder beside the output; it is moved into place only when complete,
+  // and removed on any failure or interruption (StagedOutput's destructor), so nothing half-written remains.
+  InterruptGuard interrupt;
+  auto staged = StagedOutput::create(out);
+  if (!staged) return fail(staged.error().message);
   ocean::GpuOcean gpu(*ctx, scene->ocean);
-  std::vector<CascadeArrays> arrays(gpu.cascade_count());
+  std::vector<CascadeStreams> streams;
+  for (uint32_t c = 0; c < gpu.cascade_count(); ++c) {
+    auto s = open_streams(*staged, c, size_t(frames), gpu.spectra()[c].resolution);
+    if (!s) return fail(s.error().message);
+    streams.push_back(std::move(*s));
+  }
+  CascadeArrays scratch;
   std::vector<double> times;
   for (long long f = 0; f < frames; ++f) {
+    if (interrupt.signal()) {
+      std::fprintf(stderr,
+                   "\nlagoon export: interrupted by signal %d after %lld of %lld frames; nothing written\n",
+                   interrupt.signal(), f, frames);
+      return interrupt.exit_code();
+    }
     const double t = scene->time_s + double(f) * dt;
     times.push_back(t);
     ctx->submit_and_wait([&](VkCommandBuffer cmd) { gpu.record_step(cmd, t, f == 0 ? 0.0 : dt); });
-    for (uint32_t c = 0; c < gpu.cascade_count(); ++c) {
-      const ocean::CascadeReadback r = gpu.read_cascade(c);
-      CascadeArrays& a = arrays[c];
-      for (size_t i = 0; i < r.displacement.size(); i += 4) {
-        a.displacement.insert(a.displacement.end(), &r.displacement[i], &r.displacement[i] + 3);
-        a.foam.push_back(r.displacement[i + 3]);
-        a.normal.insert(a.normal.end(), &r.normal_jacobian[i], &r.normal_jacobian[i] + 3);
-        a.jacobian.push_back(r.normal_jacobian[i + 3]);
-      }
-    }
+    for (uint32_t c = 0; c < gpu.cascade_count(); ++c)
+      if (auto r = append_frame(streams[c], gpu.read_cascade(c), scratch); !r) return fail(r.error().message);
     if (frames > 1) std::fprintf(stderr, "\rlagoon export: frame %lld/%lld", f + 1, frames);
   }
   if (frames > 1) std::fprintf(stderr, "\n");
   if (int status = validation_status(*ctx); status != kExitOk) return status;
 
-  // Everything goes to a staging folder next to the output first: a failure leaves nothing.
-  auto staged = StagedOutput::create(out);
-  if (!staged) {
-    std::fprintf(stderr, "lagoon export: %s\n", staged.error().message.c_str());
-    return kExitFailure;
-  }
-  auto fail = [&](const std::string& message) {
-    std::fprintf(stderr, "lagoon export: %s\n", message.c_str());
-    return kExitFailure;
-  };
   const std::string meta = meta_json(*scene, gpu, times).dump(2) + "\n";
   if (auto r = io::write_file_atomic(staged->file("meta.json"),
                                      std::as_bytes(std::span(meta.data(), meta.size())));
       !r)
     return fail(r.error().message);
-  for (uint32_t c = 0; c < gpu.cascade_count(); ++c) {
-    const size_t n = gpu.spectra()[c].resolution, t = size_t(frames);
-    const std::string prefix = "cascade" + std::to_string(c);
-    const std::vector<size_t> vec_shape{t, n, n, 3}, scalar_shape{t, n, n};
-    for (auto [name, data, shape] : {std::tuple{"_displacement.npy", &arrays[c].displacement, &vec_shape},
-                                     {"_normal.npy", &arrays[c].normal, &vec_shape},
-                                     {"_jacobian.npy", &arrays[c].jacobian, &scalar_shape},
-                                     {"_foam.npy", &arrays[c].foam, &scalar_shape}})
-      if (auto r = io::write_npy(staged->file(prefix + name), *data, *shape); !r)
-        return fail(r.error().message);
-  }
+  if (auto r = commit_streams(streams); !r) return fail(r.error().message);
   if (auto r = staged->commit(); !r) return fail(r.error().message);
   std::printf("wrote %s: %lld frame(s), %u cascade(s), on %s\n", out.c_str(), frames, gpu.cascade_count(),
               ctx->device_info().name.c_str());
@@ -164,22 +243,27 @@ int run_export(const ParsedArgs& args) {
 
 const Command& export_command() {
   static const Command command{
-      .spec = {.name = "export",
-               .summary =
-                   "Runs the FFT ocean of a scene for a number of frames on the GPU and writes every "
-                   "cascade's displacement, normal, Jacobian and foam as float32 .npy arrays, with "
-                   "meta.json describing times, parameters, layout and each cascade's wavenumber band.",
-               .options = {scene_option(),
-                           {"out", "DIR",
-                            "output folder (created; existing files of the same names are replaced)", true},
-                           {"frames", "N", "number of frames (default 1)"},
-                           {"dt", "S", "seconds between frames (default 1/30); foam evolves with it"},
-                           {"t0", "T", "time of the first frame (default: the scene's time_s)"},
-                           set_option()},
-               .details =
-                   "example:\n  lagoon export --scene scenes/default.json --out out/fields --frames 30 "
-                   "--dt 0.1\n  python3 -c \"import numpy; print(numpy.load('out/fields/"
-                   "cascade0_displacement.npy').shape)\"\n"},
+      .spec =
+          {.name = "export",
+           .summary = "Runs the FFT ocean of a scene for a number of frames on the GPU and writes every "
+                      "cascade's displacement, normal, Jacobian and foam as float32 .npy arrays, with "
+                      "meta.json describing times, parameters, layout and each cascade's wavenumber band.",
+           .options = {scene_option(),
+                       {"out", "DIR",
+                        "output folder (created; existing files of the same names are replaced)", true},
+                       {"frames", "N",
+                        "number of frames (default 1, at most 100000); each is written as it is "
+                        "computed, so memory does not grow with N"},
+                       {"dt", "S", "seconds between frames (default 1/30); foam evolves with it"},
+                       {"t0", "T", "time of the first frame (default: the scene's time_s)"},
+                       set_option()},
+           .details =
+               "The output's size is printed first; an export larger than the free space at --out is refused "
+               "before any work. Frames are staged beside --out and moved in only when all are written: "
+               "an error, SIGINT or SIGTERM leaves no partial output (exit 128 + the signal's number).\n"
+               "example:\n  lagoon export --scene scenes/default.json --out out/fields --frames 30 "
+               "--dt 0.1\n  python3 -c \"import numpy; print(numpy.load('out/fields/"
+               "cascade0_displacement.npy').shape)\"\n"},
       .run = run_export};
   return command;
 }

@@ -138,39 +138,46 @@ class HeaderParser {
 
 }  // namespace
 
-Result<void> write_npy(const std::filesystem::path& path, std::span<const float> data,
-                       std::span<const size_t> shape) {
-  const std::string where = "cannot write NPY " + path.string() + ": ";
+Result<std::string> npy_header(std::span<const size_t> shape) {
   const std::optional<size_t> count = element_count(shape);
-  if (!count) return make_error(where + "shape " + shape_string(shape) + " overflows");
-  if (*count != data.size()) {
-    return make_error(where + "shape " + shape_string(shape) + " holds " + std::to_string(*count) +
-                      " values but data has " + std::to_string(data.size()));
-  }
-
+  if (!count || *count > SIZE_MAX / 4) return make_error("shape " + shape_string(shape) + " overflows");
   std::string header = "{'descr': '<f4', 'fortran_order': False, 'shape': " + shape_string(shape) + ", }";
   const size_t unpadded = sizeof kMagic + 2 + 2 + header.size() + 1;  // + 1 for the final '\n'
   header.append((kAlignment - unpadded % kAlignment) % kAlignment, ' ');
   header += '\n';
-  if (header.size() > UINT16_MAX) return make_error(where + "shape too long for a version 1.0 header");
+  if (header.size() > UINT16_MAX) return make_error("shape too long for a version 1.0 header");
 
   std::string prefix(kMagic, sizeof kMagic);
   prefix += '\x01';  // version 1.0
   prefix += '\x00';
   prefix += static_cast<char>(header.size() & 0xff);  // header length, little-endian uint16
   prefix += static_cast<char>(header.size() >> 8);
-  prefix += header;
+  return prefix + header;
+}
 
-  Result<AtomicFile> file = AtomicFile::create(path);
-  if (!file) return file.error();
-  if (Result<void> r = file->write(std::as_bytes(std::span(prefix))); !r) return r;
+Result<void> write_npy_values(AtomicFile& file, std::span<const float> data) {
   if constexpr (std::endian::native == std::endian::little) {
-    if (Result<void> r = file->write(std::as_bytes(data)); !r) return r;
+    return file.write(std::as_bytes(data));
   } else {
     std::vector<uint32_t> swapped(data.size());
     for (size_t i = 0; i < data.size(); ++i) swapped[i] = to_little_endian(std::bit_cast<uint32_t>(data[i]));
-    if (Result<void> r = file->write(std::as_bytes(std::span(swapped))); !r) return r;
+    return file.write(std::as_bytes(std::span(swapped)));
   }
+}
+
+Result<void> write_npy(const std::filesystem::path& path, std::span<const float> data,
+                       std::span<const size_t> shape) {
+  const std::string where = "cannot write NPY " + path.string() + ": ";
+  Result<std::string> prefix = npy_header(shape);
+  if (!prefix) return make_error(where + prefix.error().message);
+  if (const size_t count = *element_count(shape); count != data.size()) {
+    return make_error(where + "shape " + shape_string(shape) + " holds " + std::to_string(count) +
+                      " values but data has " + std::to_string(data.size()));
+  }
+  Result<AtomicFile> file = AtomicFile::create(path);
+  if (!file) return file.error();
+  if (Result<void> r = file->write(std::as_bytes(std::span(*prefix))); !r) return r;
+  if (Result<void> r = write_npy_values(*file, data); !r) return r;
   return file->commit();
 }
 

@@ -4,11 +4,21 @@
 #include <cstddef>
 #include <filesystem>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "vk/result.h"
 
 namespace lagoon::io {
+
+class AtomicFile;
+
+// Magic, version 1.0 and the header dict for a '<f4' C-order array of `shape`, padded so the data starts at
+// a multiple of 64 bytes. Its size plus 4 bytes per element is the whole file's size.
+Result<std::string> npy_header(std::span<const size_t> shape);
+
+// Appends float32 values to an open file, little-endian whatever the host.
+Result<void> write_npy_values(AtomicFile& file, std::span<const float> data);
 
 // Writes a version 1.0 file, dtype '<f4', C order (last index fastest). Atomic (see AtomicFile); creates
 // missing parent folders. An empty shape is a 0-d array holding exactly one value.
