@@ -67,6 +67,9 @@ class OceanRenderer {
   };
   SurfaceAov render_surface_aov(const scene::Scene& scene);
 
+  // The ocean the frames are drawn from (e.g. for a field check after render()).
+  const ocean::GpuOcean& ocean() const { return *ocean_; }
+
  private:
   struct Targets;
   OceanRenderer(vk::Context& ctx, const scene::Scene& scene);

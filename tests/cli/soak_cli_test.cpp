@@ -1,0 +1,40 @@
+// lagoon soak, short: both phases run, report their figures and pass on a healthy build; bad options are
+// usage errors.
+#include <gtest/gtest.h>
+
+#include <regex>
+
+#include "support/run_process.h"
+
+namespace lagoon::test {
+namespace {
+
+const std::string kScene = std::string(LAGOON_SOURCE_DIR) + "/scenes/default.json";
+
+ProcessResult lagoon(const std::string& args) {
+  return run_process(shell_quote(LAGOON_BINARY) + " " + args);
+}
+
+TEST(SoakCli, AShortSoakChecksEveryStepAndFrameAndIsHealthy) {
+  auto r = lagoon(
+      "soak --scene " + kScene +
+      " --steps 30 --frames 4 --width 64 --height 36 --set "
+      "'ocean.cascades=[{\"patch_size_m\":300,\"resolution\":64},{\"patch_size_m\":30,\"resolution\":64}]'");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(std::regex_search(
+      r.output, std::regex(R"(steps +30 +non-finite texels 0 +RSS after warm-up [0-9.]+ MiB)")))
+      << r.output;
+  EXPECT_TRUE(std::regex_search(r.output, std::regex(R"(frames +4 +non-finite texels 0 )"))) << r.output;
+  EXPECT_NE(r.output.find("validation errors 0"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("healthy"), std::string::npos) << r.output;
+}
+
+TEST(SoakCli, BadCountsAreUsageErrors) {
+  for (const char* args : {"--steps -1", "--frames x", "--width 4"}) {
+    auto r = lagoon("soak --scene " + kScene + " " + args);
+    EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.output;
+  }
+}
+
+}  // namespace
+}  // namespace lagoon::test
