@@ -7,6 +7,7 @@
 #include "demo_app.h"
 #include "demo_options.h"
 #include "exit_codes.h"
+#include "vulkan_advice.h"
 
 int main(int argc, char** argv) {
   try {
@@ -15,6 +16,9 @@ int main(int argc, char** argv) {
     auto options = lagoon::demo::parse_demo_options(args, exit_code);
     if (!options) return exit_code;
     return lagoon::demo::run_demo(std::move(*options));
+  } catch (const lagoon::vk::VulkanError& e) {
+    std::fprintf(stderr, "lagoon-demo: Vulkan error: %s\n", lagoon::cli::explain_vulkan_error(e).c_str());
+    return lagoon::cli::kExitFailure;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "lagoon-demo: %s\n", e.what());
     return lagoon::cli::kExitFailure;

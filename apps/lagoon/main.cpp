@@ -6,6 +6,7 @@
 
 #include "commands.h"
 #include "vk/check.h"
+#include "vulkan_advice.h"
 
 namespace {
 
@@ -62,7 +63,8 @@ int main(int argc, char** argv) {
   try {
     return command->run(*args);
   } catch (const lagoon::vk::VulkanError& e) {
-    std::fprintf(stderr, "lagoon %s: Vulkan error: %s\n", name.c_str(), e.what());
+    std::fprintf(stderr, "lagoon %s: Vulkan error: %s\n", name.c_str(),
+                 lagoon::cli::explain_vulkan_error(e).c_str());
   } catch (const std::exception& e) {
     std::fprintf(stderr, "lagoon %s: %s\n", name.c_str(), e.what());
   }

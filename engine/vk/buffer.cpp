@@ -2,6 +2,7 @@
 
 #include "vk/check.h"
 #include "vk/context.h"
+#include "vk/memory.h"
 
 namespace lagoon::vk {
 
@@ -37,8 +38,8 @@ Buffer Buffer::create(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags 
   const uint32_t type = ctx.find_memory_type(req.memoryTypeBits, required, preferred);
   const VkMemoryAllocateInfo alloc{
       .sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO, .allocationSize = req.size, .memoryTypeIndex = type};
-  VkDeviceMemory mem;
-  VK_CHECK(vkAllocateMemory(ctx.device(), &alloc, nullptr, &mem));
+  VkDeviceMemory mem =
+      allocate_memory(ctx, alloc, "buffer " + std::string(debug_name ? debug_name : "(unnamed)"));
   b.memory_ = Unique<VkDeviceMemory>(ctx.device(), mem);
   VK_CHECK(vkBindBufferMemory(ctx.device(), buffer, mem, 0));
 

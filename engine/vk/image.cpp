@@ -6,6 +6,7 @@
 
 #include "vk/check.h"
 #include "vk/context.h"
+#include "vk/memory.h"
 
 namespace lagoon::vk {
 
@@ -69,8 +70,10 @@ Image Image::create(const Context& ctx, const ImageDesc& desc) {
       .sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO,
       .allocationSize = req.size,
       .memoryTypeIndex = ctx.find_memory_type(req.memoryTypeBits, 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT)};
-  VkDeviceMemory mem;
-  VK_CHECK(vkAllocateMemory(ctx.device(), &alloc, nullptr, &mem));
+  const std::string what = "image " + std::string(desc.debug_name ? desc.debug_name : "(unnamed)") + " " +
+                           std::to_string(desc.extent.width) + "x" + std::to_string(desc.extent.height) +
+                           (desc.layers > 1 ? "x" + std::to_string(desc.layers) + " layers" : std::string());
+  VkDeviceMemory mem = allocate_memory(ctx, alloc, what);
   img.memory_ = Unique<VkDeviceMemory>(ctx.device(), mem);
   VK_CHECK(vkBindImageMemory(ctx.device(), image, mem, 0));
 
