@@ -20,6 +20,7 @@
 #include "exit_codes.h"
 #include "gpu_session.h"
 #include "imgui_layer.h"
+#include "interrupt_guard.h"
 #include "io/png.h"
 #include "ocean/wave_query.h"
 #include "optics/lut.h"
@@ -373,6 +374,9 @@ Result<void> Demo::save_screenshot(const std::string& path, const vk::Buffer& pi
 }
 
 int Demo::run() {
+  // Ctrl-C or SIGTERM closes the demo as its window's close button does: the loop ends (at once when the
+  // signal came during start-up), the GPU drains, and the validation result still decides the exit code.
+  cli::InterruptGuard interrupt;
   auto window = Window::create(options_.width, options_.height, "Lagoon");
   if (!window) {
     std::fprintf(stderr, "lagoon-demo: %s\n", window.error().message.c_str());
@@ -411,8 +415,7 @@ int Demo::run() {
   long long frame = 0;
   Clock::time_point last = Clock::now();
   int status = cli::kExitOk;
-
-  while (!window_->should_close()) {
+  while (!window_->should_close() && !interrupt.signal()) {
     window_->poll_events();
     const VkExtent2D fb = window_->framebuffer_extent();
     if (fb.width == 0 || fb.height == 0) {  // minimised: nothing to draw into

@@ -19,7 +19,9 @@ TEST(SoakCli, AShortSoakChecksEveryStepAndFrameAndIsHealthy) {
   auto r = lagoon(
       "soak --scene " + kScene +
       " --steps 30 --frames 4 --width 64 --height 36 --set "
-      "'ocean.cascades=[{\"patch_size_m\":300,\"resolution\":64},{\"patch_size_m\":30,\"resolution\":64}]'");
+      "'ocean.cascades=[{\"patch_size_m\":300,\"resolution\":64},{\"patch_size_m\":30,\"resolution\":64}]' "
+      // lavapipe keeps ~58 KB per object draw (docs/reliability.md); the long soak reports it.
+      "--set objects=[]");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_TRUE(std::regex_search(
       r.output, std::regex(R"(steps +30 +non-finite texels 0 +RSS after warm-up [0-9.]+ MiB)")))

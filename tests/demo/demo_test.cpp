@@ -43,6 +43,19 @@ class Demo : public ::testing::Test {
   fs::path dir_;
 };
 
+TEST_F(Demo, SigtermClosesTheDemoLikeItsWindowButton) {
+  // The demo runs without --exit; SIGTERM after a few seconds must end the loop, drain the GPU and report
+  // its frames as a normal close does (exit 0), not kill it (143).
+  auto d =
+      run_process(shell_quote(LAGOON_XVFB_RUN) + " -a sh -c " +
+                  shell_quote(shell_quote(LAGOON_DEMO_BINARY) + " --scene " + shell_quote(kScene) +
+                              " --width 160 --height 90 --frames 1000000 & p=$!; sleep 6; kill -TERM $p; "
+                              "wait $p"));
+  EXPECT_EQ(d.exit_code, 0) << d.output;
+  EXPECT_NE(d.output.find("lagoon-demo: "), std::string::npos) << d.output;
+  EXPECT_NE(d.output.find(" frames at 160x90 on "), std::string::npos) << d.output;
+}
+
 TEST_F(Demo, ScreenshotMatchesTheCliRenderOfTheSameSceneAndTime) {
   // 30 frames from t = 6 s at 1/30 s: the last is at 6 + 29/30 s.
   auto d = demo("--scene " + shell_quote(kScene) + " --width 320 --height 180 --frames 30 --screenshot " +

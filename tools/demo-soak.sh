@@ -1,0 +1,98 @@
+#!/usr/bin/env bash
+# Soak of the desktop demo (issue 11): lagoon-demo runs under a virtual X server with the validation layer
+# on for SECONDS, and a script edits one random panel field every frame, with a random value from that
+# field's allowed range; then SIGTERM closes it as its window's close button would. The fields and ranges come from the field table in docs/scene-format.md, which a unit test keeps
+# identical to the declarations the panel is built from. Resident memory is sampled every 10 s.
+#
+#   tools/demo-soak.sh [SECONDS [SEED]]      defaults: 600 s, seed 1
+#
+# Environment: BUILD_DIR (default build), OUT (default out/demo-soak), WIDTH/HEIGHT (default 640x360).
+# Writes OUT/script.txt, OUT/demo.log and OUT/rss.csv (seconds, KiB). Passes (exit 0) when the demo exits 0
+# (which includes no validation error), no edit produced an error other than the loader's rejection of a
+# value, and resident memory at the end is less than 1 % above the sample at 10 % of the run. Edits that
+# rebuild the renderer (spectrum, cascades, water type) make some frames take seconds on lavapipe.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds=${1:-600}
+frames=200000  # script lines; the run ends by time, long before
+seed=${2:-1}
+build=${BUILD_DIR:-build}
+out=${OUT:-out/demo-soak}
+demo=$build/bin/lagoon-demo
+[[ -x $demo ]] || { echo "demo-soak: $demo not found; run 'make build' first" >&2; exit 1; }
+command -v xvfb-run >/dev/null || { echo "demo-soak: xvfb-run not found; run tools/install-deps.sh" >&2; exit 1; }
+mkdir -p "$out"
+
+# One "FRAME path=value" line per frame.
+awk -v frames="$frames" -v seed="$seed" -F' [|] ' '
+  function num(s) { gsub(/[^0-9.eE+-]/, "", s); return s + 0 }
+  function pick(lo, hi, integer) { v = lo + rand() * (hi - lo); return integer ? int(v + 0.5) : sprintf("%.4g", v) }
+  /^\| `[a-z_.\[\]]+` \|/ {
+    path = $1; sub(/^\| `/, "", path); sub(/`$/, "", path)
+    type = $2; allowed = $5
+    if (path ~ /^(objects|lights)/ || path ~ /^render\./) next  # none in the default scene; the window sets the size
+    sub(/\[\]/, "[0]", path)
+    if (allowed ~ /^one of /) {
+      n = split(allowed, parts, "\"")
+      k = 0; for (i = 2; i <= n; i += 2) choices[path, ++k] = "\"" parts[i] "\""
+      if (k > 0) { fields[++count] = path; kind[path] = "choice"; nchoice[path] = k }
+    } else if (type == "number" || type == "integer") {
+      if (match(allowed, /^-?[0-9.]+ to -?[0-9.]+/)) {
+        split(substr(allowed, RSTART, RLENGTH), r, " to "); lo[path] = num(r[1]); hi[path] = num(r[2])
+      } else if (match(allowed, /^> -?[0-9.]+ and <= [0-9.]+/)) {
+        split(substr(allowed, RSTART, RLENGTH), r, " and <= "); lo[path] = num(r[1]) + 1e-3; hi[path] = num(r[2])
+      } else if (match(allowed, /power of two, [0-9]+ to [0-9]+/)) {
+        kind[path] = "pow2"; fields[++count] = path; next
+      } else next
+      if (hi[path] - lo[path] > 1e6) hi[path] = lo[path] + 1e6   # seeds: any value will do
+      fields[++count] = path; kind[path] = type
+    }
+  }
+  END {
+    srand(seed)
+    for (f = 0; f < frames; ++f) {
+      p = fields[1 + int(rand() * count)]
+      if (kind[p] == "choice") v = choices[p, 1 + int(rand() * nchoice[p])]
+      else if (kind[p] == "pow2") v = 2 ^ (6 + int(rand() * 3))      # 64..256: a 1024² rebuild per frame is minutes
+      else v = pick(lo[p], hi[p], kind[p] == "integer")
+      print f, p "=" v
+    }
+    printf("demo-soak: %d fields, %d edits\n", count, frames) > "/dev/stderr"
+  }' docs/scene-format.md >"$out/script.txt"
+
+echo "seconds,rss_kib" >"$out/rss.csv"
+start=$(date +%s)
+LAGOON_VALIDATION=1 xvfb-run -a "$demo" --scene scenes/default.json --width "${WIDTH:-640}" --height "${HEIGHT:-360}" \
+  --frames "$frames" --script "$out/script.txt" --no-vsync >"$out/demo.log" 2>&1 &
+runner=$!
+pid=
+while kill -0 "$runner" 2>/dev/null; do
+  pid=${pid:-$(pgrep -n -f "^$demo " || true)}
+  now=$(( $(date +%s) - start ))
+  if [[ -n $pid ]]; then
+    rss=$(awk '/^VmRSS:/ {print $2}' "/proc/$pid/status" 2>/dev/null || true)
+    [[ -n $rss ]] && echo "$now,$rss" >>"$out/rss.csv"
+    (( now >= seconds )) && kill -TERM "$pid" 2>/dev/null
+  fi
+  sleep 10
+done
+status=0
+wait "$runner" || status=$?
+seconds=$(( $(date +%s) - start ))
+
+frames=$(sed -n 's/^lagoon-demo: \([0-9]*\) frames at.*/\1/p' "$out/demo.log" | tail -1)
+rejected=$(grep -c "^lagoon-demo: script, frame" "$out/demo.log" || true)
+# What would be a fault: a Vulkan or validation error, an exception, a crash, a sanitizer report.
+errors=$(grep -ciE "vulkan error|validation|VUID|terminate called|abort|segmentation|sanitizer" "$out/demo.log" || true)
+awk -F, -v status="$status" -v seconds="$seconds" -v frames="${frames:-0}" -v rejected="$rejected" -v errors="$errors" '
+  NR > 1 { t[++n] = $1; r[n] = $2; if ($2 > peak) peak = $2 }
+  END {
+    if (n < 3) { printf("demo-soak: only %d memory samples; run longer\n", n); exit 1 }
+    w = int(n / 10) + 1; growth = 100 * (r[n] - r[w]) / r[w]
+    printf("demo-soak: %d frames in %d s, exit %d; %d edits rejected by the loader, %d other errors\n",
+           frames, seconds, status, rejected, errors)
+    printf("demo-soak: RSS %.1f MiB at %d s (after warm-up), %.1f MiB at %d s (end), peak %.1f MiB: %+.2f %%\n",
+           r[w] / 1024, t[w], r[n] / 1024, t[n], peak / 1024, growth)
+    ok = status == 0 && errors == 0 && growth < 1
+    print(ok ? "demo-soak: healthy" : "demo-soak: NOT healthy"); exit ok ? 0 : 1
+  }' "$out/rss.csv"
