@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <sstream>
 
 #include "exit_codes.h"
 #include "scene_args.h"
@@ -59,9 +60,8 @@ const cli::CommandSpec& demo_command() {
   return spec;
 }
 
-Result<std::vector<ScriptStep>> read_script(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) return make_error(path + ": cannot read the script (check the path)");
+Result<std::vector<ScriptStep>> parse_script(std::string_view text, const std::string& name) {
+  std::istringstream in{std::string(text)};
   std::vector<ScriptStep> steps;
   std::string line;
   for (int number = 1; std::getline(in, line); ++number) {
@@ -74,7 +74,7 @@ Result<std::vector<ScriptStep>> read_script(const std::string& path) {
     const size_t rest = space == std::string::npos ? space : line.find_first_not_of(" \t", space);
     if (!frame || *frame < 0 || rest == std::string::npos)
       return make_error(
-          path + ":" + std::to_string(number) +
+          name + ":" + std::to_string(number) +
           ": expected 'FRAME path=value' with FRAME a whole number >= 0, e.g. '10 sun.elevation_deg=20'");
     std::string assignment = line.substr(rest);
     while (!assignment.empty() && (assignment.back() == '\r' || assignment.back() == ' '))
@@ -82,6 +82,14 @@ Result<std::vector<ScriptStep>> read_script(const std::string& path) {
     steps.push_back({*frame, assignment});
   }
   return steps;
+}
+
+Result<std::vector<ScriptStep>> read_script(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) return make_error(path + ": cannot read the script (check the path)");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_script(text.str(), path);
 }
 
 Result<DemoOptions> parse_demo_options(std::span<const std::string> args, int& exit_code) {

@@ -4,6 +4,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "args.h"
@@ -37,7 +38,10 @@ const cli::CommandSpec& demo_command();
 // kExitOk as an "error" too.
 Result<DemoOptions> parse_demo_options(std::span<const std::string> args, int& exit_code);
 
-// Reads "FRAME path=value" lines ('#' starts a comment). Errors name the file and line.
+// Parses "FRAME path=value" lines ('#' starts a comment). Errors name `name` (the file) and the line.
+Result<std::vector<ScriptStep>> parse_script(std::string_view text, const std::string& name);
+
+// Reads the file at `path` and parses it with parse_script().
 Result<std::vector<ScriptStep>> read_script(const std::string& path);
 
 }  // namespace lagoon::demo
