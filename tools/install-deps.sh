@@ -10,8 +10,8 @@ packages=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools spirv-tools
   # libraries
   libglfw3-dev libglm-dev libtinygltf-dev libimgui-dev libstb-dev nlohmann-json3-dev
-  # tests and benchmarks
-  libgtest-dev libbenchmark-dev libfftw3-dev
+  # tests and benchmarks; clang-14 with libFuzzer's runtime builds the fuzz targets (tests/fuzz)
+  libgtest-dev libbenchmark-dev libfftw3-dev clang-14 libclang-rt-14-dev
   # headless window tests
   xvfb xauth
 )
