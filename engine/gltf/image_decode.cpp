@@ -1,5 +1,7 @@
 #include "gltf/image_decode.h"
 
+#include "gltf/jpeg_tables.h"
+
 // Declarations only: the stb implementation is compiled into libstb.
 #include <stb_image.h>
 
@@ -26,6 +28,8 @@ Result<Texture> decode_image(std::span<const uint8_t> bytes, const std::string& 
     return make_error(where + ": not a PNG or JPEG image (the only formats glTF 2.0 allows)");
   }
   if (bytes.size() > INT_MAX) return make_error(where + ": the image data is larger than 2 GiB");
+  if (is_jpeg(bytes))
+    if (auto tables = check_jpeg_huffman_tables(bytes, where); !tables) return tables.error();
   const int size = static_cast<int>(bytes.size());
   const std::string cannot =
       where + ": cannot decode the " + (is_png(bytes) ? "PNG" : "JPEG") + " (stb_image: ";
