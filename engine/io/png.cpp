@@ -65,6 +65,13 @@ Result<Image8> read_png(const std::filesystem::path& path) {
   if (bytes.size() > INT_MAX) return make_error("cannot read PNG " + path.string() + ": file is too large");
 
   int w = 0, h = 0, channels_in_file = 0;
+  if (stbi_info_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), static_cast<int>(bytes.size()),
+                            &w, &h, &channels_in_file) &&
+      (uint32_t(w) > kMaxPngSide || uint32_t(h) > kMaxPngSide)) {
+    return make_error("cannot read PNG " + path.string() + ": " + std::to_string(w) + "x" +
+                      std::to_string(h) + " pixels is larger than the limit of " +
+                      std::to_string(kMaxPngSide) + " per side (scale the image down)");
+  }
   std::unique_ptr<stbi_uc, decltype(&stbi_image_free)> pixels(
       stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), static_cast<int>(bytes.size()),
                             &w, &h, &channels_in_file, 4),

@@ -23,8 +23,13 @@ struct Image8 {  // 8-bit RGBA, row-major, top row first
 // not width*height*4. Errors name the path and the OS reason.
 Result<void> write_png(const std::filesystem::path& path, const Image8& image);
 
+// Largest width or height read_png accepts: 16384² RGBA is 1 GiB, and a small compressed file could otherwise
+// claim up to stb's own limit and make it allocate 2 GiB.
+inline constexpr uint32_t kMaxPngSide = 16384;
+
 // Any PNG stb can decode (grey, RGB, palette, 16-bit...) comes back as 8-bit RGBA. Errors name the path:
-// missing, unreadable, not a PNG, corrupt.
+// missing, unreadable, not a PNG, corrupt, larger than kMaxPngSide (checked from the header, before
+// decoding).
 Result<Image8> read_png(const std::filesystem::path& path);
 
 }  // namespace lagoon::io

@@ -212,6 +212,21 @@ TEST(Png, RoundTripPreservesEveryByte) {
   EXPECT_EQ(entries(dir.path()), std::vector<std::string>{"img.png"});
 }
 
+TEST(Png, ASideBeyondTheLimitIsRefusedFromTheHeaderAndTheLimitItselfIsRead) {
+  TempDir dir;
+  ASSERT_TRUE(write_png(dir / "limit.png", random_image(kMaxPngSide, 1, 5)));
+  Result<Image8> at_limit = read_png(dir / "limit.png");
+  ASSERT_TRUE(at_limit) << at_limit.error().message;
+  EXPECT_EQ(at_limit->width, kMaxPngSide);
+
+  ASSERT_TRUE(write_png(dir / "wide.png", random_image(1, kMaxPngSide + 1, 6)));
+  Result<Image8> wide = read_png(dir / "wide.png");
+  ASSERT_FALSE(wide);
+  EXPECT_NE(wide.error().message.find("wide.png: 1x16385 pixels is larger than the limit of 16384 per side"),
+            std::string::npos)
+      << wide.error().message;
+}
+
 TEST(Png, WritesIntoMissingNestedFolder) {
   TempDir dir;
   const fs::path path = dir / "x/y/z/img.png";
