@@ -1,6 +1,7 @@
 #include "gltf/image_decode.h"
 
 #include "gltf/jpeg_tables.h"
+#include "io/png_chunks.h"
 
 // Declarations only: the stb implementation is compiled into libstb.
 #include <stb_image.h>
@@ -30,6 +31,8 @@ Result<Texture> decode_image(std::span<const uint8_t> bytes, const std::string& 
   if (bytes.size() > INT_MAX) return make_error(where + ": the image data is larger than 2 GiB");
   if (is_jpeg(bytes))
     if (auto tables = check_jpeg_huffman_tables(bytes, where); !tables) return tables.error();
+  if (is_png(bytes))
+    if (auto chunks = io::check_png_chunk_lengths(bytes, where); !chunks) return chunks.error();
   const int size = static_cast<int>(bytes.size());
   const std::string cannot =
       where + ": cannot decode the " + (is_png(bytes) ? "PNG" : "JPEG") + " (stb_image: ";

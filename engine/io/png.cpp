@@ -10,6 +10,7 @@
 #include <string>
 
 #include "io/atomic_file.h"
+#include "io/png_chunks.h"
 
 namespace lagoon::io {
 namespace {
@@ -64,6 +65,11 @@ Result<Image8> read_png(const std::filesystem::path& path) {
   }
   if (bytes.size() > INT_MAX) return make_error("cannot read PNG " + path.string() + ": file is too large");
 
+  if (auto chunks =
+          check_png_chunk_lengths(std::span(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size()),
+                                  "cannot read PNG " + path.string());
+      !chunks)
+    return chunks.error();
   int w = 0, h = 0, channels_in_file = 0;
   if (stbi_info_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), static_cast<int>(bytes.size()),
                             &w, &h, &channels_in_file) &&

@@ -851,7 +851,8 @@ TEST(GltfImage, UndecodableImagesAreNamed) {
     std::fill(png.begin() + 8, png.end(), 0x5A);  // signature intact, chunks garbage
     b.doc["images"][0]["bufferView"] = b.view(png);
   }));
-  EXPECT_TRUE(has_all(corrupt, {"images[0] 'checker'", "cannot decode the PNG"}));
+  // 0x5A5A5A5A as a chunk length is refused before stb sees it (io/png_chunks.h).
+  EXPECT_TRUE(has_all(corrupt, {"images[0] 'checker'", "the PNG's chunk at byte 8 declares"}));
   const std::string gif = load_error(write_quad_with(dir, [](Builder& b) {
     const std::string bytes = "GIF89a\x01\x00\x01\x00";
     b.doc["images"][0]["bufferView"] = b.view(bytes.data(), bytes.size());

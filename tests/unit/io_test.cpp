@@ -307,6 +307,23 @@ TEST(Png, TruncatedPngErrorNamesPath) {
   EXPECT_NE(r.error().message.find(path.string()), std::string::npos) << r.error().message;
 }
 
+TEST(Png, AChunkLongerThanTheFileIsRefusedBeforeStbAllocatesIt) {
+  // stb would grow its buffer to the declared 1 GiB (2 GiB after doubling) before finding the data missing.
+  TempDir dir;
+  ASSERT_TRUE(write_png(dir / "full.png", random_image(16, 16, 5)));
+  std::string bytes = read_text(dir / "full.png");
+  const size_t idat = bytes.find("IDAT");
+  ASSERT_NE(idat, std::string::npos);
+  bytes.replace(idat - 4, 4, std::string("\x40\x00\x00\x00", 4));
+  write_text(dir / "long.png", bytes);
+  Result<Image8> r = read_png(dir / "long.png");
+  ASSERT_FALSE(r);
+  EXPECT_NE(r.error().message.find("long.png: the PNG's chunk at byte " + std::to_string(idat - 4) +
+                                   " declares 1073741824 bytes, but only"),
+            std::string::npos)
+      << r.error().message;
+}
+
 TEST(Png, InconsistentImageIsRejectedAndNothingWritten) {
   TempDir dir;
   Image8 bad{4, 4, std::vector<uint8_t>(10)};
