@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <string>
 
-#include "vk/result.h"
+#include "core/result.h"
 
 namespace lagoon::cli {
 

@@ -13,8 +13,8 @@
 #include <string_view>
 #include <vector>
 
+#include "core/result.h"
 #include "optics/spectrum.h"
-#include "vk/result.h"
 
 namespace lagoon::optics {
 

@@ -3,8 +3,8 @@
 // ε = χ + σ, between the surface (τ = 0) and the bottom (τ0 = εh). Closed form derived in four_flow.cpp.
 #pragma once
 
+#include "core/result.h"
 #include "optics/surface.h"
-#include "vk/result.h"
 
 namespace lagoon::optics {
 

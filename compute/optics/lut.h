@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
+#include "core/result.h"
 #include "optics/sky.h"
 #include "optics/spectrum.h"
 #include "optics/water_params.h"
 #include "optics/water_types.h"
-#include "vk/result.h"
 
 namespace lagoon::optics {
 

@@ -21,8 +21,8 @@
 #include <string>
 #include <vector>
 
+#include "core/result.h"
 #include "optics/spectrum.h"
-#include "vk/result.h"
 
 namespace lagoon::optics {
 

@@ -4,7 +4,7 @@
 #include <span>
 #include <string_view>
 
-#include "vk/result.h"
+#include "core/result.h"
 
 namespace lagoon::gltf::detail {
 

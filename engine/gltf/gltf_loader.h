@@ -7,8 +7,8 @@
 #include <cstdint>
 #include <filesystem>
 
+#include "core/result.h"
 #include "gltf/model.h"
-#include "vk/result.h"
 
 namespace lagoon::gltf {
 

@@ -4,8 +4,8 @@
 #include <span>
 #include <string>
 
+#include "core/result.h"
 #include "gltf/model.h"
-#include "vk/result.h"
 
 namespace lagoon::gltf::detail {
 

@@ -7,7 +7,7 @@
 #include <span>
 #include <string>
 
-#include "vk/result.h"
+#include "core/result.h"
 
 namespace lagoon::gltf::detail {
 

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "core/result.h"
 #include "gltf/model.h"
-#include "vk/result.h"
 
 namespace lagoon::gltf::detail {
 

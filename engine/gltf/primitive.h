@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
+#include "core/result.h"
 #include "gltf/accessor.h"
 #include "gltf/model.h"
-#include "vk/result.h"
 
 namespace lagoon::gltf::detail {
 

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "vk/result.h"
+#include "core/result.h"
 
 namespace lagoon::gltf::detail {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-#include "vk/result.h"
+#include "core/result.h"
 
 namespace lagoon::gltf::detail {
 

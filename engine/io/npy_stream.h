@@ -9,8 +9,8 @@
 #include <span>
 #include <vector>
 
+#include "core/result.h"
 #include "io/atomic_file.h"
-#include "vk/result.h"
 
 namespace lagoon::io {
 

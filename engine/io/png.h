@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "vk/result.h"
+#include "core/result.h"
 
 namespace lagoon::io {
 

@@ -6,7 +6,7 @@
 #include <span>
 #include <string>
 
-#include "vk/result.h"
+#include "core/result.h"
 
 namespace lagoon::io {
 

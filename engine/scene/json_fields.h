@@ -21,7 +21,7 @@
 #include <utility>
 #include <vector>
 
-#include "vk/result.h"
+#include "core/result.h"
 
 namespace lagoon::scene {
 

@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include "vk/result.h"
+#include "core/result.h"
 
 namespace lagoon::scene {
 

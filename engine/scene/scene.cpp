@@ -15,6 +15,7 @@
 #include "scene/ocean_block.h"
 #include "scene/water_block.h"
 #include "scene/world_blocks.h"
+#include "shared/limits.h"
 
 namespace lagoon::scene {
 namespace {
@@ -86,7 +87,8 @@ void read_scene(ObjectReader& r, Scene& s) {
   r.block("seafloor", s.seafloor, read_seafloor, "The sea floor: none, a procedural sloping bay, or a mesh.");
   r.array("objects", s.objects, 0, 256, read_object,
           "glTF models placed in the world (boats, buoys, rocks), above or below the water.");
-  r.array("lights", s.lights, 0, 64, read_light, "Point lights, in addition to the sun and sky.");
+  r.array("lights", s.lights, 0, LAGOON_MAX_LIGHTS, read_light,
+          "Point lights, in addition to the sun and sky.");
   r.block("render", s.render, read_render, "Output image settings and effects.");
   r.number("time_s", s.time_s, Bounds::between(0, 86400), "s",
            "Simulation time of the rendered frame (at most one day: wave phases are 32-bit floats).");

@@ -9,11 +9,11 @@
 #include <string>
 #include <vector>
 
+#include "core/result.h"
 #include "ocean/ocean_params.h"
 #include "optics/water_params.h"
 #include "scene/json_fields.h"
 #include "scene/overrides.h"
-#include "vk/result.h"
 
 namespace lagoon::scene {
 
@@ -39,19 +39,24 @@ struct RenderEffects {
   bool foam = true;
 };
 
+// Scene brightness to display (render.tone_map).
+enum class ToneMap { Belyaev, Clamp };  // seed 000's eq. 18; exposure and clamp only
+
 struct RenderSettings {
   uint32_t width = 1280;
   uint32_t height = 720;
   float exposure = 1.f;
   float gamma = 2.2f;
-  std::string tone_map = "belyaev";  // "belyaev": seed 000's eq. 18; "clamp": exposure and clamp only
+  ToneMap tone_map = ToneMap::Belyaev;  // "belyaev" / "clamp" in the file
   RenderEffects effects;
 };
 
 // The sea floor: a procedural bay (a sandy floor that slopes from `depth_near_m` at `near` to
 // `depth_far_m` at `far`, along the line between them; flat beyond) or a glTF mesh.
+enum class SeafloorType { None, Slope, Gltf };  // "none" (open ocean), "slope", "gltf" in the file
+
 struct Seafloor {
-  std::string type = "none";    // "none" (open ocean), "slope", "gltf"
+  SeafloorType type = SeafloorType::None;
   float depth_near_m = 0.5f;    // slope: depth below the mean water level at `near`
   float depth_far_m = 30.f;     // slope: depth at `far` and beyond
   glm::vec2 near{0.f, 0.f};     // slope: (x, z) of the shallow end

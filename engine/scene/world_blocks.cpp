@@ -7,8 +7,6 @@
 namespace lagoon::scene {
 namespace {
 
-using Names = std::vector<std::pair<std::string, std::string>>;
-
 void read_effects(ObjectReader& r, RenderEffects& e) {
   r.flag("reflection", e.reflection,
          "Planar reflection of the objects above the water; false = the water reflects the sky alone.");
@@ -21,7 +19,9 @@ void read_effects(ObjectReader& r, RenderEffects& e) {
 }  // namespace
 
 void read_seafloor(ObjectReader& r, Seafloor& f) {
-  r.choice("type", f.type, Names{{"none", "none"}, {"slope", "slope"}, {"gltf", "gltf"}},
+  r.choice("type", f.type,
+           std::vector<std::pair<std::string, SeafloorType>>{
+               {"none", SeafloorType::None}, {"slope", SeafloorType::Slope}, {"gltf", SeafloorType::Gltf}},
            "\"none\" = open ocean with no visible floor; \"slope\" = a procedural sandy bay (see Seafloor "
            "below); \"gltf\" = a mesh from `file`.");
   r.number("depth_near_m", f.depth_near_m, Bounds::between(0, 11000), "m",
@@ -48,9 +48,9 @@ void read_seafloor(ObjectReader& r, Seafloor& f) {
          "Linear floor colour; multiplies the texture when there is one.");
   r.text("file", f.file, "gltf: the floor mesh (.gltf or .glb), relative to the scene file's folder.");
   // Both directions are checked so a file never carries a mesh that is silently ignored.
-  r.rule("file", f.type != "gltf" || !f.file.empty(), "a file name when type is \"gltf\"",
+  r.rule("file", f.type != SeafloorType::Gltf || !f.file.empty(), "a file name when type is \"gltf\"",
          "type \"gltf\" reads the floor from a mesh; give its path, e.g. \"file\": \"bay.glb\"");
-  r.rule("file", f.type != "slope" || f.file.empty(), "left out when type is \"slope\"",
+  r.rule("file", f.type != SeafloorType::Slope || f.file.empty(), "left out when type is \"slope\"",
          "got " + describe_value(nlohmann::json(f.file)) +
              "; a slope is generated, not loaded: remove `file`, or set type \"gltf\" to use the mesh");
 }
@@ -84,9 +84,11 @@ void read_render(ObjectReader& r, RenderSettings& s) {
   r.number("exposure", s.exposure, Bounds::between(0.01, 100), "",
            "Linear multiplier on scene brightness before display encoding; 2 is one stop brighter.");
   r.number("gamma", s.gamma, Bounds::between(1, 3), "", "Display gamma used to encode the output.");
-  r.choice("tone_map", s.tone_map, Names{{"belyaev", "belyaev"}, {"clamp", "clamp"}},
-           "Scene brightness to display: \"belyaev\" = Belyaev's eq. 18 (Tumblin-Rushmeier with white-point "
-           "compression, docs/optics.md); \"clamp\" = exposure, then each channel clipped at 1.");
+  r.choice(
+      "tone_map", s.tone_map,
+      std::vector<std::pair<std::string, ToneMap>>{{"belyaev", ToneMap::Belyaev}, {"clamp", ToneMap::Clamp}},
+      "Scene brightness to display: \"belyaev\" = Belyaev's eq. 18 (Tumblin-Rushmeier with white-point "
+      "compression, docs/optics.md); \"clamp\" = exposure, then each channel clipped at 1.");
   r.block("effects", s.effects, read_effects, "Parts of the image that can be switched off.");
 }
 

@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <string>
 
+#include "core/result.h"
 #include "vk/handle.h"
-#include "vk/result.h"
 
 namespace lagoon::vk {
 

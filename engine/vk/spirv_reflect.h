@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "vk/result.h"
+#include "core/result.h"
 
 namespace lagoon::vk {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "vk/result.h"
+#include "core/result.h"
 
 struct GLFWwindow;
 

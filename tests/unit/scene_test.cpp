@@ -799,7 +799,7 @@ TEST(SceneWorld, AbsentBlocksGiveDefaults) {
   Result<Scene> scene = parse_scene(json::object(), kSource);
   ASSERT_TRUE(scene.ok()) << scene.error().message;
   const Seafloor& f = scene->seafloor;
-  EXPECT_EQ(f.type, "none");
+  EXPECT_EQ(f.type, SeafloorType::None);
   EXPECT_FLOAT_EQ(f.depth_near_m, 0.5f);
   EXPECT_FLOAT_EQ(f.depth_far_m, 30.f);
   EXPECT_EQ(f.near, glm::vec2(0.f, 0.f));
@@ -811,7 +811,7 @@ TEST(SceneWorld, AbsentBlocksGiveDefaults) {
   EXPECT_EQ(f.file, "");
   EXPECT_TRUE(scene->objects.empty());
   EXPECT_TRUE(scene->lights.empty());
-  EXPECT_EQ(scene->render.tone_map, "belyaev");
+  EXPECT_EQ(scene->render.tone_map, ToneMap::Belyaev);
   EXPECT_TRUE(scene->render.effects.reflection);
   EXPECT_TRUE(scene->render.effects.refraction);
   EXPECT_TRUE(scene->render.effects.foam);
@@ -832,7 +832,7 @@ TEST(SceneWorld, ReadsEveryField) {
                                     kSource);
   ASSERT_TRUE(scene.ok()) << scene.error().message;
   const Seafloor& f = scene->seafloor;
-  EXPECT_EQ(f.type, "slope");
+  EXPECT_EQ(f.type, SeafloorType::Slope);
   EXPECT_FLOAT_EQ(f.depth_near_m, 0.f);
   EXPECT_FLOAT_EQ(f.depth_far_m, 11000.f);
   EXPECT_EQ(f.near, glm::vec2(-5.f, 10.5f));
@@ -860,7 +860,7 @@ TEST(SceneWorld, ReadsEveryField) {
   EXPECT_EQ(l.colour, glm::vec3(0.f, 50.f, 100.f));
   EXPECT_FLOAT_EQ(l.intensity, 1e6f);
   EXPECT_FLOAT_EQ(l.range_m, 1e5f);
-  EXPECT_EQ(scene->render.tone_map, "clamp");
+  EXPECT_EQ(scene->render.tone_map, ToneMap::Clamp);
   EXPECT_FALSE(scene->render.effects.reflection);
   EXPECT_FALSE(scene->render.effects.refraction);
   EXPECT_FALSE(scene->render.effects.foam);
@@ -871,7 +871,7 @@ TEST(SceneWorld, GltfSeafloorAndDefaultElements) {
       json::parse(R"({"seafloor": {"type": "gltf", "file": "bay.glb"}, "objects": [], "lights": [{}, {}]})"),
       kSource);
   ASSERT_TRUE(scene.ok()) << scene.error().message;
-  EXPECT_EQ(scene->seafloor.type, "gltf");
+  EXPECT_EQ(scene->seafloor.type, scene::SeafloorType::Gltf);
   EXPECT_EQ(scene->seafloor.file, "bay.glb");
   EXPECT_TRUE(scene->objects.empty());
   ASSERT_EQ(scene->lights.size(), 2u);
@@ -1156,14 +1156,14 @@ TEST_F(SceneFileTest, OverridesWorldBlocks) {
                                               "camera.look_at=[0,0,100]"};
   Result<Scene> scene = load_scene(path, overrides);
   ASSERT_TRUE(scene.ok()) << scene.error().message;
-  EXPECT_EQ(scene->seafloor.type, "slope");
+  EXPECT_EQ(scene->seafloor.type, scene::SeafloorType::Slope);
   EXPECT_EQ(scene->seafloor.file, "");
   EXPECT_EQ(scene->seafloor.near, glm::vec2(10.f, 20.f));
   ASSERT_EQ(scene->objects.size(), 1u);  // the override replaces the file's list
   EXPECT_EQ(scene->objects[0].file, (dir_ / "a.gltf").string());
   ASSERT_EQ(scene->lights.size(), 1u);
   EXPECT_FLOAT_EQ(scene->lights[0].intensity, 5.f);
-  EXPECT_EQ(scene->render.tone_map, "clamp");
+  EXPECT_EQ(scene->render.tone_map, ToneMap::Clamp);
   EXPECT_FALSE(scene->render.effects.foam);
   EXPECT_TRUE(scene->render.effects.reflection);
 }

@@ -1,6 +1,7 @@
-// Result<T>: the return type of set-up that can fail for a reason the user can act on (missing package,
-// bad file, unsupported device). The message says what failed and how to fix it. "Cannot happen" Vulkan
-// failures go through VK_CHECK instead (check.h).
+// Result<T>: the return type of work that can fail for a reason the user can act on (missing package, bad
+// file, unsupported device, parameters out of range). The message says what failed and how to fix it.
+// engine/core depends on nothing, so plain-C++ modules (compute/ocean, compute/optics) use it without
+// Vulkan. "Cannot happen" Vulkan failures go through VK_CHECK instead (vk/check.h).
 #pragma once
 #include <string>
 #include <utility>
