@@ -201,7 +201,9 @@ int run_export(const ParsedArgs& args) {
   InterruptGuard interrupt;
   auto staged = StagedOutput::create(out);
   if (!staged) return fail(staged.error().message);
-  ocean::GpuOcean gpu(*ctx, scene->ocean);
+  auto gpu_ocean = ocean::GpuOcean::create(*ctx, scene->ocean);
+  if (!gpu_ocean) return fail(gpu_ocean.error().message);
+  ocean::GpuOcean& gpu = **gpu_ocean;
   std::vector<CascadeStreams> streams;
   for (uint32_t c = 0; c < gpu.cascade_count(); ++c) {
     auto s = open_streams(*staged, c, size_t(frames), gpu.spectra()[c].resolution);

@@ -1,5 +1,7 @@
 #include "fft/gpu_fft.h"
 
+#include <algorithm>
+
 #include "fft/fft_plan.h"
 #include "lagoon_shaders/shaders.h"
 #include "shared/fft.h"
@@ -12,12 +14,18 @@ namespace lagoon::fft {
 std::vector<vk::SpecConstant> GpuFft2d::specialisation(uint32_t n, uint32_t ns, uint32_t radix, bool columns,
                                                        bool inverse, uint32_t fields) {
   // 8 x 8 workgroups: neighbouring lanes read neighbouring elements in both directions (see fft_pass.comp).
-  return {{0, 8}, {1, 8},  {2, radix}, {3, columns ? 1u : 0u}, {4, inverse ? 1u : 0u},
-          {5, n}, {6, ns}, {8, fields}};
+  return {{LAGOON_FFT_SPEC_GROUP_X, 8},
+          {LAGOON_FFT_SPEC_GROUP_Y, 8},
+          {LAGOON_FFT_SPEC_RADIX, radix},
+          {LAGOON_FFT_SPEC_COLUMNS, columns ? 1u : 0u},
+          {LAGOON_FFT_SPEC_INVERSE, inverse ? 1u : 0u},
+          {LAGOON_FFT_SPEC_N, n},
+          {LAGOON_FFT_SPEC_NS, ns},
+          {LAGOON_FFT_SPEC_FIELDS, fields}};
 }
 
-GpuFft2d::GpuFft2d(vk::Context& ctx, uint32_t n, bool inverse, uint32_t fields)
-    : ctx_(ctx), n_(n), inverse_(inverse), fields_(fields), radices_(stockham_radices(n)) {
+GpuFft2d::GpuFft2d(vk::Context& ctx, uint32_t n, bool inverse, uint32_t fields, Ends ends)
+    : ctx_(ctx), n_(n), inverse_(inverse), fields_(fields), ends_(ends), radices_(stockham_radices(n)) {
   if (!is_supported_size(n))
     vk::throw_usage_error("GpuFft2d: size " + std::to_string(n) + " is not a power of two in [64, 1024]");
   const std::vector<float> table = twiddle_table(n);
@@ -27,8 +35,12 @@ GpuFft2d::GpuFft2d(vk::Context& ctx, uint32_t n, bool inverse, uint32_t fields)
   vk::upload_buffer(ctx, twiddles_, vk::as_bytes_of(table));
   for (size_t i = 0; i < pass_count(); ++i) {
     const Pass p = pass(i);
-    pipelines_.push_back(vk::ComputePipeline::create(
-        ctx, shaders::fft_fft_pass_comp, specialisation(n, p.ns, p.radix, p.columns, inverse, fields)));
+    // The caller's fused passes replace the first and the last: compiling them would be wasted work.
+    const bool fused = ends == Ends::Fused && (i == 0 || i + 1 == pass_count());
+    pipelines_.push_back(
+        fused ? vk::ComputePipeline{}
+              : vk::ComputePipeline::create(ctx, shaders::fft_fft_pass_comp,
+                                            specialisation(n, p.ns, p.radix, p.columns, inverse, fields)));
   }
 }
 
@@ -43,6 +55,9 @@ void GpuFft2d::record_pass(VkCommandBuffer cmd, size_t index, const vk::Buffer& 
                            uint32_t batches) const {
   const Pass p = pass(index);
   const vk::ComputePipeline& pipeline = pipelines_.at(index);
+  if (pipeline.pipeline() == VK_NULL_HANDLE)
+    vk::throw_usage_error("GpuFft2d: pass " + std::to_string(index) +
+                          " is fused by the caller (Ends::Fused)");
   if (batches % fields_ != 0)
     vk::throw_usage_error("GpuFft2d: batches must be a multiple of the fields per group");
   const uint32_t groups = batches / fields_;
@@ -56,8 +71,15 @@ void GpuFft2d::record_pass(VkCommandBuffer cmd, size_t index, const vk::Buffer& 
   vk::memory_barrier(cmd, vk::access::kComputeReadWrite, vk::access::kComputeReadWrite);
 }
 
+size_t GpuFft2d::pipeline_count() const {
+  return size_t(std::count_if(pipelines_.begin(), pipelines_.end(),
+                              [](const vk::ComputePipeline& p) { return p.pipeline() != VK_NULL_HANDLE; }));
+}
+
 const vk::Buffer& GpuFft2d::record(VkCommandBuffer cmd, const vk::Buffer& a, const vk::Buffer& b,
                                    uint32_t batches) const {
+  if (ends_ == Ends::Fused)
+    vk::throw_usage_error("GpuFft2d::record: the first and last passes are the caller's");
   const VkDeviceSize bytes = VkDeviceSize(batches) * n_ * n_ * 8;
   if (a.size() < bytes || b.size() < bytes) vk::throw_usage_error("GpuFft2d::record: buffers too small");
   const vk::Buffer* src = &a;

@@ -14,7 +14,11 @@ class GpuFft2d {
   // n: supported size (fft_plan.h); inverse: exp(+2πi kn/N) without 1/N scaling (as FFTW_BACKWARD).
   // fields: arrays per batch group that one invocation transforms together, sharing its twiddles (the
   // ocean's 4 packed fields); record()'s `batches` must then be a multiple of it.
-  GpuFft2d(vk::Context& ctx, uint32_t n, bool inverse, uint32_t fields = 1);
+  // Ends::Fused: the caller records the first and last passes itself (the ocean fuses evolution and
+  // assembly into them), so their pipelines are not built and record() is unavailable; record_pass() the
+  // rest.
+  enum class Ends { Own, Fused };
+  GpuFft2d(vk::Context& ctx, uint32_t n, bool inverse, uint32_t fields = 1, Ends ends = Ends::Own);
 
   // Transforms `batches` arrays of vec2 in `a` (row-major, array after array) using `b` as scratch. Returns
   // the buffer holding the result (a when the pass count is even, which it is for every supported n).
@@ -35,6 +39,7 @@ class GpuFft2d {
                    uint32_t batches) const;
 
   uint32_t size() const { return n_; }
+  size_t pipeline_count() const;  // the pipelines built: pass_count(), or 2 fewer with Ends::Fused
   const vk::Buffer& twiddles() const { return twiddles_; }
 
   // The pipeline of one pass: shared with the ocean's fused passes through the same specialisation scheme.
@@ -46,6 +51,7 @@ class GpuFft2d {
   uint32_t n_;
   bool inverse_;
   uint32_t fields_;
+  Ends ends_;
   std::vector<uint32_t> radices_;
   vk::Buffer twiddles_;
   std::vector<vk::ComputePipeline> pipelines_;  // one per pass

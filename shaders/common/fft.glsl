@@ -2,17 +2,18 @@
 // One invocation computes one radix-R butterfly of one line: it reads R elements spaced N/R apart, applies
 // the twiddles W^(r·(j mod Ns)·N/(Ns·R)) (table of the N roots of unity), transforms them in registers and
 // writes them Ns apart (autosort: no bit reversal pass). log_R(N) passes make a length-N transform.
-// Specialisation: constant_id 2 = FFT_RADIX (2, 4, 8 or 16), 4 = FFT_INVERSE (exp(+2πi kn/N), unnormalised),
-// 5 = FFT_N (length), 6 = FFT_NS (this pass's Stockham stride). All compile-time constants: the loops unroll,
+// Specialisation (IDs in shared/fft.h): FFT_RADIX (2, 4, 8 or 16), FFT_INVERSE (exp(+2πi kn/N), unnormalised),
+// FFT_N (length), FFT_NS (this pass's Stockham stride). All compile-time constants: the loops unroll,
 // the in-register twiddles fold, and index arithmetic becomes shifts and masks (lavapipe has no vector
 // integer division: a division by a run-time value costs a scalar loop over the SIMD lanes).
 #ifndef LAGOON_COMMON_FFT_GLSL
 #define LAGOON_COMMON_FFT_GLSL
+#include "shared/fft.h"
 
-layout(constant_id = 2) const int FFT_RADIX = 16;
-layout(constant_id = 4) const bool FFT_INVERSE = true;
-layout(constant_id = 5) const int FFT_N = 256;
-layout(constant_id = 6) const int FFT_NS = 1;
+layout(constant_id = LAGOON_FFT_SPEC_RADIX) const int FFT_RADIX = 16;
+layout(constant_id = LAGOON_FFT_SPEC_INVERSE) const bool FFT_INVERSE = true;
+layout(constant_id = LAGOON_FFT_SPEC_N) const int FFT_N = 256;
+layout(constant_id = LAGOON_FFT_SPEC_NS) const int FFT_NS = 1;
 const float FFT_SIGN = FFT_INVERSE ? 1.0 : -1.0;
 
 vec2 cmul(vec2 a, vec2 b) { return vec2(a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x); }

@@ -3,12 +3,13 @@
 // radix 16 (plus one of radix 2, 4 or 8 when log2 N is not a multiple of 4); between stages the values are
 // exchanged through shared memory with a barrier, so a 2-D transform is one dispatch per axis: for
 // N = 256 two stages and one barrier. In a stage of radix R a work item does 16/R butterflies.
-// Specialisation: 4 = FFT_INVERSE, 5 = FFT_N (64..1024). All index arithmetic folds to shifts and masks.
+// Specialisation (IDs in shared/fft.h): FFT_INVERSE, FFT_N (64..1024). All index arithmetic folds to shifts and masks.
 #ifndef LAGOON_COMMON_FFT_LINE_GLSL
 #define LAGOON_COMMON_FFT_LINE_GLSL
+#include "shared/fft.h"
 
-layout(constant_id = 4) const bool FFT_INVERSE = true;
-layout(constant_id = 5) const int FFT_N = 256;
+layout(constant_id = LAGOON_FFT_SPEC_INVERSE) const bool FFT_INVERSE = true;
+layout(constant_id = LAGOON_FFT_SPEC_N) const int FFT_N = 256;
 const float FFT_SIGN = FFT_INVERSE ? 1.0 : -1.0;
 const int FFT_WORK = FFT_N / 16;  // work items per line
 const int FFT_LOG2N = FFT_N == 64 ? 6 : FFT_N == 128 ? 7 : FFT_N == 256 ? 8 : FFT_N == 512 ? 9 : 10;

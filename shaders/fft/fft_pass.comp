@@ -7,9 +7,9 @@
 #include "shared/fft.h"
 #include "common/fft.glsl"
 
-layout(local_size_x_id = 0, local_size_y_id = 1) in;
-layout(constant_id = 3) const bool FFT_COLUMNS = false;
-layout(constant_id = 8) const int FFT_FIELDS = 1;  // arrays per batch group (4 for the ocean's packed fields)
+layout(local_size_x_id = LAGOON_FFT_SPEC_GROUP_X, local_size_y_id = LAGOON_FFT_SPEC_GROUP_Y) in;
+layout(constant_id = LAGOON_FFT_SPEC_COLUMNS) const bool FFT_COLUMNS = false;
+layout(constant_id = LAGOON_FFT_SPEC_FIELDS) const int FFT_FIELDS = 1;  // arrays per batch group (4 for the ocean's packed fields)
 
 layout(std430, binding = 0) readonly buffer Src { vec4 src[]; };  // complex pairs
 layout(std430, binding = 1) writeonly buffer Dst { vec4 dst[]; };

@@ -9,8 +9,8 @@
 #include "shared/ocean.h"
 #include "common/fft_line.glsl"
 
-layout(local_size_x_id = 0, local_size_y_id = 1) in;
-layout(constant_id = 7) const int FFT_LINES = 4;
+layout(local_size_x_id = LAGOON_FFT_SPEC_GROUP_X, local_size_y_id = LAGOON_FFT_SPEC_GROUP_Y) in;
+layout(constant_id = LAGOON_FFT_SPEC_LINES) const int FFT_LINES = 4;
 
 layout(std430, binding = 0) readonly buffer Src { vec2 src[]; };
 layout(std430, binding = 1) readonly buffer Twiddles { vec2 twiddles[]; };
@@ -20,6 +20,7 @@ layout(rgba32f, binding = 3) writeonly uniform image2DArray normal_jacobian;  //
 // Jacobian; foam is repeated here so that the surface shader needs this texture and the normals only.
 layout(rgba16f, binding = 4) writeonly uniform image2DArray jacobian_terms;
 layout(push_constant) uniform Push { OceanPush p; };
+#include "common/ocean_assemble.glsl"
 
 shared vec2 exchange[FFT_LINES * 4 * FFT_N];  // [line][field][element]
 
@@ -77,21 +78,12 @@ void main() {
     }
   }
 
-  float lambda = p.choppiness;
-  float decay = exp(-p.foam_decay_per_s * p.dt_s);
   int ns = fft_stage_stride(FFT_STAGES - 1);
   for (int b = 0; b < 16 / radix; ++b) {
     for (int r = 0; r < radix; ++r) {
       int q = b * radix + r;
       ivec3 texel = ivec3(column, fft_write_index(fft_butterfly(w, b, radix), r, radix, ns), cascade);
-      float h = f0[q].y, sx = f1[q].y, sz = f2[q].x;
-      float jxx = 1.0 + lambda * f2[q].y, jzz = 1.0 + lambda * f3[q].x, jxz = lambda * f3[q].y;
-      float jacobian = jxx * jzz - jxz * jxz;
-      float previous = p.reset_foam != 0u ? 0.0 : imageLoad(displacement, texel).w;
-      float foam = max(previous * decay, clamp(p.foam_threshold - jacobian, 0.0, 1.0));
-      imageStore(displacement, texel, vec4(lambda * f0[q].x, h, lambda * f1[q].x, foam));
-      imageStore(normal_jacobian, texel, vec4(normalize(vec3(-sx, 1.0, -sz)), jacobian));
-      imageStore(jacobian_terms, texel, vec4(jxx - 1.0, jzz - 1.0, jxz, foam));
+      ocean_assemble(texel, f0[q], f1[q], f2[q], f3[q]);
     }
   }
 }

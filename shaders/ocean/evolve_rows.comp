@@ -1,16 +1,14 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 // Evolves the spectrum to time t and transforms it along rows (x), all stages, for the four packed fields
-// of every cascade: one pass over memory. With h̃(k,t) = h0(k)e^{-iωt} + conj(h0(-k))e^{+iωt} (waves
-// travel along +k) the packed complex fields are, each the spectrum of real_part + i·imag_part:
-//   F0 = Dx + i·h,  F1 = Dz + i·∂h/∂x,  F2 = ∂h/∂z + i·∂Dx/∂x,  F3 = ∂Dz/∂z + i·∂Dx/∂z
-// with D̃ = i(k/|k|)h̃ (crests sharpen for x' = x + λD) and ∂/∂x ↔ i·kx.
+// of every cascade (common/ocean_fields.glsl): one pass over memory.
 // Workgroup: (FFT_N/16 work items) x (FFT_LINES rows); groups (1, N / FFT_LINES, cascades).
 #include "shared/ocean.h"
 #include "common/fft_line.glsl"
+#include "common/ocean_fields.glsl"
 
-layout(local_size_x_id = 0, local_size_y_id = 1) in;
-layout(constant_id = 7) const int FFT_LINES = 4;
+layout(local_size_x_id = LAGOON_FFT_SPEC_GROUP_X, local_size_y_id = LAGOON_FFT_SPEC_GROUP_Y) in;
+layout(constant_id = LAGOON_FFT_SPEC_LINES) const int FFT_LINES = 4;
 
 layout(std430, binding = 0) readonly buffer Spectrum { vec4 h0_pair[]; };  // (h0(k), conj(h0(-k))) per k
 layout(std430, binding = 1) readonly buffer Omega { float omega[]; };      // ω(k), rad/s
@@ -20,15 +18,6 @@ layout(push_constant) uniform Push { OceanPush p; };
 
 shared vec2 exchange[FFT_LINES * 4 * FFT_N];  // [line][field][element]
 
-// ω·t reduced to [-π, π] keeping the low bits of the product (exact where fma is fused).
-float phase(float w, float t) {
-  float hi = w * t;
-  float lo = fma(w, t, -hi);
-  float q = round(hi * 0.15915494309189535);
-  float reduced = fma(-q, 6.2831854820251465, hi);       // 2π rounded to float
-  return fma(-q, -1.7484556000744487e-7, reduced) + lo;  // 2π - float(2π)
-}
-
 void main() {
   const int n = FFT_N;
   int w = int(gl_LocalInvocationID.x);
@@ -36,7 +25,7 @@ void main() {
   int row = int(gl_WorkGroupID.y) * FFT_LINES + line;
   int cascade = int(gl_WorkGroupID.z);
   float dk = 6.283185307179586 / p.patch_size_m[cascade];
-  float kz = dk * float(row < n / 2 ? row : row - n);
+  float kz = ocean_wavenumber(row, n, dk);
 
   vec2 f0[16], f1[16], f2[16], f3[16];
   int radix = fft_stage_radix(0);
@@ -44,23 +33,12 @@ void main() {
     for (int r = 0; r < radix; ++r) {
       int col = fft_read_index(fft_butterfly(w, b, radix), r, radix);
       int index = (cascade * n + row) * n + col;
-      vec4 pair = h0_pair[index];
-      float a = phase(omega[index], p.time_s);
-      vec2 e = vec2(cos(a), sin(a));
-      vec2 h = cmul(pair.xy, cconj(e)) + cmul(pair.zw, e);
-      float kx = dk * float(col < n / 2 ? col : col - n);
-      float k = sqrt(kx * kx + kz * kz);
-      float inv_k = k > 0.0 ? 1.0 / k : 0.0;
-      vec2 ih = vec2(-h.y, h.x);  // i·h̃
-      vec2 dx = ih * (kx * inv_k), dz = ih * (kz * inv_k);
-      vec2 sx = ih * kx, sz = ih * kz;
-      vec2 dxdx = h * (-kx * kx * inv_k), dzdz = h * (-kz * kz * inv_k), dxdz = h * (-kx * kz * inv_k);
+      OceanPacked o = ocean_pack(h0_pair[index], omega[index], p.time_s, ocean_wavenumber(col, n, dk), kz);
       int q = b * radix + r;
-      // A + i·B for spectra A, B: (A.x - B.y, A.y + B.x).
-      f0[q] = vec2(dx.x - h.y, dx.y + h.x);
-      f1[q] = vec2(dz.x - sx.y, dz.y + sx.x);
-      f2[q] = vec2(sz.x - dxdx.y, sz.y + dxdx.x);
-      f3[q] = vec2(dzdz.x - dxdz.y, dzdz.y + dxdz.x);
+      f0[q] = o.f0;
+      f1[q] = o.f1;
+      f2[q] = o.f2;
+      f3[q] = o.f3;
     }
   }
   int base = line * 4 * n;

@@ -7,7 +7,7 @@
 #include "shared/ocean.h"
 #include "common/fft.glsl"
 
-layout(local_size_x_id = 0, local_size_y_id = 1) in;
+layout(local_size_x_id = LAGOON_FFT_SPEC_GROUP_X, local_size_y_id = LAGOON_FFT_SPEC_GROUP_Y) in;
 
 layout(std430, binding = 0) readonly buffer Src { vec4 src[]; };  // complex pairs
 layout(std430, binding = 1) readonly buffer Twiddles { vec2 twiddles[]; };
@@ -17,6 +17,7 @@ layout(rgba32f, binding = 3) writeonly uniform image2DArray normal_jacobian;  //
 // Jacobian; foam is repeated here so that the surface shader needs this texture and the normals only.
 layout(rgba16f, binding = 4) writeonly uniform image2DArray jacobian_terms;
 layout(push_constant) uniform Push { OceanPush p; };
+#include "common/ocean_assemble.glsl"
 
 // One invocation: the same butterfly of two neighbouring columns (loads move two complex values).
 void main() {
@@ -49,22 +50,9 @@ void main() {
   fft_radix(b2);
   fft_radix(b3);
 
-  float lambda = p.choppiness;
-  float decay = exp(-p.foam_decay_per_s * p.dt_s);
   for (int r = 0; r < FFT_RADIX; ++r) {
     int z = fft_dest_index(j, r);
-    for (int c = 0; c < 2; ++c) {
-      vec2 f0 = c == 0 ? a0[r] : b0[r], f1 = c == 0 ? a1[r] : b1[r];
-      vec2 f2 = c == 0 ? a2[r] : b2[r], f3 = c == 0 ? a3[r] : b3[r];
-      ivec3 texel = ivec3(column + c, z, cascade);
-      float h = f0.y, sx = f1.y, sz = f2.x;
-      float jxx = 1.0 + lambda * f2.y, jzz = 1.0 + lambda * f3.x, jxz = lambda * f3.y;
-      float jacobian = jxx * jzz - jxz * jxz;
-      float previous = p.reset_foam != 0u ? 0.0 : imageLoad(displacement, texel).w;
-      float foam = max(previous * decay, clamp(p.foam_threshold - jacobian, 0.0, 1.0));
-      imageStore(displacement, texel, vec4(lambda * f0.x, h, lambda * f1.x, foam));
-      imageStore(normal_jacobian, texel, vec4(normalize(vec3(-sx, 1.0, -sz)), jacobian));
-      imageStore(jacobian_terms, texel, vec4(jxx - 1.0, jzz - 1.0, jxz, foam));
-    }
+    ocean_assemble(ivec3(column, z, cascade), a0[r], a1[r], a2[r], a3[r]);
+    ocean_assemble(ivec3(column + 1, z, cascade), b0[r], b1[r], b2[r], b3[r]);
   }
 }

@@ -4,11 +4,13 @@
 #include <array>
 #include <cstring>
 #include <optional>
+#include <stdexcept>
 
 #include <glm/gtc/packing.hpp>
 
 #include "lagoon_shaders/shaders.h"
 #include "ocean/validate.h"
+#include "shared/limits.h"
 #include "shared/ocean.h"
 #include "vk/barriers.h"
 #include "vk/check.h"
@@ -35,12 +37,18 @@ constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_
 
 }  // namespace
 
+Result<std::unique_ptr<GpuOcean>> GpuOcean::create(vk::Context& ctx, const OceanParams& params,
+                                                   FftVariant variant) {
+  if (auto valid = validate(params); !valid) return valid.error();
+  return std::make_unique<GpuOcean>(ctx, params, variant);
+}
+
 GpuOcean::GpuOcean(vk::Context& ctx, const OceanParams& params, FftVariant variant)
     : ctx_(ctx),
       params_(params),
       variant_(variant),
       mips_(vk::ComputePipeline::create(ctx, shaders::ocean_mips_comp)) {
-  if (auto valid = validate(params); !valid) vk::throw_usage_error(valid.error().message);
+  if (auto valid = validate(params); !valid) throw std::logic_error("GpuOcean: " + valid.error().message);
   std::vector<CascadeSpectrum> spectra;
   for (uint32_t c = 0; c < params.cascades.size(); ++c) spectra.push_back(make_cascade_spectrum(params, c));
   build(std::move(spectra));
@@ -57,15 +65,6 @@ GpuOcean::GpuOcean(vk::Context& ctx, const OceanParams& params, std::vector<Casc
 }
 
 GpuOcean::~GpuOcean() = default;
-
-void GpuOcean::set_params(const OceanParams& params) {
-  if (auto valid = validate(params); !valid) vk::throw_usage_error(valid.error().message);
-  ctx_.wait_idle();  // the old buffers may be in use by frames in flight
-  params_ = params;
-  std::vector<CascadeSpectrum> spectra;
-  for (uint32_t c = 0; c < params.cascades.size(); ++c) spectra.push_back(make_cascade_spectrum(params, c));
-  build(std::move(spectra));
-}
 
 void GpuOcean::build(std::vector<CascadeSpectrum> spectra) {
   spectra_ = std::move(spectra);
@@ -85,7 +84,8 @@ void GpuOcean::build(std::vector<CascadeSpectrum> spectra) {
   }
   for (auto& g : groups_) {
     const uint32_t n = g->n, count = uint32_t(g->cascades.size());
-    if (count > 4) vk::throw_usage_error("GpuOcean: at most 4 cascades per resolution");
+    if (count > LAGOON_MAX_CASCADES)
+      vk::throw_usage_error("GpuOcean: more cascades than LAGOON_MAX_CASCADES");
     const size_t texels = size_t{n} * n;
     std::vector<float> pairs(texels * 4 * count), omegas(texels * count);
     for (uint32_t layer = 0; layer < count; ++layer) {

@@ -7,6 +7,7 @@
 #include <memory>
 #include <vector>
 
+#include "core/result.h"
 #include "ocean/gpu/ocean_fft_path.h"
 #include "ocean/initial_spectrum.h"
 #include "ocean/ocean_params.h"
@@ -39,7 +40,11 @@ struct CascadeReadback {
 
 class GpuOcean {
  public:
-  // Throws on invalid parameters; call validate() first for a user-facing message.
+  // The way in for parameters a user gave: invalid ones (ocean/validate.h) come back as the error.
+  static Result<std::unique_ptr<GpuOcean>> create(vk::Context& ctx, const OceanParams& params,
+                                                  FftVariant variant = FftVariant::Auto);
+  // For parameters known to be valid (tests, tools that validated them): invalid ones are a programming
+  // error and throw std::logic_error.
   GpuOcean(vk::Context& ctx, const OceanParams& params, FftVariant variant = FftVariant::Auto);
   // For tests: explicit spectra (one per cascade of `params`) instead of make_cascade_spectrum.
   GpuOcean(vk::Context& ctx, const OceanParams& params, std::vector<CascadeSpectrum> spectra,
@@ -49,15 +54,13 @@ class GpuOcean {
   GpuOcean& operator=(const GpuOcean&) = delete;
 
   // Records the step to `time_s`; `dt_s` is the time since the previous step (foam decay). The first step
-  // after construction or set_params starts foam from zero. Textures are ready for fragment/vertex/compute
+  // after construction starts foam from zero. Textures are ready for fragment/vertex/compute
   // sampling (GENERAL layout) when the command buffer completes. Mip levels above 0 are only rebuilt with
   // `mips` (steps whose textures nobody samples, such as a foam warm-up, can leave them stale).
   enum class Mips { Rebuild, Skip };
   void record_step(VkCommandBuffer cmd, double time_s, double dt_s, vk::GpuTimer* timer = nullptr,
                    Mips mips = Mips::Rebuild);
 
-  // New parameters: recomputes and uploads the spectrum; rebuilds resources when cascades change.
-  void set_params(const OceanParams& params);
   const OceanParams& params() const { return params_; }
   const std::vector<CascadeSpectrum>& spectra() const { return spectra_; }
   CascadeTextures cascade(uint32_t index) const;

@@ -6,6 +6,7 @@
 #include "fft/fft_plan.h"
 #include "fft/gpu_fft.h"
 #include "lagoon_shaders/shaders.h"
+#include "shared/fft.h"
 #include "vk/barriers.h"
 #include "vk/pipeline.h"
 #include "vk/transfer.h"
@@ -22,7 +23,7 @@ vk::ImageRef storage(const vk::Image& image) {
 class StockhamPath : public OceanFftPath {
  public:
   StockhamPath(vk::Context& ctx, uint32_t n, uint32_t cascades)
-      : n_(n), fft_(ctx, n, /*inverse=*/true, /*fields=*/4) {
+      : n_(n), fft_(ctx, n, /*inverse=*/true, /*fields=*/4, fft::GpuFft2d::Ends::Fused) {
     const VkDeviceSize bytes = VkDeviceSize(n) * n * 8 * 4 * cascades;
     ping_ = vk::Buffer::create(ctx, bytes, kStorage, vk::MemoryUsage::Device, "ocean fft ping");
     pong_ = vk::Buffer::create(ctx, bytes, kStorage, vk::MemoryUsage::Device, "ocean fft pong");
@@ -77,8 +78,16 @@ class WorkgroupPath : public OceanFftPath {
     // As many lines per workgroup as fit 32 KiB of shared memory (4 fields x N complex floats each): every
     // workgroup is then 64 invocations.
     const uint32_t work = n / 16;
-    const std::vector<vk::SpecConstant> rows_spec{{0, work}, {1, lines_}, {4, 1}, {5, n}, {7, lines_}};
-    const std::vector<vk::SpecConstant> columns_spec{{0, lines_}, {1, work}, {4, 1}, {5, n}, {7, lines_}};
+    const std::vector<vk::SpecConstant> rows_spec{{LAGOON_FFT_SPEC_GROUP_X, work},
+                                                  {LAGOON_FFT_SPEC_GROUP_Y, lines_},
+                                                  {LAGOON_FFT_SPEC_INVERSE, 1},
+                                                  {LAGOON_FFT_SPEC_N, n},
+                                                  {LAGOON_FFT_SPEC_LINES, lines_}};
+    const std::vector<vk::SpecConstant> columns_spec{{LAGOON_FFT_SPEC_GROUP_X, lines_},
+                                                     {LAGOON_FFT_SPEC_GROUP_Y, work},
+                                                     {LAGOON_FFT_SPEC_INVERSE, 1},
+                                                     {LAGOON_FFT_SPEC_N, n},
+                                                     {LAGOON_FFT_SPEC_LINES, lines_}};
     rows_ = vk::ComputePipeline::create(ctx, shaders::ocean_evolve_rows_comp, rows_spec);
     columns_ = vk::ComputePipeline::create(ctx, shaders::ocean_columns_assemble_comp, columns_spec);
   }

@@ -1,0 +1,24 @@
+// The ocean's per-texel math after the inverse FFT, shared by both FFT variants
+// (compute/ocean/gpu/ocean_fft_path.h): displacement, normal, Jacobian and foam from the four packed fields
+// of common/ocean_fields.glsl. Needs OceanPush (shared/ocean.h) as `p` and the images `displacement`,
+// `normal_jacobian` and `jacobian_terms` declared by the includer.
+#ifndef LAGOON_COMMON_OCEAN_ASSEMBLE_GLSL
+#define LAGOON_COMMON_OCEAN_ASSEMBLE_GLSL
+
+// After the inverse FFT: one texel's displacement (λDx, h, λDz, foam), normal and Jacobian, and Jacobian
+// terms. Foam decays from the previous step's (displacement.w) at foam_decay_per_s and builds where the
+// Jacobian falls below foam_threshold.
+void ocean_assemble(ivec3 texel, vec2 f0, vec2 f1, vec2 f2, vec2 f3) {
+  float lambda = p.choppiness;
+  float decay = exp(-p.foam_decay_per_s * p.dt_s);
+  float h = f0.y, sx = f1.y, sz = f2.x;
+  float jxx = 1.0 + lambda * f2.y, jzz = 1.0 + lambda * f3.x, jxz = lambda * f3.y;
+  float jacobian = jxx * jzz - jxz * jxz;
+  float previous = p.reset_foam != 0u ? 0.0 : imageLoad(displacement, texel).w;
+  float foam = max(previous * decay, clamp(p.foam_threshold - jacobian, 0.0, 1.0));
+  imageStore(displacement, texel, vec4(lambda * f0.x, h, lambda * f1.x, foam));
+  imageStore(normal_jacobian, texel, vec4(normalize(vec3(-sx, 1.0, -sz)), jacobian));
+  imageStore(jacobian_terms, texel, vec4(jxx - 1.0, jzz - 1.0, jxz, foam));
+}
+
+#endif
