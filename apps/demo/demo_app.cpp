@@ -461,6 +461,7 @@ int Demo::run() {
     scene::Scene frame_scene = scene_;
     frame_scene.time_s = float(time_s_);
 
+    renderer_->prepare(frame_scene);  // a jump in time warms the foam up here, outside the frame's recording
     VkCommandBuffer cmd = ring_->begin();
     const uint32_t slot = ring_->slot();
     if (slot_used[slot]) timings_ = renderer_->timings(slot);

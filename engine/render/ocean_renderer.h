@@ -1,57 +1,73 @@
 // The frame renderer: the FFT ocean (compute/ocean/gpu) drawn over an analytic sky whose light comes from
-// the optics model, water colour from the optics LUTs, then tone mapping (seed 000's eq. 18) and gamma.
-// Passes: ocean step, refraction (the floor's and submerged objects' albedo and depth), reflection (objects
-// above the water, mirrored), surface (the objects, then the clipmap mesh, Fresnel between the reflection
-// and eq. 22 with the LUTs, foam), sky (depth-tested at the far plane, so only where nothing else was
-// drawn). Surface and sky shaders tone-map their own output (exposure, eq. 18, gamma) into RGBA8.
-// docs/rendering.md has the details.
+// the optics model, water colour from the optics LUTs, tone mapping (seed 000's eq. 18) and gamma.
+// The frame is a sequence of passes (engine/render/passes/, one file each), wired in record_frame():
+// ocean step, refraction, reflection, surface, sky. docs/architecture.md shows the frame and how to add a
+// pass; docs/rendering.md the shading.
 #pragma once
 #include <array>
 #include <memory>
 #include <optional>
 #include <vector>
 
+#include "core/result.h"
 #include "io/png.h"
 #include "ocean/gpu/gpu_ocean.h"
-#include "render/gpu_mesh.h"
-#include "render/sky_light.h"
-#include "render/surface_grid.h"
+#include "render/frame_context.h"
+#include "render/frame_uniforms.h"
+#include "render/passes/ocean_step_pass.h"
+#include "render/passes/reflection_pass.h"
+#include "render/passes/refraction_pass.h"
+#include "render/passes/sky_pass.h"
+#include "render/passes/surface_pass.h"
+#include "render/samplers.h"
+#include "render/scene_objects.h"
+#include "render/water_luts.h"
 #include "scene/scene.h"
 #include "vk/buffer.h"
 #include "vk/context.h"
 #include "vk/gpu_timer.h"
-#include "vk/handle.h"
 #include "vk/image.h"
-#include "vk/pipeline.h"
 
 namespace lagoon::render {
+
+// Colour and depth images a host owns (an engine embedding Lagoon); the frame draws into them. On entry
+// their contents are discarded (any layout); on exit colour is in COLOR_ATTACHMENT_OPTIMAL and depth in
+// DEPTH_ATTACHMENT_OPTIMAL, made available to colour-/depth-attachment access. docs/embedding.md.
+struct HostTargets {
+  VkImage color = VK_NULL_HANDLE;  // OceanRenderer::kColorFormat, usage COLOR_ATTACHMENT
+  VkImageView color_view = VK_NULL_HANDLE;
+  VkImage depth = VK_NULL_HANDLE;  // OceanRenderer::kDepthFormat, usage DEPTH_STENCIL_ATTACHMENT
+  VkImageView depth_view = VK_NULL_HANDLE;
+  VkExtent2D extent{};
+};
 
 class OceanRenderer {
  public:
   static constexpr VkFormat kHdrFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
   static constexpr VkFormat kColorFormat = VK_FORMAT_R8G8B8A8_UNORM;  // display-referred (tone-mapped)
   static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
-  // Before a still frame the ocean runs this long (in kWarmupStep steps) so foam has built up.
-  static constexpr double kWarmupS = 3.0;
-  static constexpr double kWarmupStep = 0.1;
-
-  // Fails with a message naming the file when a file the scene names (floor texture, water table) cannot be
-  // used; Vulkan failures throw (VK_CHECK).
-  static Result<std::unique_ptr<OceanRenderer>> create(vk::Context& ctx, const scene::Scene& scene);
-  ~OceanRenderer();
-
+  static constexpr double kWarmupS = OceanStepPass::kWarmupS;
   // Frames that may be in flight at once: each slot has its own host-written buffers and timer.
   static constexpr uint32_t kSlots = 2;
+
+  // Fails with a message naming the scene field when its ocean parameters are invalid or a file it names
+  // (model, floor texture, water table) cannot be used. Vulkan failures throw (VK_CHECK).
+  static Result<std::unique_ptr<OceanRenderer>> create(vk::Context& ctx, const scene::Scene& scene);
+  ~OceanRenderer();
 
   // Renders `scene` (same ocean and water as at construction) at scene.render size and time scene.time_s,
   // and waits for it.
   io::Image8 render(const scene::Scene& scene, std::vector<vk::PassTime>* timings = nullptr);
 
-  // Records the frame (the ocean stepped to scene.time_s, then every pass) into `cmd` for a window's frame
-  // loop. Uses slot `slot` (mod kSlots): the caller must have waited for the last frame recorded with it.
-  // Returns the display-referred image (kColorFormat), in COLOR_ATTACHMENT_OPTIMAL after colour writes.
-  // A slow warm-up runs first, synchronously, when the time jumps (kWarmupS).
+  // Work that submits and waits, kept out of record(): the foam warm-up when scene.time_s jumps (the first
+  // frame, a step back, or more than kWarmupS ahead). Call before recording a frame for scene.time_s.
+  void prepare(const scene::Scene& scene);
+  // Records the frame (the ocean stepped to scene.time_s, then every pass) into `cmd`; never submits. Uses
+  // slot `slot` (mod kSlots): the caller must have waited for the last frame recorded with it. Returns the
+  // display-referred image (kColorFormat), in COLOR_ATTACHMENT_OPTIMAL after colour writes.
   const vk::Image& record(VkCommandBuffer cmd, const scene::Scene& scene, VkExtent2D extent, uint32_t slot);
+  // The same into a host's own colour and depth images (see HostTargets).
+  void record(VkCommandBuffer cmd, const scene::Scene& scene, const HostTargets& targets, uint32_t slot);
   // The per-pass GPU times of the last frame recorded with `slot`, once it has finished.
   std::vector<vk::PassTime> timings(uint32_t slot) const;
 
@@ -68,62 +84,35 @@ class OceanRenderer {
   SurfaceAov render_surface_aov(const scene::Scene& scene);
 
   // The ocean the frames are drawn from (e.g. for a field check after render()).
-  const ocean::GpuOcean& ocean() const { return *ocean_; }
+  const ocean::GpuOcean& ocean() const { return ocean_step_->ocean(); }
 
  private:
-  struct Targets;
-  OceanRenderer(vk::Context& ctx, const scene::Scene& scene);
+  explicit OceanRenderer(vk::Context& ctx);
   Result<void> init(const scene::Scene& scene);
-  void record_frame(VkCommandBuffer cmd, const Targets& targets);
-  // Steps the ocean to scene.time_s in `cmd` and fills the slot's uniforms and surface indices.
-  void prepare_frame(VkCommandBuffer cmd, const scene::Scene& scene, VkExtent2D extent, uint32_t slot);
-  // The cascades' textures as bound by the surface pipelines (bindings 1, 2 and 9, four elements each).
-  std::vector<vk::Binding> cascade_bindings() const;
-  // The render targets and readback buffer, kept across frames of the same size (allocating ~30 MB of
-  // images every frame cost lavapipe several ms).
-  const Targets& targets_for(VkExtent2D extent);
-  std::unique_ptr<Targets> targets_;
+  // Fills the slot's uniforms, lights and surface indices, and starts the slot's timer.
+  FrameContext begin_frame(VkCommandBuffer cmd, const scene::Scene& scene, VkExtent2D extent, uint32_t slot);
+  // Every pass after the ocean step, into `color` and `depth`.
+  void record_frame(const FrameContext& frame, vk::Target color, vk::Target depth);
+  // The passes' own targets, kept across frames of the same size (allocating ~30 MB of images every frame
+  // cost lavapipe several ms).
+  void resize(VkExtent2D extent);
+  // The renderer's own colour and depth (and readback) for record(extent) and render().
+  struct OwnTargets;
+  const OwnTargets& own_targets(VkExtent2D extent);
 
   vk::Context& ctx_;
-  std::unique_ptr<ocean::GpuOcean> ocean_;
-  double ocean_time_ = -1;
-  bool reflection_on_ = true;
-  glm::vec3 deep_colour_{0};
-  glm::vec4 cascade_mss_{0};              // mean square slope of cascades 0..3 (ocean/slope_statistics.h)
-  float subgrid_mss_ = 0;                 // ... of the waves shorter than the last drawn cascade, to 1 cm
-  DisplacementBound displacement_bound_;  // of the whole ocean, for culling (render/surface_grid.h)
-  uint32_t surface_indices_ = 0;  // in the slot's index buffer: the clipmap cells drawn for this camera
-  double lut_r_max_ = 1, lut_h_max_ = 1;
-  vk::Image lut_t0_, lut_t1_;  // the colour LUTs as textures: x = r axis, y = h axis
-  std::optional<GpuMesh> floor_;
-  struct ObjectDraw {
-    GpuMesh mesh;
-    glm::mat4 world{1.0f};
-    glm::vec4 base_colour{1.0f};  // a = 1 when `texture` is used
-    int texture = -1;             // index into textures_
-  };
-  std::vector<ObjectDraw> objects_;
-  std::vector<vk::Image> textures_;
-  vk::Image floor_texture_, white_texture_;
-  bool floor_textured_ = false;
-  glm::vec3 floor_albedo_{1};
-  float floor_texture_scale_ = 1;
-  vk::GraphicsPipeline sky_, surface_;
-  vk::GraphicsPipeline mesh_hdr_, mesh_display_;  // objects into HDR targets / into the displayed frame
-  vk::GraphicsPipeline surface_aov_;              // created on first use of render_surface_aov
-  Result<void> load_objects(const scene::Scene& scene);
-  Result<void> load_model(const std::string& file, const glm::mat4& transform, const std::string& field);
-  void draw_objects(VkCommandBuffer cmd, float mode) const;
-  static constexpr size_t kMaxLights = 64;  // the scene format's limit
-  struct Slot {
-    vk::Buffer frame;            // gpu::FrameUniforms
-    vk::Buffer lights;           // gpu::PointLightGpu[kMaxLights]
-    vk::Buffer surface_indices;  // the clipmap's triangles (render/surface_grid.h)
-    vk::GpuTimer timer;
-  };
-  std::array<Slot, kSlots> slots_;
-  uint32_t slot_ = 0;  // of the frame being recorded
-  vk::Unique<VkSampler> repeat_sampler_, clamp_sampler_, nearest_sampler_;
+  Samplers samplers_;
+  WaterLuts luts_;
+  std::unique_ptr<SceneObjects> objects_;
+  std::optional<OceanStepPass> ocean_step_;
+  OceanShading shading_;
+  std::unique_ptr<RefractionPass> refraction_;
+  std::unique_ptr<ReflectionPass> reflection_;
+  std::unique_ptr<SurfacePass> surface_;
+  std::unique_ptr<SkyPass> sky_;
+  VkExtent2D extent_{};  // of the passes' targets
+  std::unique_ptr<OwnTargets> own_;
+  std::array<FrameSlot, kSlots> slots_;
 };
 
 }  // namespace lagoon::render

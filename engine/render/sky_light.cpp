@@ -5,6 +5,7 @@
 
 #include "optics/colour.h"
 #include "render/camera.h"
+#include "shared/sky_shape.h"
 
 namespace lagoon::render {
 
@@ -31,6 +32,21 @@ SkyLight sky_light(const scene::Sun& sun, const optics::SkyParams& params) {
   light.sun_disc_radiance = glm::vec3(sun_h / cos_zenith * scale * 3.14159265358979323846 / disc_solid_angle);
   if (sun.elevation_deg < -0.5) light.sun_irradiance = light.sun_disc_radiance = glm::vec3(0);
   return light;
+}
+
+double sky_shape_integral(glm::vec3 sun_direction) {
+  constexpr double kPi = 3.14159265358979323846;
+  const int steps_theta = 64, steps_phi = 128;
+  double sum = 0;
+  for (int i = 0; i < steps_theta; ++i) {
+    const double theta = (i + 0.5) * (kPi / 2) / steps_theta;
+    for (int j = 0; j < steps_phi; ++j) {
+      const double phi = (j + 0.5) * 2 * kPi / steps_phi;
+      const glm::vec3 dir(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
+      sum += double(gpu::sky_shape(dir, sun_direction)) * std::cos(theta) * std::sin(theta);
+    }
+  }
+  return sum * (kPi / 2 / steps_theta) * (2 * kPi / steps_phi) / kPi;
 }
 
 }  // namespace lagoon::render

@@ -26,4 +26,8 @@ struct SkyLight {
 
 SkyLight sky_light(const scene::Sun& sun, const optics::SkyParams& params = {});
 
+// (1/π) ∫ sky_shape(ω) cos θ dω over the upper hemisphere (shared/sky_shape.h): the factor that makes the
+// shaped sky's irradiance the model's E_sky. A uniform shape of 1 gives 1.
+double sky_shape_integral(glm::vec3 sun_direction);
+
 }  // namespace lagoon::render

@@ -3,6 +3,10 @@
 #pragma once
 #include <vulkan/vulkan.h>
 
+#include <initializer_list>
+
+#include "vk/image.h"
+
 namespace lagoon::vk {
 
 struct Access {
@@ -41,6 +45,16 @@ inline constexpr Access kHostWrite{VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOS
 inline constexpr Access kAllCommands{VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
                                      VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT};
 }  // namespace access
+
+// How a pass uses an image. use() derives layouts and accesses from it, so the frame states each hand-over
+// between passes in one line (engine/render/ocean_renderer.cpp, record_frame).
+enum class ImageUse {
+  Discard,     // contents not needed (UNDEFINED): before a target's first pass in a frame
+  Attachment,  // COLOR_ or DEPTH_ATTACHMENT_OPTIMAL (by the image's aspect): drawn into, depth-tested
+  Sampled,     // GENERAL, read by vertex and fragment shaders
+};
+// One barrier for all `targets`: what `from` wrote becomes visible to `to`, with the layout change.
+void use(VkCommandBuffer cmd, std::initializer_list<Target> targets, ImageUse from, ImageUse to);
 
 void image_barrier(VkCommandBuffer cmd, VkImage image, VkImageSubresourceRange range,
                    VkImageLayout old_layout, VkImageLayout new_layout, Access src, Access dst);

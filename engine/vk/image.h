@@ -20,6 +20,13 @@ struct ImageDesc {
   const char* debug_name = nullptr;
 };
 
+// An image as render passes see it (vk/barriers.h use(), vk/rendering.h): Lagoon's own or a host's.
+struct Target {
+  VkImage image = VK_NULL_HANDLE;
+  VkImageView view = VK_NULL_HANDLE;
+  VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT;
+};
+
 class Image {
  public:
   Image() = default;
@@ -36,6 +43,7 @@ class Image {
   uint32_t mip_levels() const { return mip_levels_; }
   uint32_t layers() const { return layers_; }
   VkImageAspectFlags aspect() const { return aspect_; }
+  Target target() const { return {image_, view_, aspect_}; }
   VkImageSubresourceRange all_subresources() const { return {aspect_, 0, mip_levels_, 0, layers_}; }
 
  private:

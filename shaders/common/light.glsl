@@ -3,12 +3,7 @@
 #ifndef LAGOON_COMMON_LIGHT_GLSL
 #define LAGOON_COMMON_LIGHT_GLSL
 
-// Unnormalised shape; the C++ side integrates the same function (ocean_renderer.cpp: sky_shape).
-float sky_shape(vec3 dir, vec3 sun) {
-  float up = max(dir.y, 0.0);
-  float horizon = 1.0 - up;
-  return 0.55 + 1.2 * horizon * horizon * horizon * horizon + 0.6 * pow(max(dot(dir, sun), 0.0), 12.0);
-}
+#include "shared/sky_shape.h"
 
 vec3 sky_radiance(FrameUniforms f, vec3 dir, bool with_sun) {
   vec3 d = dir;

@@ -5,11 +5,13 @@
 #include "common/light.glsl"
 #include "common/tonemap.glsl"
 
-// Mode 0: lit radiance above the water, tone-mapped for display (the surface pass writes the final frame). Mode 1: albedo only, for the refraction pass; the water's light
-// transport (the LUTs) lights it in the surface pass. Mode 2: lit, mirrored, only what is above the water.
-layout(std140, binding = 0) uniform Frame { FrameUniforms frame; };
-layout(binding = 3) uniform sampler2D albedo_texture;
-layout(std430, binding = 4) readonly buffer Lights { PointLightGpu point_lights[]; };
+// LAGOON_MESH_LIT: lit radiance above the water, tone-mapped for display (the surface pass writes the final
+// frame). LAGOON_MESH_REFRACTION: albedo only, for the refraction pass; the water's light
+// transport (the LUTs) lights it in the surface pass. LAGOON_MESH_MIRRORED: lit, mirrored, only what is above
+// the water.
+layout(std140, binding = LAGOON_MESH_BIND_FRAME) uniform Frame { FrameUniforms frame; };
+layout(binding = LAGOON_MESH_BIND_ALBEDO) uniform sampler2D albedo_texture;
+layout(std430, binding = LAGOON_MESH_BIND_LIGHTS) readonly buffer Lights { PointLightGpu point_lights[]; };
 layout(push_constant) uniform Push { MeshPush p; };
 
 layout(location = 0) in vec3 v_world;
@@ -18,12 +20,12 @@ layout(location = 2) in vec2 v_uv;
 layout(location = 0) out vec4 out_colour;
 
 void main() {
-  int mode = int(p.params.x + 0.5);
-  if (mode == 1 && v_world.y > 0.0) discard;  // the refraction pass sees only what is under the water
-  if (mode != 1 && v_world.y < 0.0) discard;  // above-water passes see only what is above
+  const uint mode = p.mode;
+  if (mode == LAGOON_MESH_REFRACTION && v_world.y > 0.0) discard;  // the refraction pass sees only what is under the water
+  if (mode != LAGOON_MESH_REFRACTION && v_world.y < 0.0) discard;  // above-water passes see only what is above
   vec3 albedo = p.base_colour.rgb;
   if (p.base_colour.a > 0.5) albedo *= texture(albedo_texture, v_uv).rgb;
-  if (mode == 1) {
+  if (mode == LAGOON_MESH_REFRACTION) {
     out_colour = vec4(albedo, 1.0);
     return;
   }
@@ -42,5 +44,5 @@ void main() {
     highlight += irradiance * 0.04 * (32.0 + 2.0) / 8.0 * pow(max(dot(n, normalize(to_light + v)), 0.0), 32.0);
   }
   vec3 radiance = albedo * light + highlight;
-  out_colour = vec4(mode == 0 ? display_encode(frame, radiance) : radiance, 1.0);
+  out_colour = vec4(mode == LAGOON_MESH_LIT ? display_encode(frame, radiance) : radiance, 1.0);
 }

@@ -4,10 +4,10 @@
 #include "shared/mesh.h"
 
 // Vertex pulling: indices and vertices from storage buffers, no vertex-input state.
-layout(std140, binding = 0) uniform Frame { FrameUniforms frame; };
+layout(std140, binding = LAGOON_MESH_BIND_FRAME) uniform Frame { FrameUniforms frame; };
 struct Vertex { float px, py, pz, nx, ny, nz, u, v; };
-layout(std430, binding = 1) readonly buffer Vertices { Vertex vertices[]; };
-layout(std430, binding = 2) readonly buffer Indices { uint indices[]; };
+layout(std430, binding = LAGOON_MESH_BIND_VERTICES) readonly buffer Vertices { Vertex vertices[]; };
+layout(std430, binding = LAGOON_MESH_BIND_INDICES) readonly buffer Indices { uint indices[]; };
 layout(push_constant) uniform Push { MeshPush p; };
 
 layout(location = 0) out vec3 v_world;
@@ -19,7 +19,7 @@ void main() {
   vec4 world = p.model * vec4(vtx.px, vtx.py, vtx.pz, 1.0);
   v_world = world.xyz;
   v_normal = normalize(mat3(p.model) * vec3(vtx.nx, vtx.ny, vtx.nz));
-  v_uv = p.params.y > 0.0 ? world.xz / p.params.y : vec2(vtx.u, vtx.v);
-  if (p.params.x > 1.5) world.y = -world.y;  // reflection: the scene mirrored about the mean water level
+  v_uv = p.texture_scale > 0.0 ? world.xz / p.texture_scale : vec2(vtx.u, vtx.v);
+  if (p.mode == LAGOON_MESH_MIRRORED) world.y = -world.y;  // reflection: the scene mirrored about the mean water level
   gl_Position = frame.view_proj * world;
 }

@@ -1,21 +1,22 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "shared/frame.h"
+#include "shared/surface.h"
 #include "common/light.glsl"
 #include "common/tonemap.glsl"
 
 // The water surface: normal from the cascades' slopes, exact dielectric Fresnel between the reflected sky
 // (plus the sun's glint) and the water's own colour from the optics LUT (deep water), foam from the foam
 // textures, haze towards the horizon. Output: the radiance (white units), tone-mapped for display.
-layout(std140, binding = 0) uniform Frame { FrameUniforms frame; };
-layout(binding = 2) uniform sampler2DArray normal_jacobian[4];
-layout(binding = 3) uniform sampler2D refraction_albedo;  // floor and submerged objects: albedo, a = coverage
-layout(binding = 4) uniform sampler2D refraction_depth;
-layout(binding = 5) uniform sampler2D lut_t0;             // (T0 RGB, a) over (u, v) = (sqrt(r/r_max), sqrt(h/h_max))
-layout(binding = 6) uniform sampler2D lut_t1;
-layout(binding = 7) uniform sampler2D reflection;  // mirrored objects above the water; a = coverage
-layout(std430, binding = 8) readonly buffer Lights { PointLightGpu point_lights[]; };
-layout(binding = 9) uniform sampler2DArray jacobian_terms[4];  // (λ∂Dx/∂x, λ∂Dz/∂z, λ∂Dx/∂z, foam)
+layout(std140, binding = LAGOON_SURFACE_BIND_FRAME) uniform Frame { FrameUniforms frame; };
+layout(binding = LAGOON_SURFACE_BIND_NORMAL_JACOBIAN) uniform sampler2DArray normal_jacobian[LAGOON_MAX_CASCADES];
+layout(binding = LAGOON_SURFACE_BIND_REFRACTION_ALBEDO) uniform sampler2D refraction_albedo;  // floor and submerged objects: albedo, a = coverage
+layout(binding = LAGOON_SURFACE_BIND_REFRACTION_DEPTH) uniform sampler2D refraction_depth;
+layout(binding = LAGOON_SURFACE_BIND_LUT_T0) uniform sampler2D lut_t0;             // (T0 RGB, a) over (u, v) = (sqrt(r/r_max), sqrt(h/h_max))
+layout(binding = LAGOON_SURFACE_BIND_LUT_T1) uniform sampler2D lut_t1;
+layout(binding = LAGOON_SURFACE_BIND_REFLECTION) uniform sampler2D reflection;  // mirrored objects above the water; a = coverage
+layout(std430, binding = LAGOON_SURFACE_BIND_LIGHTS) readonly buffer Lights { PointLightGpu point_lights[]; };
+layout(binding = LAGOON_SURFACE_BIND_JACOBIAN_TERMS) uniform sampler2DArray jacobian_terms[LAGOON_MAX_CASCADES];  // (λ∂Dx/∂x, λ∂Dz/∂z, λ∂Dx/∂z, foam)
 
 layout(location = 0) in vec3 v_world;
 layout(location = 1) in vec2 v_rest;

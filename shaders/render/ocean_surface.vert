@@ -1,14 +1,15 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "shared/frame.h"
+#include "shared/surface.h"
 
 // The surface mesh is a geometry clipmap (shared/clipmap.h): nested rings on world-fixed lattices whose
 // spacing doubles per ring, so triangles keep about the same size on screen, vertices do not swim as the
 // camera moves, and morphing at each ring's edge avoids cracks and popping. Each vertex is displaced by
 // the sum of the cascades' displacement (λDx, h, λDz), sampled at a mip matching the mesh spacing so waves
 // shorter than the spacing fade instead of aliasing.
-layout(std140, binding = 0) uniform Frame { FrameUniforms frame; };
-layout(binding = 1) uniform sampler2DArray displacement[4];
+layout(std140, binding = LAGOON_SURFACE_BIND_FRAME) uniform Frame { FrameUniforms frame; };
+layout(binding = LAGOON_SURFACE_BIND_DISPLACEMENT) uniform sampler2DArray displacement[LAGOON_MAX_CASCADES];
 #include "common/cascade_uv.glsl"
 
 layout(location = 0) out vec3 v_world;

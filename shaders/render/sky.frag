@@ -4,7 +4,7 @@
 #include "common/light.glsl"
 #include "common/tonemap.glsl"
 
-layout(std140, binding = 0) uniform Frame { FrameUniforms frame; };
+layout(std140, binding = LAGOON_SKY_BIND_FRAME) uniform Frame { FrameUniforms frame; };
 layout(location = 0) in vec2 v_ndc;
 layout(location = 0) out vec4 out_colour;  // tone-mapped for display
 

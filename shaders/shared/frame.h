@@ -3,6 +3,10 @@
 #ifndef LAGOON_SHARED_FRAME_H
 #define LAGOON_SHARED_FRAME_H
 #include "shared/interop.h"
+#include "shared/limits.h"
+
+// The sky pass (render/sky.frag) binds only the frame.
+#define LAGOON_SKY_BIND_FRAME 0
 
 LAGOON_GPU_BEGIN
 struct FrameUniforms {

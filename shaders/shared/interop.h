@@ -21,11 +21,13 @@ using uint = uint32_t;
 // GLSL's built-ins, for the functions shared headers define for both languages (e.g. shared/clipmap.h).
 using glm::abs;
 using glm::clamp;
+using glm::dot;
 using glm::exp2;
 using glm::floor;
 using glm::max;
 using glm::min;
 using glm::mix;
+using glm::pow;
 LAGOON_GPU_END
 #define LAGOON_FN inline
 // Use inside #ifdef __cplusplus: the layout GLSL assumes, checked by the C++ compiler.

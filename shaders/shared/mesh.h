@@ -3,17 +3,39 @@
 #define LAGOON_SHARED_MESH_H
 #include "shared/interop.h"
 
+// MeshPush::mode: which pass draws the mesh.
+#define LAGOON_MESH_LIT 0u         // lit and tone-mapped, above the water, into the displayed frame
+#define LAGOON_MESH_REFRACTION 1u  // albedo of what is under the water, into the refraction target
+#define LAGOON_MESH_MIRRORED 2u    // lit, mirrored about the mean water level, into the reflection target
+
+// Binding slots of mesh.vert and mesh.frag.
+#define LAGOON_MESH_BIND_FRAME 0     // FrameUniforms (shared/frame.h)
+#define LAGOON_MESH_BIND_VERTICES 1  // the mesh's vertices (render/gpu_mesh.h MeshVertex)
+#define LAGOON_MESH_BIND_INDICES 2   // its 32-bit indices
+#define LAGOON_MESH_BIND_ALBEDO 3    // albedo texture (sRGB)
+#define LAGOON_MESH_BIND_LIGHTS 4    // PointLightGpu[]
+
 LAGOON_GPU_BEGIN
 struct MeshPush {
-  mat4 model;        // model to world
-  vec4 base_colour;  // rgb albedo (linear), a = 1 if the texture is used
-  vec4 params;       // x = mode (0 lit above water, 1 albedo for refraction, 2 lit mirrored for reflection),
-                     // y = texture scale for world-space uv (0 = mesh uv), zw unused
+  mat4 model;           // model to world
+  vec4 base_colour;     // rgb albedo (linear), a = 1 if the texture is used
+  uint mode;            // LAGOON_MESH_*
+  float texture_scale;  // metres per texture repeat for world-space uv (0 = the mesh's uv)
+  uint pad0;
+  uint pad1;
 };
 LAGOON_GPU_END
 
 #ifdef __cplusplus
 LAGOON_CHECK_SIZE(MeshPush, 96);
 LAGOON_CHECK_OFFSET(MeshPush, base_colour, 64);
+LAGOON_CHECK_OFFSET(MeshPush, mode, 80);
+namespace lagoon::gpu {
+enum class MeshMode : uint32_t {
+  Lit = LAGOON_MESH_LIT,
+  Refraction = LAGOON_MESH_REFRACTION,
+  Mirrored = LAGOON_MESH_MIRRORED
+};
+}
 #endif
 #endif

@@ -1,0 +1,31 @@
+// What every pass of a frame sees (engine/render/passes/): the command buffer, the frame's size and scene,
+// and the slot's per-frame buffers. Passes only record into `cmd`; nothing that sees a FrameContext submits.
+#pragma once
+#include <vulkan/vulkan.h>
+
+#include "scene/scene.h"
+#include "vk/buffer.h"
+#include "vk/gpu_timer.h"
+#include "vk/pipeline.h"
+
+namespace lagoon::render {
+
+// The host-written buffers of one frame in flight (OceanRenderer::kSlots of them).
+struct FrameSlot {
+  vk::Buffer frame;            // gpu::FrameUniforms (shared/frame.h)
+  vk::Buffer lights;           // gpu::PointLightGpu[kMaxLights]
+  vk::Buffer surface_indices;  // the clipmap cells drawn for this camera (render/surface_grid.h)
+  uint32_t surface_index_count = 0;
+  vk::GpuTimer timer;
+};
+
+struct FrameContext {
+  VkCommandBuffer cmd = VK_NULL_HANDLE;
+  VkExtent2D extent{};
+  const scene::Scene& scene;
+  FrameSlot& slot;
+  vk::BufferRef uniforms() const { return {slot.frame.handle()}; }
+  vk::GpuTimer* timer() const { return &slot.timer; }
+};
+
+}  // namespace lagoon::render

@@ -1,0 +1,80 @@
+#include "render/frame_uniforms.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "ocean/slope_statistics.h"
+#include "optics/colour.h"
+#include "render/sky_light.h"
+
+namespace lagoon::render {
+namespace {
+
+constexpr float kFoamAlbedo = 0.85f;
+constexpr double kSunDiscRadiusRad = 0.00465;
+
+}  // namespace
+
+OceanShading ocean_shading(const ocean::GpuOcean& ocean) {
+  OceanShading out;
+  const uint32_t drawn = std::min<uint32_t>(ocean.cascade_count(), LAGOON_MAX_CASCADES);
+  double variance = 0;
+  for (uint32_t c = 0; c < drawn; ++c) {
+    out.cascade_mss[c] = float(ocean::mean_square_slope(ocean.spectra()[c]));
+    variance += ocean::height_variance(ocean.spectra()[c]);
+  }
+  const double sigma = std::sqrt(variance);
+  out.bound = {.horizontal_m = float(6.0 * sigma * ocean.params().choppiness + 1.0),
+               .vertical_m = float(6.0 * sigma + 1.0)};
+  const double last_k = ocean::cascade_bands(ocean.params())[drawn - 1].k_max;
+  out.subgrid_mss =
+      float(ocean::spectrum_mean_square_slope(ocean.params(), last_k, ocean::kCapillaryCutoffK));
+  return out;
+}
+
+uint32_t write_point_lights(const scene::Scene& scene, gpu::PointLightGpu* out) {
+  const uint32_t count = uint32_t(std::min<size_t>(scene.lights.size(), LAGOON_MAX_LIGHTS));
+  for (uint32_t i = 0; i < count; ++i) {
+    const scene::PointLight& l = scene.lights[i];
+    out[i] = {.position_range = glm::vec4(l.position, l.range_m),
+              .colour = glm::vec4(l.colour * l.intensity, 0)};
+  }
+  return count;
+}
+
+gpu::FrameUniforms frame_uniforms(const FrameInputs& in) {
+  const scene::Scene& scene = in.scene;
+  const SkyLight light = sky_light(scene.sun);
+  const optics::ToneMapCurve curve = optics::tone_map_curve();
+  const float width = float(in.extent.width), height = float(in.extent.height);
+  const uint32_t drawn = std::min<uint32_t>(in.ocean.cascade_count(), LAGOON_MAX_CASCADES);
+  gpu::FrameUniforms f{
+      .view_proj = in.view_proj,
+      .inv_view_proj = glm::inverse(in.view_proj),
+      .camera_pos = glm::vec4(scene.camera.position, float(scene.time_s)),
+      .sun_dir = glm::vec4(light.sun_direction, float(scene.water.ior)),
+      .sun_irradiance = glm::vec4(light.sun_irradiance, float(1.0 / sky_shape_integral(light.sun_direction))),
+      .sky_radiance = glm::vec4(light.sky_radiance, float(std::cos(kSunDiscRadiusRad))),
+      .sun_disc = glm::vec4(light.sun_disc_radiance, 0.0f),
+      .water_deep = glm::vec4(in.luts.deep_colour, kFoamAlbedo),
+      .grid = glm::vec4(in.grid.grid.x, in.grid.grid.y, 0.35f * in.reach_m, float(drawn)),
+      .clipmap = in.grid.clipmap,
+      .cascade_mss = in.shading.cascade_mss,
+      .glint = glm::vec4(in.shading.subgrid_mss, float(in.ocean.params().foam.threshold), 0, 0),
+      .post = glm::vec4(scene.render.exposure, scene.render.gamma, float(curve.m), float(curve.exponent)),
+      .post2 = glm::vec4(float(curve.white), float(curve.world_adaptation),
+                         scene.render.tone_map == scene::ToneMap::Clamp ? 0.0f : 1.0f, 0.0f),
+      .lut = glm::vec4(float(in.luts.r_max_m), float(in.luts.h_max_m),
+                       scene.render.effects.refraction ? 1.0f : 0.0f, light.light_scale),
+      .screen = glm::vec4(width, height, 1.0f / width, 1.0f / height),
+      .lights = glm::vec4(float(in.light_count), 0, 0, 0)};
+  for (uint32_t c = 0; c < drawn; ++c) {
+    const ocean::CascadeTextures tex = in.ocean.cascade(c);
+    f.cascade_patch[c] = float(tex.patch_size_m);
+    f.cascade_layer[c] = float(tex.layer);
+    f.cascade_texel[c] = float(tex.patch_size_m / tex.resolution);
+  }
+  return f;
+}
+
+}  // namespace lagoon::render

@@ -1,0 +1,40 @@
+// The per-frame constants every pass reads (shaders/shared/frame.h), computed on the CPU from the scene,
+// the camera, the ocean and the water's LUTs.
+#pragma once
+#include <vulkan/vulkan.h>
+
+#include <glm/glm.hpp>
+
+#include "ocean/gpu/gpu_ocean.h"
+#include "render/surface_grid.h"
+#include "render/water_luts.h"
+#include "scene/scene.h"
+#include "shared/frame.h"
+
+namespace lagoon::render {
+
+// What the surface shader needs of the ocean's statistics; fixed with the ocean, so computed once.
+struct OceanShading {
+  glm::vec4 cascade_mss{0};  // mean square slope of each drawn cascade (ocean/slope_statistics.h)
+  float subgrid_mss = 0;     // ... of the waves shorter than the last drawn cascade, down to 1 cm
+  DisplacementBound bound;   // 6σ of the whole ocean's displacement plus a metre, for culling
+};
+OceanShading ocean_shading(const ocean::GpuOcean& ocean);
+
+struct FrameInputs {
+  const scene::Scene& scene;
+  VkExtent2D extent{};
+  const ocean::GpuOcean& ocean;
+  const OceanShading& shading;
+  const WaterLuts& luts;
+  const SurfaceGrid& grid;
+  const glm::mat4& view_proj;
+  float reach_m = 0;  // how far the surface mesh reaches from the camera
+  uint32_t light_count = 0;
+};
+gpu::FrameUniforms frame_uniforms(const FrameInputs& in);
+
+// The scene's point lights (at most LAGOON_MAX_LIGHTS) into `out`; returns how many were written.
+uint32_t write_point_lights(const scene::Scene& scene, gpu::PointLightGpu* out);
+
+}  // namespace lagoon::render

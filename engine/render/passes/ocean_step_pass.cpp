@@ -1,0 +1,36 @@
+#include "render/passes/ocean_step_pass.h"
+
+#include <algorithm>
+
+namespace lagoon::render {
+
+Result<OceanStepPass> OceanStepPass::create(vk::Context& ctx, const ocean::OceanParams& params) {
+  auto ocean = ocean::GpuOcean::create(ctx, params);
+  if (!ocean) return ocean.error();
+  return OceanStepPass(std::move(*ocean));
+}
+
+void OceanStepPass::prepare(vk::Context& ctx, double t) {
+  if (time_s_ >= 0 && t >= time_s_ && t - time_s_ <= kWarmupS) return;
+  // A still frame needs the foam a running ocean would have: run the last few seconds first.
+  ctx.submit_and_wait([&](VkCommandBuffer cmd) {
+    double previous = t - kWarmupS;
+    // The warm-up's textures are not drawn: only the frame's own step rebuilds the mips.
+    ocean_->record_step(cmd, previous, 0.0, nullptr, ocean::GpuOcean::Mips::Skip);
+    for (double step = previous + kWarmupStep; step < t - 1e-9; step += kWarmupStep) {
+      ocean_->record_step(cmd, step, step - previous, nullptr, ocean::GpuOcean::Mips::Skip);
+      previous = step;
+    }
+    time_s_ = previous;
+  });
+}
+
+void OceanStepPass::record(const FrameContext& frame) {
+  const double t = frame.scene.time_s;
+  // Without prepare() the first step starts foam from nothing (dt = 0), as GpuOcean's first step does.
+  const double dt = time_s_ < 0 ? 0.0 : std::max(0.0, t - time_s_);
+  ocean_->record_step(frame.cmd, t, dt, frame.timer());
+  time_s_ = t;
+}
+
+}  // namespace lagoon::render

@@ -1,0 +1,37 @@
+// The ocean step (compute/ocean/gpu): evolves the cascades to the frame's time and rebuilds their mips. The
+// frame's first pass; its textures are ready for sampling by every later pass when it returns
+// (GpuOcean::record_step's own barriers).
+#pragma once
+#include <memory>
+
+#include "core/result.h"
+#include "ocean/gpu/gpu_ocean.h"
+#include "render/frame_context.h"
+#include "vk/context.h"
+
+namespace lagoon::render {
+
+class OceanStepPass {
+ public:
+  // Before a still frame the ocean runs this long (in kWarmupStep steps) so foam has built up.
+  static constexpr double kWarmupS = 3.0;
+  static constexpr double kWarmupStep = 0.1;
+
+  // Fails with the parameter's message when the scene's ocean is invalid (ocean/validate.h).
+  static Result<OceanStepPass> create(vk::Context& ctx, const ocean::OceanParams& params);
+
+  // Set-up work outside the frame: when `time_s` jumps (first frame, backwards, or more than kWarmupS ahead)
+  // runs the warm-up in its own submission and waits. Call before recording the frame for `time_s`.
+  void prepare(vk::Context& ctx, double time_s);
+  // Steps to frame.scene.time_s (from wherever prepare() or the last frame left the ocean).
+  void record(const FrameContext& frame);
+
+  const ocean::GpuOcean& ocean() const { return *ocean_; }
+
+ private:
+  explicit OceanStepPass(std::unique_ptr<ocean::GpuOcean> ocean) : ocean_(std::move(ocean)) {}
+  std::unique_ptr<ocean::GpuOcean> ocean_;
+  double time_s_ = -1;  // of the last step recorded; < 0 before the first
+};
+
+}  // namespace lagoon::render

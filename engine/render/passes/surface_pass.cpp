@@ -1,0 +1,85 @@
+#include "render/passes/surface_pass.h"
+
+#include <algorithm>
+
+#include "lagoon_shaders/shaders.h"
+#include "shared/surface.h"
+#include "vk/rendering.h"
+
+namespace lagoon::render {
+
+SurfacePass::SurfacePass(vk::Context& ctx, const ocean::GpuOcean& ocean, const SceneObjects& objects,
+                         const WaterLuts& luts, const Samplers& samplers, VkFormat color_format,
+                         VkFormat depth_format)
+    : ctx_(ctx),
+      ocean_(ocean),
+      objects_(objects),
+      luts_(luts),
+      samplers_(samplers),
+      depth_format_(depth_format),
+      // Writes display-referred colour: each shader tone-maps its own output (common/tonemap.glsl), so there
+      // is no HDR frame and no full-screen post pass.
+      surface_(vk::GraphicsPipeline::create(ctx, {.vertex = &shaders::render_ocean_surface_vert,
+                                                  .fragment = &shaders::render_ocean_surface_frag,
+                                                  .color_formats = {color_format},
+                                                  .depth_format = depth_format,
+                                                  .depth_test = true,
+                                                  .depth_write = true})) {}
+
+std::vector<vk::Binding> SurfacePass::cascade_bindings() const {
+  std::vector<vk::Binding> bindings;
+  for (uint32_t slot = 0; slot < LAGOON_MAX_CASCADES; ++slot) {
+    const ocean::CascadeTextures t = ocean_.cascade(std::min(slot, ocean_.cascade_count() - 1));
+    bindings.push_back(
+        vk::bind(LAGOON_SURFACE_BIND_DISPLACEMENT, sampled(*t.displacement, samplers_.repeat), slot));
+    bindings.push_back(
+        vk::bind(LAGOON_SURFACE_BIND_JACOBIAN_TERMS, sampled(*t.jacobian_terms, samplers_.repeat), slot));
+    bindings.push_back(
+        vk::bind(LAGOON_SURFACE_BIND_NORMAL_JACOBIAN, sampled(*t.normal_jacobian, samplers_.repeat), slot));
+  }
+  return bindings;
+}
+
+void SurfacePass::record(const FrameContext& frame, const Inputs& in, vk::Target color,
+                         vk::Target depth) const {
+  std::vector<vk::Binding> bindings{
+      vk::bind(LAGOON_SURFACE_BIND_REFLECTION, sampled(in.reflection, samplers_.clamp)),
+      vk::bind(LAGOON_SURFACE_BIND_FRAME, frame.uniforms()),
+      vk::bind(LAGOON_SURFACE_BIND_REFRACTION_ALBEDO, sampled(in.refraction_albedo, samplers_.clamp)),
+      vk::bind(LAGOON_SURFACE_BIND_REFRACTION_DEPTH, sampled(in.refraction_depth, samplers_.nearest)),
+      vk::bind(LAGOON_SURFACE_BIND_LUT_T0, sampled(luts_.t0, samplers_.clamp)),
+      vk::bind(LAGOON_SURFACE_BIND_LUT_T1, sampled(luts_.t1, samplers_.clamp)),
+      vk::bind(LAGOON_SURFACE_BIND_LIGHTS, frame.slot.lights)};
+  for (vk::Binding& b : cascade_bindings()) bindings.push_back(b);
+  // Its own render pass, so the timestamps bracket real work on tilers such as lavapipe.
+  vk::GpuScope scope(frame.timer(), frame.cmd, "surface");
+  vk::begin_rendering(frame.cmd, frame.extent,
+                      {{.view = color.view, .clear = std::array{0.f, 0.f, 0.f, 1.f}}},
+                      vk::DepthTarget{.view = depth.view, .clear = 1.0f});
+  objects_.draw(frame, gpu::MeshMode::Lit);  // above-water parts, lit; the surface depth-tests against them
+  vk::draw_indexed(frame.cmd, surface_, bindings, frame.slot.surface_indices.handle(),
+                   frame.slot.surface_index_count);
+  vk::end_rendering(frame.cmd);
+}
+
+void SurfacePass::record_aov(const FrameContext& frame, vk::Target normal_foam, vk::Target world,
+                             vk::Target depth) {
+  if (aov_.pipeline() == VK_NULL_HANDLE)
+    aov_ = vk::GraphicsPipeline::create(ctx_, {.vertex = &shaders::render_ocean_surface_vert,
+                                               .fragment = &shaders::render_ocean_surface_aov_frag,
+                                               .color_formats = {kAovFormat, kAovFormat},
+                                               .depth_format = depth_format_,
+                                               .depth_test = true,
+                                               .depth_write = true});
+  vk::begin_rendering(frame.cmd, frame.extent,
+                      {{.view = normal_foam.view, .clear = std::array{0.f, 0.f, 0.f, 0.f}},
+                       {.view = world.view, .clear = std::array{0.f, 0.f, 0.f, 0.f}}},
+                      vk::DepthTarget{.view = depth.view, .clear = 1.0f});
+  std::vector<vk::Binding> bindings = cascade_bindings();
+  bindings.push_back(vk::bind(LAGOON_SURFACE_BIND_FRAME, frame.uniforms()));
+  vk::draw_indexed(frame.cmd, aov_, bindings, frame.slot.surface_indices.handle(),
+                   frame.slot.surface_index_count);
+  vk::end_rendering(frame.cmd);
+}
+
+}  // namespace lagoon::render

@@ -1,0 +1,52 @@
+// The water surface: the above-water parts of objects, then the clipmap mesh displaced by the cascades,
+// shaded with Fresnel between the reflection and the refracted light through the colour LUTs (eq. 22), foam
+// and glints, tone-mapped into the displayed frame (shaders/render/ocean_surface.*). Also draws the
+// surface's ground-truth AOVs (ocean_surface_aov.frag).
+#pragma once
+#include <vector>
+
+#include "ocean/gpu/gpu_ocean.h"
+#include "render/frame_context.h"
+#include "render/samplers.h"
+#include "render/scene_objects.h"
+#include "render/water_luts.h"
+#include "vk/context.h"
+#include "vk/image.h"
+#include "vk/pipeline.h"
+
+namespace lagoon::render {
+
+class SurfacePass {
+ public:
+  // The refraction and reflection passes' outputs, as sampled images.
+  struct Inputs {
+    const vk::Image& refraction_albedo;
+    const vk::Image& refraction_depth;
+    const vk::Image& reflection;
+  };
+
+  SurfacePass(vk::Context& ctx, const ocean::GpuOcean& ocean, const SceneObjects& objects,
+              const WaterLuts& luts, const Samplers& samplers, VkFormat color_format, VkFormat depth_format);
+
+  // Into `color` and `depth` as attachments, cleared first.
+  void record(const FrameContext& frame, const Inputs& in, vk::Target color, vk::Target depth) const;
+  // The surface's shading normal and foam, and its world point, into two RGBA32F attachments (no objects).
+  void record_aov(const FrameContext& frame, vk::Target normal_foam, vk::Target world, vk::Target depth);
+
+  static constexpr VkFormat kAovFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+
+ private:
+  // The cascades' textures, one array element per cascade (LAGOON_MAX_CASCADES, the last repeated).
+  std::vector<vk::Binding> cascade_bindings() const;
+
+  vk::Context& ctx_;
+  const ocean::GpuOcean& ocean_;
+  const SceneObjects& objects_;
+  const WaterLuts& luts_;
+  const Samplers& samplers_;
+  VkFormat depth_format_;
+  vk::GraphicsPipeline surface_;
+  vk::GraphicsPipeline aov_;  // created on first use
+};
+
+}  // namespace lagoon::render

@@ -1,0 +1,122 @@
+#include "render/scene_objects.h"
+
+#include <cstdio>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "gltf/gltf_loader.h"
+#include "lagoon_shaders/shaders.h"
+#include "render/seafloor.h"
+
+namespace lagoon::render {
+namespace {
+
+// T(position) · Ry(yaw) · Rx(−pitch) · Rz(roll) · S(scale) (docs/scene-format.md, Objects).
+glm::mat4 object_transform(const scene::Object& object) {
+  glm::mat4 transform = glm::translate(glm::mat4(1.0f), object.position);
+  transform = glm::rotate(transform, glm::radians(object.rotation_deg.x), glm::vec3(0, 1, 0));
+  transform = glm::rotate(transform, glm::radians(-object.rotation_deg.y), glm::vec3(1, 0, 0));
+  transform = glm::rotate(transform, glm::radians(object.rotation_deg.z), glm::vec3(0, 0, 1));
+  return glm::scale(transform, glm::vec3(object.scale));
+}
+
+}  // namespace
+
+Result<std::unique_ptr<SceneObjects>> SceneObjects::load(vk::Context& ctx, const scene::Scene& scene,
+                                                         const Samplers& samplers, VkFormat display_format,
+                                                         VkFormat hdr_format, VkFormat depth_format) {
+  std::unique_ptr<SceneObjects> objects(new SceneObjects(ctx, samplers));
+  for (auto [pipeline, format] :
+       {std::pair{&objects->display_, display_format}, {&objects->hdr_, hdr_format}})
+    *pipeline = vk::GraphicsPipeline::create(ctx, {.vertex = &shaders::render_mesh_vert,
+                                                   .fragment = &shaders::render_mesh_frag,
+                                                   .color_formats = {format},
+                                                   .depth_format = depth_format,
+                                                   .depth_test = true,
+                                                   .depth_write = true});
+  const io::Image8 white{.width = 1, .height = 1, .rgba = {255, 255, 255, 255}};
+  objects->white_texture_ = upload_texture(ctx, white, "white");
+  if (auto r = objects->load_floor(scene); !r) return r.error();
+  for (size_t o = 0; o < scene.objects.size(); ++o) {
+    const std::string field = "objects[" + std::to_string(o) + "].file";
+    if (auto r = objects->load_model(scene.objects[o].file, object_transform(scene.objects[o]), field); !r)
+      return r.error();
+  }
+  return objects;
+}
+
+Result<void> SceneObjects::load_floor(const scene::Scene& scene) {
+  const scene::Seafloor& floor = scene.seafloor;
+  // A glTF sea floor is drawn like an object: the passes clip it at the water line like everything else.
+  if (floor.type == scene::SeafloorType::Gltf)
+    return load_model(floor.file, glm::mat4(1.0f), "seafloor.file");
+  if (floor.type != scene::SeafloorType::Slope) return {};
+  const FloorMesh mesh =
+      build_slope_floor(floor, glm::vec2(scene.camera.position.x, scene.camera.position.z));
+  floor_ = upload_mesh(ctx_, mesh.vertices, mesh.indices);
+  floor_albedo_ = floor.albedo;
+  floor_texture_scale_ = floor.texture_scale_m;
+  if (floor.texture.empty()) return {};
+  auto image = io::read_png(floor.texture);
+  if (!image) return make_error("seafloor.texture: " + image.error().message);
+  floor_texture_ = upload_texture(ctx_, *image, "floor texture");
+  floor_textured_ = true;
+  return {};
+}
+
+Result<void> SceneObjects::load_model(const std::string& file, const glm::mat4& transform,
+                                      const std::string& field) {
+  auto model = gltf::load_gltf(file);
+  if (!model) return make_error(field + ": " + model.error().message);
+  for (const std::string& warning : model->warnings)
+    std::fprintf(stderr, "lagoon: warning: %s: %s\n", file.c_str(), warning.c_str());
+  const int texture_base = int(textures_.size());
+  for (const gltf::Texture& t : model->textures)
+    textures_.push_back(upload_texture(ctx_, io::Image8{.width = t.width, .height = t.height, .rgba = t.rgba},
+                                       "model texture"));
+  for (const gltf::Instance& instance : model->instances) {
+    for (const gltf::Primitive& p : model->meshes[instance.mesh].primitives) {
+      std::vector<MeshVertex> vertices(p.positions.size());
+      for (size_t i = 0; i < vertices.size(); ++i)
+        vertices[i] = {p.positions[i], p.normals[i], i < p.uvs.size() ? p.uvs[i] : glm::vec2(0)};
+      ObjectDraw draw{.mesh = upload_mesh(ctx_, vertices, p.indices), .world = transform * instance.world};
+      if (p.material >= 0) {
+        const gltf::Material& m = model->materials[p.material];
+        draw.base_colour = glm::vec4(glm::vec3(m.base_color_factor), m.base_color_texture >= 0 ? 1.0f : 0.0f);
+        if (m.base_color_texture >= 0) draw.texture = texture_base + m.base_color_texture;
+      }
+      objects_.push_back(std::move(draw));
+    }
+  }
+  return {};
+}
+
+void SceneObjects::draw_mesh(const FrameContext& frame, gpu::MeshMode mode, const GpuMesh& mesh,
+                             const gpu::MeshPush& push, const vk::Image& texture) const {
+  const vk::GraphicsPipeline& pipeline = mode == gpu::MeshMode::Lit ? display_ : hdr_;
+  vk::draw(
+      frame.cmd, pipeline,
+      {vk::bind(LAGOON_MESH_BIND_FRAME, frame.uniforms()), vk::bind(LAGOON_MESH_BIND_VERTICES, mesh.vertices),
+       vk::bind(LAGOON_MESH_BIND_INDICES, mesh.indices),
+       vk::bind(LAGOON_MESH_BIND_ALBEDO, sampled(texture, samplers_.repeat)),
+       vk::bind(LAGOON_MESH_BIND_LIGHTS, frame.slot.lights)},
+      push, mesh.index_count);
+}
+
+void SceneObjects::draw(const FrameContext& frame, gpu::MeshMode mode) const {
+  for (const ObjectDraw& o : objects_) {
+    const gpu::MeshPush push{.model = o.world, .base_colour = o.base_colour, .mode = uint32_t(mode)};
+    draw_mesh(frame, mode, o.mesh, push, o.texture >= 0 ? textures_[o.texture] : white_texture_);
+  }
+}
+
+void SceneObjects::draw_floor(const FrameContext& frame) const {
+  if (!floor_) return;
+  const gpu::MeshPush push{.model = glm::mat4(1.0f),
+                           .base_colour = glm::vec4(floor_albedo_, floor_textured_ ? 1.0f : 0.0f),
+                           .mode = LAGOON_MESH_REFRACTION,
+                           .texture_scale = floor_texture_scale_};
+  draw_mesh(frame, gpu::MeshMode::Refraction, *floor_, push,
+            floor_textured_ ? floor_texture_ : white_texture_);
+}
+
+}  // namespace lagoon::render

@@ -1,0 +1,22 @@
+// The colour LUTs of the scene's water under its sun (compute/optics/lut.h, docs/optics.md) as textures
+// for the surface pass: x = r axis, y = h axis.
+#pragma once
+#include <glm/vec3.hpp>
+
+#include "core/result.h"
+#include "scene/scene.h"
+#include "vk/context.h"
+#include "vk/image.h"
+
+namespace lagoon::render {
+
+struct WaterLuts {
+  vk::Image t0, t1;
+  glm::vec3 deep_colour{0};
+  double r_max_m = 1, h_max_m = 1;
+};
+
+// Fails with the optics model's message (e.g. an unreadable custom water table).
+Result<WaterLuts> upload_water_luts(vk::Context& ctx, const scene::Scene& scene);
+
+}  // namespace lagoon::render

@@ -1,0 +1,18 @@
+// Binding slots of the ocean surface shaders (render/ocean_surface.vert, ocean_surface.frag,
+// ocean_surface_aov.frag) and engine/render/passes/surface_pass.cpp.
+#ifndef LAGOON_SHARED_SURFACE_H
+#define LAGOON_SHARED_SURFACE_H
+#include "shared/limits.h"
+
+#define LAGOON_SURFACE_BIND_FRAME 0              // FrameUniforms
+#define LAGOON_SURFACE_BIND_DISPLACEMENT 1       // sampler2DArray[LAGOON_MAX_CASCADES]: (λDx, h, λDz, foam)
+#define LAGOON_SURFACE_BIND_NORMAL_JACOBIAN 2    // sampler2DArray[LAGOON_MAX_CASCADES]: (n, J)
+#define LAGOON_SURFACE_BIND_REFRACTION_ALBEDO 3  // the refraction pass's albedo, a = coverage
+#define LAGOON_SURFACE_BIND_REFRACTION_DEPTH 4   // ... and its depth
+#define LAGOON_SURFACE_BIND_LUT_T0 5             // colour LUT T0 (RGB, a)
+#define LAGOON_SURFACE_BIND_LUT_T1 6             // colour LUT T1
+#define LAGOON_SURFACE_BIND_REFLECTION 7         // the reflection pass's colour, a = coverage
+#define LAGOON_SURFACE_BIND_LIGHTS 8             // PointLightGpu[]
+#define LAGOON_SURFACE_BIND_JACOBIAN_TERMS 9     // sampler2DArray[LAGOON_MAX_CASCADES]
+
+#endif
