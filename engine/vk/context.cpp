@@ -86,6 +86,111 @@ std::string unsuitable_reason(VkPhysicalDevice device, VkSurfaceKHR surface) {
   return "";
 }
 
+// Why Context::adopt() cannot use the host's device, one item per problem; empty when it can.
+std::vector<std::string> host_device_shortfalls(const HostDevice& host) {
+  std::vector<std::string> missing;
+  VkPhysicalDeviceProperties props;
+  vkGetPhysicalDeviceProperties(host.physical_device, &props);
+  if (host.instance_api_version < kRequiredApiVersion)
+    missing.push_back("the instance was created for Vulkan " + api_version_string(host.instance_api_version) +
+                      " (HostDevice::instance_api_version), not 1.3 or later");
+  if (props.apiVersion < kRequiredApiVersion)
+    missing.push_back("the device has Vulkan " + api_version_string(props.apiVersion) + ", not 1.3 or later");
+
+  uint32_t family_count = 0;
+  vkGetPhysicalDeviceQueueFamilyProperties(host.physical_device, &family_count, nullptr);
+  std::vector<VkQueueFamilyProperties> families(family_count);
+  vkGetPhysicalDeviceQueueFamilyProperties(host.physical_device, &family_count, families.data());
+  const VkQueueFlags need = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
+  if (host.queue_family >= family_count || (families[host.queue_family].queueFlags & need) != need)
+    missing.push_back("queue family " + std::to_string(host.queue_family) +
+                      " (HostDevice::queue_family) does not do both graphics and compute");
+
+  const VkDeviceCreateInfo& info = *host.device_create_info;
+  for (const char* name : required_device_extensions()) {
+    bool enabled = false;
+    for (uint32_t i = 0; i < info.enabledExtensionCount; ++i)
+      enabled = enabled || std::strcmp(info.ppEnabledExtensionNames[i], name) == 0;
+    if (!enabled)
+      missing.push_back(std::string("device extension ") + name +
+                        (has_device_extension(host.physical_device, name)
+                             ? " is not enabled"
+                             : " is not supported by the device"));
+  }
+
+  // What the host enabled: pEnabledFeatures or a VkPhysicalDeviceFeatures2 in the chain for the core
+  // features; the 1.3 features either in VkPhysicalDeviceVulkan13Features or in their own structs.
+  const VkPhysicalDeviceFeatures* core = info.pEnabledFeatures;
+  bool dynamic_rendering = false, synchronization2 = false;
+  for (auto* s = static_cast<const VkBaseInStructure*>(info.pNext); s != nullptr; s = s->pNext) {
+    switch (s->sType) {
+      case VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2:
+        core = &reinterpret_cast<const VkPhysicalDeviceFeatures2*>(s)->features;
+        break;
+      case VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES: {
+        auto* f = reinterpret_cast<const VkPhysicalDeviceVulkan13Features*>(s);
+        dynamic_rendering = dynamic_rendering || f->dynamicRendering;
+        synchronization2 = synchronization2 || f->synchronization2;
+        break;
+      }
+      case VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DYNAMIC_RENDERING_FEATURES:
+        dynamic_rendering =
+            dynamic_rendering ||
+            reinterpret_cast<const VkPhysicalDeviceDynamicRenderingFeatures*>(s)->dynamicRendering;
+        break;
+      case VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SYNCHRONIZATION_2_FEATURES:
+        synchronization2 =
+            synchronization2 ||
+            reinterpret_cast<const VkPhysicalDeviceSynchronization2Features*>(s)->synchronization2;
+        break;
+      default:
+        break;
+    }
+  }
+  // What the device supports. vkGetPhysicalDeviceFeatures2 needs a 1.1 instance; the 1.3 struct a 1.3 device.
+  VkPhysicalDeviceVulkan13Features supported13{.sType =
+                                                   VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+  VkPhysicalDeviceFeatures2 supported{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+  if (host.instance_api_version >= VK_API_VERSION_1_1) {
+    if (props.apiVersion >= kRequiredApiVersion) supported.pNext = &supported13;
+    vkGetPhysicalDeviceFeatures2(host.physical_device, &supported);
+  } else {
+    vkGetPhysicalDeviceFeatures(host.physical_device, &supported.features);
+  }
+  auto feature = [&](const char* name, bool enabled, bool available, const char* why = "") {
+    if (!enabled)
+      missing.push_back(std::string("feature ") + name +
+                        (available ? " is not enabled" : " is not supported by the device") + why);
+  };
+  feature("dynamicRendering", dynamic_rendering, supported13.dynamicRendering);
+  feature("synchronization2", synchronization2, supported13.synchronization2);
+  // Lagoon's samplers use anisotropy wherever the device supports it (vk/sampler.cpp).
+  if (supported.features.samplerAnisotropy)
+    feature("samplerAnisotropy", core != nullptr && core->samplerAnisotropy, true,
+            " (the device has it, and Lagoon's samplers use it wherever supported)");
+  return missing;
+}
+
+// The core features a host enabled, from what it gave vkCreateDevice.
+VkPhysicalDeviceFeatures enabled_core_features(const VkDeviceCreateInfo& info) {
+  const VkPhysicalDeviceFeatures* core = info.pEnabledFeatures;
+  for (auto* s = static_cast<const VkBaseInStructure*>(info.pNext); s != nullptr; s = s->pNext)
+    if (s->sType == VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2)
+      core = &reinterpret_cast<const VkPhysicalDeviceFeatures2*>(s)->features;
+  return core ? *core : VkPhysicalDeviceFeatures{};
+}
+
+VkDebugUtilsMessengerCreateInfoEXT messenger_create_info(ValidationLog* log) {
+  return {.sType = VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT,
+          .messageSeverity =
+              VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT,
+          .messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
+                         VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                         VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT,
+          .pfnUserCallback = &ValidationLog::callback,
+          .pUserData = log};
+}
+
 std::filesystem::path default_cache_dir() {
   if (std::string dir = env("LAGOON_PIPELINE_CACHE"); !dir.empty()) return dir == "off" ? "" : dir;
   if (std::string xdg = env("XDG_CACHE_HOME"); !xdg.empty()) return std::filesystem::path(xdg) / "lagoon";
@@ -94,6 +199,30 @@ std::filesystem::path default_cache_dir() {
 }
 
 }  // namespace
+
+std::vector<const char*> required_device_extensions() {
+  return {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
+}
+
+RequiredFeatures::RequiredFeatures(VkPhysicalDevice optional_from) {
+  features2.pNext = &vulkan11;
+  vulkan11.pNext = &vulkan12;
+  vulkan12.pNext = &vulkan13;
+  vulkan13.synchronization2 = VK_TRUE;
+  vulkan13.dynamicRendering = VK_TRUE;
+  if (optional_from == VK_NULL_HANDLE) return;
+  VkPhysicalDeviceFeatures supported{};
+  vkGetPhysicalDeviceFeatures(optional_from, &supported);
+  // Optional features used when present (anisotropic filtering of the ocean textures; 64-bit floats in
+  // tests).
+  features2.features.samplerAnisotropy = supported.samplerAnisotropy;
+  features2.features.shaderFloat64 = supported.shaderFloat64;
+  features2.features.fillModeNonSolid = supported.fillModeNonSolid;
+}
+
+AdoptOptions AdoptOptions::from_environment() {
+  return {.pipeline_cache_dir = default_cache_dir()};
+}
 
 ContextOptions ContextOptions::from_environment() {
   ContextOptions options;
@@ -119,9 +248,75 @@ Result<void> Context::init(const ContextOptions& options) {
   }
   if (auto r = pick_device(options); !r) return r;
   create_device();
-  if (!options.pipeline_cache_dir.empty())
-    pipeline_cache_file_ = options.pipeline_cache_dir / pipeline_cache_file_name(properties_);
-  pipeline_cache_ = load_pipeline_cache(device_, properties_, pipeline_cache_file_);
+  create_own_objects(options.pipeline_cache_dir);
+  return {};
+}
+
+Result<std::unique_ptr<Context>> Context::adopt(const HostDevice& host, const AdoptOptions& options) {
+  if (host.instance == VK_NULL_HANDLE || host.physical_device == VK_NULL_HANDLE ||
+      host.device == VK_NULL_HANDLE || host.queue == VK_NULL_HANDLE)
+    return make_error(
+        "Context::adopt: HostDevice needs the host's instance, physical_device, device and queue "
+        "(one of them is VK_NULL_HANDLE)");
+  if (host.device_create_info == nullptr)
+    return make_error(
+        "Context::adopt: HostDevice::device_create_info is null; pass the VkDeviceCreateInfo the device was "
+        "created with (Vulkan cannot be asked which extensions and features a device has enabled)");
+  if (options.frames_in_flight == 0)
+    return make_error("Context::adopt: AdoptOptions::frames_in_flight must be >= 1");
+  if (auto missing = host_device_shortfalls(host); !missing.empty()) {
+    VkPhysicalDeviceProperties props;
+    vkGetPhysicalDeviceProperties(host.physical_device, &props);
+    std::string message =
+        std::string("Context::adopt: Lagoon cannot use the host's device \"") + props.deviceName + "\": ";
+    for (size_t i = 0; i < missing.size(); ++i) message += (i ? "; " : "") + missing[i];
+    message +=
+        ". Create it with vk::required_device_extensions() and the chain of vk::RequiredFeatures "
+        "(docs/embedding.md)";
+    return make_error(message);
+  }
+
+  std::unique_ptr<Context> ctx(new Context());
+  ctx->adopted_ = true;
+  ctx->deferred_ = DeferredDestroyer(options.frames_in_flight);
+  ctx->instance_ = host.instance;
+  ctx->physical_device_ = host.physical_device;
+  ctx->device_ = host.device;
+  ctx->queue_ = host.queue;
+  ctx->queue_family_ = host.queue_family;
+  ctx->enabled_features_ = enabled_core_features(*host.device_create_info);
+  ctx->debug_utils_ = host.debug_utils;
+  if (ctx->debug_utils_)
+    ctx->set_name_fn_ = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
+        vkGetInstanceProcAddr(host.instance, "vkSetDebugUtilsObjectNameEXT"));
+
+  // DeviceInfo::index counts as LAGOON_DEVICE does, in the host instance's enumeration order.
+  uint32_t count = 0;
+  VK_CHECK(vkEnumeratePhysicalDevices(host.instance, &count, nullptr));
+  std::vector<VkPhysicalDevice> devices(count);
+  VK_CHECK(vkEnumeratePhysicalDevices(host.instance, &count, devices.data()));
+  uint32_t index = 0;
+  for (uint32_t i = 0; i < count; ++i)
+    if (devices[i] == host.physical_device) index = i;
+  ctx->read_device_info(index);
+
+  if (options.validation_messenger) {
+    if (!host.debug_utils)
+      return make_error(
+          "Context::adopt: AdoptOptions::validation_messenger needs VK_EXT_debug_utils enabled on the host's "
+          "instance (and HostDevice::debug_utils = true)");
+    if (auto r = ctx->install_messenger(); !r) return r.error();
+  }
+  ctx->create_own_objects(options.pipeline_cache_dir);
+  return ctx;
+}
+
+Result<void> Context::install_messenger() {
+  auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+      vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
+  if (create == nullptr) return make_error("Context::adopt: vkCreateDebugUtilsMessengerEXT is not available");
+  const VkDebugUtilsMessengerCreateInfoEXT info = messenger_create_info(validation_log_.get());
+  VK_CHECK(create(instance_, &info, nullptr, &messenger_));
   return {};
 }
 
@@ -145,15 +340,7 @@ Result<void> Context::create_instance(const ContextOptions& options) {
                               .pEngineName = "lagoon",
                               .engineVersion = VK_MAKE_VERSION(0, 1, 0),
                               .apiVersion = VK_API_VERSION_1_3};
-  const VkDebugUtilsMessengerCreateInfoEXT messenger_info{
-      .sType = VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT,
-      .messageSeverity =
-          VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT,
-      .messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
-                     VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
-                     VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT,
-      .pfnUserCallback = &ValidationLog::callback,
-      .pUserData = validation_log_.get()};
+  const VkDebugUtilsMessengerCreateInfoEXT messenger_info = messenger_create_info(validation_log_.get());
   // Synchronization validation catches missing barriers, which core validation does not.
   const VkValidationFeatureEnableEXT enables[] = {
       VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
@@ -202,7 +389,11 @@ Result<void> Context::pick_device(const ContextOptions& options) {
   if (!chosen) return chosen.error();
   physical_device_ = devices[*chosen];
   queue_family_ = static_cast<uint32_t>(find_queue_family(physical_device_, surface_));
+  read_device_info(static_cast<uint32_t>(*chosen));
+  return {};
+}
 
+void Context::read_device_info(uint32_t index) {
   VkPhysicalDeviceDriverProperties driver{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
   VkPhysicalDeviceProperties2 props2{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2,
                                      .pNext = &driver};
@@ -215,8 +406,7 @@ Result<void> Context::pick_device(const ContextOptions& options) {
            .driver_info = driver.driverInfo,
            .driver_version = driver_version_string(driver.driverID, properties_.driverVersion),
            .api_version = properties_.apiVersion,
-           .index = static_cast<uint32_t>(*chosen)};
-  return {};
+           .index = index};
 }
 
 void Context::create_device() {
@@ -225,32 +415,24 @@ void Context::create_device() {
                                            .queueFamilyIndex = queue_family_,
                                            .queueCount = 1,
                                            .pQueuePriorities = &priority};
-  std::vector<const char*> extensions{VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
+  std::vector<const char*> extensions = required_device_extensions();
   if (surface_ != VK_NULL_HANDLE) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
-
-  VkPhysicalDeviceFeatures supported{};
-  vkGetPhysicalDeviceFeatures(physical_device_, &supported);
-  VkPhysicalDeviceVulkan13Features f13{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES,
-                                       .synchronization2 = VK_TRUE,
-                                       .dynamicRendering = VK_TRUE};
-  VkPhysicalDeviceVulkan12Features f12{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES,
-                                       .pNext = &f13};
-  VkPhysicalDeviceFeatures2 features{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, .pNext = &f12};
-  // Optional features used when present (anisotropic filtering of the ocean textures; 64-bit floats in
-  // tests).
-  features.features.samplerAnisotropy = supported.samplerAnisotropy;
-  features.features.shaderFloat64 = supported.shaderFloat64;
-  features.features.fillModeNonSolid = supported.fillModeNonSolid;
+  // The same chain a host gets for adopt(), so the two paths cannot drift apart.
+  const RequiredFeatures features(physical_device_);
+  enabled_features_ = features.features2.features;
 
   const VkDeviceCreateInfo info{.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO,
-                                .pNext = &features,
+                                .pNext = features.chain(),
                                 .queueCreateInfoCount = 1,
                                 .pQueueCreateInfos = &queue_info,
                                 .enabledExtensionCount = static_cast<uint32_t>(extensions.size()),
                                 .ppEnabledExtensionNames = extensions.data()};
   VK_CHECK(vkCreateDevice(physical_device_, &info, nullptr, &device_));
   vkGetDeviceQueue(device_, queue_family_, 0, &queue_);
+}
 
+// What a context owns on either path: the one-shot pool and fence and the pipeline cache.
+void Context::create_own_objects(const std::filesystem::path& pipeline_cache_dir) {
   const VkCommandPoolCreateInfo pool_info{.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO,
                                           .flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT,
                                           .queueFamilyIndex = queue_family_};
@@ -261,6 +443,9 @@ void Context::create_device() {
   VkFence fence;
   VK_CHECK(vkCreateFence(device_, &fence_info, nullptr, &fence));
   one_shot_fence_ = Unique<VkFence>(device_, fence);
+  if (!pipeline_cache_dir.empty())
+    pipeline_cache_file_ = pipeline_cache_dir / pipeline_cache_file_name(properties_);
+  pipeline_cache_ = load_pipeline_cache(device_, properties_, pipeline_cache_file_);
 }
 
 Context::~Context() {
@@ -271,15 +456,17 @@ Context::~Context() {
     pipeline_cache_.reset();
     one_shot_fence_.reset();
     one_shot_pool_.reset();
-    vkDestroyDevice(device_, nullptr);
+    // An adopted device (and its instance) belongs to the host, which destroys it after this context.
+    if (!adopted_) vkDestroyDevice(device_, nullptr);
   }
   if (surface_ != VK_NULL_HANDLE) vkDestroySurfaceKHR(instance_, surface_, nullptr);
+  // The messenger is ours on both paths (adopt() makes one only when asked to).
   if (messenger_ != VK_NULL_HANDLE) {
     auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
         vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
     destroy(instance_, messenger_, nullptr);
   }
-  if (instance_ != VK_NULL_HANDLE) vkDestroyInstance(instance_, nullptr);
+  if (instance_ != VK_NULL_HANDLE && !adopted_) vkDestroyInstance(instance_, nullptr);
 }
 
 uint32_t Context::find_memory_type(uint32_t type_bits, VkMemoryPropertyFlags required,
