@@ -66,8 +66,10 @@ void GpuFft2d::record_pass(VkCommandBuffer cmd, size_t index, const vk::Buffer& 
   // Each invocation: two butterflies of a row, or one butterfly of two columns (fft_pass.comp).
   const std::array<uint32_t, 3> threads =
       p.columns ? std::array{n_ / 2, butterflies, groups} : std::array{butterflies / 2, n_, groups};
-  vk::dispatch(cmd, pipeline, {vk::bind(0, src), vk::bind(1, dst), vk::bind(2, twiddles_)}, push,
-               vk::groups_for(pipeline, threads));
+  vk::dispatch(cmd, pipeline,
+               {vk::bind(LAGOON_FFT_BIND_SRC, src), vk::bind(LAGOON_FFT_BIND_DST, dst),
+                vk::bind(LAGOON_FFT_BIND_TWIDDLES, twiddles_)},
+               push, vk::groups_for(pipeline, threads));
   vk::memory_barrier(cmd, vk::access::kComputeReadWrite, vk::access::kComputeReadWrite);
 }
 

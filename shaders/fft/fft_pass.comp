@@ -11,9 +11,9 @@ layout(local_size_x_id = LAGOON_FFT_SPEC_GROUP_X, local_size_y_id = LAGOON_FFT_S
 layout(constant_id = LAGOON_FFT_SPEC_COLUMNS) const bool FFT_COLUMNS = false;
 layout(constant_id = LAGOON_FFT_SPEC_FIELDS) const int FFT_FIELDS = 1;  // arrays per batch group (4 for the ocean's packed fields)
 
-layout(std430, binding = 0) readonly buffer Src { vec4 src[]; };  // complex pairs
-layout(std430, binding = 1) writeonly buffer Dst { vec4 dst[]; };
-layout(std430, binding = 2) readonly buffer Twiddles { vec2 twiddles[]; };  // exp(+2πi q/N), q < N
+layout(std430, binding = LAGOON_FFT_BIND_SRC) readonly buffer Src { vec4 src[]; };  // complex pairs
+layout(std430, binding = LAGOON_FFT_BIND_DST) writeonly buffer Dst { vec4 dst[]; };
+layout(std430, binding = LAGOON_FFT_BIND_TWIDDLES) readonly buffer Twiddles { vec2 twiddles[]; };  // exp(+2πi q/N), q < N
 layout(push_constant) uniform Push { FftPush p; };
 
 void main() {

@@ -12,13 +12,13 @@
 layout(local_size_x_id = LAGOON_FFT_SPEC_GROUP_X, local_size_y_id = LAGOON_FFT_SPEC_GROUP_Y) in;
 layout(constant_id = LAGOON_FFT_SPEC_LINES) const int FFT_LINES = 4;
 
-layout(std430, binding = 0) readonly buffer Src { vec2 src[]; };
-layout(std430, binding = 1) readonly buffer Twiddles { vec2 twiddles[]; };
-layout(rgba32f, binding = 2) uniform image2DArray displacement;  // (λDx, h, λDz, foam); foam read back
-layout(rgba32f, binding = 3) writeonly uniform image2DArray normal_jacobian;  // (nx, ny, nz, J)
+layout(std430, binding = LAGOON_OCEAN_BIND_FIELDS) readonly buffer Src { vec2 src[]; };
+layout(std430, binding = LAGOON_OCEAN_BIND_TWIDDLES) readonly buffer Twiddles { vec2 twiddles[]; };
+layout(rgba32f, binding = LAGOON_OCEAN_BIND_DISPLACEMENT) uniform image2DArray displacement;  // (λDx, h, λDz, foam); foam read back
+layout(rgba32f, binding = LAGOON_OCEAN_BIND_NORMAL_JACOBIAN) writeonly uniform image2DArray normal_jacobian;  // (nx, ny, nz, J)
 // (λ∂Dx/∂x, λ∂Dz/∂z, λ∂Dx/∂z, foam): the renderer sums the terms over cascades for the whole sea's
 // Jacobian; foam is repeated here so that the surface shader needs this texture and the normals only.
-layout(rgba16f, binding = 4) writeonly uniform image2DArray jacobian_terms;
+layout(rgba16f, binding = LAGOON_OCEAN_BIND_JACOBIAN_TERMS) writeonly uniform image2DArray jacobian_terms;
 layout(push_constant) uniform Push { OceanPush p; };
 #include "common/ocean_assemble.glsl"
 

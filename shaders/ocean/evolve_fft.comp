@@ -8,9 +8,9 @@
 
 layout(local_size_x_id = LAGOON_FFT_SPEC_GROUP_X, local_size_y_id = LAGOON_FFT_SPEC_GROUP_Y) in;
 
-layout(std430, binding = 0) readonly buffer Spectrum { vec4 h0_pair[]; };  // (h0(k), conj(h0(-k))) per k
-layout(std430, binding = 1) readonly buffer Omega { float omega[]; };      // ω(k), rad/s
-layout(std430, binding = 2) writeonly buffer Dst { vec4 dst[]; };  // complex pairs, [cascade][field][z][x]
+layout(std430, binding = LAGOON_OCEAN_BIND_SPECTRUM) readonly buffer Spectrum { vec4 h0_pair[]; };  // (h0(k), conj(h0(-k))) per k
+layout(std430, binding = LAGOON_OCEAN_BIND_OMEGA) readonly buffer Omega { float omega[]; };      // ω(k), rad/s
+layout(std430, binding = LAGOON_OCEAN_BIND_EVOLVED) writeonly buffer Dst { vec4 dst[]; };  // complex pairs, [cascade][field][z][x]
 layout(push_constant) uniform Push { OceanPush p; };
 
 void main() {

@@ -10,10 +10,10 @@
 layout(local_size_x_id = LAGOON_FFT_SPEC_GROUP_X, local_size_y_id = LAGOON_FFT_SPEC_GROUP_Y) in;
 layout(constant_id = LAGOON_FFT_SPEC_LINES) const int FFT_LINES = 4;
 
-layout(std430, binding = 0) readonly buffer Spectrum { vec4 h0_pair[]; };  // (h0(k), conj(h0(-k))) per k
-layout(std430, binding = 1) readonly buffer Omega { float omega[]; };      // ω(k), rad/s
-layout(std430, binding = 2) readonly buffer Twiddles { vec2 twiddles[]; };
-layout(std430, binding = 3) writeonly buffer Dst { vec2 dst[]; };  // [cascade][field][z][x]
+layout(std430, binding = LAGOON_OCEAN_BIND_SPECTRUM) readonly buffer Spectrum { vec4 h0_pair[]; };  // (h0(k), conj(h0(-k))) per k
+layout(std430, binding = LAGOON_OCEAN_BIND_OMEGA) readonly buffer Omega { float omega[]; };      // ω(k), rad/s
+layout(std430, binding = LAGOON_OCEAN_BIND_ROW_TWIDDLES) readonly buffer Twiddles { vec2 twiddles[]; };
+layout(std430, binding = LAGOON_OCEAN_BIND_ROWS) writeonly buffer Dst { vec2 dst[]; };  // [cascade][field][z][x]
 layout(push_constant) uniform Push { OceanPush p; };
 
 shared vec2 exchange[FFT_LINES * 4 * FFT_N];  // [line][field][element]

@@ -15,6 +15,11 @@
 #define LAGOON_FFT_SPEC_LINES 7    // lines per workgroup (the ocean's workgroup path)
 #define LAGOON_FFT_SPEC_FIELDS 8   // arrays per batch group (4 for the ocean's packed fields)
 
+// Binding slots of fft/fft_pass.comp.
+#define LAGOON_FFT_BIND_SRC 0
+#define LAGOON_FFT_BIND_DST 1
+#define LAGOON_FFT_BIND_TWIDDLES 2
+
 LAGOON_GPU_BEGIN
 // N, the Stockham stride, the radix and the direction are specialisation constants (common/fft.glsl).
 struct FftPush {

@@ -3,6 +3,26 @@
 #define LAGOON_SHARED_OCEAN_H
 #include "shared/interop.h"
 
+// Binding slots of the ocean step's shaders (shaders/ocean/*.comp) and compute/ocean/gpu.
+// Evolution (evolve_fft.comp, evolve_rows.comp):
+#define LAGOON_OCEAN_BIND_SPECTRUM 0      // vec4 (h0(k), conj(h0(-k))) per k, cascade after cascade
+#define LAGOON_OCEAN_BIND_OMEGA 1         // float ω(k)
+#define LAGOON_OCEAN_BIND_EVOLVED 2       // evolve_fft.comp: the first pass's output
+#define LAGOON_OCEAN_BIND_ROW_TWIDDLES 2  // evolve_rows.comp: the roots of unity
+#define LAGOON_OCEAN_BIND_ROWS 3          // evolve_rows.comp: the rows' output
+// Assembly (fft_assemble.comp, columns_assemble.comp):
+#define LAGOON_OCEAN_BIND_FIELDS 0           // the packed fields before the last pass
+#define LAGOON_OCEAN_BIND_TWIDDLES 1         // the roots of unity
+#define LAGOON_OCEAN_BIND_DISPLACEMENT 2     // image2DArray (λDx, h, λDz, foam)
+#define LAGOON_OCEAN_BIND_NORMAL_JACOBIAN 3  // image2DArray (n, J)
+#define LAGOON_OCEAN_BIND_JACOBIAN_TERMS 4   // image2DArray (λ∂Dx/∂x, λ∂Dz/∂z, λ∂Dx/∂z, foam)
+// A mip level from the one above (mips.comp): three sources, then the three destinations.
+#define LAGOON_MIPS_BIND_SRC 0  // + 0, 1, 2: displacement, normal_jacobian, jacobian_terms
+#define LAGOON_MIPS_BIND_DST 3  // + 0, 1, 2
+// The NaN/Inf count (field_check.comp, compute/ocean/gpu/field_check.h).
+#define LAGOON_CHECK_BIND_FIELDS 0  // + 0, 1, 2: displacement, normal_jacobian, jacobian_terms
+#define LAGOON_CHECK_BIND_COUNT 3
+
 LAGOON_GPU_BEGIN
 struct OceanPush {
   vec4 patch_size_m;  // per cascade of this resolution group (up to 4)

@@ -3,6 +3,7 @@
 #include <cstring>
 
 #include "lagoon_shaders/shaders.h"
+#include "shared/ocean.h"
 #include "vk/barriers.h"
 
 namespace lagoon::ocean {
@@ -24,8 +25,10 @@ void FieldCheck::record(VkCommandBuffer cmd, const GpuOcean& ocean) {
     };
     const int32_t layer = int32_t(t.layer);
     vk::dispatch(cmd, pipeline_,
-                 {vk::bind(0, mip0(t.displacement)), vk::bind(1, mip0(t.normal_jacobian)),
-                  vk::bind(2, mip0(t.jacobian_terms)), vk::bind(3, count_)},
+                 {vk::bind(LAGOON_CHECK_BIND_FIELDS, mip0(t.displacement)),
+                  vk::bind(LAGOON_CHECK_BIND_FIELDS + 1, mip0(t.normal_jacobian)),
+                  vk::bind(LAGOON_CHECK_BIND_FIELDS + 2, mip0(t.jacobian_terms)),
+                  vk::bind(LAGOON_CHECK_BIND_COUNT, count_)},
                  layer, vk::groups_for(pipeline_, {t.resolution, t.resolution, 1}));
   }
   vk::buffer_barrier(cmd, count_.handle(), vk::access::kComputeReadWrite, vk::access::kHostRead);

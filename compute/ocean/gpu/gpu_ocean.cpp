@@ -29,13 +29,68 @@ struct GpuOcean::Group {
   std::array<const vk::Image*, 3> images() const {
     return {&displacement, &normal_jacobian, &jacobian_terms};
   }
+  void upload_spectra(vk::Context& ctx, const std::vector<CascadeSpectrum>& spectra);
+  void create_images(vk::Context& ctx);
 };
 
 namespace {
 
 constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
 
+// One cascade's layer of the spectrum buffers: `pairs` gets (h0(k), conj(h0(-k))) per texel, so the
+// evolution reads both halves of the Hermitian pair at once; `omegas` gets ω(k).
+void pack_spectrum(const CascadeSpectrum& s, uint32_t n, float* pairs, float* omegas) {
+  for (uint32_t iz = 0; iz < n; ++iz)
+    for (uint32_t ix = 0; ix < n; ++ix) {
+      const size_t i = size_t{iz} * n + ix, mirrored = size_t{(n - iz) % n} * n + (n - ix) % n;
+      float* out = &pairs[i * 4];
+      out[0] = s.h0[i].real();
+      out[1] = s.h0[i].imag();
+      out[2] = s.h0[mirrored].real();  // conj(h0(-k))
+      out[3] = -s.h0[mirrored].imag();
+      omegas[i] = s.omega[i];
+    }
+}
+
 }  // namespace
+
+// The group's cascades' spectra, cascade after cascade, uploaded once: they do not change with time.
+void GpuOcean::Group::upload_spectra(vk::Context& ctx, const std::vector<CascadeSpectrum>& spectra) {
+  const size_t texels = size_t{n} * n;
+  std::vector<float> pairs(texels * 4 * cascades.size()), omegas(texels * cascades.size());
+  for (size_t layer = 0; layer < cascades.size(); ++layer)
+    pack_spectrum(spectra[cascades[layer]], n, &pairs[layer * texels * 4], &omegas[layer * texels]);
+  spectrum = vk::Buffer::create(ctx, pairs.size() * 4, kStorage, vk::MemoryUsage::Device, "ocean h0");
+  omega = vk::Buffer::create(ctx, omegas.size() * 4, kStorage, vk::MemoryUsage::Device, "ocean omega");
+  vk::upload_buffer(ctx, spectrum, vk::as_bytes_of(pairs));
+  vk::upload_buffer(ctx, omega, vk::as_bytes_of(omegas));
+}
+
+// The step's outputs, one layer per cascade with full mip chains, left in GENERAL for the compute passes.
+void GpuOcean::Group::create_images(vk::Context& ctx) {
+  const vk::ImageDesc desc{.format = VK_FORMAT_R32G32B32A32_SFLOAT,
+                           .extent = {n, n},
+                           .mip_levels = 0,
+                           .layers = uint32_t(cascades.size()),
+                           .array_view = true,
+                           .usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                                    VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT};
+  vk::ImageDesc d = desc;
+  d.debug_name = "ocean displacement";
+  displacement = vk::Image::create(ctx, d);
+  d.debug_name = "ocean normal+jacobian";
+  normal_jacobian = vk::Image::create(ctx, d);
+  // Half floats: the terms only decide where foam shows (relative error 5e-4), and half the bytes keep
+  // their mips and sampling cheap on CPU devices.
+  d.debug_name = "ocean jacobian terms";
+  d.format = VK_FORMAT_R16G16B16A16_SFLOAT;
+  jacobian_terms = vk::Image::create(ctx, d);
+  ctx.submit_and_wait([&](VkCommandBuffer cmd) {
+    for (const vk::Image* image : images())
+      vk::image_barrier(cmd, image->handle(), image->all_subresources(), VK_IMAGE_LAYOUT_UNDEFINED,
+                        VK_IMAGE_LAYOUT_GENERAL, vk::access::kNone, vk::access::kComputeReadWrite);
+  });
+}
 
 Result<std::unique_ptr<GpuOcean>> GpuOcean::create(vk::Context& ctx, const OceanParams& params,
                                                    FftVariant variant) {
@@ -83,51 +138,12 @@ void GpuOcean::build(std::vector<CascadeSpectrum> spectra) {
     (*it)->cascades.push_back(c);
   }
   for (auto& g : groups_) {
-    const uint32_t n = g->n, count = uint32_t(g->cascades.size());
+    const uint32_t count = uint32_t(g->cascades.size());
     if (count > LAGOON_MAX_CASCADES)
       vk::throw_usage_error("GpuOcean: more cascades than LAGOON_MAX_CASCADES");
-    const size_t texels = size_t{n} * n;
-    std::vector<float> pairs(texels * 4 * count), omegas(texels * count);
-    for (uint32_t layer = 0; layer < count; ++layer) {
-      const CascadeSpectrum& s = spectra_[g->cascades[layer]];
-      for (uint32_t iz = 0; iz < n; ++iz)
-        for (uint32_t ix = 0; ix < n; ++ix) {
-          const size_t i = size_t{iz} * n + ix, mirrored = size_t{(n - iz) % n} * n + (n - ix) % n;
-          float* out = &pairs[(layer * texels + i) * 4];
-          out[0] = s.h0[i].real();
-          out[1] = s.h0[i].imag();
-          out[2] = s.h0[mirrored].real();  // conj(h0(-k))
-          out[3] = -s.h0[mirrored].imag();
-          omegas[layer * texels + i] = s.omega[i];
-        }
-    }
-    g->spectrum = vk::Buffer::create(ctx_, pairs.size() * 4, kStorage, vk::MemoryUsage::Device, "ocean h0");
-    g->omega = vk::Buffer::create(ctx_, omegas.size() * 4, kStorage, vk::MemoryUsage::Device, "ocean omega");
-    vk::upload_buffer(ctx_, g->spectrum, vk::as_bytes_of(pairs));
-    vk::upload_buffer(ctx_, g->omega, vk::as_bytes_of(omegas));
-    g->fft = make_ocean_fft_path(ctx_, variant_, n, count);
-    const vk::ImageDesc desc{.format = VK_FORMAT_R32G32B32A32_SFLOAT,
-                             .extent = {n, n},
-                             .mip_levels = 0,
-                             .layers = count,
-                             .array_view = true,
-                             .usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
-                                      VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT};
-    vk::ImageDesc d = desc;
-    d.debug_name = "ocean displacement";
-    g->displacement = vk::Image::create(ctx_, d);
-    d.debug_name = "ocean normal+jacobian";
-    g->normal_jacobian = vk::Image::create(ctx_, d);
-    // Half floats: the terms only decide where foam shows (relative error 5e-4), and half the bytes keep
-    // their mips and sampling cheap on CPU devices.
-    d.debug_name = "ocean jacobian terms";
-    d.format = VK_FORMAT_R16G16B16A16_SFLOAT;
-    g->jacobian_terms = vk::Image::create(ctx_, d);
-    ctx_.submit_and_wait([&](VkCommandBuffer cmd) {
-      for (const vk::Image* image : g->images())
-        vk::image_barrier(cmd, image->handle(), image->all_subresources(), VK_IMAGE_LAYOUT_UNDEFINED,
-                          VK_IMAGE_LAYOUT_GENERAL, vk::access::kNone, vk::access::kComputeReadWrite);
-    });
+    g->upload_spectra(ctx_, spectra_);
+    g->fft = make_ocean_fft_path(ctx_, variant_, g->n, count);
+    g->create_images(ctx_);
   }
 }
 
@@ -166,12 +182,14 @@ void GpuOcean::record_step(VkCommandBuffer cmd, double time_s, double dt_s, vk::
           return vk::ImageRef{image.mip_view(m), VK_IMAGE_LAYOUT_GENERAL};
         };
         const uint32_t size = std::max(n >> mip, 1u);
-        vk::dispatch(
-            cmd, mips_,
-            {vk::bind(0, level(g->displacement, mip - 1)), vk::bind(1, level(g->normal_jacobian, mip - 1)),
-             vk::bind(2, level(g->jacobian_terms, mip - 1)), vk::bind(3, level(g->displacement, mip)),
-             vk::bind(4, level(g->normal_jacobian, mip)), vk::bind(5, level(g->jacobian_terms, mip))},
-            vk::groups_for(mips_, {size, size, count}));
+        vk::dispatch(cmd, mips_,
+                     {vk::bind(LAGOON_MIPS_BIND_SRC + 0, level(g->displacement, mip - 1)),
+                      vk::bind(LAGOON_MIPS_BIND_SRC + 1, level(g->normal_jacobian, mip - 1)),
+                      vk::bind(LAGOON_MIPS_BIND_SRC + 2, level(g->jacobian_terms, mip - 1)),
+                      vk::bind(LAGOON_MIPS_BIND_DST + 0, level(g->displacement, mip)),
+                      vk::bind(LAGOON_MIPS_BIND_DST + 1, level(g->normal_jacobian, mip)),
+                      vk::bind(LAGOON_MIPS_BIND_DST + 2, level(g->jacobian_terms, mip))},
+                     vk::groups_for(mips_, {size, size, count}));
       }
       vk::memory_barrier(cmd, vk::access::kComputeWrite, readers);
     }

@@ -1,6 +1,7 @@
 #include "ocean/gpu/ocean_fft_path.h"
 
 #include <algorithm>
+#include <array>
 #include <string>
 
 #include "fft/fft_plan.h"
@@ -18,6 +19,15 @@ constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_
 
 vk::ImageRef storage(const vk::Image& image) {
   return {image.mip_view(0), VK_IMAGE_LAYOUT_GENERAL};
+}
+
+// The assembly's resources, the same for both paths (common/ocean_assemble.glsl).
+std::array<vk::Binding, 5> assembly_bindings(const vk::Buffer& fields, const vk::Buffer& twiddles,
+                                             const OceanFftBindings& b) {
+  return {vk::bind(LAGOON_OCEAN_BIND_FIELDS, fields), vk::bind(LAGOON_OCEAN_BIND_TWIDDLES, twiddles),
+          vk::bind(LAGOON_OCEAN_BIND_DISPLACEMENT, storage(*b.displacement)),
+          vk::bind(LAGOON_OCEAN_BIND_NORMAL_JACOBIAN, storage(*b.normal_jacobian)),
+          vk::bind(LAGOON_OCEAN_BIND_JACOBIAN_TERMS, storage(*b.jacobian_terms))};
 }
 
 class StockhamPath : public OceanFftPath {
@@ -44,8 +54,10 @@ class StockhamPath : public OceanFftPath {
     const vk::Buffer* dst = &pong_;
     {
       vk::GpuScope s(timer, cmd, "ocean evolve+rows " + std::to_string(n_));
-      vk::dispatch(cmd, evolve_, {vk::bind(0, *b.spectrum), vk::bind(1, *b.omega), vk::bind(2, ping_)}, push,
-                   vk::groups_for(evolve_, {n_ / first.radix, n_, count}));
+      vk::dispatch(cmd, evolve_,
+                   {vk::bind(LAGOON_OCEAN_BIND_SPECTRUM, *b.spectrum),
+                    vk::bind(LAGOON_OCEAN_BIND_OMEGA, *b.omega), vk::bind(LAGOON_OCEAN_BIND_EVOLVED, ping_)},
+                   push, vk::groups_for(evolve_, {n_ / first.radix, n_, count}));
       vk::memory_barrier(cmd, vk::access::kComputeReadWrite, vk::access::kComputeReadWrite);
       for (uint32_t i = 1; i + 1 < passes; ++i) {
         fft_.record_pass(cmd, i, *src, *dst, 4 * count);
@@ -53,10 +65,9 @@ class StockhamPath : public OceanFftPath {
       }
     }
     vk::GpuScope s(timer, cmd, "ocean columns+assemble " + std::to_string(n_));
-    vk::dispatch(cmd, assemble_,
-                 {vk::bind(0, *src), vk::bind(1, fft_.twiddles()), vk::bind(2, storage(*b.displacement)),
-                  vk::bind(3, storage(*b.normal_jacobian)), vk::bind(4, storage(*b.jacobian_terms))},
-                 push, vk::groups_for(assemble_, {n_ / 2, n_ / last.radix, count}));
+    const auto bindings = assembly_bindings(*src, fft_.twiddles(), b);
+    vk::dispatch(cmd, assemble_, bindings, &push, sizeof(push),
+                 vk::groups_for(assemble_, {n_ / 2, n_ / last.radix, count}));
   }
 
  private:
@@ -99,15 +110,14 @@ class WorkgroupPath : public OceanFftPath {
       vk::GpuScope s(timer, cmd, "ocean evolve+rows " + std::to_string(n_));
       vk::dispatch(
           cmd, rows_,
-          {vk::bind(0, *b.spectrum), vk::bind(1, *b.omega), vk::bind(2, twiddles_), vk::bind(3, fields_)},
+          {vk::bind(LAGOON_OCEAN_BIND_SPECTRUM, *b.spectrum), vk::bind(LAGOON_OCEAN_BIND_OMEGA, *b.omega),
+           vk::bind(LAGOON_OCEAN_BIND_ROW_TWIDDLES, twiddles_), vk::bind(LAGOON_OCEAN_BIND_ROWS, fields_)},
           push, {1, n_ / lines_, count});
       vk::memory_barrier(cmd, vk::access::kComputeReadWrite, vk::access::kComputeReadWrite);
     }
     vk::GpuScope s(timer, cmd, "ocean columns+assemble " + std::to_string(n_));
-    vk::dispatch(cmd, columns_,
-                 {vk::bind(0, fields_), vk::bind(1, twiddles_), vk::bind(2, storage(*b.displacement)),
-                  vk::bind(3, storage(*b.normal_jacobian)), vk::bind(4, storage(*b.jacobian_terms))},
-                 push, {n_ / lines_, 1, count});
+    const auto bindings = assembly_bindings(fields_, twiddles_, b);
+    vk::dispatch(cmd, columns_, bindings, &push, sizeof(push), {n_ / lines_, 1, count});
   }
 
  private:
