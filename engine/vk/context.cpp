@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "vk/check.h"
+#include "vk/device_requirements.h"
 #include "vk/device_select.h"
 #include "vk/pipeline_cache.h"
 
@@ -39,147 +40,6 @@ bool has_instance_extension(const char* name) {
   return false;
 }
 
-bool has_device_extension(VkPhysicalDevice device, const char* name) {
-  uint32_t count = 0;
-  VK_CHECK(vkEnumerateDeviceExtensionProperties(device, nullptr, &count, nullptr));
-  std::vector<VkExtensionProperties> exts(count);
-  VK_CHECK(vkEnumerateDeviceExtensionProperties(device, nullptr, &count, exts.data()));
-  for (const auto& e : exts)
-    if (std::strcmp(e.extensionName, name) == 0) return true;
-  return false;
-}
-
-// The queue family that does graphics and compute (and presents, when a surface is given), or -1.
-int find_queue_family(VkPhysicalDevice device, VkSurfaceKHR surface) {
-  uint32_t count = 0;
-  vkGetPhysicalDeviceQueueFamilyProperties(device, &count, nullptr);
-  std::vector<VkQueueFamilyProperties> families(count);
-  vkGetPhysicalDeviceQueueFamilyProperties(device, &count, families.data());
-  for (uint32_t i = 0; i < count; ++i) {
-    const VkQueueFlags need = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
-    if ((families[i].queueFlags & need) != need) continue;
-    if (surface != VK_NULL_HANDLE) {
-      VkBool32 present = VK_FALSE;
-      VK_CHECK(vkGetPhysicalDeviceSurfaceSupportKHR(device, i, surface, &present));
-      if (!present) continue;
-    }
-    return static_cast<int>(i);
-  }
-  return -1;
-}
-
-std::string unsuitable_reason(VkPhysicalDevice device, VkSurfaceKHR surface) {
-  VkPhysicalDeviceProperties props;
-  vkGetPhysicalDeviceProperties(device, &props);
-  if (props.apiVersion < VK_API_VERSION_1_3) return "Vulkan 1.3 is required";
-  VkPhysicalDeviceVulkan13Features f13{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
-  VkPhysicalDeviceFeatures2 features{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, .pNext = &f13};
-  vkGetPhysicalDeviceFeatures2(device, &features);
-  if (!f13.dynamicRendering) return "dynamicRendering is not supported";
-  if (!f13.synchronization2) return "synchronization2 is not supported";
-  if (!has_device_extension(device, VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME))
-    return VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME " is not supported";
-  if (surface != VK_NULL_HANDLE && !has_device_extension(device, VK_KHR_SWAPCHAIN_EXTENSION_NAME))
-    return "no swapchain support";
-  if (find_queue_family(device, surface) < 0)
-    return surface ? "no queue does graphics, compute and present" : "no queue does graphics and compute";
-  return "";
-}
-
-// Why Context::adopt() cannot use the host's device, one item per problem; empty when it can.
-std::vector<std::string> host_device_shortfalls(const HostDevice& host) {
-  std::vector<std::string> missing;
-  VkPhysicalDeviceProperties props;
-  vkGetPhysicalDeviceProperties(host.physical_device, &props);
-  if (host.instance_api_version < kRequiredApiVersion)
-    missing.push_back("the instance was created for Vulkan " + api_version_string(host.instance_api_version) +
-                      " (HostDevice::instance_api_version), not 1.3 or later");
-  if (props.apiVersion < kRequiredApiVersion)
-    missing.push_back("the device has Vulkan " + api_version_string(props.apiVersion) + ", not 1.3 or later");
-
-  uint32_t family_count = 0;
-  vkGetPhysicalDeviceQueueFamilyProperties(host.physical_device, &family_count, nullptr);
-  std::vector<VkQueueFamilyProperties> families(family_count);
-  vkGetPhysicalDeviceQueueFamilyProperties(host.physical_device, &family_count, families.data());
-  const VkQueueFlags need = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
-  if (host.queue_family >= family_count || (families[host.queue_family].queueFlags & need) != need)
-    missing.push_back("queue family " + std::to_string(host.queue_family) +
-                      " (HostDevice::queue_family) does not do both graphics and compute");
-
-  const VkDeviceCreateInfo& info = *host.device_create_info;
-  for (const char* name : required_device_extensions()) {
-    bool enabled = false;
-    for (uint32_t i = 0; i < info.enabledExtensionCount; ++i)
-      enabled = enabled || std::strcmp(info.ppEnabledExtensionNames[i], name) == 0;
-    if (!enabled)
-      missing.push_back(std::string("device extension ") + name +
-                        (has_device_extension(host.physical_device, name)
-                             ? " is not enabled"
-                             : " is not supported by the device"));
-  }
-
-  // What the host enabled: pEnabledFeatures or a VkPhysicalDeviceFeatures2 in the chain for the core
-  // features; the 1.3 features either in VkPhysicalDeviceVulkan13Features or in their own structs.
-  const VkPhysicalDeviceFeatures* core = info.pEnabledFeatures;
-  bool dynamic_rendering = false, synchronization2 = false;
-  for (auto* s = static_cast<const VkBaseInStructure*>(info.pNext); s != nullptr; s = s->pNext) {
-    switch (s->sType) {
-      case VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2:
-        core = &reinterpret_cast<const VkPhysicalDeviceFeatures2*>(s)->features;
-        break;
-      case VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES: {
-        auto* f = reinterpret_cast<const VkPhysicalDeviceVulkan13Features*>(s);
-        dynamic_rendering = dynamic_rendering || f->dynamicRendering;
-        synchronization2 = synchronization2 || f->synchronization2;
-        break;
-      }
-      case VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DYNAMIC_RENDERING_FEATURES:
-        dynamic_rendering =
-            dynamic_rendering ||
-            reinterpret_cast<const VkPhysicalDeviceDynamicRenderingFeatures*>(s)->dynamicRendering;
-        break;
-      case VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SYNCHRONIZATION_2_FEATURES:
-        synchronization2 =
-            synchronization2 ||
-            reinterpret_cast<const VkPhysicalDeviceSynchronization2Features*>(s)->synchronization2;
-        break;
-      default:
-        break;
-    }
-  }
-  // What the device supports. vkGetPhysicalDeviceFeatures2 needs a 1.1 instance; the 1.3 struct a 1.3 device.
-  VkPhysicalDeviceVulkan13Features supported13{.sType =
-                                                   VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
-  VkPhysicalDeviceFeatures2 supported{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
-  if (host.instance_api_version >= VK_API_VERSION_1_1) {
-    if (props.apiVersion >= kRequiredApiVersion) supported.pNext = &supported13;
-    vkGetPhysicalDeviceFeatures2(host.physical_device, &supported);
-  } else {
-    vkGetPhysicalDeviceFeatures(host.physical_device, &supported.features);
-  }
-  auto feature = [&](const char* name, bool enabled, bool available, const char* why = "") {
-    if (!enabled)
-      missing.push_back(std::string("feature ") + name +
-                        (available ? " is not enabled" : " is not supported by the device") + why);
-  };
-  feature("dynamicRendering", dynamic_rendering, supported13.dynamicRendering);
-  feature("synchronization2", synchronization2, supported13.synchronization2);
-  // Lagoon's samplers use anisotropy wherever the device supports it (vk/sampler.cpp).
-  if (supported.features.samplerAnisotropy)
-    feature("samplerAnisotropy", core != nullptr && core->samplerAnisotropy, true,
-            " (the device has it, and Lagoon's samplers use it wherever supported)");
-  return missing;
-}
-
-// The core features a host enabled, from what it gave vkCreateDevice.
-VkPhysicalDeviceFeatures enabled_core_features(const VkDeviceCreateInfo& info) {
-  const VkPhysicalDeviceFeatures* core = info.pEnabledFeatures;
-  for (auto* s = static_cast<const VkBaseInStructure*>(info.pNext); s != nullptr; s = s->pNext)
-    if (s->sType == VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2)
-      core = &reinterpret_cast<const VkPhysicalDeviceFeatures2*>(s)->features;
-  return core ? *core : VkPhysicalDeviceFeatures{};
-}
-
 VkDebugUtilsMessengerCreateInfoEXT messenger_create_info(ValidationLog* log) {
   return {.sType = VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT,
           .messageSeverity =
@@ -199,26 +59,6 @@ std::filesystem::path default_cache_dir() {
 }
 
 }  // namespace
-
-std::vector<const char*> required_device_extensions() {
-  return {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
-}
-
-RequiredFeatures::RequiredFeatures(VkPhysicalDevice optional_from) {
-  features2.pNext = &vulkan11;
-  vulkan11.pNext = &vulkan12;
-  vulkan12.pNext = &vulkan13;
-  vulkan13.synchronization2 = VK_TRUE;
-  vulkan13.dynamicRendering = VK_TRUE;
-  if (optional_from == VK_NULL_HANDLE) return;
-  VkPhysicalDeviceFeatures supported{};
-  vkGetPhysicalDeviceFeatures(optional_from, &supported);
-  // Optional features used when present (anisotropic filtering of the ocean textures; 64-bit floats in
-  // tests).
-  features2.features.samplerAnisotropy = supported.samplerAnisotropy;
-  features2.features.shaderFloat64 = supported.shaderFloat64;
-  features2.features.fillModeNonSolid = supported.fillModeNonSolid;
-}
 
 AdoptOptions AdoptOptions::from_environment() {
   return {.pipeline_cache_dir = default_cache_dir()};
@@ -264,7 +104,7 @@ Result<std::unique_ptr<Context>> Context::adopt(const HostDevice& host, const Ad
         "created with (Vulkan cannot be asked which extensions and features a device has enabled)");
   if (options.frames_in_flight == 0)
     return make_error("Context::adopt: AdoptOptions::frames_in_flight must be >= 1");
-  if (auto missing = host_device_shortfalls(host); !missing.empty()) {
+  if (auto missing = detail::host_device_shortfalls(host); !missing.empty()) {
     VkPhysicalDeviceProperties props;
     vkGetPhysicalDeviceProperties(host.physical_device, &props);
     std::string message =
@@ -284,7 +124,7 @@ Result<std::unique_ptr<Context>> Context::adopt(const HostDevice& host, const Ad
   ctx->device_ = host.device;
   ctx->queue_ = host.queue;
   ctx->queue_family_ = host.queue_family;
-  ctx->enabled_features_ = enabled_core_features(*host.device_create_info);
+  ctx->enabled_features_ = detail::enabled_core_features(*host.device_create_info);
   ctx->debug_utils_ = host.debug_utils;
   if (ctx->debug_utils_)
     ctx->set_name_fn_ = reinterpret_cast<PFN_vkSetDebugUtilsObjectNameEXT>(
@@ -383,12 +223,12 @@ Result<void> Context::pick_device(const ContextOptions& options) {
     vkGetPhysicalDeviceProperties(d, &props);
     candidates.push_back({.name = props.deviceName,
                           .type = props.deviceType,
-                          .unsuitable_reason = unsuitable_reason(d, surface_)});
+                          .unsuitable_reason = detail::unsuitable_reason(d, surface_)});
   }
   auto chosen = choose_device(candidates, options.device_override);
   if (!chosen) return chosen.error();
   physical_device_ = devices[*chosen];
-  queue_family_ = static_cast<uint32_t>(find_queue_family(physical_device_, surface_));
+  queue_family_ = static_cast<uint32_t>(detail::find_queue_family(physical_device_, surface_));
   read_device_info(static_cast<uint32_t>(*chosen));
   return {};
 }

@@ -90,6 +90,167 @@ bool compatible(VkDescriptorType type, const Binding& b) {
   }
 }
 
+// The given bindings in (binding, array element) order, so the elements of one binding lie next to each
+// other and duplicates are neighbours.
+std::vector<const Binding*> sorted_by_slot(std::span<const Binding> bindings) {
+  std::vector<const Binding*> order;
+  for (const Binding& b : bindings) order.push_back(&b);
+  std::stable_sort(order.begin(), order.end(), [](const Binding* a, const Binding* b) {
+    return std::pair(a->binding, a->array_element) < std::pair(b->binding, b->array_element);
+  });
+  return order;
+}
+
+// The shaders' declaration of `order[i]`, after checking that it exists, takes that kind of resource and is
+// not given twice (`order` as sorted_by_slot returns it).
+const InterfaceBinding& checked_declaration(const std::string& pass,
+                                            std::span<const InterfaceBinding> declared,
+                                            std::span<const Binding* const> order, size_t i) {
+  const Binding& b = *order[i];
+  auto it =
+      std::find_if(declared.begin(), declared.end(), [&](const auto& d) { return d.binding == b.binding; });
+  if (it == declared.end() || b.array_element >= it->count)
+    throw_usage_error("pass " + pass + ": binding " + std::to_string(b.binding) + "[" +
+                      std::to_string(b.array_element) + "] is not declared by the shaders");
+  if (!compatible(it->type, b))
+    throw_usage_error("pass " + pass + ": binding " + std::to_string(b.binding) + " (" + it->name +
+                      ") is given a resource of the wrong kind for descriptor type " +
+                      std::to_string(it->type));
+  if (i > 0 && order[i - 1]->binding == b.binding && order[i - 1]->array_element == b.array_element)
+    throw_usage_error("pass " + pass + ": binding " + std::to_string(b.binding) + "[" +
+                      std::to_string(b.array_element) + "] is given twice");
+  return *it;
+}
+
+// Push-descriptor writes with the infos they point at. One write per run of consecutive array elements
+// (elements 0..n-1 of a binding in one write, with dstArrayElement 0). Mesa 22.3's lavapipe applies
+// push-descriptor writes with dstArrayElement > 0 to element 0 and leaves the rest unbound, so sampler arrays
+// written element by element lost every element but the first there (issue 10: the second and third ocean
+// cascades vanished on lavapipe only).
+class DescriptorWrites {
+ public:
+  // The info vectors never reallocate (writes point into them): `capacity` is the number of bindings.
+  explicit DescriptorWrites(size_t capacity) {
+    buffers_.reserve(capacity);
+    images_.reserve(capacity);
+    texel_views_.reserve(capacity);
+  }
+
+  // Bindings must come in (binding, array element) order.
+  void add(const Binding& b, VkDescriptorType type) {
+    const bool continues = !writes_.empty() && writes_.back().dstBinding == b.binding &&
+                           writes_.back().dstArrayElement + writes_.back().descriptorCount == b.array_element;
+    VkWriteDescriptorSet w{.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
+                           .dstBinding = b.binding,
+                           .dstArrayElement = b.array_element,
+                           .descriptorCount = 1,
+                           .descriptorType = type};
+    if (const auto* buf = std::get_if<BufferRef>(&b.resource)) {
+      buffers_.push_back({buf->buffer, buf->offset, buf->range});
+      w.pBufferInfo = &buffers_.back();
+    } else if (const auto* img = std::get_if<ImageRef>(&b.resource)) {
+      images_.push_back({img->sampler, img->view, img->layout});
+      w.pImageInfo = &images_.back();
+    } else {
+      texel_views_.push_back(std::get<TexelBufferRef>(b.resource).view);
+      w.pTexelBufferView = &texel_views_.back();
+    }
+    if (continues)
+      ++writes_.back().descriptorCount;  // the infos of one write lie next to each other in their vector
+    else
+      writes_.push_back(w);
+  }
+
+  const std::vector<VkWriteDescriptorSet>& writes() const { return writes_; }
+
+ private:
+  std::vector<VkWriteDescriptorSet> writes_;
+  std::vector<VkDescriptorBufferInfo> buffers_;
+  std::vector<VkDescriptorImageInfo> images_;
+  std::vector<VkBufferView> texel_views_;
+};
+
+VkPipelineShaderStageCreateInfo shader_stage(VkShaderStageFlagBits stage, VkShaderModule module,
+                                             const ShaderReflection& reflection, const SpecInfo& spec) {
+  return {.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
+          .stage = stage,
+          .module = module,
+          .pName = reflection.entry_point.c_str(),
+          .pSpecializationInfo = spec.get()};
+}
+
+// Straight alpha ("over") when the pass blends; otherwise colour is written as is.
+VkPipelineColorBlendAttachmentState blend_attachment(const GraphicsDesc& desc) {
+  return {.blendEnable = desc.alpha_blend,
+          .srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA,
+          .dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA,
+          .colorBlendOp = VK_BLEND_OP_ADD,
+          .srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE,
+          .dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA,
+          .alphaBlendOp = VK_BLEND_OP_ADD,
+          .colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
+                            VK_COLOR_COMPONENT_A_BIT};
+}
+
+// The fixed-function state `desc` selects, for dynamic rendering into its formats; viewport and scissor
+// are dynamic, and there is no vertex input (vertex pulling).
+VkPipeline create_graphics_pipeline(const Context& ctx, const GraphicsDesc& desc,
+                                    std::span<const VkPipelineShaderStageCreateInfo> stages,
+                                    VkPipelineLayout layout) {
+  const VkPipelineVertexInputStateCreateInfo vertex_input{
+      .sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+  const VkPipelineInputAssemblyStateCreateInfo assembly{
+      .sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO, .topology = desc.topology};
+  const VkPipelineViewportStateCreateInfo viewport{
+      .sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO, .viewportCount = 1, .scissorCount = 1};
+  const VkPipelineRasterizationStateCreateInfo raster{
+      .sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO,
+      .polygonMode = VK_POLYGON_MODE_FILL,
+      .cullMode = desc.cull,
+      .frontFace = desc.front_face,
+      .lineWidth = 1.0f};
+  const VkPipelineMultisampleStateCreateInfo multisample{
+      .sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO,
+      .rasterizationSamples = VK_SAMPLE_COUNT_1_BIT};
+  const VkPipelineDepthStencilStateCreateInfo depth{
+      .sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO,
+      .depthTestEnable = desc.depth_test,
+      .depthWriteEnable = desc.depth_write,
+      .depthCompareOp = desc.depth_compare};
+  const std::vector<VkPipelineColorBlendAttachmentState> blends(desc.color_formats.size(),
+                                                                blend_attachment(desc));
+  const VkPipelineColorBlendStateCreateInfo blend{
+      .sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO,
+      .attachmentCount = static_cast<uint32_t>(blends.size()),
+      .pAttachments = blends.data()};
+  const VkDynamicState dynamic_states[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+  const VkPipelineDynamicStateCreateInfo dynamic{
+      .sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO,
+      .dynamicStateCount = 2,
+      .pDynamicStates = dynamic_states};
+  const VkPipelineRenderingCreateInfo rendering{
+      .sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
+      .colorAttachmentCount = static_cast<uint32_t>(desc.color_formats.size()),
+      .pColorAttachmentFormats = desc.color_formats.data(),
+      .depthAttachmentFormat = desc.depth_format};
+  const VkGraphicsPipelineCreateInfo info{.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO,
+                                          .pNext = &rendering,
+                                          .stageCount = static_cast<uint32_t>(stages.size()),
+                                          .pStages = stages.data(),
+                                          .pVertexInputState = &vertex_input,
+                                          .pInputAssemblyState = &assembly,
+                                          .pViewportState = &viewport,
+                                          .pRasterizationState = &raster,
+                                          .pMultisampleState = &multisample,
+                                          .pDepthStencilState = &depth,
+                                          .pColorBlendState = &blend,
+                                          .pDynamicState = &dynamic,
+                                          .layout = layout};
+  VkPipeline pipeline;
+  VK_CHECK(vkCreateGraphicsPipelines(ctx.device(), ctx.pipeline_cache(), 1, &info, nullptr, &pipeline));
+  return pipeline;
+}
+
 }  // namespace
 
 PipelineInterface::PipelineInterface(const Context& ctx, std::string name,
@@ -137,60 +298,13 @@ void PipelineInterface::bind(VkCommandBuffer cmd, VkPipelineBindPoint point,
     throw_usage_error("pass " + name_ + ": " + std::to_string(bindings.size()) +
                       " bindings given, the shaders declare " + std::to_string(expected));
 
-  // One write per run of consecutive array elements (elements 0..n-1 of a binding in one write, with
-  // dstArrayElement 0). Mesa 22.3's lavapipe applies push-descriptor writes with dstArrayElement > 0 to
-  // element 0 and leaves the rest unbound, so sampler arrays written element by element lost every element
-  // but the first there (issue 10: the second and third ocean cascades vanished on lavapipe only).
-  std::vector<const Binding*> order;
-  for (const Binding& b : bindings) order.push_back(&b);
-  std::stable_sort(order.begin(), order.end(), [](const Binding* a, const Binding* b) {
-    return std::pair(a->binding, a->array_element) < std::pair(b->binding, b->array_element);
-  });
-  std::vector<VkWriteDescriptorSet> writes;
-  std::vector<VkDescriptorBufferInfo> buffers;
-  std::vector<VkDescriptorImageInfo> images;
-  std::vector<VkBufferView> texel_views;
-  buffers.reserve(bindings.size());
-  images.reserve(bindings.size());
-  texel_views.reserve(bindings.size());
-  for (size_t i = 0; i < order.size(); ++i) {
-    const Binding& b = *order[i];
-    auto it = std::find_if(bindings_.begin(), bindings_.end(),
-                           [&](const auto& d) { return d.binding == b.binding; });
-    if (it == bindings_.end() || b.array_element >= it->count)
-      throw_usage_error("pass " + name_ + ": binding " + std::to_string(b.binding) + "[" +
-                        std::to_string(b.array_element) + "] is not declared by the shaders");
-    if (!compatible(it->type, b))
-      throw_usage_error("pass " + name_ + ": binding " + std::to_string(b.binding) + " (" + it->name +
-                        ") is given a resource of the wrong kind for descriptor type " +
-                        std::to_string(it->type));
-    if (i > 0 && order[i - 1]->binding == b.binding && order[i - 1]->array_element == b.array_element)
-      throw_usage_error("pass " + name_ + ": binding " + std::to_string(b.binding) + "[" +
-                        std::to_string(b.array_element) + "] is given twice");
-    const bool continues = !writes.empty() && writes.back().dstBinding == b.binding &&
-                           writes.back().dstArrayElement + writes.back().descriptorCount == b.array_element;
-    VkWriteDescriptorSet w{.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
-                           .dstBinding = b.binding,
-                           .dstArrayElement = b.array_element,
-                           .descriptorCount = 1,
-                           .descriptorType = it->type};
-    if (const auto* buf = std::get_if<BufferRef>(&b.resource)) {
-      buffers.push_back({buf->buffer, buf->offset, buf->range});
-      w.pBufferInfo = &buffers.back();
-    } else if (const auto* img = std::get_if<ImageRef>(&b.resource)) {
-      images.push_back({img->sampler, img->view, img->layout});
-      w.pImageInfo = &images.back();
-    } else {
-      texel_views.push_back(std::get<TexelBufferRef>(b.resource).view);
-      w.pTexelBufferView = &texel_views.back();
-    }
-    if (continues)
-      ++writes.back().descriptorCount;  // the infos of one write lie next to each other in their vector
-    else
-      writes.push_back(w);
-  }
-  if (!writes.empty())
-    push_descriptors_(cmd, point, layout_, 0, static_cast<uint32_t>(writes.size()), writes.data());
+  const std::vector<const Binding*> order = sorted_by_slot(bindings);
+  DescriptorWrites writes(bindings.size());
+  for (size_t i = 0; i < order.size(); ++i)
+    writes.add(*order[i], checked_declaration(name_, bindings_, order, i).type);
+  if (!writes.writes().empty())
+    push_descriptors_(cmd, point, layout_, 0, static_cast<uint32_t>(writes.writes().size()),
+                      writes.writes().data());
   if (push_size_ > 0) vkCmdPushConstants(cmd, layout_, push_stages_, 0, push_size_, push);
 }
 
@@ -210,11 +324,7 @@ ComputePipeline ComputePipeline::create(const Context& ctx, const ShaderCode& sh
   const SpecInfo spec_info(spec);
   const VkComputePipelineCreateInfo info{
       .sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO,
-      .stage = {.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
-                .stage = VK_SHADER_STAGE_COMPUTE_BIT,
-                .module = module,
-                .pName = stage.second.entry_point.c_str(),
-                .pSpecializationInfo = spec_info.get()},
+      .stage = shader_stage(VK_SHADER_STAGE_COMPUTE_BIT, module, stage.second, spec_info),
       .layout = p.interface_.layout()};
   VkPipeline pipeline;
   VK_CHECK(vkCreateComputePipelines(ctx.device(), ctx.pipeline_cache(), 1, &info, nullptr, &pipeline));
@@ -248,76 +358,9 @@ GraphicsPipeline GraphicsPipeline::create(const Context& ctx, const GraphicsDesc
   Unique<VkShaderModule> vs = make_module(ctx, *desc.vertex), fs = make_module(ctx, *desc.fragment);
   const SpecInfo spec_info(desc.spec);
   const VkPipelineShaderStageCreateInfo shader_stages[] = {
-      {.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
-       .stage = VK_SHADER_STAGE_VERTEX_BIT,
-       .module = vs,
-       .pName = stages[0].second.entry_point.c_str(),
-       .pSpecializationInfo = spec_info.get()},
-      {.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
-       .stage = VK_SHADER_STAGE_FRAGMENT_BIT,
-       .module = fs,
-       .pName = stages[1].second.entry_point.c_str(),
-       .pSpecializationInfo = spec_info.get()}};
-  const VkPipelineVertexInputStateCreateInfo vertex_input{
-      .sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-  const VkPipelineInputAssemblyStateCreateInfo assembly{
-      .sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO, .topology = desc.topology};
-  const VkPipelineViewportStateCreateInfo viewport{
-      .sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO, .viewportCount = 1, .scissorCount = 1};
-  const VkPipelineRasterizationStateCreateInfo raster{
-      .sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO,
-      .polygonMode = VK_POLYGON_MODE_FILL,
-      .cullMode = desc.cull,
-      .frontFace = desc.front_face,
-      .lineWidth = 1.0f};
-  const VkPipelineMultisampleStateCreateInfo multisample{
-      .sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO,
-      .rasterizationSamples = VK_SAMPLE_COUNT_1_BIT};
-  const VkPipelineDepthStencilStateCreateInfo depth{
-      .sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO,
-      .depthTestEnable = desc.depth_test,
-      .depthWriteEnable = desc.depth_write,
-      .depthCompareOp = desc.depth_compare};
-  const VkPipelineColorBlendAttachmentState blend_attachment{
-      .blendEnable = desc.alpha_blend,
-      .srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA,
-      .dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA,
-      .colorBlendOp = VK_BLEND_OP_ADD,
-      .srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE,
-      .dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA,
-      .alphaBlendOp = VK_BLEND_OP_ADD,
-      .colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
-                        VK_COLOR_COMPONENT_A_BIT};
-  const std::vector<VkPipelineColorBlendAttachmentState> blends(desc.color_formats.size(), blend_attachment);
-  const VkPipelineColorBlendStateCreateInfo blend{
-      .sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO,
-      .attachmentCount = static_cast<uint32_t>(blends.size()),
-      .pAttachments = blends.data()};
-  const VkDynamicState dynamic_states[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
-  const VkPipelineDynamicStateCreateInfo dynamic{
-      .sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO,
-      .dynamicStateCount = 2,
-      .pDynamicStates = dynamic_states};
-  const VkPipelineRenderingCreateInfo rendering{
-      .sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
-      .colorAttachmentCount = static_cast<uint32_t>(desc.color_formats.size()),
-      .pColorAttachmentFormats = desc.color_formats.data(),
-      .depthAttachmentFormat = desc.depth_format};
-  const VkGraphicsPipelineCreateInfo info{.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO,
-                                          .pNext = &rendering,
-                                          .stageCount = 2,
-                                          .pStages = shader_stages,
-                                          .pVertexInputState = &vertex_input,
-                                          .pInputAssemblyState = &assembly,
-                                          .pViewportState = &viewport,
-                                          .pRasterizationState = &raster,
-                                          .pMultisampleState = &multisample,
-                                          .pDepthStencilState = &depth,
-                                          .pColorBlendState = &blend,
-                                          .pDynamicState = &dynamic,
-                                          .layout = p.interface_.layout()};
-  VkPipeline pipeline;
-  VK_CHECK(vkCreateGraphicsPipelines(ctx.device(), ctx.pipeline_cache(), 1, &info, nullptr, &pipeline));
+      shader_stage(VK_SHADER_STAGE_VERTEX_BIT, vs, stages[0].second, spec_info),
+      shader_stage(VK_SHADER_STAGE_FRAGMENT_BIT, fs, stages[1].second, spec_info)};
+  const VkPipeline pipeline = create_graphics_pipeline(ctx, desc, shader_stages, p.interface_.layout());
   p.pipeline_ = Unique<VkPipeline>(ctx.device(), pipeline);
   ctx.set_name(pipeline, VK_OBJECT_TYPE_PIPELINE, p.interface_.name().c_str());
   return p;

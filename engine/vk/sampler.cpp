@@ -8,9 +8,8 @@
 namespace lagoon::vk {
 
 Unique<VkSampler> create_sampler(const Context& ctx, const SamplerDesc& desc) {
-  VkPhysicalDeviceFeatures features;
-  vkGetPhysicalDeviceFeatures(ctx.physical_device(), &features);
-  const bool aniso = desc.max_anisotropy > 1.0f && features.samplerAnisotropy;
+  // Enabled, not merely supported: a host's device (Context::adopt) may leave samplerAnisotropy off.
+  const bool aniso = desc.max_anisotropy > 1.0f && ctx.enabled_features().samplerAnisotropy;
   const VkSamplerCreateInfo info{
       .sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO,
       .magFilter = desc.filter,

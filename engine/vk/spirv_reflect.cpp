@@ -122,6 +122,10 @@ class Module {
 
  private:
   Result<void> record(Instruction inst, size_t word_index);
+  Result<void> record_entry_point(Instruction inst);
+  Result<void> record_execution_mode(Instruction inst);
+  void record_decoration(Instruction inst);
+  Result<void> record_member_decoration(Instruction inst);
   Result<void> resolve_workgroup_size();
   Result<ReflectedBinding> describe(uint32_t var, uint32_t type, uint32_t storage) const;
   Result<VkDescriptorType> descriptor_type(uint32_t type, uint32_t storage) const;
@@ -209,66 +213,72 @@ Result<void> Module::record(Instruction inst, size_t word_index) {
   switch (op) {
     case kOpName:
       names_[inst[1]] = decode_string(inst.subspan(2));
-      break;
-    case kOpEntryPoint: {
-      const std::string entry = decode_string(inst.subspan(3));
-      if (++entry_points_ > 1) {
-        return make_error("SPIR-V module has more than one entry point ('" + out_.entry_point + "', '" +
-                          entry + "'); only single-entry modules are supported");
-      }
-      const auto stage = stage_of(inst[1]);
-      if (!stage) {
-        return make_error("SPIR-V execution model " + std::to_string(inst[1]) + " is not supported");
-      }
-      out_.stage = *stage;
-      out_.entry_point = entry;
-      break;
-    }
+      return {};
+    case kOpEntryPoint:
+      return record_entry_point(inst);
     case kOpExecutionMode:
-    case kOpExecutionModeId: {
-      const uint32_t mode = inst[2];
-      if (mode != kLocalSize && mode != kLocalSizeId) break;
-      if (inst.size() < 6) return make_error("SPIR-V LocalSize execution mode needs 3 operands");
-      if (mode == kLocalSize) {
-        out_.local_size = {inst[3], inst[4], inst[5]};
-      } else {
-        local_size_ids_ = {inst[3], inst[4], inst[5]};
-      }
-      break;
-    }
-    case kOpDecorate: {
-      Decorations& d = decorations_[inst[1]];
-      const uint32_t decoration = inst[2];
-      if (decoration == kBlock) d.block = true;
-      if (decoration == kBufferBlock) d.buffer_block = true;
-      if (decoration == kDescriptorSet) d.set = literal(inst, 3);
-      if (decoration == kBinding) d.binding = literal(inst, 3);
-      if (decoration == kSpecId) d.spec_id = literal(inst, 3);
-      if (decoration == kArrayStride) d.array_stride = literal(inst, 3);
-      if (decoration == kBuiltIn && literal(inst, 3) == kBuiltInWorkgroupSize) {
-        workgroup_size_builtin_ = inst[1];
-      }
-      break;
-    }
-    case kOpMemberDecorate: {
-      const uint32_t member = inst[2];
-      if (member >= kMaxStructMembers) {
-        return make_error("SPIR-V OpMemberDecorate member index is out of range");
-      }
-      std::vector<MemberLayout>& layouts = members_[inst[1]];
-      if (layouts.size() <= member) layouts.resize(member + 1);
-      MemberLayout& m = layouts[member];
-      if (inst[3] == kOffset) m.offset = literal(inst, 4);
-      if (inst[3] == kMatrixStride) m.matrix_stride = literal(inst, 4).value_or(0);
-      if (inst[3] == kRowMajor) m.row_major = true;
-      break;
-    }
+    case kOpExecutionModeId:
+      return record_execution_mode(inst);
+    case kOpDecorate:
+      record_decoration(inst);
+      return {};
+    case kOpMemberDecorate:
+      return record_member_decoration(inst);
     case kOpVariable:
       variables_.push_back(inst);
-      break;
+      return {};
     default:
-      break;
+      return {};
   }
+}
+
+Result<void> Module::record_entry_point(Instruction inst) {
+  const std::string entry = decode_string(inst.subspan(3));
+  if (++entry_points_ > 1) {
+    return make_error("SPIR-V module has more than one entry point ('" + out_.entry_point + "', '" + entry +
+                      "'); only single-entry modules are supported");
+  }
+  const auto stage = stage_of(inst[1]);
+  if (!stage) return make_error("SPIR-V execution model " + std::to_string(inst[1]) + " is not supported");
+  out_.stage = *stage;
+  out_.entry_point = entry;
+  return {};
+}
+
+// LocalSize gives the workgroup size as literals, LocalSizeId as constant ids resolved after pass 1.
+Result<void> Module::record_execution_mode(Instruction inst) {
+  const uint32_t mode = inst[2];
+  if (mode != kLocalSize && mode != kLocalSizeId) return {};
+  if (inst.size() < 6) return make_error("SPIR-V LocalSize execution mode needs 3 operands");
+  if (mode == kLocalSize) {
+    out_.local_size = {inst[3], inst[4], inst[5]};
+  } else {
+    local_size_ids_ = {inst[3], inst[4], inst[5]};
+  }
+  return {};
+}
+
+void Module::record_decoration(Instruction inst) {
+  Decorations& d = decorations_[inst[1]];
+  const uint32_t decoration = inst[2];
+  if (decoration == kBlock) d.block = true;
+  if (decoration == kBufferBlock) d.buffer_block = true;
+  if (decoration == kDescriptorSet) d.set = literal(inst, 3);
+  if (decoration == kBinding) d.binding = literal(inst, 3);
+  if (decoration == kSpecId) d.spec_id = literal(inst, 3);
+  if (decoration == kArrayStride) d.array_stride = literal(inst, 3);
+  if (decoration == kBuiltIn && literal(inst, 3) == kBuiltInWorkgroupSize) workgroup_size_builtin_ = inst[1];
+}
+
+Result<void> Module::record_member_decoration(Instruction inst) {
+  const uint32_t member = inst[2];
+  if (member >= kMaxStructMembers) return make_error("SPIR-V OpMemberDecorate member index is out of range");
+  std::vector<MemberLayout>& layouts = members_[inst[1]];
+  if (layouts.size() <= member) layouts.resize(member + 1);
+  MemberLayout& m = layouts[member];
+  if (inst[3] == kOffset) m.offset = literal(inst, 4);
+  if (inst[3] == kMatrixStride) m.matrix_stride = literal(inst, 4).value_or(0);
+  if (inst[3] == kRowMajor) m.row_major = true;
   return {};
 }
 
