@@ -96,6 +96,47 @@ Result<glm::dmat4> local_transform(const NodeDesc& n, const std::string& where) 
   return m;
 }
 
+// The nodes the walk starts from: `roots` checked to be distinct parentless nodes, or without roots every
+// parentless node.
+Result<std::vector<int>> start_nodes(const std::vector<NodeDesc>& nodes,
+                                     const std::optional<std::vector<int>>& roots,
+                                     const std::string& roots_where, const std::vector<int>& parent) {
+  std::vector<int> start;
+  if (!roots) {
+    for (size_t n = 0; n < nodes.size(); ++n) {
+      if (parent[n] == -1) start.push_back(static_cast<int>(n));
+    }
+    return start;
+  }
+  std::vector<bool> listed(nodes.size(), false);
+  for (size_t k = 0; k < roots->size(); ++k) {
+    const int r = (*roots)[k];
+    const std::string where = roots_where + "[" + std::to_string(k) + "]";
+    if (!valid_index(r, nodes.size())) return make_error(where + ": " + node(r) + " does not exist");
+    if (parent[r] != -1) {
+      return make_error(where + ": " + node(r) + " is a child of " + node(parent[r]) + ", not a root node");
+    }
+    if (listed[r]) return make_error(where + ": " + node(r) + " is listed twice");
+    listed[r] = true;
+    start.push_back(r);
+  }
+  return start;
+}
+
+// The instance of a node's mesh at `world`; the renderer takes single-precision matrices.
+Result<Instance> mesh_instance(const NodeDesc& n, const glm::dmat4& world, const std::string& where,
+                               size_t mesh_count) {
+  if (!valid_index(n.mesh, mesh_count)) {
+    return make_error(where + ".mesh: meshes[" + std::to_string(n.mesh) + "] does not exist");
+  }
+  const glm::mat4 world_f(world);
+  const float* values = glm::value_ptr(world_f);
+  if (!std::all_of(values, values + 16, [](float v) { return std::isfinite(v); })) {
+    return make_error(where + ": the world transform overflows single precision");
+  }
+  return Instance{static_cast<uint32_t>(n.mesh), world_f};
+}
+
 }  // namespace
 
 Result<std::vector<Instance>> flatten_nodes(const std::vector<NodeDesc>& nodes,
@@ -104,27 +145,8 @@ Result<std::vector<Instance>> flatten_nodes(const std::vector<NodeDesc>& nodes,
   Result<std::vector<int>> parent = parents(nodes);
   if (!parent) return parent.error();
   if (Result<void> r = check_cycles(*parent); !r) return r.error();
-
-  std::vector<int> start;
-  if (roots) {
-    std::vector<bool> listed(nodes.size(), false);
-    for (size_t k = 0; k < roots->size(); ++k) {
-      const int r = (*roots)[k];
-      const std::string where = roots_where + "[" + std::to_string(k) + "]";
-      if (!valid_index(r, nodes.size())) return make_error(where + ": " + node(r) + " does not exist");
-      if ((*parent)[r] != -1) {
-        return make_error(where + ": " + node(r) + " is a child of " + node((*parent)[r]) +
-                          ", not a root node");
-      }
-      if (listed[r]) return make_error(where + ": " + node(r) + " is listed twice");
-      listed[r] = true;
-      start.push_back(r);
-    }
-  } else {
-    for (size_t n = 0; n < nodes.size(); ++n) {
-      if ((*parent)[n] == -1) start.push_back(static_cast<int>(n));
-    }
-  }
+  Result<std::vector<int>> start = start_nodes(nodes, roots, roots_where, *parent);
+  if (!start) return start.error();
 
   struct Pending {
     int node;
@@ -133,7 +155,7 @@ Result<std::vector<Instance>> flatten_nodes(const std::vector<NodeDesc>& nodes,
   };
   std::vector<Instance> instances;
   std::vector<Pending> stack;
-  for (auto it = start.rbegin(); it != start.rend(); ++it) stack.push_back({*it, glm::dmat4(1.0), 1});
+  for (auto it = start->rbegin(); it != start->rend(); ++it) stack.push_back({*it, glm::dmat4(1.0), 1});
   while (!stack.empty()) {
     const Pending p = stack.back();
     stack.pop_back();
@@ -146,15 +168,9 @@ Result<std::vector<Instance>> flatten_nodes(const std::vector<NodeDesc>& nodes,
     if (!local) return local.error();
     const glm::dmat4 world = p.parent_world * *local;
     if (n.mesh != -1) {
-      if (!valid_index(n.mesh, mesh_count)) {
-        return make_error(where + ".mesh: meshes[" + std::to_string(n.mesh) + "] does not exist");
-      }
-      const glm::mat4 world_f(world);
-      const float* values = glm::value_ptr(world_f);
-      if (!std::all_of(values, values + 16, [](float v) { return std::isfinite(v); })) {
-        return make_error(where + ": the world transform overflows single precision");
-      }
-      instances.push_back({static_cast<uint32_t>(n.mesh), world_f});
+      Result<Instance> instance = mesh_instance(n, world, where, mesh_count);
+      if (!instance) return instance.error();
+      instances.push_back(*instance);
     }
     for (auto it = n.children.rbegin(); it != n.children.rend(); ++it)
       stack.push_back({*it, world, p.depth + 1});

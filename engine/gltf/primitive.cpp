@@ -93,33 +93,16 @@ Result<std::vector<uint32_t>> read_indices(const PrimitiveDesc& desc, const std:
   return indices;
 }
 
-}  // namespace
-
-Result<std::optional<Primitive>> convert_primitive(const PrimitiveDesc& desc, const std::string& where,
-                                                   const Accessors& a, size_t material_count, Budget& budget,
-                                                   std::vector<std::string>& warnings) {
-  if (desc.mode >= 0 && desc.mode < kTriangles) {
-    warn_once(warnings, "point and line primitives are not supported; skipped");
-    return std::optional<Primitive>();
-  }
-  if (desc.mode != kTriangles && desc.mode != kTriangleStrip && desc.mode != kTriangleFan) {
-    return make_error(where + ".mode: " + std::to_string(desc.mode) + " is not a glTF primitive mode (0-6)");
-  }
-  if (desc.has_targets) warn_once(warnings, "morph targets are not supported; drawn with the base geometry");
-  if (desc.material != -1 && !valid_index(desc.material, material_count)) {
-    return make_error(where + ".material: materials[" + std::to_string(desc.material) + "] does not exist");
-  }
-
-  Primitive prim;
-  prim.material = desc.material;
+// POSITION: required, VEC3 FLOAT, finite, and charged to the vertex budget before it is read.
+Result<std::vector<glm::vec3>> read_positions(const PrimitiveDesc& desc, const std::string& where,
+                                              const Accessors& a, Budget& budget) {
   const auto position = desc.attributes.find("POSITION");
   if (position == desc.attributes.end()) return make_error(where + ".attributes: POSITION is missing");
   Result<const AccessorDesc*> pd = attribute(a, position->second, where + ".attributes.POSITION",
                                              "VEC3 FLOAT", is_vec3_float, std::nullopt);
   if (!pd) return pd.error();
-  const size_t n = (*pd)->count;
-  if (Result<void> r =
-          spend(budget.vertices, n, budget.max_vertices, where + ".attributes.POSITION", "vertices");
+  if (Result<void> r = spend(budget.vertices, (*pd)->count, budget.max_vertices,
+                             where + ".attributes.POSITION", "vertices");
       !r) {
     return r.error();
   }
@@ -131,8 +114,13 @@ Result<std::optional<Primitive>> convert_primitive(const PrimitiveDesc& desc, co
                         std::to_string(i / 3) + " is not finite");
     }
   }
-  prim.positions = to_vectors<glm::vec3>(*positions);
+  return to_vectors<glm::vec3>(*positions);
+}
 
+// NORMAL and TEXCOORD_0, each with one element per vertex. A missing NORMAL stays empty (computed once the
+// triangles are known); missing UVs are zero.
+Result<void> read_normals_and_uvs(const PrimitiveDesc& desc, const std::string& where, const Accessors& a,
+                                  size_t n, Primitive& prim) {
   if (auto it = desc.attributes.find("NORMAL"); it != desc.attributes.end()) {
     Result<const AccessorDesc*> d =
         attribute(a, it->second, where + ".attributes.NORMAL", "VEC3 FLOAT", is_vec3_float, n);
@@ -152,27 +140,60 @@ Result<std::optional<Primitive>> convert_primitive(const PrimitiveDesc& desc, co
   } else {
     prim.uvs.assign(n, glm::vec2(0.0f));
   }
+  return {};
+}
+
+// The indices as a triangle list (strips and fans converted); empty when a strip or fan has no triangle.
+Result<std::vector<uint32_t>> triangle_list(int mode, std::vector<uint32_t> indices, const std::string& where,
+                                            Budget& budget) {
+  if (mode == kTriangles) {
+    if (indices.size() % 3 != 0) {
+      return make_error(where + ": " + std::to_string(indices.size()) +
+                        " indices (or vertices) is not a multiple of 3, as TRIANGLES needs");
+    }
+    return indices;
+  }
+  // A list has at most 3x the indices of its strip or fan; charge the difference before building it.
+  const size_t extra = indices.size() < 3 ? 0 : 2 * indices.size() - 6;
+  if (Result<void> r = spend(budget.indices, extra, budget.max_indices, where + ".indices", "indices"); !r) {
+    return r.error();
+  }
+  return mode == kTriangleStrip ? strip_to_list(indices) : fan_to_list(indices);
+}
+
+}  // namespace
+
+Result<std::optional<Primitive>> convert_primitive(const PrimitiveDesc& desc, const std::string& where,
+                                                   const Accessors& a, size_t material_count, Budget& budget,
+                                                   std::vector<std::string>& warnings) {
+  if (desc.mode >= 0 && desc.mode < kTriangles) {
+    warn_once(warnings, "point and line primitives are not supported; skipped");
+    return std::optional<Primitive>();
+  }
+  if (desc.mode != kTriangles && desc.mode != kTriangleStrip && desc.mode != kTriangleFan) {
+    return make_error(where + ".mode: " + std::to_string(desc.mode) + " is not a glTF primitive mode (0-6)");
+  }
+  if (desc.has_targets) warn_once(warnings, "morph targets are not supported; drawn with the base geometry");
+  if (desc.material != -1 && !valid_index(desc.material, material_count)) {
+    return make_error(where + ".material: materials[" + std::to_string(desc.material) + "] does not exist");
+  }
+
+  Primitive prim;
+  prim.material = desc.material;
+  Result<std::vector<glm::vec3>> positions = read_positions(desc, where, a, budget);
+  if (!positions) return positions.error();
+  prim.positions = std::move(*positions);
+  const size_t n = prim.positions.size();
+  if (Result<void> r = read_normals_and_uvs(desc, where, a, n, prim); !r) return r.error();
 
   Result<std::vector<uint32_t>> indices = read_indices(desc, where, a, n, budget);
   if (!indices) return indices.error();
-  if (desc.mode == kTriangles) {
-    if (indices->size() % 3 != 0) {
-      return make_error(where + ": " + std::to_string(indices->size()) +
-                        " indices (or vertices) is not a multiple of 3, as TRIANGLES needs");
-    }
-    prim.indices = std::move(*indices);
-  } else {
-    // A list has at most 3x the indices of its strip or fan; charge the difference before building it.
-    const size_t extra = indices->size() < 3 ? 0 : 2 * indices->size() - 6;
-    if (Result<void> r = spend(budget.indices, extra, budget.max_indices, where + ".indices", "indices");
-        !r) {
-      return r.error();
-    }
-    prim.indices = desc.mode == kTriangleStrip ? strip_to_list(*indices) : fan_to_list(*indices);
-    if (prim.indices.empty()) {
-      warn_once(warnings, "triangle strips and fans with fewer than 3 vertices were skipped");
-      return std::optional<Primitive>();
-    }
+  Result<std::vector<uint32_t>> list = triangle_list(desc.mode, std::move(*indices), where, budget);
+  if (!list) return list.error();
+  prim.indices = std::move(*list);
+  if (prim.indices.empty() && desc.mode != kTriangles) {
+    warn_once(warnings, "triangle strips and fans with fewer than 3 vertices were skipped");
+    return std::optional<Primitive>();
   }
   if (prim.normals.empty()) prim.normals = area_weighted_normals(prim.positions, prim.indices);
   return std::optional<Primitive>(std::move(prim));
