@@ -1,14 +1,13 @@
+// ObjectReader: each declared field read and checked (read mode) or listed for the docs (describe mode).
+// Messages and Bounds are in json_messages.cpp, parsing in json_parse.cpp, the reference in
+// field_catalog.cpp.
 #include "scene/json_fields.h"
-
-#include "io/json_limits.h"
 
 #include <algorithm>
 #include <bit>
 #include <cctype>
 #include <charconv>
 #include <cmath>
-#include <cstdio>
-#include <set>
 
 namespace lagoon::scene {
 namespace {
@@ -36,26 +35,6 @@ std::string join_list(const std::vector<std::string>& items) {
   std::string out;
   for (const std::string& item : items) out += (out.empty() ? "" : ", ") + item;
   return out;
-}
-
-char lower(char c) {
-  return static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-}
-
-// Case-insensitive Levenshtein distance.
-size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<size_t> row(b.size() + 1);
-  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (size_t i = 1; i <= a.size(); ++i) {
-    size_t diagonal = row[0];
-    row[0] = i;
-    for (size_t j = 1; j <= b.size(); ++j) {
-      const size_t substitute = diagonal + (lower(a[i - 1]) == lower(b[j - 1]) ? 0 : 1);
-      diagonal = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, substitute});
-    }
-  }
-  return row[b.size()];
 }
 
 // Returns the value as a double, or nullopt after reporting why it is not a usable number.
@@ -103,31 +82,9 @@ std::string strip_indices(std::string_view path) {
 
 // Rebuilds one array element's JSON from its describe-mode rows, so array defaults can be shown as JSON
 // ({"patch_size_m":1000,"resolution":256}) without a second, hand-written serializer to keep in sync.
-nlohmann::ordered_json element_json(const std::vector<FieldInfo>& fields) {
-  nlohmann::ordered_json object = nlohmann::ordered_json::object();
-  for (const FieldInfo& f : fields) {
-    // Blocks have no default of their own (their fields follow); nested arrays carry theirs on their row.
-    if (f.default_value.empty() || f.path.find('[') != std::string::npos) continue;
-    nlohmann::ordered_json value = nlohmann::ordered_json::parse(f.default_value, nullptr, false);
-    if (value.is_discarded()) value = f.default_value;
-    std::string pointer = "/" + f.path;
-    std::replace(pointer.begin(), pointer.end(), '.', '/');
-    object[nlohmann::ordered_json::json_pointer(pointer)] = std::move(value);
-  }
-  return object;
-}
-
-}  // namespace
-
-nlohmann::ordered_json fields_to_json(const std::vector<FieldInfo>& fields) {
-  return element_json(fields);
-}
-
-namespace {
-
 std::string elements_json(const std::vector<std::vector<FieldInfo>>& elements) {
   nlohmann::ordered_json array = nlohmann::ordered_json::array();
-  for (const std::vector<FieldInfo>& fields : elements) array.push_back(element_json(fields));
+  for (const std::vector<FieldInfo>& fields : elements) array.push_back(fields_to_json(fields));
   return array.dump();
 }
 
@@ -164,101 +121,6 @@ std::string index_hint(const std::string& key, const json& value, const json& ob
 }
 
 }  // namespace
-
-std::string format_number(double v) {
-  char buf[32];
-  if (std::abs(v) < 1e15 && std::floor(v) == v) {
-    std::snprintf(buf, sizeof buf, "%.0f", v);  // whole numbers exactly: seeds, sizes
-    return buf;
-  }
-  // The shortest text that reads back to the same value, so a saved scene reloads bit for bit; a value
-  // that came from a float is printed as that float (0.1f prints "0.1", not 0.10000000149011612).
-  const float f = static_cast<float>(v);
-  const auto [end, error] = static_cast<double>(f) == v ? std::to_chars(buf, buf + sizeof buf, f)
-                                                        : std::to_chars(buf, buf + sizeof buf, v);
-  return error == std::errc() ? std::string(buf, end) : std::string("0");
-}
-
-// ---- Bounds ----
-
-Bounds Bounds::between(double lo, double hi) {
-  Bounds b;
-  b.min = lo;
-  b.max = hi;
-  return b;
-}
-
-Bounds Bounds::above(double lo) {
-  Bounds b;
-  b.min = lo;
-  b.min_open = true;
-  return b;
-}
-
-Bounds Bounds::at_least(double lo) {
-  Bounds b;
-  b.min = lo;
-  return b;
-}
-
-Bounds Bounds::above_up_to(double lo, double hi) {
-  Bounds b = between(lo, hi);
-  b.min_open = true;
-  return b;
-}
-
-bool Bounds::contains(double v) const {
-  const bool min_ok = min_open ? v > min : v >= min;
-  const bool max_ok = max_open ? v < max : v <= max;
-  return min_ok && max_ok;
-}
-
-std::string Bounds::describe() const {
-  const bool has_min = std::isfinite(min), has_max = std::isfinite(max);
-  if (has_min && has_max && !min_open && !max_open) return format_number(min) + " to " + format_number(max);
-  std::string out;
-  if (has_min) out = (min_open ? "> " : ">= ") + format_number(min);
-  if (has_max)
-    out += (out.empty() ? "" : " and ") + std::string(max_open ? "< " : "<= ") + format_number(max);
-  return out.empty() ? "any" : out;
-}
-
-// ---- Diagnostics ----
-
-namespace {
-// True if `inner` is `outer` or a field/element below it ("camera.position[1]" is within "camera.position").
-bool within(std::string_view inner, std::string_view outer) {
-  if (!inner.starts_with(outer)) return false;
-  return inner.size() == outer.size() || inner[outer.size()] == '.' || inner[outer.size()] == '[';
-}
-}  // namespace
-
-void Diagnostics::error(std::string_view path, std::string_view problem, std::string_view fix) {
-  std::string line = source_ + ": " + (path.empty() ? std::string("(top level)") : std::string(path)) + ": " +
-                     std::string(problem) + "; " + std::string(fix);
-  // Either direction: --set camera.fov_deg.x=1 turns camera.fov_deg into an object, reported at fov_deg.
-  for (const auto& [override_path, assignment] : overrides_) {
-    if (!path.empty() && (within(path, override_path) || within(override_path, path))) {
-      line += " (value from --set " + assignment + ")";
-      break;
-    }
-  }
-  lines_.push_back(std::move(line));
-}
-
-void Diagnostics::file_error(std::string_view problem, std::string_view fix) {
-  lines_.push_back(source_ + ": " + std::string(problem) + (fix.empty() ? "" : "; " + std::string(fix)));
-}
-
-void Diagnostics::note_override(std::string path, std::string assignment) {
-  overrides_.insert(overrides_.begin(), {std::move(path), std::move(assignment)});  // last --set wins
-}
-
-Error Diagnostics::to_error() const {
-  std::string message;
-  for (const std::string& line : lines_) message += (message.empty() ? "" : "\n") + line;
-  return Error{message};
-}
 
 // ---- ObjectReader ----
 
@@ -536,7 +398,8 @@ std::optional<std::vector<std::optional<ObjectReader>>> ObjectReader::open_array
   if (j->size() < min_size || j->size() > max_size) {
     diag_->error(path, "has " + std::to_string(j->size()) + (j->size() == 1 ? " element" : " elements"), fix);
   }
-  const std::string example = defaults.empty() ? std::string("{...}") : element_json(defaults.front()).dump();
+  const std::string example =
+      defaults.empty() ? std::string("{...}") : fields_to_json(defaults.front()).dump();
   std::vector<std::optional<ObjectReader>> elements;
   for (size_t i = 0; i < j->size(); ++i) {
     const std::string element_path = path + "[" + std::to_string(i) + "]";
@@ -586,120 +449,6 @@ void ObjectReader::finish() {
                  (suggestion.empty() ? "" : "did you mean '" + suggestion + "'? ") + "Fields allowed " +
                      where + ": " + join_list(allowed));
   }
-}
-
-// ---- free functions ----
-
-std::optional<json> parse_json_text(std::string_view text, Diagnostics& diag) {
-  if (const auto exceeded = io::json_limit_exceeded(text, kSceneJsonLimits)) {
-    diag.file_error("JSON: " + *exceeded,
-                    "a scene is a few nested objects with short strings and small arrays "
-                    "(docs/scene-format.md); check that this is the scene file you meant");
-    return std::nullopt;
-  }
-  // The parser callback sees keys but not paths, so track the path of the container being parsed.
-  struct Frame {
-    bool is_object;
-    std::string path;
-    std::set<std::string> keys;
-    std::string key;
-    size_t index = 0;
-  };
-  std::vector<Frame> stack;
-  auto value_path = [&stack] {
-    if (stack.empty()) return std::string();
-    const Frame& f = stack.back();
-    return f.is_object ? join_path(f.path, f.key) : f.path + "[" + std::to_string(f.index) + "]";
-  };
-  auto element_done = [&stack] {
-    if (!stack.empty() && !stack.back().is_object) ++stack.back().index;
-  };
-  const json::parser_callback_t callback = [&](int, json::parse_event_t event, json& parsed) {
-    switch (event) {
-      case json::parse_event_t::object_start:
-      case json::parse_event_t::array_start:
-        stack.push_back(Frame{event == json::parse_event_t::object_start, value_path(), {}, {}, 0});
-        break;
-      case json::parse_event_t::object_end:
-      case json::parse_event_t::array_end:
-        if (!stack.empty()) stack.pop_back();
-        element_done();
-        break;
-      case json::parse_event_t::key:
-        if (!stack.empty()) {
-          stack.back().key = parsed.get<std::string>();
-          if (!stack.back().keys.insert(stack.back().key).second) {
-            diag.error(value_path(), "field appears more than once in the same object",
-                       "keep only one (JSON parsers would silently use the last one)");
-          }
-        }
-        break;
-      case json::parse_event_t::value:
-        element_done();
-        break;
-    }
-    return true;
-  };
-  try {
-    json document = json::parse(text.begin(), text.end(), callback, /*allow_exceptions=*/true,
-                                /*ignore_comments=*/false);
-    if (!diag.ok()) return std::nullopt;
-    return document;
-  } catch (const json::parse_error& e) {
-    // what() is "[json.exception.parse_error.101] parse error at line L, column C: ..."; keep from "parse".
-    std::string what = e.what();
-    const size_t start = what.find("] ");
-    if (start != std::string::npos) what = what.substr(start + 2);
-    diag.file_error("invalid JSON: " + what,
-                    "fix the syntax at that position (JSON allows no comments or trailing commas; use a "
-                    "\"comment\" field for notes)");
-  } catch (const json::exception& e) {  // e.g. out_of_range.406 "number overflow parsing '1e999'"
-    std::string what = e.what();
-    const size_t start = what.find("] ");
-    if (start != std::string::npos) what = what.substr(start + 2);
-    diag.file_error("invalid JSON: " + what, "write numbers that fit in a double");
-  }
-  return std::nullopt;
-}
-
-std::string to_markdown_table(const std::vector<FieldInfo>& fields) {
-  auto code = [](const std::string& s) { return s.empty() ? std::string() : "`" + s + "`"; };
-  std::string out =
-      "| Field | Type | Unit | Default | Allowed | Meaning |\n"
-      "|---|---|---|---|---|---|\n";
-  for (const FieldInfo& f : fields) {
-    out += "| " + code(f.path) + " | " + f.type + " | " + f.unit + " | " + code(f.default_value) + " | " +
-           f.range + " | " + f.doc + " |\n";
-  }
-  return out;
-}
-
-std::string describe_value(const json& value) {
-  // ensure_ascii + replace: never throws on invalid UTF-8, and truncation cannot split a character.
-  if (value.is_number_float() && !std::isfinite(value.get<double>())) {  // dump() would print null
-    const double v = value.get<double>();
-    return std::isnan(v) ? "NaN" : v > 0 ? "infinity" : "-infinity";
-  }
-  std::string text = value.dump(-1, ' ', /*ensure_ascii=*/true, json::error_handler_t::replace);
-  if (text.size() > 60) text = text.substr(0, 57) + "...";
-  if (value.is_number() || value.is_null()) return text;
-  return std::string(value.type_name()) + " " + text;
-}
-
-std::string closest_match(std::string_view name, const std::vector<std::string>& candidates) {
-  std::string best;
-  size_t best_distance = std::numeric_limits<size_t>::max();
-  for (const std::string& candidate : candidates) {
-    const size_t d = edit_distance(name, candidate);
-    // A third of the length (at least 2) catches typos and swaps without suggesting unrelated fields; a
-    // shared prefix of 3+ characters catches a missing or extra unit suffix ("fov" vs "fov_deg").
-    const size_t shorter = std::min(name.size(), candidate.size());
-    const bool prefix =
-        shorter >= 3 && edit_distance(name.substr(0, shorter), candidate.substr(0, shorter)) == 0;
-    const bool plausible = d <= std::max<size_t>(2, std::max(name.size(), candidate.size()) / 3) || prefix;
-    if (plausible && d < best_distance) best_distance = d, best = candidate;
-  }
-  return best;
 }
 
 }  // namespace lagoon::scene
