@@ -83,6 +83,33 @@ double one_minus_abs_rho(double a3, double r, double x) {
   return (a3 >= r ? (1.0 - a3) * (1.0 + r) : (1.0 + a3) * (1.0 - r)) / x;
 }
 
+struct FreeModes {
+  double u, w;  // down from the surface, up from the bottom
+};
+
+// Step 5's 2x2 system for the free modes, row-normalised: u + L ρ1 w = r1/x1, L ρ2 u + w = r2/x2, with
+// L = e^{−λ0τ0}. `r_*_ff` are the diffuse reflectances seen from the water at each end, `rhs_*` the right
+// sides r1, r2. Its determinant is formed from non-negative terms where cancellation could lose it.
+Result<FreeModes> solve_free_modes(double a3, double lambda0, double tau0, double r_top_ff, double rhs_top,
+                                   double r_bottom_ff, double rhs_bottom) {
+  const double l = std::exp(-lambda0 * tau0);
+  const double x_top = 1.0 - r_top_ff * a3, x_bottom = 1.0 - r_bottom_ff * a3;
+  const double rho_top = (a3 - r_top_ff) / x_top, rho_bottom = (a3 - r_bottom_ff) / x_bottom;
+  double det;
+  if (rho_top * rho_bottom <= 0) {
+    det = 1.0 - l * l * rho_top * rho_bottom;
+  } else {
+    // 1 − L² ρ1ρ2 = (1 − L²) + L² [(1 − |ρ1|) + |ρ1| (1 − |ρ2|)]: a sum of non-negative terms.
+    const double m_top = one_minus_abs_rho(a3, r_top_ff, x_top);
+    const double m_bottom = one_minus_abs_rho(a3, r_bottom_ff, x_bottom);
+    det = -std::expm1(-2.0 * lambda0 * tau0) + l * l * (m_top + std::fabs(rho_top) * m_bottom);
+  }
+  if (!(det > 0))
+    return make_error("four-flow model: lossless cavity (depth 0 between mirrors), no solution");
+  const double c_top = rhs_top / x_top, c_bottom = rhs_bottom / x_bottom;
+  return FreeModes{(c_top - l * rho_top * c_bottom) / det, (c_bottom - l * rho_bottom * c_top) / det};
+}
+
 }  // namespace
 
 double FourFlowSolution::clamp_tau(double tau) const {
@@ -150,7 +177,7 @@ Result<FourFlowSolution> solve_four_flow(const FourFlowInput& in) {
 
   const SurfaceCoefficients& s = in.surface;
   const BottomCoefficients& b = in.bottom;
-  const double d = std::exp(-f.tau0), l = std::exp(-f.lambda0 * f.tau0);
+  const double d = std::exp(-f.tau0);
   const double mirror = 1.0 - s.rw_dd * b.r_dd * d * d;
   if (!(mirror > 0))
     return make_error("four-flow model: lossless cavity (depth 0 between mirrors), no solution");
@@ -166,23 +193,10 @@ Result<FourFlowSolution> solve_four_flow(const FourFlowInput& in) {
   const double r1 = s.t_df * in.e_sun + s.t_ff * in.e_sky + s.rw_df * f.gh_ * d + s.rw_ff * m0 - p0;
   const double r2 = b.r_df * f.g0_ * d + b.r_ff * ph - mh;
 
-  // Row-normalised 2x2 system: u + L ρ1 w = r1/x1, L ρ2 u + w = r2/x2.
-  const double x_top = 1.0 - s.rw_ff * a3, x_bottom = 1.0 - b.r_ff * a3;
-  const double rho_top = (a3 - s.rw_ff) / x_top, rho_bottom = (a3 - b.r_ff) / x_bottom;
-  double det;
-  if (rho_top * rho_bottom <= 0) {
-    det = 1.0 - l * l * rho_top * rho_bottom;
-  } else {
-    // 1 − L² ρ1ρ2 = (1 − L²) + L² [(1 − |ρ1|) + |ρ1| (1 − |ρ2|)]: a sum of non-negative terms.
-    const double m_top = one_minus_abs_rho(a3, s.rw_ff, x_top);
-    const double m_bottom = one_minus_abs_rho(a3, b.r_ff, x_bottom);
-    det = -std::expm1(-2.0 * f.lambda0 * f.tau0) + l * l * (m_top + std::fabs(rho_top) * m_bottom);
-  }
-  if (!(det > 0))
-    return make_error("four-flow model: lossless cavity (depth 0 between mirrors), no solution");
-  const double c_top = r1 / x_top, c_bottom = r2 / x_bottom;
-  f.u_ = (c_top - l * rho_top * c_bottom) / det;
-  f.w_ = (c_bottom - l * rho_bottom * c_top) / det;
+  Result<FreeModes> modes = solve_free_modes(a3, f.lambda0, f.tau0, s.rw_ff, r1, b.r_ff, r2);
+  if (!modes) return modes.error();
+  f.u_ = modes->u;
+  f.w_ = modes->w;
   if (!std::isfinite(f.u_) || !std::isfinite(f.w_) || !std::isfinite(f.g0_)) {
     return make_error("four-flow model: non-finite solution (inputs too extreme)");
   }
