@@ -92,6 +92,42 @@ Result<std::vector<ScriptStep>> read_script(const std::string& path) {
   return parse_script(text.str(), path);
 }
 
+namespace {
+
+// Every option but --scene, --set and the script's contents into `o`; the error is a usage error naming the
+// option. A width or height of 0 means the scene's.
+Result<void> read_options(const cli::ParsedArgs& parsed, DemoOptions& o) {
+  const auto width = cli::integer_option(parsed, "width", -1, 64, 16384);
+  const auto height = cli::integer_option(parsed, "height", -1, 64, 16384);
+  const auto frames = cli::integer_option(parsed, "frames", -1, 1, 1000000);
+  if (!width) return width.error();
+  if (!height) return height.error();
+  if (!frames) return frames.error();
+  if (auto v = parsed.get("fps")) {
+    const auto f = cli::parse_number(*v);
+    if (!f || *f <= 0 || *f > 1000)
+      return make_error("--fps " + *v + " must be a number of frames per second in (0, 1000]");
+    o.fps = *f;
+  }
+  o.width = *width > 0 ? uint32_t(*width) : 0;
+  o.height = *height > 0 ? uint32_t(*height) : 0;
+  if (*frames > 0) o.frames = *frames;
+  o.screenshot = parsed.get("screenshot").value_or("");
+  if (!o.screenshot.empty() &&
+      (o.screenshot.size() < 5 || o.screenshot.substr(o.screenshot.size() - 4) != ".png"))
+    return make_error("--screenshot " + o.screenshot + " must name a .png file");
+  o.save_scene = parsed.get("save-scene").value_or("");
+  o.hide_ui = parsed.has("hide-ui");
+  o.exit_after_frames = parsed.has("exit");
+  o.vsync = !parsed.has("no-vsync");
+  if (o.exit_after_frames && !o.frames) return make_error("--exit needs --frames N (how many frames to run)");
+  if (parsed.has("script") && !o.frames)
+    return make_error("--script needs --frames N (scripts count frames of a fixed time step)");
+  return {};
+}
+
+}  // namespace
+
 Result<DemoOptions> parse_demo_options(std::span<const std::string> args, int& exit_code) {
   const cli::CommandSpec& spec = demo_command();
   auto parsed = cli::parse_args(spec, args);
@@ -106,36 +142,11 @@ Result<DemoOptions> parse_demo_options(std::span<const std::string> args, int& e
     return make_error("help");
   }
   DemoOptions o;
-  auto usage_error = [&](const std::string& message) {
-    std::fprintf(stderr, "lagoon-demo: %s\n", message.c_str());
+  if (auto r = read_options(*parsed, o); !r) {
+    std::fprintf(stderr, "lagoon-demo: %s\n", r.error().message.c_str());
     exit_code = cli::kExitUsage;
-    return make_error(message);
-  };
-  const auto width = cli::integer_option(*parsed, "width", -1, 64, 16384);
-  const auto height = cli::integer_option(*parsed, "height", -1, 64, 16384);
-  const auto frames = cli::integer_option(*parsed, "frames", -1, 1, 1000000);
-  if (!width) return usage_error(width.error().message);
-  if (!height) return usage_error(height.error().message);
-  if (!frames) return usage_error(frames.error().message);
-  if (auto v = parsed->get("fps")) {
-    const auto f = cli::parse_number(*v);
-    if (!f || *f <= 0 || *f > 1000)
-      return usage_error("--fps " + *v + " must be a number of frames per second in (0, 1000]");
-    o.fps = *f;
+    return r.error();
   }
-  if (*frames > 0) o.frames = *frames;
-  o.screenshot = parsed->get("screenshot").value_or("");
-  if (!o.screenshot.empty() &&
-      (o.screenshot.size() < 5 || o.screenshot.substr(o.screenshot.size() - 4) != ".png"))
-    return usage_error("--screenshot " + o.screenshot + " must name a .png file");
-  o.save_scene = parsed->get("save-scene").value_or("");
-  o.hide_ui = parsed->has("hide-ui");
-  o.exit_after_frames = parsed->has("exit");
-  o.vsync = !parsed->has("no-vsync");
-  if (o.exit_after_frames && !o.frames)
-    return usage_error("--exit needs --frames N (how many frames to run)");
-  if (parsed->has("script") && !o.frames)
-    return usage_error("--script needs --frames N (scripts count frames of a fixed time step)");
   if (auto script = parsed->get("script")) {
     auto steps = read_script(*script);
     if (!steps) {
@@ -151,8 +162,8 @@ Result<DemoOptions> parse_demo_options(std::span<const std::string> args, int& e
     return make_error("scene");
   }
   o.scene = std::move(*scene);
-  o.width = *width > 0 ? uint32_t(*width) : o.scene.render.width;
-  o.height = *height > 0 ? uint32_t(*height) : o.scene.render.height;
+  if (o.width == 0) o.width = o.scene.render.width;
+  if (o.height == 0) o.height = o.scene.render.height;
   exit_code = cli::kExitOk;
   return o;
 }

@@ -20,6 +20,13 @@ void check_imgui_vk(VkResult result) {
 }  // namespace
 
 ImGuiLayer::ImGuiLayer(vk::Context& ctx, const Window& window, const Swapchain& swapchain) : ctx_(ctx) {
+  create_descriptor_pool();
+  create_render_pass(swapchain.format());
+  create_framebuffers(swapchain);
+  init_backends(window, swapchain);
+}
+
+void ImGuiLayer::create_descriptor_pool() {
   // The backend allocates one descriptor set (the font atlas).
   const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 8}};
   const VkDescriptorPoolCreateInfo pool_info{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO,
@@ -28,10 +35,13 @@ ImGuiLayer::ImGuiLayer(vk::Context& ctx, const Window& window, const Swapchain& 
                                              .poolSizeCount = 1,
                                              .pPoolSizes = sizes};
   VkDescriptorPool pool = VK_NULL_HANDLE;
-  VK_CHECK(vkCreateDescriptorPool(ctx.device(), &pool_info, nullptr, &pool));
-  pool_ = vk::Unique<VkDescriptorPool>(ctx.device(), pool);
+  VK_CHECK(vkCreateDescriptorPool(ctx_.device(), &pool_info, nullptr, &pool));
+  pool_ = vk::Unique<VkDescriptorPool>(ctx_.device(), pool);
+}
 
-  const VkAttachmentDescription attachment{.format = swapchain.format(),
+// Loads the swapchain image the frame was copied into, draws over it and leaves it ready to present.
+void ImGuiLayer::create_render_pass(VkFormat format) {
+  const VkAttachmentDescription attachment{.format = format,
                                            .samples = VK_SAMPLE_COUNT_1_BIT,
                                            .loadOp = VK_ATTACHMENT_LOAD_OP_LOAD,
                                            .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
@@ -65,10 +75,12 @@ ImGuiLayer::ImGuiLayer(vk::Context& ctx, const Window& window, const Swapchain& 
                                        .dependencyCount = 2,
                                        .pDependencies = dependencies};
   VkRenderPass render_pass = VK_NULL_HANDLE;
-  VK_CHECK(vkCreateRenderPass(ctx.device(), &rp_info, nullptr, &render_pass));
-  render_pass_ = vk::Unique<VkRenderPass>(ctx.device(), render_pass);
-  create_framebuffers(swapchain);
+  VK_CHECK(vkCreateRenderPass(ctx_.device(), &rp_info, nullptr, &render_pass));
+  render_pass_ = vk::Unique<VkRenderPass>(ctx_.device(), render_pass);
+}
 
+// The ImGui context and its GLFW and Vulkan backends, with the font atlas uploaded.
+void ImGuiLayer::init_backends(const Window& window, const Swapchain& swapchain) {
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGuiIO& io = ImGui::GetIO();
@@ -76,12 +88,12 @@ ImGuiLayer::ImGuiLayer(vk::Context& ctx, const Window& window, const Swapchain& 
   ImGui::StyleColorsDark();
   ImGui_ImplGlfw_InitForVulkan(window.handle(), true);
   ImGui_ImplVulkan_InitInfo info{};
-  info.Instance = ctx.instance();
-  info.PhysicalDevice = ctx.physical_device();
-  info.Device = ctx.device();
-  info.QueueFamily = ctx.queue_family();
-  info.Queue = ctx.queue();
-  info.PipelineCache = ctx.pipeline_cache();
+  info.Instance = ctx_.instance();
+  info.PhysicalDevice = ctx_.physical_device();
+  info.Device = ctx_.device();
+  info.QueueFamily = ctx_.queue_family();
+  info.Queue = ctx_.queue();
+  info.PipelineCache = ctx_.pipeline_cache();
   info.DescriptorPool = pool_;
   info.Subpass = 0;
   info.MinImageCount = swapchain.min_image_count();
@@ -89,7 +101,7 @@ ImGuiLayer::ImGuiLayer(vk::Context& ctx, const Window& window, const Swapchain& 
   info.MSAASamples = VK_SAMPLE_COUNT_1_BIT;
   info.CheckVkResultFn = check_imgui_vk;
   ImGui_ImplVulkan_Init(&info, render_pass_);
-  ctx.submit_and_wait([](VkCommandBuffer cmd) { ImGui_ImplVulkan_CreateFontsTexture(cmd); });
+  ctx_.submit_and_wait([](VkCommandBuffer cmd) { ImGui_ImplVulkan_CreateFontsTexture(cmd); });
   ImGui_ImplVulkan_DestroyFontUploadObjects();
 }
 

@@ -30,7 +30,10 @@ class ImGuiLayer {
   void record(VkCommandBuffer cmd, uint32_t image, ImDrawData* draw_data);
 
  private:
+  void create_descriptor_pool();
+  void create_render_pass(VkFormat format);
   void create_framebuffers(const Swapchain& swapchain);
+  void init_backends(const Window& window, const Swapchain& swapchain);
   vk::Context& ctx_;
   vk::Unique<VkDescriptorPool> pool_;
   vk::Unique<VkRenderPass> render_pass_;

@@ -53,22 +53,61 @@ void tooltip(const scene::FieldInfo& f) {
   ImGui::EndTooltip();
 }
 
+// A combo of the field's fixed values (integers stay numbers).
+bool edit_choice(const scene::FieldInfo& f, const std::string& label, ordered_json& v) {
+  bool changed = false;
+  const std::string current = v.is_string() ? v.get<std::string>() : safe_dump(v);
+  if (ImGui::BeginCombo(label.c_str(), current.c_str())) {
+    for (const std::string& choice : f.choices) {
+      if (ImGui::Selectable(choice.c_str(), choice == current)) {
+        v = f.type == "integer" ? ordered_json(std::stoll(choice)) : ordered_json(choice);
+        changed = true;
+      }
+    }
+    ImGui::EndCombo();
+  }
+  return changed;
+}
+
+bool edit_text(const std::string& label, ordered_json& v) {
+  std::string text = v.get<std::string>();
+  // Applied on Enter or when leaving the field: a half-typed file name is not worth a reload.
+  if (ImGui::InputText(label.c_str(), &text, ImGuiInputTextFlags_EnterReturnsTrue) ||
+      ImGui::IsItemDeactivatedAfterEdit()) {
+    const bool changed = v.get<std::string>() != text;
+    v = text;
+    return changed;
+  }
+  return false;
+}
+
+// Two or three numbers: drags within [lo, hi], or a colour picker for "[r, g, b]".
+bool edit_vector(const scene::FieldInfo& f, const std::string& label, ordered_json& v, double lo, double hi) {
+  bool changed = false;
+  float x[3] = {0, 0, 0};
+  for (size_t i = 0; i < v.size(); ++i) x[i] = v[i].get<float>();
+  if (f.type == "[r, g, b]") {
+    // HDR: light colours may exceed 1 (the field's bounds clamp them below).
+    changed = ImGui::ColorEdit3(label.c_str(), x, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
+    for (float& c : x) c = std::clamp(c, float(lo), float(hi));
+  } else {
+    const float flo = float(lo), fhi = float(hi);
+    changed = v.size() == 2
+                  ? ImGui::DragFloat2(label.c_str(), x, 0.1f, flo, fhi, "%.3g", ImGuiSliderFlags_AlwaysClamp)
+                  : ImGui::DragFloat3(label.c_str(), x, 0.1f, flo, fhi, "%.3g", ImGuiSliderFlags_AlwaysClamp);
+  }
+  if (changed)
+    for (size_t i = 0; i < v.size(); ++i) v[i] = x[i];
+  return changed;
+}
+
 // One widget for value `v` of field `f`; true when the user changed it.
 bool edit_value(const scene::FieldInfo& f, const std::string& label, ordered_json& v) {
   double lo = 0, hi = 0;
   limits(f.bounds, lo, hi);
   bool changed = false;
   if (!f.choices.empty()) {
-    const std::string current = v.is_string() ? v.get<std::string>() : safe_dump(v);
-    if (ImGui::BeginCombo(label.c_str(), current.c_str())) {
-      for (const std::string& choice : f.choices) {
-        if (ImGui::Selectable(choice.c_str(), choice == current)) {
-          v = f.type == "integer" ? ordered_json(std::stoll(choice)) : ordered_json(choice);
-          changed = true;
-        }
-      }
-      ImGui::EndCombo();
-    }
+    changed = edit_choice(f, label, v);
   } else if (f.type == "number" && v.is_number()) {
     double x = v.get<double>();
     const float speed = float(std::max(std::abs(x) * 0.01, 0.001));
@@ -86,29 +125,9 @@ bool edit_value(const scene::FieldInfo& f, const std::string& label, ordered_jso
     changed = ImGui::Checkbox(label.c_str(), &x);
     if (changed) v = x;
   } else if (f.type == "string" && v.is_string()) {
-    std::string text = v.get<std::string>();
-    // Applied on Enter or when leaving the field: a half-typed file name is not worth a reload.
-    if (ImGui::InputText(label.c_str(), &text, ImGuiInputTextFlags_EnterReturnsTrue) ||
-        ImGui::IsItemDeactivatedAfterEdit()) {
-      changed = v.get<std::string>() != text;
-      v = text;
-    }
+    changed = edit_text(label, v);
   } else if (f.type.front() == '[' && v.is_array() && (v.size() == 2 || v.size() == 3)) {
-    float x[3] = {0, 0, 0};
-    for (size_t i = 0; i < v.size(); ++i) x[i] = v[i].get<float>();
-    if (f.type == "[r, g, b]") {
-      // HDR: light colours may exceed 1 (the field's bounds clamp them below).
-      changed = ImGui::ColorEdit3(label.c_str(), x, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
-      for (float& c : x) c = std::clamp(c, float(lo), float(hi));
-    } else {
-      const float flo = float(lo), fhi = float(hi);
-      changed =
-          v.size() == 2
-              ? ImGui::DragFloat2(label.c_str(), x, 0.1f, flo, fhi, "%.3g", ImGuiSliderFlags_AlwaysClamp)
-              : ImGui::DragFloat3(label.c_str(), x, 0.1f, flo, fhi, "%.3g", ImGuiSliderFlags_AlwaysClamp);
-    }
-    if (changed)
-      for (size_t i = 0; i < v.size(); ++i) v[i] = x[i];
+    changed = edit_vector(f, label, v, lo, hi);
   } else {
     ImGui::TextDisabled("%s: %s", label.c_str(), safe_dump(v).c_str());
   }

@@ -91,6 +91,57 @@ bool write_report(const std::string& path, const nlohmann::json& doc) {
   return true;
 }
 
+// Prints one row of the table and adds it to the report's "benchmarks"; a ratio of 0 is left out.
+void report_row(nlohmann::json& results, const std::string& name, const std::vector<double>& ms,
+                const char* measure, double ratio) {
+  std::printf("%-44s %12.3f %12s\n", name.c_str(), median(ms),
+              ratio > 0 ? (std::to_string(ratio).substr(0, 6) + "x").c_str() : "");
+  nlohmann::json entry = result_entry(name, ms, measure);
+  if (ratio > 0) entry["ratio_gpu_over_cpu"] = ratio;
+  results.push_back(entry);
+}
+
+// `count` cascades of N x N, with patches of 1000, 100 and 10 m.
+ocean::OceanParams bench_params(uint32_t n, uint32_t count) {
+  const double patches[] = {1000.0, 100.0, 10.0};
+  ocean::OceanParams params;
+  params.cascades.clear();
+  for (uint32_t c = 0; c < count; ++c) params.cascades.push_back({patches[c], n});
+  return params;
+}
+
+// Per-round times (ms) of one configuration, and per-round GPU/CPU ratios of wall time.
+struct ComputeTimes {
+  std::vector<double> gpu, gpu_device, fftw1, fftw2, ratio1, ratio2;
+};
+
+ComputeTimes time_ocean_step(vk::Context& ctx, const ocean::OceanParams& params, int rounds) {
+  ocean::GpuOcean gpu(ctx, params);
+  FftwOceanStep cpu1(params, gpu.spectra(), 1), cpu2(params, gpu.spectra(), 2);
+  // One scope around the whole step: its device time, without the submit and wait the wall time has.
+  vk::GpuTimer timer(ctx, 1);
+  float t = 0;
+  auto gpu_step = [&] {
+    ctx.submit_and_wait([&](VkCommandBuffer cmd) {
+      timer.reset(cmd);
+      vk::GpuScope scope(timer, cmd, "ocean step");
+      gpu.record_step(cmd, t, 1 / 60.0);
+    });
+  };
+  for (int w = 0; w < 3; ++w) gpu_step(), cpu1.step(t, 1 / 60.f), cpu2.step(t, 1 / 60.f);  // JIT, caches
+  ComputeTimes times;
+  for (int r = 0; r < rounds; ++r) {
+    t += 1 / 60.f;
+    times.gpu.push_back(time_ms(gpu_step));
+    if (const auto device = timer.results(); !device.empty()) times.gpu_device.push_back(device[0].ms);
+    times.fftw1.push_back(time_ms([&] { cpu1.step(t, 1 / 60.f); }));
+    times.fftw2.push_back(time_ms([&] { cpu2.step(t, 1 / 60.f); }));
+    times.ratio1.push_back(times.gpu.back() / times.fftw1.back());
+    times.ratio2.push_back(times.gpu.back() / times.fftw2.back());
+  }
+  return times;
+}
+
 int run_bench_compute(const ParsedArgs& args, int rounds) {
   auto ctx = open_context();
   if (!ctx) return kExitFailure;
@@ -101,53 +152,20 @@ int run_bench_compute(const ParsedArgs& args, int rounds) {
   std::printf("%-44s %12s %12s\n", "Benchmark", "Time (ms)", "Ratio");
 
   nlohmann::json results = nlohmann::json::array();
-  auto report = [&](const std::string& name, const std::vector<double>& ms, const char* measure,
-                    double ratio) {
-    std::printf("%-44s %12.3f %12s\n", name.c_str(), median(ms),
-                ratio > 0 ? (std::to_string(ratio).substr(0, 6) + "x").c_str() : "");
-    nlohmann::json entry = result_entry(name, ms, measure);
-    if (ratio > 0) entry["ratio_gpu_over_cpu"] = ratio;
-    results.push_back(entry);
-  };
-
-  const double patches[] = {1000.0, 100.0, 10.0};
   for (uint32_t n : {128u, 256u, 512u}) {
     for (uint32_t count : {1u, 3u}) {
-      ocean::OceanParams params;
-      params.cascades.clear();
-      for (uint32_t c = 0; c < count; ++c) params.cascades.push_back({patches[c], n});
+      const ocean::OceanParams params = bench_params(n, count);
       if (auto valid = ocean::validate(params); !valid) {
         std::fprintf(stderr, "lagoon bench: %s\n", valid.error().message.c_str());
         return kExitFailure;
       }
-      ocean::GpuOcean gpu(*ctx, params);
-      FftwOceanStep cpu1(params, gpu.spectra(), 1), cpu2(params, gpu.spectra(), 2);
-      // One scope around the whole step: its device time, without the submit and wait the wall time has.
-      vk::GpuTimer timer(*ctx, 1);
-      float t = 0;
-      auto gpu_step = [&] {
-        ctx->submit_and_wait([&](VkCommandBuffer cmd) {
-          timer.reset(cmd);
-          vk::GpuScope scope(timer, cmd, "ocean step");
-          gpu.record_step(cmd, t, 1 / 60.0);
-        });
-      };
-      for (int w = 0; w < 3; ++w) gpu_step(), cpu1.step(t, 1 / 60.f), cpu2.step(t, 1 / 60.f);  // JIT, caches
-      std::vector<double> g, g_device, c1, c2, r1, r2;
-      for (int r = 0; r < rounds; ++r) {
-        t += 1 / 60.f;
-        g.push_back(time_ms(gpu_step));
-        if (const auto times = timer.results(); !times.empty()) g_device.push_back(times[0].ms);
-        c1.push_back(time_ms([&] { cpu1.step(t, 1 / 60.f); }));
-        c2.push_back(time_ms([&] { cpu2.step(t, 1 / 60.f); }));
-        r1.push_back(g.back() / c1.back());
-        r2.push_back(g.back() / c2.back());
-      }
+      const ComputeTimes times = time_ocean_step(*ctx, params, rounds);
       const std::string config = "/N=" + std::to_string(n) + "/cascades=" + std::to_string(count);
-      report("ocean_step/gpu" + config, g, "wall", 0);
-      if (!g_device.empty()) report("ocean_step/gpu_timestamps" + config, g_device, "gpu timestamps", 0);
-      report("ocean_step/fftw_1thread" + config, c1, "wall", median(r1));
-      report("ocean_step/fftw_2threads" + config, c2, "wall", median(r2));
+      report_row(results, "ocean_step/gpu" + config, times.gpu, "wall", 0);
+      if (!times.gpu_device.empty())
+        report_row(results, "ocean_step/gpu_timestamps" + config, times.gpu_device, "gpu timestamps", 0);
+      report_row(results, "ocean_step/fftw_1thread" + config, times.fftw1, "wall", median(times.ratio1));
+      report_row(results, "ocean_step/fftw_2threads" + config, times.fftw2, "wall", median(times.ratio2));
     }
   }
   if (auto path = args.get("json")) {

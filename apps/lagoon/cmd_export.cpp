@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -157,88 +158,119 @@ Result<void> check_space(const fs::path& out, uint64_t bytes) {
   return {};
 }
 
-int run_export(const ParsedArgs& args) {
-  const fs::path out = *args.get("out");
-  double dt = 1.0 / 30.0;
+int export_failure(const std::string& message) {
+  std::fprintf(stderr, "lagoon export: %s\n", message.c_str());
+  return kExitFailure;
+}
+
+struct ExportOptions {
+  long long frames = 1;
+  double dt = 1.0 / 30.0;              // seconds between frames
+  std::vector<std::string> overrides;  // --t0 T as --set time_s=T, validated like the scene file
+};
+
+// --frames, --dt and --t0; nullopt (after printing why) when one is out of range.
+std::optional<ExportOptions> export_options(const ParsedArgs& args) {
+  ExportOptions o;
   const auto frames_arg = integer_option(args, "frames", 1, 1, 100000);
   if (!frames_arg) {
     std::fprintf(stderr, "lagoon export: %s\n", frames_arg.error().message.c_str());
-    return kExitUsage;
+    return std::nullopt;
   }
-  const long long frames = *frames_arg;
+  o.frames = *frames_arg;
   if (auto v = args.get("dt")) {
     auto d = parse_number(*v);
     if (!d || *d <= 0 || *d > 3600) {
       std::fprintf(stderr, "lagoon export: --dt %s must be a number of seconds in (0, 3600]\n", v->c_str());
-      return kExitUsage;
+      return std::nullopt;
     }
-    dt = *d;
+    o.dt = *d;
   }
-  std::vector<std::string> overrides;
   if (auto v = args.get("t0")) {
     if (!parse_number(*v)) {
       std::fprintf(stderr, "lagoon export: --t0 %s is not a number of seconds\n", v->c_str());
-      return kExitUsage;
+      return std::nullopt;
     }
-    overrides.push_back("time_s=" + *v);
+    o.overrides.push_back("time_s=" + *v);
   }
-  auto scene = load_scene_from_args(args, "export", overrides);
-  if (!scene) return kExitFailure;
-  auto fail = [&](const std::string& message) {
-    std::fprintf(stderr, "lagoon export: %s\n", message.c_str());
-    return kExitFailure;
-  };
-  std::error_code ec;
-  if (fs::exists(out, ec) && !fs::is_directory(out, ec))  // checked before the GPU work, not after
-    return fail("--out " + out.string() + " exists and is not a folder");
-  if (auto space = check_space(out, export_bytes(scene->ocean, size_t(frames))); !space)
-    return fail(space.error().message);
-  auto ctx = open_context();
-  if (!ctx) return kExitFailure;
+  return o;
+}
 
+Result<std::vector<CascadeStreams>> open_all_streams(const StagedOutput& staged, const ocean::GpuOcean& gpu,
+                                                     size_t frames) {
+  std::vector<CascadeStreams> streams;
+  for (uint32_t c = 0; c < gpu.cascade_count(); ++c) {
+    auto s = open_streams(staged, c, frames, gpu.spectra()[c].resolution);
+    if (!s) return s.error();
+    streams.push_back(std::move(*s));
+  }
+  return streams;
+}
+
+// meta.json, then every array, then the folder itself: the output appears complete or not at all.
+Result<void> commit_export(StagedOutput& staged, std::vector<CascadeStreams>& streams,
+                           const std::string& meta) {
+  if (auto r =
+          io::write_file_atomic(staged.file("meta.json"), std::as_bytes(std::span(meta.data(), meta.size())));
+      !r)
+    return r;
+  if (auto r = commit_streams(streams); !r) return r;
+  return staged.commit();
+}
+
+// Steps the GPU ocean frame after frame, streaming every cascade's fields into a staged --out.
+int export_fields(vk::Context& ctx, const scene::Scene& scene, const fs::path& out, const ExportOptions& o) {
   // Frames go straight into a staging folder beside the output; it is moved into place only when complete,
   // and removed on any failure or interruption (StagedOutput's destructor), so nothing half-written remains.
   InterruptGuard interrupt;
   auto staged = StagedOutput::create(out);
-  if (!staged) return fail(staged.error().message);
-  auto gpu_ocean = ocean::GpuOcean::create(*ctx, scene->ocean);
-  if (!gpu_ocean) return fail(gpu_ocean.error().message);
+  if (!staged) return export_failure(staged.error().message);
+  auto gpu_ocean = ocean::GpuOcean::create(ctx, scene.ocean);
+  if (!gpu_ocean) return export_failure(gpu_ocean.error().message);
   ocean::GpuOcean& gpu = **gpu_ocean;
-  std::vector<CascadeStreams> streams;
-  for (uint32_t c = 0; c < gpu.cascade_count(); ++c) {
-    auto s = open_streams(*staged, c, size_t(frames), gpu.spectra()[c].resolution);
-    if (!s) return fail(s.error().message);
-    streams.push_back(std::move(*s));
-  }
+  auto streams = open_all_streams(*staged, gpu, size_t(o.frames));
+  if (!streams) return export_failure(streams.error().message);
   CascadeArrays scratch;
   std::vector<double> times;
-  for (long long f = 0; f < frames; ++f) {
+  for (long long f = 0; f < o.frames; ++f) {
     if (interrupt.signal()) {
       std::fprintf(stderr,
                    "\nlagoon export: interrupted by signal %d after %lld of %lld frames; nothing written\n",
-                   interrupt.signal(), f, frames);
+                   interrupt.signal(), f, o.frames);
       return interrupt.exit_code();
     }
-    const double t = scene->time_s + double(f) * dt;
+    const double t = scene.time_s + double(f) * o.dt;
     times.push_back(t);
-    ctx->submit_and_wait([&](VkCommandBuffer cmd) { gpu.record_step(cmd, t, f == 0 ? 0.0 : dt); });
+    ctx.submit_and_wait([&](VkCommandBuffer cmd) { gpu.record_step(cmd, t, f == 0 ? 0.0 : o.dt); });
     for (uint32_t c = 0; c < gpu.cascade_count(); ++c)
-      if (auto r = append_frame(streams[c], gpu.read_cascade(c), scratch); !r) return fail(r.error().message);
-    if (frames > 1) std::fprintf(stderr, "\rlagoon export: frame %lld/%lld", f + 1, frames);
+      if (auto r = append_frame((*streams)[c], gpu.read_cascade(c), scratch); !r)
+        return export_failure(r.error().message);
+    if (o.frames > 1) std::fprintf(stderr, "\rlagoon export: frame %lld/%lld", f + 1, o.frames);
   }
-  if (frames > 1) std::fprintf(stderr, "\n");
-  if (int status = validation_status(*ctx); status != kExitOk) return status;
+  if (o.frames > 1) std::fprintf(stderr, "\n");
+  if (int status = validation_status(ctx); status != kExitOk) return status;
 
-  const std::string meta = meta_json(*scene, gpu, times).dump(2) + "\n";
-  if (auto r = io::write_file_atomic(staged->file("meta.json"),
-                                     std::as_bytes(std::span(meta.data(), meta.size())));
-      !r)
-    return fail(r.error().message);
-  if (auto r = commit_streams(streams); !r) return fail(r.error().message);
-  if (auto r = staged->commit(); !r) return fail(r.error().message);
-  std::printf("wrote %s: %lld frame(s), %u cascade(s), on %s\n", out.c_str(), frames, gpu.cascade_count(),
-              ctx->device_info().name.c_str());
+  if (auto r = commit_export(*staged, *streams, meta_json(scene, gpu, times).dump(2) + "\n"); !r)
+    return export_failure(r.error().message);
+  std::printf("wrote %s: %lld frame(s), %u cascade(s), on %s\n", out.c_str(), o.frames, gpu.cascade_count(),
+              ctx.device_info().name.c_str());
   return kExitOk;
+}
+
+int run_export(const ParsedArgs& args) {
+  const fs::path out = *args.get("out");
+  const auto options = export_options(args);
+  if (!options) return kExitUsage;
+  auto scene = load_scene_from_args(args, "export", options->overrides);
+  if (!scene) return kExitFailure;
+  std::error_code ec;
+  if (fs::exists(out, ec) && !fs::is_directory(out, ec))  // checked before the GPU work, not after
+    return export_failure("--out " + out.string() + " exists and is not a folder");
+  if (auto space = check_space(out, export_bytes(scene->ocean, size_t(options->frames))); !space)
+    return export_failure(space.error().message);
+  auto ctx = open_context();
+  if (!ctx) return kExitFailure;
+  return export_fields(*ctx, *scene, out, *options);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -116,50 +117,27 @@ int explain(const optics::LutInputs& in, const std::string& at) {
   return kExitOk;
 }
 
-int run_lut(const ParsedArgs& args) {
+// --water and --sun-elevation are shorthands for --set; nullopt (after printing why) when the elevation is
+// not a number.
+std::optional<std::vector<std::string>> lut_overrides(const ParsedArgs& args) {
   std::vector<std::string> overrides;
   if (auto w = args.get("water")) overrides.push_back("water.type=" + *w);
   if (auto e = args.get("sun-elevation")) {
     if (!parse_number(*e)) {
       std::fprintf(stderr, "lagoon lut: --sun-elevation %s is not a number of degrees\n", e->c_str());
-      return kExitUsage;
+      return std::nullopt;
     }
     overrides.push_back("sun.elevation_deg=" + *e);
   }
-  if (!args.has("out") && !args.has("explain")) {
-    std::fprintf(stderr, "lagoon lut: give --out DIR (write the LUTs) or --explain R,H (print one entry)\n");
-    return kExitUsage;
-  }
-  auto scene = load_scene_from_args(args, "lut", overrides);
-  if (!scene) return kExitFailure;
-  auto inputs = optics::lut_inputs(scene->water, scene->sun.elevation_deg);
-  if (!inputs) {
-    std::fprintf(stderr, "lagoon lut: %s\n", inputs.error().message.c_str());
-    return kExitFailure;
-  }
-  if (auto at = args.get("explain")) return explain(*inputs, *at);
+  return overrides;
+}
 
-  auto fail = [](const std::string& message) {
-    std::fprintf(stderr, "lagoon lut: %s\n", message.c_str());
-    return kExitFailure;
-  };
-  auto built = optics::build_water_lut(*inputs);
-  if (!built) return fail(built.error().message);
-  const optics::WaterLut& lut = *built;
-  auto staged = StagedOutput::create(*args.get("out"));
-  if (!staged) return fail(staged.error().message);
-  const size_t r = lut.r_count, h = lut.h_count;
-  const std::vector<size_t> t0_shape{r, h, 4}, t1_shape{r, h, 3};
-  if (auto w = io::write_npy(staged->file("T0.npy"), lut.t0, t0_shape); !w) return fail(w.error().message);
-  if (auto w = io::write_npy(staged->file("T1.npy"), lut.t1, t1_shape); !w) return fail(w.error().message);
-  if (auto w = io::write_png(staged->file("T0.png"), preview(lut, lut.t0, 4, true)); !w)
-    return fail(w.error().message);
-  if (auto w = io::write_png(staged->file("T1.png"), preview(lut, lut.t1, 3, false)); !w)
-    return fail(w.error().message);
-  const nlohmann::json meta{
+// lut.json: the parameters, the axes and how a shader looks the tables up, what the previews show.
+nlohmann::json lut_meta(const optics::WaterLut& lut, const optics::LutInputs& inputs) {
+  return {
       {"format_version", 1},
       {"generator", "lagoon lut"},
-      {"parameters", params_json(*inputs)},
+      {"parameters", params_json(inputs)},
       {"r_m", lut.r_m},
       {"h_m", lut.h_m},
       {"axes",
@@ -176,17 +154,60 @@ int run_lut(const ParsedArgs& args) {
        "above the water has RGB (1, 1, 1)"},
       {"deep_colour_rgb", {lut.deep_colour.x, lut.deep_colour.y, lut.deep_colour.z}},
       {"build_ms", lut.build_ms}};
-  const std::string text = meta.dump(2) + "\n";
+}
+
+int lut_failure(const std::string& message) {
+  std::fprintf(stderr, "lagoon lut: %s\n", message.c_str());
+  return kExitFailure;
+}
+
+// Builds the LUTs and writes T0/T1 (.npy and PNG previews) and lut.json into a staged folder `out`, moved
+// into place only when every file is written.
+int write_luts(const optics::LutInputs& inputs, const std::string& out) {
+  auto built = optics::build_water_lut(inputs);
+  if (!built) return lut_failure(built.error().message);
+  const optics::WaterLut& lut = *built;
+  auto staged = StagedOutput::create(out);
+  if (!staged) return lut_failure(staged.error().message);
+  const size_t r = lut.r_count, h = lut.h_count;
+  const std::vector<size_t> t0_shape{r, h, 4}, t1_shape{r, h, 3};
+  if (auto w = io::write_npy(staged->file("T0.npy"), lut.t0, t0_shape); !w)
+    return lut_failure(w.error().message);
+  if (auto w = io::write_npy(staged->file("T1.npy"), lut.t1, t1_shape); !w)
+    return lut_failure(w.error().message);
+  if (auto w = io::write_png(staged->file("T0.png"), preview(lut, lut.t0, 4, true)); !w)
+    return lut_failure(w.error().message);
+  if (auto w = io::write_png(staged->file("T1.png"), preview(lut, lut.t1, 3, false)); !w)
+    return lut_failure(w.error().message);
+  const std::string text = lut_meta(lut, inputs).dump(2) + "\n";
   if (auto w =
           io::write_file_atomic(staged->file("lut.json"), std::as_bytes(std::span(text.data(), text.size())));
       !w)
-    return fail(w.error().message);
-  if (auto c = staged->commit(); !c) return fail(c.error().message);
+    return lut_failure(w.error().message);
+  if (auto c = staged->commit(); !c) return lut_failure(c.error().message);
   std::printf(
       "wrote %s: %zux%zu LUTs for %s, sun %.1f deg, built in %.1f ms; deep colour (%.3f, %.3f, %.3f)\n",
-      args.get("out")->c_str(), r, h, inputs->params.type.c_str(), inputs->sky.sun_elevation_deg,
-      lut.build_ms, lut.deep_colour.x, lut.deep_colour.y, lut.deep_colour.z);
+      out.c_str(), r, h, inputs.params.type.c_str(), inputs.sky.sun_elevation_deg, lut.build_ms,
+      lut.deep_colour.x, lut.deep_colour.y, lut.deep_colour.z);
   return kExitOk;
+}
+
+int run_lut(const ParsedArgs& args) {
+  const auto overrides = lut_overrides(args);
+  if (!overrides) return kExitUsage;
+  if (!args.has("out") && !args.has("explain")) {
+    std::fprintf(stderr, "lagoon lut: give --out DIR (write the LUTs) or --explain R,H (print one entry)\n");
+    return kExitUsage;
+  }
+  auto scene = load_scene_from_args(args, "lut", *overrides);
+  if (!scene) return kExitFailure;
+  auto inputs = optics::lut_inputs(scene->water, scene->sun.elevation_deg);
+  if (!inputs) {
+    std::fprintf(stderr, "lagoon lut: %s\n", inputs.error().message.c_str());
+    return kExitFailure;
+  }
+  if (auto at = args.get("explain")) return explain(*inputs, *at);
+  return write_luts(*inputs, *args.get("out"));
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 // lagoon render: one frame of a scene, headless, to a PNG.
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,19 +14,15 @@
 namespace lagoon::cli {
 namespace {
 
-int run_render(const ParsedArgs& args) {
-  const std::string out_path = *args.get("out");
-  if (out_path.size() < 5 || out_path.substr(out_path.size() - 4) != ".png") {
-    std::fprintf(stderr, "lagoon render: --out %s must name a .png file\n", out_path.c_str());
-    return kExitUsage;
-  }
-  // --width/--height/--time are shorthands for --set, so they are validated exactly like the scene file.
+// --width/--height/--time are shorthands for --set, so they are validated exactly like the scene file.
+// nullopt (after printing why) when one is not a number.
+std::optional<std::vector<std::string>> shorthand_overrides(const ParsedArgs& args) {
   std::vector<std::string> overrides;
   for (const char* key : {"width", "height"}) {
     if (auto v = args.get(key)) {
       if (!parse_integer(*v)) {
         std::fprintf(stderr, "lagoon render: --%s %s is not a whole number of pixels\n", key, v->c_str());
-        return kExitUsage;
+        return std::nullopt;
       }
       overrides.push_back(std::string("render.") + key + "=" + *v);
     }
@@ -33,27 +30,81 @@ int run_render(const ParsedArgs& args) {
   if (auto v = args.get("time")) {
     if (!parse_number(*v)) {
       std::fprintf(stderr, "lagoon render: --time %s is not a number of seconds\n", v->c_str());
-      return kExitUsage;
+      return std::nullopt;
     }
     overrides.push_back("time_s=" + *v);
   }
+  return overrides;
+}
+
+// --frames and --fps: how many frames, and the simulation time between them (1/fps).
+struct FrameRun {
+  long long frames = 1;
   double fps = 30.0;
+};
+
+// nullopt (after printing why) when either is out of range.
+std::optional<FrameRun> frame_run_option(const ParsedArgs& args) {
+  FrameRun run;
   const auto frames_arg = integer_option(args, "frames", 1, 1, 100000);
   if (!frames_arg) {
     std::fprintf(stderr, "lagoon render: %s\n", frames_arg.error().message.c_str());
-    return kExitUsage;
+    return std::nullopt;
   }
-  const long long frames = *frames_arg;
+  run.frames = *frames_arg;
   if (auto v = args.get("fps")) {
     auto f = parse_number(*v);
     if (!f || *f <= 0 || *f > 1000) {
       std::fprintf(stderr, "lagoon render: --fps %s must be a number of frames per second in (0, 1000]\n",
                    v->c_str());
-      return kExitUsage;
+      return std::nullopt;
     }
-    fps = *f;
+    run.fps = *f;
   }
-  auto scene = load_scene_from_args(args, "render", overrides);
+  return run;
+}
+
+// One PNG per frame: out.png for a single frame, out_0000.png, out_0001.png ... for several.
+std::string frame_path(const std::string& out_path, long long frame, long long frames) {
+  if (frames == 1) return out_path;
+  char suffix[24];  // "_" + up to 19 digits + NUL
+  std::snprintf(suffix, sizeof(suffix), "_%04lld", frame);
+  return out_path.substr(0, out_path.size() - 4) + suffix + ".png";
+}
+
+void print_progress(long long done_frames, long long frames) {
+  const int done = int(40 * done_frames / frames);
+  std::fprintf(stderr, "\r[%s%s] %lld/%lld frames", std::string(done, '#').c_str(),
+               std::string(40 - done, ' ').c_str(), done_frames, frames);
+}
+
+// What was written, on which device, and each pass's GPU time (of the last frame).
+void print_summary(const std::string& out_path, const FrameRun& run, const io::Image8& image,
+                   const scene::Scene& scene, const vk::Context& ctx,
+                   const std::vector<vk::PassTime>& timings) {
+  if (run.frames == 1) {
+    std::printf("wrote %s (%ux%u, t = %.2f s) on %s (%s)\n", out_path.c_str(), image.width, image.height,
+                scene.time_s, ctx.device_info().name.c_str(), ctx.device_info().type.c_str());
+  } else {
+    const std::string stem = out_path.substr(0, out_path.size() - 4);
+    std::printf("wrote %s_0000.png .. %s_%04lld.png (%lld frames at %.3g fps, %ux%u) on %s (%s)\n",
+                stem.c_str(), stem.c_str(), run.frames - 1, run.frames, run.fps, image.width, image.height,
+                ctx.device_info().name.c_str(), ctx.device_info().type.c_str());
+  }
+  for (const auto& t : timings) std::printf("  %-10s %8.2f ms GPU\n", t.name.c_str(), t.ms);
+}
+
+int run_render(const ParsedArgs& args) {
+  const std::string out_path = *args.get("out");
+  if (out_path.size() < 5 || out_path.substr(out_path.size() - 4) != ".png") {
+    std::fprintf(stderr, "lagoon render: --out %s must name a .png file\n", out_path.c_str());
+    return kExitUsage;
+  }
+  const auto overrides = shorthand_overrides(args);
+  if (!overrides) return kExitUsage;
+  const auto run = frame_run_option(args);
+  if (!run) return kExitUsage;
+  auto scene = load_scene_from_args(args, "render", *overrides);
   if (!scene) return kExitFailure;
   auto ctx = open_context();
   if (!ctx) return kExitFailure;
@@ -63,39 +114,22 @@ int run_render(const ParsedArgs& args) {
     std::fprintf(stderr, "lagoon render: %s: %s\n", scene->source.c_str(), renderer.error().message.c_str());
     return kExitFailure;
   }
-  // One PNG per frame: out.png for a single frame, out_0000.png, out_0001.png ... for several.
-  const std::string stem = out_path.substr(0, out_path.size() - 4);
   const double t0 = scene->time_s;
   std::vector<vk::PassTime> timings;
   io::Image8 image;
-  for (long long f = 0; f < frames; ++f) {
-    scene->time_s = float(t0 + double(f) / fps);
+  for (long long f = 0; f < run->frames; ++f) {
+    scene->time_s = float(t0 + double(f) / run->fps);
     image = (*renderer)->render(*scene, &timings);
     // A frame rendered with validation errors is not written: it cannot be trusted.
     if (int status = validation_status(*ctx); status != kExitOk) return status;
-    char suffix[24];  // "_" + up to 19 digits + NUL
-    std::snprintf(suffix, sizeof(suffix), "_%04lld", f);
-    const std::string path = frames == 1 ? out_path : stem + suffix + ".png";
-    if (auto written = io::write_png(path, image); !written) {
+    if (auto written = io::write_png(frame_path(out_path, f, run->frames), image); !written) {
       std::fprintf(stderr, "lagoon render: %s\n", written.error().message.c_str());
       return kExitFailure;
     }
-    if (frames > 1) {
-      const int done = int(40 * (f + 1) / frames);
-      std::fprintf(stderr, "\r[%s%s] %lld/%lld frames", std::string(done, '#').c_str(),
-                   std::string(40 - done, ' ').c_str(), f + 1, frames);
-    }
+    if (run->frames > 1) print_progress(f + 1, run->frames);
   }
-  if (frames > 1) std::fprintf(stderr, "\n");
-  if (frames == 1) {
-    std::printf("wrote %s (%ux%u, t = %.2f s) on %s (%s)\n", out_path.c_str(), image.width, image.height,
-                scene->time_s, ctx->device_info().name.c_str(), ctx->device_info().type.c_str());
-  } else {
-    std::printf("wrote %s_0000.png .. %s_%04lld.png (%lld frames at %.3g fps, %ux%u) on %s (%s)\n",
-                stem.c_str(), stem.c_str(), frames - 1, frames, fps, image.width, image.height,
-                ctx->device_info().name.c_str(), ctx->device_info().type.c_str());
-  }
-  for (const auto& t : timings) std::printf("  %-10s %8.2f ms GPU\n", t.name.c_str(), t.ms);
+  if (run->frames > 1) std::fprintf(stderr, "\n");
+  print_summary(out_path, *run, image, *scene, *ctx, timings);
   return kExitOk;
 }
 

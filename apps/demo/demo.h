@@ -1,0 +1,126 @@
+// The Demo behind run_demo(), split by concept across files: demo_app.cpp (start-up, the loop, the summary),
+// demo_frame.cpp (one frame: time, render, copy to the swapchain, present, screenshots), demo_ui.cpp (keys,
+// mouse and the panel), demo_scene.cpp (the scene: edits, scripts, reset, save, renderer rebuilds).
+#pragma once
+#define GLFW_INCLUDE_VULKAN
+#include <GLFW/glfw3.h>
+
+#include <array>
+#include <chrono>
+#include <deque>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "camera_controller.h"
+#include "demo_options.h"
+#include "exit_codes.h"
+#include "imgui_layer.h"
+#include "ocean/wave_query.h"
+#include "optics/lut.h"
+#include "parameter_panel.h"
+#include "render/ocean_renderer.h"
+#include "vk/buffer.h"
+#include "vk/frame_ring.h"
+#include "window/swapchain.h"
+#include "window/window.h"
+
+namespace lagoon::demo {
+
+class Demo {
+ public:
+  using Clock = std::chrono::steady_clock;
+
+  explicit Demo(DemoOptions options)
+      : options_(std::move(options)), scene_(options_.scene), file_scene_(scene_) {}
+
+  int run();
+
+ private:
+  struct KeyEdges {
+    std::array<bool, GLFW_KEY_LAST + 1> down{};
+    bool pressed(GLFWwindow* w, int key);  // true once per press
+  };
+
+  // Start-up and the loop (demo_app.cpp).
+  int start();
+  void create_acquire_semaphores();
+  void print_summary() const;
+
+  // One frame (demo_frame.cpp).
+  bool frame();
+  float tick();
+  void update_ui(float dt);
+  scene::Scene advance_time(float dt);
+  std::optional<uint32_t> acquire_image(uint32_t slot);
+  void record_to_swapchain(VkCommandBuffer cmd, const scene::Scene& frame_scene, uint32_t slot,
+                           uint32_t image);
+  std::string take_screenshot_request(bool last_scripted);
+  vk::Buffer record_screenshot_copy(VkCommandBuffer cmd, uint32_t image);
+  void submit_and_present(uint32_t slot, uint32_t image);
+  void finish_screenshot(const std::string& path, const vk::Buffer& pixels);
+  Result<void> save_screenshot(const std::string& path, const vk::Buffer& pixels) const;
+  void recreate_swapchain();
+
+  // Input and the panel (demo_ui.cpp).
+  void handle_input(float dt);
+  void handle_keys(GLFWwindow* w, bool ctrl);
+  CameraInput camera_input(GLFWwindow* w, bool ctrl) const;
+  void draw_ui();
+  void draw_help();
+  void draw_toolbar();
+  void draw_tabs();
+  void draw_probe();
+  void update_probe();
+
+  // The scene (demo_scene.cpp).
+  Result<void> rebuild_renderer();
+  void rebuild_after_edits();
+  void apply_script(long long frame);
+  void resize_window(const std::string& assignment, long long frame);
+  void follow_camera_edit(const scene::Camera& before);
+  void reset_to_file();
+  void save_scene_to(const std::string& path);
+  void message(std::string text);
+
+  DemoOptions options_;
+  scene::Scene scene_, file_scene_;
+  std::unique_ptr<Window> window_;
+  std::unique_ptr<vk::Context> ctx_;
+  std::unique_ptr<Swapchain> swapchain_;
+  std::unique_ptr<ImGuiLayer> ui_;
+  std::unique_ptr<vk::FrameRing> ring_;
+  std::vector<vk::Unique<VkSemaphore>> acquired_;
+  std::unique_ptr<render::OceanRenderer> renderer_;
+  std::string renderer_key_, failed_key_;
+  std::unique_ptr<ocean::WaveQuery> query_;
+  optics::WaterLut lut_;
+  std::optional<CameraController> camera_;
+  ParameterPanel panel_;
+  KeyEdges keys_;
+
+  // The loop's state.
+  std::array<bool, render::OceanRenderer::kSlots> slot_used_{};  // a slot's timings are readable
+  double t0_ = 0;                                                // the scene's time at start
+  long long frame_ = 0;                                          // frames presented
+  Clock::time_point last_frame_{};
+  int exit_status_ = cli::kExitOk;  // kExitFailure when the --screenshot could not be written
+
+  double time_s_ = 0;
+  long long scripted_frame_ = -1;
+  bool scene_edited_ = false;  // by the panel, a script or reset since the last rebuild check
+  bool paused_ = false, step_once_ = false;
+  bool show_ui_ = true, show_help_ = false;
+  bool vsync_ = true, swapchain_dirty_ = false;
+  std::string screenshot_request_;
+  char save_path_[512] = "lagoon-scene.json";
+  std::string status_;
+  std::deque<float> frame_ms_;
+  std::vector<vk::PassTime> timings_;
+  std::optional<ocean::WaveSample> probe_;
+  glm::dvec2 probe_xz_{0};
+  Clock::time_point last_probe_{};
+};
+
+}  // namespace lagoon::demo
