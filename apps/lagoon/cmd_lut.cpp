@@ -12,6 +12,7 @@
 #include "io/atomic_file.h"
 #include "io/npy.h"
 #include "io/png.h"
+#include "lut_underwater.h"
 #include "optics/colour.h"
 #include "optics/lut.h"
 #include "optics/surface.h"
@@ -179,7 +180,11 @@ int write_luts(const optics::LutInputs& inputs, const std::string& out) {
     return lut_failure(w.error().message);
   if (auto w = io::write_png(staged->file("T1.png"), preview(lut, lut.t1, 3, false)); !w)
     return lut_failure(w.error().message);
-  const std::string text = lut_meta(lut, inputs).dump(2) + "\n";
+  auto underwater = write_underwater_tables(inputs, *staged);
+  if (!underwater) return lut_failure(underwater.error().message);
+  nlohmann::json meta = lut_meta(lut, inputs);
+  meta["underwater"] = *underwater;
+  const std::string text = meta.dump(2) + "\n";
   if (auto w =
           io::write_file_atomic(staged->file("lut.json"), std::as_bytes(std::span(text.data(), text.size())));
       !w)
@@ -214,21 +219,25 @@ int run_lut(const ParsedArgs& args) {
 
 const Command& lut_command() {
   static const Command command{
-      .spec = {.name = "lut",
-               .summary =
-                   "Builds the water-colour look-up tables T0 (RGB + a) and T1 of Belyaev's model for a "
-                   "water type and sun (eq. 22: T_refr = a·T0·T_bottom + (1 - a)·T1) and writes "
-                   "T0.npy, T1.npy, lut.json and PNG previews; or prints every quantity behind one "
-                   "entry with --explain.",
-               .options = {{"scene", "FILE", "take water and sun from this scene (default: all defaults)"},
-                           {"water", "TYPE", "water type, e.g. jerlov-IB (same as --set water.type=TYPE)"},
-                           {"out", "DIR", "output folder for T0.npy, T1.npy, lut.json, T0.png, T1.png"},
-                           {"sun-elevation", "DEG", "sun elevation (same as --set sun.elevation_deg=DEG)"},
-                           {"explain", "R,H", "print JSON for the entry at distance R and depth H (metres)"},
-                           set_option()},
-               .details = "water types: jerlov-I, jerlov-IA, jerlov-IB, jerlov-II, jerlov-III, jerlov-1C, "
-                          "jerlov-3C, jerlov-5C, jerlov-7C, jerlov-9C, custom (with water.table)\n"
-                          "example:\n  lagoon lut --water jerlov-IA --out out/lut-IA --sun-elevation 45\n"},
+      .spec =
+          {.name = "lut",
+           .summary =
+               "Builds the water-colour look-up tables T0 (RGB + a) and T1 of Belyaev's model for a "
+               "water type and sun (eq. 22: T_refr = a·T0·T_bottom + (1 - a)·T1) and writes "
+               "T0.npy, T1.npy, lut.json and PNG previews, with the tables a camera under water needs "
+               "(underwater_*.npy: what a view ray transmits and adds); or prints every quantity behind one "
+               "entry with --explain.",
+           .options = {{"scene", "FILE", "take water and sun from this scene (default: all defaults)"},
+                       {"water", "TYPE", "water type, e.g. jerlov-IB (same as --set water.type=TYPE)"},
+                       {"out", "DIR",
+                        "output folder for T0.npy, T1.npy, lut.json, T0.png, T1.png and the underwater "
+                        "tables underwater_*.npy, underwater.png"},
+                       {"sun-elevation", "DEG", "sun elevation (same as --set sun.elevation_deg=DEG)"},
+                       {"explain", "R,H", "print JSON for the entry at distance R and depth H (metres)"},
+                       set_option()},
+           .details = "water types: jerlov-I, jerlov-IA, jerlov-IB, jerlov-II, jerlov-III, jerlov-1C, "
+                      "jerlov-3C, jerlov-5C, jerlov-7C, jerlov-9C, custom (with water.table)\n"
+                      "example:\n  lagoon lut --water jerlov-IA --out out/lut-IA --sun-elevation 45\n"},
       .run = run_lut};
   return command;
 }

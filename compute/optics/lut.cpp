@@ -42,8 +42,8 @@ SimilarScattering similarity_scaled(double scattering_per_m, double phase_x1) {
 }
 
 namespace {
-
 constexpr double kPetzoldParticleG = 0.924;
+}  // namespace
 
 double phase_x1_at(const LutInputs& in, int i) {
   if (in.params.phase != "mixed") return in.params.phase_x1;
@@ -53,7 +53,7 @@ double phase_x1_at(const LutInputs& in, int i) {
   return 3.0 * kPetzoldParticleG * particles / sigma;
 }
 
-Result<FourFlowSolution> solve(const LutInputs& in, int i, double depth_m) {
+Result<FourFlowSolution> solve_wavelength(const LutInputs& in, int i, double depth_m) {
   const double sun_zenith = (90.0 - std::max(in.sky.sun_elevation_deg, 0.0)) * kDegToRad;
   const SimilarScattering scaled = similarity_scaled(in.water.scattering_per_m[i], phase_x1_at(in, i));
   const FourFlowInput input{.absorption_per_m = in.water.absorption_per_m[i],
@@ -67,22 +67,24 @@ Result<FourFlowSolution> solve(const LutInputs& in, int i, double depth_m) {
   return solve_four_flow(input);
 }
 
+Spectrum downwelling_white(const SkyIrradiance& sky) {
+  Spectrum w;
+  for (int i = 0; i < kSamples; ++i) w[i] = sky.sun[i] + sky.sky[i];
+  return w;
+}
+
+namespace {
+
 Result<ColumnFlows> column_flows(const LutInputs& in, double depth_m) {
   ColumnFlows c;
   for (int i = 0; i < kSamples; ++i) {
-    auto s = solve(in, i, depth_m);
+    auto s = solve_wavelength(in, i, depth_m);
     if (!s) return s.error();
     c.at_bottom[i] = s->g_plus(s->tau0) + s->f_plus(s->tau0);
     c.upwelling[i] = s->f_minus(0.0);
     c.attenuation[i] = in.water.absorption_per_m[i] + in.water.scattering_per_m[i];
   }
   return c;
-}
-
-Spectrum white_of(const SkyIrradiance& sky) {
-  Spectrum w;
-  for (int i = 0; i < kSamples; ++i) w[i] = sky.sun[i] + sky.sky[i];
-  return w;
 }
 
 struct Entry {
@@ -138,7 +140,7 @@ Result<WaterLut> build_water_lut(const LutInputs& in) {
     lut.r_m.push_back(in.params.lut_r_max_m * u * u);  // denser near 0, where colour changes fastest
     lut.h_m.push_back(in.params.lut_h_max_m * u * u);
   }
-  const Spectrum white = white_of(in.sky);
+  const Spectrum white = downwelling_white(in.sky);
   lut.t0.resize(size_t{n} * n * 4);
   lut.t1.resize(size_t{n} * n * 3);
   for (uint32_t j = 0; j < n; ++j) {
@@ -167,12 +169,12 @@ Result<LutExplain> explain_lut_point(const LutInputs& in, double r_m, double h_m
   out.r_m = r_m;
   out.h_m = h_m;
   out.path_m = std::hypot(r_m, h_m);
-  const Entry e = entry(*column, white_of(in.sky), r_m, h_m, in.params.lut_gamma);
+  const Entry e = entry(*column, downwelling_white(in.sky), r_m, h_m, in.params.lut_gamma);
   out.t0 = e.t0;
   out.t1 = e.t1;
   out.a = e.a;
   for (int i = 0; i < kSamples; ++i) {
-    auto s = solve(in, i, h_m);
+    auto s = solve_wavelength(in, i, h_m);
     if (!s) return s.error();
     LutExplain::PerWavelength w{
         .wavelength_nm = wavelength_nm(i),

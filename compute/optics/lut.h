@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/result.h"
+#include "optics/four_flow.h"
 #include "optics/sky.h"
 #include "optics/spectrum.h"
 #include "optics/water_params.h"
@@ -41,6 +42,13 @@ struct SimilarScattering {
   double scattering_per_m, phase_x1;
 };
 SimilarScattering similarity_scaled(double scattering_per_m, double phase_x1);
+
+// The pieces every table built from the four-flow model shares (this file's LUTs, underwater.h):
+// X1 at grid wavelength i under params.phase; the flows of one wavelength for a bottom at depth_m, with the
+// scattering similarity-scaled as above; and the white Φ adapts to, E_sun + E_sky above the water.
+double phase_x1_at(const LutInputs& inputs, int i);
+Result<FourFlowSolution> solve_wavelength(const LutInputs& inputs, int i, double depth_m);
+Spectrum downwelling_white(const SkyIrradiance& sky);
 
 Result<LutInputs> lut_inputs(const WaterParams& params, double sun_elevation_deg, const SkyParams& sky = {});
 

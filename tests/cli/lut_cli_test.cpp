@@ -37,7 +37,19 @@ TEST(LutCli, WritesTablesMetadataAndPreviews) {
   EXPECT_EQ(meta["parameters"]["water_type"], "jerlov-IA");
   EXPECT_EQ(meta["parameters"]["sun_elevation_deg"], 50.0);
   EXPECT_TRUE(meta.contains("axes") && meta.contains("previews") && meta.contains("deep_colour_rgb"));
-  for (const char* png : {"T0.png", "T1.png"}) {
+  // The underwater tables: a white target fades with distance, the water's own light grows with it.
+  auto target = io::read_npy(out / "underwater_target.npy");
+  auto down = io::read_npy(out / "underwater_water_down.npy");
+  ASSERT_TRUE(target && down);
+  ASSERT_EQ(target->shape.size(), 3u);
+  const size_t d = target->shape[0], z = target->shape[1];
+  EXPECT_EQ(target->shape[2], 4u);
+  EXPECT_EQ(down->shape, (std::vector<size_t>{d, z, 3}));
+  EXPECT_EQ(meta["underwater"]["d_m"].size(), d);
+  const size_t green_near = (0 * z + 8) * 4 + 1, green_far = ((d / 2) * z + 8) * 4 + 1;
+  EXPECT_GT(target->data[green_near], 2 * target->data[green_far]);
+  EXPECT_LT(down->data[(0 * z + 8) * 3 + 2], down->data[((d / 2) * z + 8) * 3 + 2]);
+  for (const char* png : {"T0.png", "T1.png", "underwater.png"}) {
     auto image = io::read_png(out / png);
     ASSERT_TRUE(image) << png;
     EXPECT_GE(image->width, 32u);
