@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "lagoon_shaders/shaders.h"
+#include "render/cascade_bindings.h"
 #include "shared/surface.h"
 #include "vk/rendering.h"
 
@@ -26,20 +27,6 @@ SurfacePass::SurfacePass(vk::Context& ctx, const ocean::GpuOcean& ocean, const S
                                                   .depth_test = true,
                                                   .depth_write = true})) {}
 
-std::vector<vk::Binding> SurfacePass::cascade_bindings() const {
-  std::vector<vk::Binding> bindings;
-  for (uint32_t slot = 0; slot < LAGOON_MAX_CASCADES; ++slot) {
-    const ocean::CascadeTextures t = ocean_.cascade(std::min(slot, ocean_.cascade_count() - 1));
-    bindings.push_back(
-        vk::bind(LAGOON_SURFACE_BIND_DISPLACEMENT, sampled(*t.displacement, samplers_.repeat), slot));
-    bindings.push_back(
-        vk::bind(LAGOON_SURFACE_BIND_JACOBIAN_TERMS, sampled(*t.jacobian_terms, samplers_.repeat), slot));
-    bindings.push_back(
-        vk::bind(LAGOON_SURFACE_BIND_NORMAL_JACOBIAN, sampled(*t.normal_jacobian, samplers_.repeat), slot));
-  }
-  return bindings;
-}
-
 void SurfacePass::record(const FrameContext& frame, const Inputs& in, vk::Target color,
                          vk::Target depth) const {
   std::vector<vk::Binding> bindings{
@@ -50,7 +37,7 @@ void SurfacePass::record(const FrameContext& frame, const Inputs& in, vk::Target
       vk::bind(LAGOON_SURFACE_BIND_LUT_T0, sampled(luts_.t0, samplers_.clamp)),
       vk::bind(LAGOON_SURFACE_BIND_LUT_T1, sampled(luts_.t1, samplers_.clamp)),
       vk::bind(LAGOON_SURFACE_BIND_LIGHTS, frame.slot.lights)};
-  for (vk::Binding& b : cascade_bindings()) bindings.push_back(b);
+  for (vk::Binding& b : cascade_bindings(ocean_, samplers_)) bindings.push_back(b);
   // Its own render pass, so the timestamps bracket real work on tilers such as lavapipe.
   vk::GpuScope scope(frame.timer(), frame.cmd, "surface");
   vk::begin_rendering(frame.cmd, frame.extent,
@@ -75,7 +62,7 @@ void SurfacePass::record_aov(const FrameContext& frame, vk::Target normal_foam, 
                       {{.view = normal_foam.view, .clear = std::array{0.f, 0.f, 0.f, 0.f}},
                        {.view = world.view, .clear = std::array{0.f, 0.f, 0.f, 0.f}}},
                       vk::DepthTarget{.view = depth.view, .clear = 1.0f});
-  std::vector<vk::Binding> bindings = cascade_bindings();
+  std::vector<vk::Binding> bindings = cascade_bindings(ocean_, samplers_);
   bindings.push_back(vk::bind(LAGOON_SURFACE_BIND_FRAME, frame.uniforms()));
   vk::draw_indexed(frame.cmd, aov_, bindings, frame.slot.surface_indices.handle(),
                    frame.slot.surface_index_count);

@@ -36,9 +36,6 @@ class SurfacePass {
   static constexpr VkFormat kAovFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 
  private:
-  // The cascades' textures, one array element per cascade (LAGOON_MAX_CASCADES, the last repeated).
-  std::vector<vk::Binding> cascade_bindings() const;
-
   vk::Context& ctx_;
   const ocean::GpuOcean& ocean_;
   const SceneObjects& objects_;
