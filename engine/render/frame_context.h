@@ -24,6 +24,7 @@ struct FrameContext {
   VkExtent2D extent{};
   const scene::Scene& scene;
   FrameSlot& slot;
+  bool under_water = false;  // the camera is below the displaced surface (render/camera_medium.h)
   vk::BufferRef uniforms() const { return {slot.frame.handle()}; }
   vk::GpuTimer* timer() const { return &slot.timer; }
 };

@@ -5,6 +5,7 @@
 
 #include "ocean/slope_statistics.h"
 #include "optics/colour.h"
+#include "render/seafloor.h"
 #include "render/sky_light.h"
 
 namespace lagoon::render {
@@ -12,6 +13,13 @@ namespace {
 
 constexpr float kFoamAlbedo = 0.85f;
 constexpr double kSunDiscRadiusRad = 0.00465;
+
+// The floor's depth under the camera, where the scene's floor is the procedural slope; 0 (unknown) for none
+// and for a mesh floor.
+float floor_depth_below(const scene::Scene& scene) {
+  if (scene.seafloor.type != scene::SeafloorType::Slope) return 0.0f;
+  return std::max(slope_depth(scene.seafloor, {scene.camera.position.x, scene.camera.position.z}), 0.0f);
+}
 
 }  // namespace
 
@@ -67,7 +75,10 @@ gpu::FrameUniforms frame_uniforms(const FrameInputs& in) {
       .lut = glm::vec4(float(in.luts.r_max_m), float(in.luts.h_max_m),
                        scene.render.effects.refraction ? 1.0f : 0.0f, light.light_scale),
       .screen = glm::vec4(width, height, 1.0f / width, 1.0f / height),
-      .lights = glm::vec4(float(in.light_count), 0, 0, 0)};
+      .lights = glm::vec4(float(in.light_count), 0, 0, 0),
+      .underwater =
+          glm::vec4(float(in.luts.d_max_m), float(in.luts.z_max_m), in.under_water ? 1.0f : 0.0f, 0),
+      .floor_below = glm::vec4(floor_depth_below(scene), float(scene.water.bottom_albedo), 0, 0)};
   for (uint32_t c = 0; c < drawn; ++c) {
     const ocean::CascadeTextures tex = in.ocean.cascade(c);
     f.cascade_patch[c] = float(tex.patch_size_m);

@@ -31,6 +31,7 @@ struct FrameInputs {
   const glm::mat4& view_proj;
   float reach_m = 0;  // how far the surface mesh reaches from the camera
   uint32_t light_count = 0;
+  bool under_water = false;
 };
 gpu::FrameUniforms frame_uniforms(const FrameInputs& in);
 

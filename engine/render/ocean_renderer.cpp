@@ -53,6 +53,9 @@ Result<void> OceanRenderer::init(const scene::Scene& scene) {
   surface_ =
       std::make_unique<SurfacePass>(ctx_, ocean(), *objects_, luts_, samplers_, kColorFormat, kDepthFormat);
   sky_ = std::make_unique<SkyPass>(ctx_, kColorFormat, kDepthFormat);
+  underwater_ = std::make_unique<UnderwaterPass>(ctx_, ocean(), luts_, samplers_, kColorFormat, kDepthFormat);
+  camera_medium_ =
+      std::make_unique<CameraMedium>(ocean().params(), ocean().spectra(), double(shading_.bound.vertical_m));
   return {};
 }
 
@@ -63,6 +66,12 @@ void OceanRenderer::record_frame(const FrameContext& f, vk::Target color, vk::Ta
   vk::use(cmd, {refraction_->albedo(), refraction_->depth()}, Discard, Attachment);
   refraction_->record(f);
   vk::use(cmd, {refraction_->albedo(), refraction_->depth()}, Attachment, Sampled);
+
+  if (f.under_water) {
+    vk::use(cmd, {color, depth}, Discard, Attachment);
+    underwater_->record(f, {refraction_->albedo_image(), refraction_->depth_image()}, color, depth);
+    return;
+  }
 
   vk::use(cmd, {reflection_->color(), reflection_->depth()}, Discard, Attachment);
   reflection_->record(f);
@@ -82,6 +91,7 @@ void OceanRenderer::prepare(const scene::Scene& scene) {
 FrameContext OceanRenderer::begin_frame(VkCommandBuffer cmd, const scene::Scene& scene, VkExtent2D extent,
                                         uint32_t slot_index) {
   FrameSlot& slot = slots_[slot_index % kSlots];
+  const bool under_water = camera_medium_->under_water(scene.camera.position, scene.time_s);
   const uint32_t light_count =
       write_point_lights(scene, reinterpret_cast<gpu::PointLightGpu*>(slot.lights.mapped()));
   slot.lights.flush();
@@ -99,14 +109,15 @@ FrameContext OceanRenderer::begin_frame(VkCommandBuffer cmd, const scene::Scene&
                                                       .grid = grid,
                                                       .view_proj = cam.view_proj,
                                                       .reach_m = reach,
-                                                      .light_count = light_count});
+                                                      .light_count = light_count,
+                                                      .under_water = under_water});
   std::memcpy(slot.frame.mapped(), &uniforms, sizeof(uniforms));
   slot.frame.flush();
   // Frames may be recorded while the previous one runs; they share the ocean's textures and the passes'
   // targets, so this frame's work starts after everything submitted before it.
   vk::memory_barrier(cmd, vk::access::kAllCommands, vk::access::kAllCommands);
   slot.timer.reset(cmd);
-  return FrameContext{.cmd = cmd, .extent = extent, .scene = scene, .slot = slot};
+  return FrameContext{.cmd = cmd, .extent = extent, .scene = scene, .slot = slot, .under_water = under_water};
 }
 
 void OceanRenderer::resize(VkExtent2D extent) {

@@ -1,7 +1,8 @@
 // The frame renderer: the FFT ocean (compute/ocean/gpu) drawn over an analytic sky whose light comes from
 // the optics model, water colour from the optics LUTs, tone mapping (seed 000's eq. 18) and gamma.
 // The frame is a sequence of passes (engine/render/passes/, one file each), wired in record_frame():
-// ocean step, refraction, reflection, surface, sky. docs/architecture.md shows the frame and how to add a
+// ocean step, refraction, reflection, surface, sky; with the camera under the water, ocean step, refraction,
+// underwater. docs/architecture.md shows the frame and how to add a
 // pass; docs/rendering.md the shading.
 #pragma once
 #include <array>
@@ -12,6 +13,7 @@
 #include "core/result.h"
 #include "io/png.h"
 #include "ocean/gpu/gpu_ocean.h"
+#include "render/camera_medium.h"
 #include "render/frame_context.h"
 #include "render/frame_uniforms.h"
 #include "render/passes/ocean_step_pass.h"
@@ -19,6 +21,7 @@
 #include "render/passes/refraction_pass.h"
 #include "render/passes/sky_pass.h"
 #include "render/passes/surface_pass.h"
+#include "render/passes/underwater_pass.h"
 #include "render/samplers.h"
 #include "render/scene_objects.h"
 #include "render/water_luts.h"
@@ -110,6 +113,8 @@ class OceanRenderer {
   std::unique_ptr<ReflectionPass> reflection_;
   std::unique_ptr<SurfacePass> surface_;
   std::unique_ptr<SkyPass> sky_;
+  std::unique_ptr<UnderwaterPass> underwater_;
+  std::unique_ptr<CameraMedium> camera_medium_;
   VkExtent2D extent_{};  // of the passes' targets
   std::unique_ptr<OwnTargets> own_;
   std::array<FrameSlot, kSlots> slots_;

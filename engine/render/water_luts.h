@@ -1,5 +1,6 @@
 // The colour LUTs of the scene's water under its sun (compute/optics/lut.h, docs/optics.md) as textures
-// for the surface pass: x = r axis, y = h axis.
+// for the surface pass: x = r axis, y = h axis. With them, the underwater tables (optics/underwater.h) for a
+// camera under the water: x = distance d, y = depth z.
 #pragma once
 #include <glm/vec3.hpp>
 
@@ -14,6 +15,8 @@ struct WaterLuts {
   vk::Image t0, t1;
   glm::vec3 deep_colour{0};
   double r_max_m = 1, h_max_m = 1;
+  vk::Image uw_target, uw_down, uw_up;  // RGBA: target (RGB, blur), the water's light down, up (RGB, 1)
+  double d_max_m = 1, z_max_m = 1;
 };
 
 // Fails with the optics model's message (e.g. an unreadable custom water table).

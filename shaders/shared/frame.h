@@ -32,6 +32,10 @@ struct FrameUniforms {
   vec4 lut;            // x = r_max m, y = h_max m of the colour LUTs, z = refraction on, w = light scale
   vec4 screen;         // x = width, y = height (pixels), zw = 1 / (width, height)
   vec4 lights;         // x = number of point lights in the light buffer, yzw unused
+  vec4 underwater;     // x = d_max m, y = z_max m of the underwater tables (optics/underwater.h),
+                       // z = 1 when the camera is under the water surface, w = unused
+  vec4 floor_below;    // x = depth m of the floor under the camera (0 = none known), y = its mean albedo
+                       // (water.bottom_albedo), zw unused: what total internal reflection shows from below
 };
 
 // One point light of the scene's "lights" block (storage buffer, std430).
@@ -42,11 +46,12 @@ struct PointLightGpu {
 LAGOON_GPU_END
 
 #ifdef __cplusplus
-LAGOON_CHECK_SIZE(FrameUniforms, 416);
+LAGOON_CHECK_SIZE(FrameUniforms, 448);
 LAGOON_CHECK_SIZE(PointLightGpu, 32);
 LAGOON_CHECK_OFFSET(FrameUniforms, camera_pos, 128);
 LAGOON_CHECK_OFFSET(FrameUniforms, water_deep, 208);
 LAGOON_CHECK_OFFSET(FrameUniforms, post2, 352);
 LAGOON_CHECK_OFFSET(FrameUniforms, screen, 384);
+LAGOON_CHECK_OFFSET(FrameUniforms, underwater, 416);
 #endif
 #endif

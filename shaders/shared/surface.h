@@ -1,5 +1,6 @@
 // Binding slots of the ocean surface shaders (render/ocean_surface.vert, ocean_surface.frag,
-// ocean_surface_aov.frag) and engine/render/passes/surface_pass.cpp.
+// ocean_surface_aov.frag, and under the water ocean_surface_below.frag, underwater_medium.frag) and
+// engine/render/passes/surface_pass.cpp, underwater_pass.cpp.
 #ifndef LAGOON_SHARED_SURFACE_H
 #define LAGOON_SHARED_SURFACE_H
 #include "shared/limits.h"
@@ -14,5 +15,8 @@
 #define LAGOON_SURFACE_BIND_REFLECTION 7         // the reflection pass's colour, a = coverage
 #define LAGOON_SURFACE_BIND_LIGHTS 8             // PointLightGpu[]
 #define LAGOON_SURFACE_BIND_JACOBIAN_TERMS 9     // sampler2DArray[LAGOON_MAX_CASCADES]
+#define LAGOON_SURFACE_BIND_UW_TARGET 10         // underwater table: white target (RGB, blur) over (d, z)
+#define LAGOON_SURFACE_BIND_UW_DOWN 11           // ... the water's light looking down
+#define LAGOON_SURFACE_BIND_UW_UP 12             // ... looking up
 
 #endif

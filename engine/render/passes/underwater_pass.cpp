@@ -1,0 +1,57 @@
+#include "render/passes/underwater_pass.h"
+
+#include "lagoon_shaders/shaders.h"
+#include "render/cascade_bindings.h"
+#include "shared/surface.h"
+#include "vk/rendering.h"
+
+namespace lagoon::render {
+
+UnderwaterPass::UnderwaterPass(vk::Context& ctx, const ocean::GpuOcean& ocean, const WaterLuts& luts,
+                               const Samplers& samplers, VkFormat color_format, VkFormat depth_format)
+    : ocean_(ocean),
+      luts_(luts),
+      samplers_(samplers),
+      // Every pixel, writing the depth of what it shows (the far plane where it shows only water).
+      medium_(vk::GraphicsPipeline::create(ctx, {.vertex = &shaders::render_fullscreen_vert,
+                                                 .fragment = &shaders::render_underwater_medium_frag,
+                                                 .color_formats = {color_format},
+                                                 .depth_format = depth_format,
+                                                 .depth_test = true,
+                                                 .depth_write = true,
+                                                 .depth_compare = VK_COMPARE_OP_ALWAYS})),
+      // The surface mesh with either winding: from below its triangles face away from the camera.
+      surface_(vk::GraphicsPipeline::create(ctx, {.vertex = &shaders::render_ocean_surface_vert,
+                                                  .fragment = &shaders::render_ocean_surface_below_frag,
+                                                  .color_formats = {color_format},
+                                                  .depth_format = depth_format,
+                                                  .depth_test = true,
+                                                  .depth_write = true})) {}
+
+std::vector<vk::Binding> UnderwaterPass::table_bindings(const FrameContext& frame) const {
+  return {vk::bind(LAGOON_SURFACE_BIND_FRAME, frame.uniforms()),
+          vk::bind(LAGOON_SURFACE_BIND_UW_TARGET, sampled(luts_.uw_target, samplers_.clamp)),
+          vk::bind(LAGOON_SURFACE_BIND_UW_DOWN, sampled(luts_.uw_down, samplers_.clamp)),
+          vk::bind(LAGOON_SURFACE_BIND_UW_UP, sampled(luts_.uw_up, samplers_.clamp))};
+}
+
+void UnderwaterPass::record(const FrameContext& frame, const Inputs& in, vk::Target color,
+                            vk::Target depth) const {
+  vk::GpuScope scope(frame.timer(), frame.cmd, "underwater");
+  vk::begin_rendering(frame.cmd, frame.extent,
+                      {{.view = color.view, .clear = std::array{0.f, 0.f, 0.f, 1.f}}},
+                      vk::DepthTarget{.view = depth.view, .clear = 1.0f});
+  std::vector<vk::Binding> medium = table_bindings(frame);
+  medium.push_back(
+      vk::bind(LAGOON_SURFACE_BIND_REFRACTION_ALBEDO, sampled(in.refraction_albedo, samplers_.nearest)));
+  medium.push_back(
+      vk::bind(LAGOON_SURFACE_BIND_REFRACTION_DEPTH, sampled(in.refraction_depth, samplers_.nearest)));
+  vk::draw(frame.cmd, medium_, medium, nullptr, 0, 3);
+  std::vector<vk::Binding> surface = table_bindings(frame);
+  for (vk::Binding& b : cascade_bindings(ocean_, samplers_)) surface.push_back(b);
+  vk::draw_indexed(frame.cmd, surface_, surface, frame.slot.surface_indices.handle(),
+                   frame.slot.surface_index_count);
+  vk::end_rendering(frame.cmd);
+}
+
+}  // namespace lagoon::render

@@ -1,0 +1,39 @@
+// The frame for a camera under the water (docs/rendering.md, "Under the surface"): the floor and submerged
+// objects seen through the water, or the water itself where the view meets nothing (underwater_medium.frag),
+// then the surface from below with Snell's window and total internal reflection (ocean_surface_below.frag).
+// Light and colour come from the underwater tables (optics/underwater.h) of the scene's water.
+#pragma once
+#include "ocean/gpu/gpu_ocean.h"
+#include "render/frame_context.h"
+#include "render/samplers.h"
+#include "render/water_luts.h"
+#include "vk/context.h"
+#include "vk/image.h"
+#include "vk/pipeline.h"
+
+namespace lagoon::render {
+
+class UnderwaterPass {
+ public:
+  // The refraction pass's output: what is under the water, as albedo (a = coverage) and depth.
+  struct Inputs {
+    const vk::Image& refraction_albedo;
+    const vk::Image& refraction_depth;
+  };
+
+  UnderwaterPass(vk::Context& ctx, const ocean::GpuOcean& ocean, const WaterLuts& luts,
+                 const Samplers& samplers, VkFormat color_format, VkFormat depth_format);
+
+  // Into `color` and `depth` as attachments; every pixel is written.
+  void record(const FrameContext& frame, const Inputs& in, vk::Target color, vk::Target depth) const;
+
+ private:
+  std::vector<vk::Binding> table_bindings(const FrameContext& frame) const;
+
+  const ocean::GpuOcean& ocean_;
+  const WaterLuts& luts_;
+  const Samplers& samplers_;
+  vk::GraphicsPipeline medium_, surface_;
+};
+
+}  // namespace lagoon::render

@@ -1,0 +1,47 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+#include "shared/frame.h"
+#include "shared/surface.h"
+#include "common/tonemap.glsl"
+
+// Under the water, everything but the surface: the floor and submerged objects (the refraction pass's albedo
+// and depth) lit by the light that reaches their depth and seen through the water between them and the
+// camera, or, where the view ray meets nothing, the water itself. The surface is drawn over this from below
+// (ocean_surface_below.frag). Writes the geometry's depth, so the surface depth-tests against it.
+layout(std140, binding = LAGOON_SURFACE_BIND_FRAME) uniform Frame { FrameUniforms frame; };
+layout(binding = LAGOON_SURFACE_BIND_REFRACTION_ALBEDO) uniform sampler2D refraction_albedo;  // a = coverage
+layout(binding = LAGOON_SURFACE_BIND_REFRACTION_DEPTH) uniform sampler2D refraction_depth;
+layout(binding = LAGOON_SURFACE_BIND_UW_TARGET) uniform sampler2D uw_target;
+layout(binding = LAGOON_SURFACE_BIND_UW_DOWN) uniform sampler2D uw_down;
+layout(binding = LAGOON_SURFACE_BIND_UW_UP) uniform sampler2D uw_up;
+
+#include "common/underwater.glsl"
+
+layout(location = 0) in vec2 v_ndc;
+layout(location = 0) out vec4 out_colour;  // tone-mapped for display
+
+void main() {
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  float depth = texelFetch(refraction_depth, pixel, 0).r;
+  vec4 albedo = texelFetch(refraction_albedo, pixel, 0);
+  vec4 far_point = frame.inv_view_proj * vec4(v_ndc, 1.0, 1.0);
+  vec3 eye = frame.camera_pos.xyz;
+  vec3 dir = normalize(far_point.xyz / far_point.w - eye);
+  float camera_depth = max(-eye.y, 0.0);
+  vec3 radiance;
+  if (albedo.a > 0.5) {
+    vec4 p = frame.inv_view_proj * vec4(v_ndc, depth, 1.0);
+    vec3 hit = p.xyz / p.w;
+    float d = length(hit - eye);
+    // The target's light at its own depth; the water's along the ray at the ray's mean depth.
+    radiance = albedo.rgb * underwater_target(d, -hit.y).rgb + underwater_added(d, 0.5 * (camera_depth - hit.y), dir.y);
+    gl_FragDepth = depth;
+  } else {
+    // Nothing within reach: the water to the end of the table (α below 1e-3 there for every Jerlov type).
+    float d = frame.underwater.x;
+    float end_depth = max(camera_depth - d * dir.y, 0.0);
+    radiance = underwater_added(d, 0.5 * (camera_depth + end_depth), dir.y);
+    gl_FragDepth = 1.0;
+  }
+  out_colour = vec4(display_encode(frame, radiance * frame.lut.w), 1.0);
+}

@@ -1,0 +1,162 @@
+// A camera under the water (issue 13): the frame decides "under" from WaveQuery, not from y < 0; the surface
+// seen from below shows Snell's window at the critical angle; the floor seen through the water has the
+// colour the optics model (optics/underwater.h, evaluated in double on the CPU) gives for its distance and
+// depth.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+
+#include "ocean/initial_spectrum.h"
+#include "ocean/wave_query.h"
+#include "optics/underwater.h"
+#include "render/camera.h"
+#include "render/camera_medium.h"
+#include "render/ocean_renderer.h"
+#include "render/sky_light.h"
+#include "support/vk_fixture.h"
+
+namespace lagoon::test {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+scene::Scene load_scene(std::vector<std::string> overrides) {
+  auto s = scene::load_scene(std::string(LAGOON_SOURCE_DIR) + "/scenes/default.json", overrides);
+  EXPECT_TRUE(s) << s.error().message;
+  return s ? *s : scene::Scene{};
+}
+
+std::vector<ocean::CascadeSpectrum> spectra_of(const ocean::OceanParams& params) {
+  std::vector<ocean::CascadeSpectrum> out;
+  for (uint32_t c = 0; c < params.cascades.size(); ++c)
+    out.push_back(ocean::make_cascade_spectrum(params, c));
+  return out;
+}
+
+TEST(CameraMedium, AskTheWavesNotTheMeanLevel) {
+  const scene::Scene s = load_scene({});
+  ocean::WaveQuery query(s.ocean);
+  // A crest well above the mean level.
+  glm::dvec2 crest{0, 0};
+  double height = -1;
+  for (double x = 0; x < 60 && height < 0.3; x += 0.5)
+    for (double z = 0; z < 60 && height < 0.3; z += 0.5)
+      if (const double h = query.sample(s.time_s, x, z).height; h > height) height = h, crest = {x, z};
+  ASSERT_GT(height, 0.3);
+  render::CameraMedium medium(s.ocean, spectra_of(s.ocean), 20.0);
+  const float x = float(crest.x), z = float(crest.y);
+  // Above the mean level but inside the crest: under the water, which y < 0 would get wrong.
+  EXPECT_TRUE(medium.under_water({x, float(height - 0.05), z}, s.time_s));
+  EXPECT_TRUE(medium.last_queried());
+  EXPECT_FALSE(medium.under_water({x, float(height + 0.05), z}, s.time_s));
+  // Beyond the waves' reach no query is needed.
+  EXPECT_FALSE(medium.under_water({x, 25.f, z}, s.time_s));
+  EXPECT_FALSE(medium.last_queried());
+  EXPECT_TRUE(medium.under_water({x, -25.f, z}, s.time_s));
+  EXPECT_FALSE(medium.last_queried());
+}
+
+class Underwater : public GpuTest {};
+
+double luminance(const io::Image8& image, uint32_t x, uint32_t y) {
+  const uint8_t* p = &image.rgba[(size_t{y} * image.width + x) * 4];
+  return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+}
+
+TEST_F(Underwater, SnellsWindowHasTheCriticalAngle) {
+  // Looking straight up from 6 m under a calm sea with no floor: inside the window the sky, outside it the
+  // dark water mirrored by total internal reflection.
+  const uint32_t size = 200;
+  const scene::Scene s =
+      load_scene({"camera.position=[0,-6,0]", "camera.look_at=[0,10,0.001]", "camera.fov_deg=120",
+                  "render.width=" + std::to_string(size), "render.height=" + std::to_string(size),
+                  "ocean.spectrum.wind_speed_mps=0.5", "water.type=jerlov-I", "seafloor.type=none",
+                  "objects=[]", "sun.elevation_deg=80"});
+  auto renderer = render::OceanRenderer::create(ctx(), s);
+  ASSERT_TRUE(renderer) << renderer.error().message;
+  const io::Image8 image = (*renderer)->render(s);
+  // Luminance per 0.5° of angle from the optical axis (pixel angle from the pinhole model).
+  const double focal = (size / 2.0) / std::tan(60.0 * kPi / 180.0);
+  std::vector<std::vector<double>> bins(140);
+  for (uint32_t y = 0; y < size; ++y)
+    for (uint32_t x = 0; x < size; ++x) {
+      const double r = std::hypot(x + 0.5 - size / 2.0, y + 0.5 - size / 2.0);
+      const size_t bin = size_t(std::atan(r / focal) * 180.0 / kPi * 2.0);
+      if (bin < bins.size()) bins[bin].push_back(luminance(image, x, y));
+    }
+  auto median = [&](double from_deg, double to_deg) {
+    std::vector<double> v;
+    for (size_t b = size_t(from_deg * 2); b < size_t(to_deg * 2); ++b)
+      v.insert(v.end(), bins[b].begin(), bins[b].end());
+    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+    return v[v.size() / 2];
+  };
+  const double inside = median(20, 40), outside = median(55, 62);
+  ASSERT_GT(inside, outside + 30) << "no bright window: inside " << inside << ", outside " << outside;
+  double edge_deg = 0;
+  for (double a = 40; a < 62; a += 0.5)
+    if (median(a, a + 0.5) < 0.5 * (inside + outside)) {
+      edge_deg = a + 0.25;
+      break;
+    }
+  const double critical = std::asin(1.0 / s.water.ior) * 180.0 / kPi;  // 48.6° for 1.333
+  RecordProperty("edge_deg", std::to_string(edge_deg));
+  EXPECT_NEAR(edge_deg, critical, 1.0) << "inside " << inside << ", outside " << outside;
+}
+
+// Display value (0..1) of a linear radiance under render.tone_map = clamp with exposure e and gamma 1.
+glm::dvec3 clamp_encode(glm::dvec3 radiance, double exposure) {
+  return glm::clamp(radiance * exposure, 0.0, 1.0);
+}
+
+TEST_F(Underwater, FloorThroughTheWaterHasTheModelsColour) {
+  // A flat white floor 9 m down, the camera 3 m down looking down at it; two water types.
+  for (const char* type : {"jerlov-IB", "jerlov-3C"}) {
+    SCOPED_TRACE(type);
+    const scene::Scene s = load_scene(
+        {"camera.position=[0,-3,0]", "camera.look_at=[0,-7,10]", "camera.fov_deg=70", "render.width=160",
+         "render.height=120", "seafloor.type=slope", "seafloor.depth_near_m=9", "seafloor.depth_far_m=9",
+         "seafloor.albedo=[1,1,1]", "seafloor.texture=\"\"", "objects=[]", "lights=[]",
+         "render.tone_map=clamp", "render.gamma=1", "render.exposure=1.5", std::string("water.type=") + type,
+         "ocean.spectrum.wind_speed_mps=3"});
+    auto renderer = render::OceanRenderer::create(ctx(), s);
+    ASSERT_TRUE(renderer) << renderer.error().message;
+    const io::Image8 image = (*renderer)->render(s);
+    auto inputs = optics::lut_inputs(s.water, s.sun.elevation_deg);
+    ASSERT_TRUE(inputs);
+    const double light_scale = render::sky_light(s.sun).light_scale;
+    const render::CameraMatrices cam = render::camera_matrices(s.camera, 160.0f / 120.0f);
+    const glm::mat4 inv = glm::inverse(cam.view_proj);
+    int checked = 0;
+    double worst = 0;
+    for (uint32_t y : {70u, 90u, 115u})
+      for (uint32_t x : {20u, 80u, 140u}) {
+        // Rows from the top; NDC y is up (the viewport flips it, as in ocean_surface.frag).
+        const glm::vec4 far = inv * glm::vec4((x + 0.5f) / 80.f - 1.f, 1.f - (y + 0.5f) / 60.f, 1.f, 1.f);
+        const glm::dvec3 dir =
+            glm::normalize(glm::dvec3(far) / double(far.w) - glm::dvec3(s.camera.position));
+        if (dir.y > -0.05) continue;
+        const double d = (9.0 - 3.0) / -dir.y;
+        auto target = optics::underwater_sample(*inputs, d, 9.0);
+        auto along = optics::underwater_sample(*inputs, d, 6.0);
+        ASSERT_TRUE(target && along);
+        const double up = std::clamp(0.5 + 0.5 * dir.y, 0.0, 1.0);
+        const glm::dvec3 radiance =
+            light_scale * (target->target + glm::mix(along->water_down, along->water_up, up));
+        const glm::dvec3 expected = clamp_encode(radiance, s.render.exposure);
+        const uint8_t* p = &image.rgba[(size_t{y} * image.width + x) * 4];
+        for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(p[c] / 255.0 - expected[c]));
+        for (int c = 0; c < 3; ++c)
+          EXPECT_NEAR(p[c] / 255.0, expected[c], std::max(0.05 * expected[c], 2.5 / 255))
+              << "pixel " << x << "," << y << " channel " << c << " at d = " << d << " m";
+        ++checked;
+      }
+    EXPECT_GE(checked, 6);
+    RecordProperty(std::string("worst_abs_") + type, std::to_string(worst));
+  }
+}
+
+}  // namespace
+}  // namespace lagoon::test
