@@ -57,9 +57,10 @@ Result<Medium> medium_of(const LutInputs& in) {
 
 // The flows at one depth, per wavelength: all a row of the table needs (the distance only enters through α).
 struct Depth {
-  Spectrum e_d{};   // G+ + F+: the light falling on a target
-  Spectrum down{};  // F−: the water's light seen looking down
-  Spectrum up{};    // the scattered part of F+, seen looking up
+  Spectrum e_d{};     // G+ + F+: the light falling on a target
+  Spectrum direct{};  // G+: its direct (sun) part
+  Spectrum down{};    // F−: the water's light seen looking down
+  Spectrum up{};      // the scattered part of F+, seen looking up
 };
 
 Depth depth_of(const Medium& m, double z_m) {
@@ -68,6 +69,7 @@ Depth depth_of(const Medium& m, double z_m) {
     const FourFlowSolution& f = m.flows[i];
     const double tau = m.model_epsilon[i] * z_m;
     d.e_d[i] = f.g_plus(tau) + f.f_plus(tau);
+    d.direct[i] = f.g_plus(tau);
     d.down[i] = f.f_minus(tau);
     // Looking up, the diffuse light that came through the surface unscattered, F+(0)·e^{−τ}, is the surface
     // itself (drawn through Snell's window), not light the water adds: only the scattered rest is.
@@ -94,6 +96,9 @@ UnderwaterSample sample(const Medium& m, const Depth& at, double d_m) {
   s.water_up = glm::max(apply_phi(m, up), glm::dvec3(0.0));
   const double y_all = linear_srgb_luminance(all), y_sharp = linear_srgb_luminance(apply_phi(m, sharp));
   s.blur = y_all > 1e-12 ? std::clamp(1.0 - y_sharp / y_all, 0.0, 1.0) : 1.0;
+  const double y_e_d = linear_srgb_luminance(apply_phi(m, at.e_d));
+  s.direct_share =
+      y_e_d > 1e-12 ? std::clamp(linear_srgb_luminance(apply_phi(m, at.direct)) / y_e_d, 0.0, 1.0) : 0.0;
   return s;
 }
 

@@ -56,6 +56,9 @@ struct UnderwaterTable {
 struct UnderwaterSample {
   glm::dvec3 target{0}, water_down{0}, water_up{0};
   double blur = 0;
+  // Of the light falling on a horizontal target at depth z, E_d(z), the share (in luminance) that is the
+  // sun's direct beam, G+/(G+ + F+): the part caustics redistribute.
+  double direct_share = 0;
 };
 Result<UnderwaterSample> underwater_sample(const LutInputs& inputs, double d_m, double z_m);
 

@@ -78,7 +78,10 @@ gpu::FrameUniforms frame_uniforms(const FrameInputs& in) {
       .lights = glm::vec4(float(in.light_count), 0, 0, 0),
       .underwater =
           glm::vec4(float(in.luts.d_max_m), float(in.luts.z_max_m), in.under_water ? 1.0f : 0.0f, 0),
-      .floor_below = glm::vec4(floor_depth_below(scene), float(scene.water.bottom_albedo), 0, 0)};
+      .floor_below = glm::vec4(floor_depth_below(scene), float(scene.water.bottom_albedo), 0, 0),
+      .caustics = glm::vec4(in.caustics.origin, in.caustics.cell_m, float(in.caustics.cells)),
+      .caustic_depths = in.caustics.depths,
+      .caustic_share = in.luts.caustic_share};
   for (uint32_t c = 0; c < drawn; ++c) {
     const ocean::CascadeTextures tex = in.ocean.cascade(c);
     f.cascade_patch[c] = float(tex.patch_size_m);

@@ -6,6 +6,7 @@
 #include <glm/glm.hpp>
 
 #include "ocean/gpu/gpu_ocean.h"
+#include "render/passes/caustics_pass.h"
 #include "render/surface_grid.h"
 #include "render/water_luts.h"
 #include "scene/scene.h"
@@ -32,6 +33,7 @@ struct FrameInputs {
   float reach_m = 0;  // how far the surface mesh reaches from the camera
   uint32_t light_count = 0;
   bool under_water = false;
+  const CausticsWindow& caustics;
 };
 gpu::FrameUniforms frame_uniforms(const FrameInputs& in);
 

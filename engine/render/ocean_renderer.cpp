@@ -53,6 +53,7 @@ Result<void> OceanRenderer::init(const scene::Scene& scene) {
   surface_ =
       std::make_unique<SurfacePass>(ctx_, ocean(), *objects_, luts_, samplers_, kColorFormat, kDepthFormat);
   sky_ = std::make_unique<SkyPass>(ctx_, kColorFormat, kDepthFormat);
+  caustics_ = std::make_unique<CausticsPass>(ctx_, ocean(), samplers_);
   underwater_ = std::make_unique<UnderwaterPass>(ctx_, ocean(), luts_, samplers_, kColorFormat, kDepthFormat);
   camera_medium_ =
       std::make_unique<CameraMedium>(ocean().params(), ocean().spectra(), double(shading_.bound.vertical_m));
@@ -60,16 +61,19 @@ Result<void> OceanRenderer::init(const scene::Scene& scene) {
 }
 
 // The frame. Each pass records its own work; the hand-over of images between passes is stated here, once.
-void OceanRenderer::record_frame(const FrameContext& f, vk::Target color, vk::Target depth) {
+void OceanRenderer::record_frame(const FrameContext& f, const CausticsWindow& caustics, vk::Target color,
+                                 vk::Target depth) {
   using enum vk::ImageUse;
   const VkCommandBuffer cmd = f.cmd;
+  caustics_->record(f, caustics);  // leaves its map ready for the fragment shaders
   vk::use(cmd, {refraction_->albedo(), refraction_->depth()}, Discard, Attachment);
   refraction_->record(f);
   vk::use(cmd, {refraction_->albedo(), refraction_->depth()}, Attachment, Sampled);
 
   if (f.under_water) {
     vk::use(cmd, {color, depth}, Discard, Attachment);
-    underwater_->record(f, {refraction_->albedo_image(), refraction_->depth_image()}, color, depth);
+    underwater_->record(f, {refraction_->albedo_image(), refraction_->depth_image(), caustics_->map()}, color,
+                        depth);
     return;
   }
 
@@ -78,8 +82,10 @@ void OceanRenderer::record_frame(const FrameContext& f, vk::Target color, vk::Ta
   vk::use(cmd, {reflection_->color()}, Attachment, Sampled);
 
   vk::use(cmd, {color, depth}, Discard, Attachment);
-  surface_->record(f, {refraction_->albedo_image(), refraction_->depth_image(), reflection_->color_image()},
-                   color, depth);
+  surface_->record(
+      f,
+      {refraction_->albedo_image(), refraction_->depth_image(), reflection_->color_image(), caustics_->map()},
+      color, depth);
   vk::use(cmd, {color, depth}, Attachment, Attachment);
   sky_->record(f, color, depth);
 }
@@ -89,7 +95,7 @@ void OceanRenderer::prepare(const scene::Scene& scene) {
 }
 
 FrameContext OceanRenderer::begin_frame(VkCommandBuffer cmd, const scene::Scene& scene, VkExtent2D extent,
-                                        uint32_t slot_index) {
+                                        uint32_t slot_index, const CausticsWindow& caustics) {
   FrameSlot& slot = slots_[slot_index % kSlots];
   const bool under_water = camera_medium_->under_water(scene.camera.position, scene.time_s);
   const uint32_t light_count =
@@ -110,7 +116,8 @@ FrameContext OceanRenderer::begin_frame(VkCommandBuffer cmd, const scene::Scene&
                                                       .view_proj = cam.view_proj,
                                                       .reach_m = reach,
                                                       .light_count = light_count,
-                                                      .under_water = under_water});
+                                                      .under_water = under_water,
+                                                      .caustics = caustics});
   std::memcpy(slot.frame.mapped(), &uniforms, sizeof(uniforms));
   slot.frame.flush();
   // Frames may be recorded while the previous one runs; they share the ocean's textures and the passes'
@@ -161,9 +168,10 @@ const vk::Image& OceanRenderer::record(VkCommandBuffer cmd, const scene::Scene& 
 void OceanRenderer::record(VkCommandBuffer cmd, const scene::Scene& scene, const HostTargets& targets,
                            uint32_t slot) {
   resize(targets.extent);
-  const FrameContext frame = begin_frame(cmd, scene, targets.extent, slot);
+  const CausticsWindow caustics = caustics_window(scene, sun_direction(scene.sun), float(scene.water.ior));
+  const FrameContext frame = begin_frame(cmd, scene, targets.extent, slot, caustics);
   ocean_step_->record(frame);
-  record_frame(frame, {targets.color, targets.color_view, VK_IMAGE_ASPECT_COLOR_BIT},
+  record_frame(frame, caustics, {targets.color, targets.color_view, VK_IMAGE_ASPECT_COLOR_BIT},
                {targets.depth, targets.depth_view, VK_IMAGE_ASPECT_DEPTH_BIT});
 }
 

@@ -16,6 +16,7 @@
 #include "render/camera_medium.h"
 #include "render/frame_context.h"
 #include "render/frame_uniforms.h"
+#include "render/passes/caustics_pass.h"
 #include "render/passes/ocean_step_pass.h"
 #include "render/passes/reflection_pass.h"
 #include "render/passes/refraction_pass.h"
@@ -88,14 +89,18 @@ class OceanRenderer {
 
   // The ocean the frames are drawn from (e.g. for a field check after render()).
   const ocean::GpuOcean& ocean() const { return ocean_step_->ocean(); }
+  // The caustics of the last frame (e.g. for a check of their energy after render()).
+  const CausticsPass& caustics() const { return *caustics_; }
 
  private:
   explicit OceanRenderer(vk::Context& ctx);
   Result<void> init(const scene::Scene& scene);
   // Fills the slot's uniforms, lights and surface indices, and starts the slot's timer.
-  FrameContext begin_frame(VkCommandBuffer cmd, const scene::Scene& scene, VkExtent2D extent, uint32_t slot);
+  FrameContext begin_frame(VkCommandBuffer cmd, const scene::Scene& scene, VkExtent2D extent, uint32_t slot,
+                           const CausticsWindow& caustics);
   // Every pass after the ocean step, into `color` and `depth`.
-  void record_frame(const FrameContext& frame, vk::Target color, vk::Target depth);
+  void record_frame(const FrameContext& frame, const CausticsWindow& caustics, vk::Target color,
+                    vk::Target depth);
   // The passes' own targets, kept across frames of the same size (allocating ~30 MB of images every frame
   // cost lavapipe several ms).
   void resize(VkExtent2D extent);
@@ -114,6 +119,7 @@ class OceanRenderer {
   std::unique_ptr<SurfacePass> surface_;
   std::unique_ptr<SkyPass> sky_;
   std::unique_ptr<UnderwaterPass> underwater_;
+  std::unique_ptr<CausticsPass> caustics_;
   std::unique_ptr<CameraMedium> camera_medium_;
   VkExtent2D extent_{};  // of the passes' targets
   std::unique_ptr<OwnTargets> own_;

@@ -23,7 +23,7 @@ OceanRenderer::SurfaceAov OceanRenderer::render_surface_aov(const scene::Scene& 
   const vk::Buffer normal_out = staging(normal), world_out = staging(world);
   prepare(scene);
   ctx_.submit_and_wait([&](VkCommandBuffer cmd) {
-    const FrameContext frame = begin_frame(cmd, scene, extent, 0);
+    const FrameContext frame = begin_frame(cmd, scene, extent, 0, CausticsWindow{});
     ocean_step_->record(frame);
     vk::use(cmd, {normal.target(), world.target(), depth.target()}, vk::ImageUse::Discard,
             vk::ImageUse::Attachment);

@@ -4,6 +4,7 @@
 
 #include "optics/lut.h"
 #include "optics/underwater.h"
+#include "render/passes/caustics_pass.h"
 #include "vk/barriers.h"
 #include "vk/transfer.h"
 
@@ -41,6 +42,12 @@ Result<void> upload_underwater(vk::Context& ctx, const optics::LutInputs& inputs
   out.uw_up = upload_rgba(ctx, dn, zn, as_rgba(table->water_up, dn, zn, 3), "underwater water up");
   out.d_max_m = table->d_m.back();
   out.z_max_m = table->z_m.back();
+  const glm::vec4 depths = CausticsWindow{}.depths;
+  for (int k = 0; k < LAGOON_CAUSTICS_SLICES; ++k) {
+    auto s = optics::underwater_sample(inputs, 0.0, depths[k]);
+    if (!s) return s.error();
+    out.caustic_share[k] = float(s->direct_share);
+  }
   return {};
 }
 

@@ -3,6 +3,7 @@
 // camera under the water: x = distance d, y = depth z.
 #pragma once
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include "core/result.h"
 #include "scene/scene.h"
@@ -17,6 +18,7 @@ struct WaterLuts {
   double r_max_m = 1, h_max_m = 1;
   vk::Image uw_target, uw_down, uw_up;  // RGBA: target (RGB, blur), the water's light down, up (RGB, 1)
   double d_max_m = 1, z_max_m = 1;
+  glm::vec4 caustic_share{0};  // the sun's direct share of the light at each caustic slice's depth
 };
 
 // Fails with the optics model's message (e.g. an unreadable custom water table).

@@ -37,6 +37,7 @@ struct RenderEffects {
   bool reflection = true;  // planar reflection of what is above the water (else the sky alone)
   bool refraction = true;  // the floor and submerged objects seen through the water, coloured by the LUTs
   bool foam = true;
+  bool caustics = true;  // the sun focused by the waves on the floor and submerged objects
 };
 
 // Scene brightness to display (render.tone_map).

@@ -14,6 +14,10 @@ void read_effects(ObjectReader& r, RenderEffects& e) {
          "The floor and submerged objects seen through the surface, coloured by the water LUTs; false = "
          "the water's own colour only.");
   r.flag("foam", e.foam, "Whitecaps from ocean.foam; false hides them.");
+  r.flag(
+      "caustics", e.caustics,
+      "The sun focused by the displaced surface onto the floor and submerged objects, from above and below "
+      "(docs/rendering.md, Caustics); false = the light under a flat surface.");
 }
 
 }  // namespace

@@ -16,6 +16,7 @@ layout(binding = LAGOON_SURFACE_BIND_LUT_T0) uniform sampler2D lut_t0;          
 layout(binding = LAGOON_SURFACE_BIND_LUT_T1) uniform sampler2D lut_t1;
 layout(binding = LAGOON_SURFACE_BIND_REFLECTION) uniform sampler2D reflection;  // mirrored objects above the water; a = coverage
 layout(std430, binding = LAGOON_SURFACE_BIND_LIGHTS) readonly buffer Lights { PointLightGpu point_lights[]; };
+layout(binding = LAGOON_SURFACE_BIND_CAUSTICS) uniform sampler2DArray caustic_map;
 layout(binding = LAGOON_SURFACE_BIND_JACOBIAN_TERMS) uniform sampler2DArray jacobian_terms[LAGOON_MAX_CASCADES];  // (λ∂Dx/∂x, λ∂Dz/∂z, λ∂Dx/∂z, foam)
 
 layout(location = 0) in vec3 v_world;
@@ -23,6 +24,7 @@ layout(location = 1) in vec2 v_rest;
 layout(location = 0) out vec4 out_colour;
 
 #include "common/surface_normal.glsl"
+#include "common/caustics.glsl"
 
 // The light leaving the water towards the viewer below the surface, in white units: eq. 22 with the floor
 // point C seen along the refracted ray, r and h measured along that ray (docs/optics.md), or the deep-water
@@ -51,7 +53,7 @@ vec3 water_radiance(vec3 n, vec3 v) {
   vec2 lut_uv = vec2(sqrt(clamp(r / frame.lut.x, 0.0, 1.0)), sqrt(clamp(h / frame.lut.y, 0.0, 1.0)));
   vec4 t0 = texture(lut_t0, lut_uv);
   vec3 t1 = texture(lut_t1, lut_uv).rgb;
-  vec3 through = t0.a * t0.rgb * albedo.rgb + (1.0 - t0.a) * t1;
+  vec3 through = t0.a * t0.rgb * albedo.rgb * caustic_gain(floor_point.xz, -floor_point.y) + (1.0 - t0.a) * t1;
   return mix(through, deep, smoothstep(0.8, 1.0, h / frame.lut.y));
 }
 

@@ -14,8 +14,10 @@ layout(binding = LAGOON_SURFACE_BIND_REFRACTION_DEPTH) uniform sampler2D refract
 layout(binding = LAGOON_SURFACE_BIND_UW_TARGET) uniform sampler2D uw_target;
 layout(binding = LAGOON_SURFACE_BIND_UW_DOWN) uniform sampler2D uw_down;
 layout(binding = LAGOON_SURFACE_BIND_UW_UP) uniform sampler2D uw_up;
+layout(binding = LAGOON_SURFACE_BIND_CAUSTICS) uniform sampler2DArray caustic_map;
 
 #include "common/underwater.glsl"
+#include "common/caustics.glsl"
 
 layout(location = 0) in vec2 v_ndc;
 layout(location = 0) out vec4 out_colour;  // tone-mapped for display
@@ -34,7 +36,8 @@ void main() {
     vec3 hit = p.xyz / p.w;
     float d = length(hit - eye);
     // The target's light at its own depth; the water's along the ray at the ray's mean depth.
-    radiance = albedo.rgb * underwater_target(d, -hit.y).rgb + underwater_added(d, 0.5 * (camera_depth - hit.y), dir.y);
+    radiance = albedo.rgb * underwater_target(d, -hit.y).rgb * caustic_gain(hit.xz, -hit.y) +
+               underwater_added(d, 0.5 * (camera_depth - hit.y), dir.y);
     gl_FragDepth = depth;
   } else {
     // Nothing within reach: the water to the end of the table (α below 1e-3 there for every Jerlov type).

@@ -36,6 +36,10 @@ struct FrameUniforms {
                        // z = 1 when the camera is under the water surface, w = unused
   vec4 floor_below;    // x = depth m of the floor under the camera (0 = none known), y = its mean albedo
                        // (water.bottom_albedo), zw unused: what total internal reflection shows from below
+  vec4 caustics;  // xy = world xz of the caustic window's corner, z = its cell size m, w = cells per side
+                  // (0 = no caustics) (shared/caustics.h)
+  vec4 caustic_depths;  // depth m of each caustic slice, increasing
+  vec4 caustic_share;   // the sun's direct share of the light at each slice's depth (optics/underwater.h)
 };
 
 // One point light of the scene's "lights" block (storage buffer, std430).
@@ -46,7 +50,7 @@ struct PointLightGpu {
 LAGOON_GPU_END
 
 #ifdef __cplusplus
-LAGOON_CHECK_SIZE(FrameUniforms, 448);
+LAGOON_CHECK_SIZE(FrameUniforms, 496);
 LAGOON_CHECK_SIZE(PointLightGpu, 32);
 LAGOON_CHECK_OFFSET(FrameUniforms, camera_pos, 128);
 LAGOON_CHECK_OFFSET(FrameUniforms, water_deep, 208);

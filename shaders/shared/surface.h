@@ -18,5 +18,6 @@
 #define LAGOON_SURFACE_BIND_UW_TARGET 10         // underwater table: white target (RGB, blur) over (d, z)
 #define LAGOON_SURFACE_BIND_UW_DOWN 11           // ... the water's light looking down
 #define LAGOON_SURFACE_BIND_UW_UP 12             // ... looking up
+#define LAGOON_SURFACE_BIND_CAUSTICS 13          // caustic map (shared/caustics.h), sampler2DArray
 
 #endif

@@ -108,14 +108,15 @@ double centre_contrast(const io::Image8& textured, const io::Image8& plain) {
 
 class BayRender : public OceanRender {
  protected:
-  // Looking straight down from 6 m onto a flat sandy floor `depth` metres under calm, clear water.
+  // Looking straight down from 6 m onto a flat sandy floor `depth` metres under calm, clear water. Without
+  // caustics: they modulate the light on the floor, which is not what these tests measure.
   io::Image8 looking_down(double depth, const char* water = "jerlov-IB", bool textured = true) {
-    return render(
-        load({"camera.position=[0,6,0]", "camera.look_at=[0,0,0.001]", "ocean.spectrum.wind_speed_mps=2",
-              "render.exposure=1", "seafloor.type=slope", "seafloor.depth_near_m=" + std::to_string(depth),
-              "seafloor.depth_far_m=" + std::to_string(depth),
-              textured ? "seafloor.texture=assets/sand.png" : "seafloor.texture=", "seafloor.albedo=[1,1,1]",
-              "seafloor.texture_scale_m=1", std::string("water.type=") + water}));
+    return render(load(
+        {"camera.position=[0,6,0]", "camera.look_at=[0,0,0.001]", "ocean.spectrum.wind_speed_mps=2",
+         "render.exposure=1", "seafloor.type=slope", "seafloor.depth_near_m=" + std::to_string(depth),
+         "seafloor.depth_far_m=" + std::to_string(depth),
+         textured ? "seafloor.texture=assets/sand.png" : "seafloor.texture=", "seafloor.albedo=[1,1,1]",
+         "seafloor.texture_scale_m=1", "render.effects.caustics=false", std::string("water.type=") + water}));
   }
   double floor_contrast(double depth) {
     return centre_contrast(looking_down(depth), looking_down(depth, "jerlov-IB", false));

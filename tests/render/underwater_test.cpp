@@ -120,7 +120,8 @@ TEST_F(Underwater, FloorThroughTheWaterHasTheModelsColour) {
          "render.height=120", "seafloor.type=slope", "seafloor.depth_near_m=9", "seafloor.depth_far_m=9",
          "seafloor.albedo=[1,1,1]", "seafloor.texture=\"\"", "objects=[]", "lights=[]",
          "render.tone_map=clamp", "render.gamma=1", "render.exposure=1.5", std::string("water.type=") + type,
-         "ocean.spectrum.wind_speed_mps=3"});
+         "ocean.spectrum.wind_speed_mps=3",
+         "render.effects.caustics=false"});  // caustics_test.cpp checks them
     auto renderer = render::OceanRenderer::create(ctx(), s);
     ASSERT_TRUE(renderer) << renderer.error().message;
     const io::Image8 image = (*renderer)->render(s);

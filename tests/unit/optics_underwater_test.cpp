@@ -114,6 +114,23 @@ TEST(OpticsUnderwater, TurbidWaterBlursAReefAtTenMetresClearWaterDoesNot) {
   EXPECT_GT(blur_at_10m("jerlov-9C"), 0.99);
 }
 
+TEST(OpticsUnderwater, TheSunsDirectShareFallsWithDepthWhereTheWaterScatters) {
+  // Without scattering the direct beam and the diffuse light decay alike (no path-length factor): the share
+  // stays what the surface let in.
+  const LutInputs clear = grey_water(0.2, 0.0, 0.0);
+  const double top = at(clear, 0, 0).direct_share;
+  EXPECT_GT(top, 0.5);
+  EXPECT_LT(top, 1.0);
+  for (double z : {2.0, 10.0}) EXPECT_NEAR(at(clear, 0, z).direct_share, top, 1e-9) << z;
+  // Scattering turns the beam into diffuse light: the share falls.
+  WaterParams p;
+  p.type = "jerlov-1C";
+  auto in = lut_inputs(p, 60.0);
+  ASSERT_TRUE(in);
+  const double s1 = at(*in, 0, 1).direct_share, s10 = at(*in, 0, 10).direct_share;
+  EXPECT_GT(s1, s10 + 0.1) << s1 << " at 1 m, " << s10 << " at 10 m";
+}
+
 TEST(OpticsUnderwater, TableHoldsTheSamplesOnSquaredAxes) {
   WaterParams p;
   p.type = "jerlov-1C";

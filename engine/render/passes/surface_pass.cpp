@@ -36,7 +36,8 @@ void SurfacePass::record(const FrameContext& frame, const Inputs& in, vk::Target
       vk::bind(LAGOON_SURFACE_BIND_REFRACTION_DEPTH, sampled(in.refraction_depth, samplers_.nearest)),
       vk::bind(LAGOON_SURFACE_BIND_LUT_T0, sampled(luts_.t0, samplers_.clamp)),
       vk::bind(LAGOON_SURFACE_BIND_LUT_T1, sampled(luts_.t1, samplers_.clamp)),
-      vk::bind(LAGOON_SURFACE_BIND_LIGHTS, frame.slot.lights)};
+      vk::bind(LAGOON_SURFACE_BIND_LIGHTS, frame.slot.lights),
+      vk::bind(LAGOON_SURFACE_BIND_CAUSTICS, sampled(in.caustics, samplers_.clamp))};
   for (vk::Binding& b : cascade_bindings(ocean_, samplers_)) bindings.push_back(b);
   // Its own render pass, so the timestamps bracket real work on tilers such as lavapipe.
   vk::GpuScope scope(frame.timer(), frame.cmd, "surface");

@@ -23,6 +23,7 @@ class SurfacePass {
     const vk::Image& refraction_albedo;
     const vk::Image& refraction_depth;
     const vk::Image& reflection;
+    const vk::Image& caustics;  // the caustic pass's map
   };
 
   SurfacePass(vk::Context& ctx, const ocean::GpuOcean& ocean, const SceneObjects& objects,

@@ -19,6 +19,7 @@ class UnderwaterPass {
   struct Inputs {
     const vk::Image& refraction_albedo;
     const vk::Image& refraction_depth;
+    const vk::Image& caustics;  // the caustic pass's map
   };
 
   UnderwaterPass(vk::Context& ctx, const ocean::GpuOcean& ocean, const WaterLuts& luts,

@@ -1,0 +1,109 @@
+#include "render/passes/caustics_pass.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <glm/geometric.hpp>
+
+#include "lagoon_shaders/shaders.h"
+#include "shared/limits.h"
+#include "vk/barriers.h"
+#include "vk/transfer.h"
+
+namespace lagoon::render {
+namespace {
+
+constexpr size_t kMapTexels = size_t{LAGOON_CAUSTICS_SLICES} * LAGOON_CAUSTICS_CELLS * LAGOON_CAUSTICS_CELLS;
+// Mostly ahead of the camera: the part of the floor a view sees best, with this much behind it.
+constexpr float kBehindM = 4.0f;
+
+}  // namespace
+
+CausticsWindow caustics_window(const scene::Scene& scene, glm::vec3 sun, float ior) {
+  CausticsWindow w;
+  // Nothing to light: open water with no floor and no objects.
+  const bool lit = scene.seafloor.type != scene::SeafloorType::None || !scene.objects.empty();
+  if (!scene.render.effects.caustics || !lit || sun.y <= 0.01f) return w;
+  const float size = w.cell_m * LAGOON_CAUSTICS_CELLS;
+  const glm::vec3 eye = scene.camera.position, view = scene.camera.look_at - eye;
+  const glm::vec2 flat_view(view.x, view.z);
+  const glm::vec2 ahead = glm::length(flat_view) > 1e-3f ? glm::normalize(flat_view) : glm::vec2(0.0f);
+  const glm::vec2 centre = glm::vec2(eye.x, eye.z) + ahead * (0.5f * size - kBehindM);
+  // On the cell lattice, so the pattern does not swim as the camera moves.
+  w.origin = glm::floor((centre - 0.5f * size) / w.cell_m) * w.cell_m;
+  w.cells = LAGOON_CAUSTICS_CELLS;
+  // Under a flat surface every ray is the refracted sun: it travels away from the sun by tan θt per metre.
+  const float sin_t = std::sqrt(std::max(1.0f - sun.y * sun.y, 0.0f)) / ior;
+  const float tan_t = sin_t / std::sqrt(1.0f - sin_t * sin_t);
+  const glm::vec2 away = sin_t > 1e-6f ? -glm::normalize(glm::vec2(sun.x, sun.z)) : glm::vec2(0.0f);
+  const glm::vec2 deepest_shift = -away * (tan_t * w.depths[LAGOON_CAUSTICS_SLICES - 1]);
+  const float margin = float(LAGOON_CAUSTICS_MARGIN) * w.cell_m;
+  w.source_origin = w.origin + glm::min(deepest_shift, glm::vec2(0.0f)) - margin;
+  const glm::vec2 end = w.origin + size + glm::max(deepest_shift, glm::vec2(0.0f)) + margin;
+  w.source_cells = glm::uvec2(glm::ceil((end - w.source_origin) / w.cell_m));
+  return w;
+}
+
+CausticsPass::CausticsPass(vk::Context& ctx, const ocean::GpuOcean& ocean, const Samplers& samplers)
+    : ocean_(ocean),
+      samplers_(samplers),
+      splat_(vk::ComputePipeline::create(ctx, shaders::caustics_splat_comp)),
+      resolve_(vk::ComputePipeline::create(ctx, shaders::caustics_resolve_comp)),
+      accum_(vk::Buffer::create(ctx, kMapTexels * sizeof(uint32_t),
+                                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                vk::MemoryUsage::Device, "caustics accumulation")),
+      map_(vk::Image::create(ctx, {.format = VK_FORMAT_R32_SFLOAT,
+                                   .extent = {LAGOON_CAUSTICS_CELLS, LAGOON_CAUSTICS_CELLS},
+                                   .layers = LAGOON_CAUSTICS_SLICES,
+                                   .array_view = true,
+                                   .usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                                            VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                                   .debug_name = "caustic map"})) {
+  // The resolve leaves the accumulation cleared for the next frame; it starts cleared, and the map at 1.
+  vk::upload_buffer(ctx, accum_, vk::as_bytes_of(std::vector<uint32_t>(kMapTexels, 0u)));
+  vk::upload_image(ctx, map_, vk::as_bytes_of(std::vector<float>(kMapTexels, 1.0f)), VK_IMAGE_LAYOUT_GENERAL,
+                   vk::access::kGraphicsSampled);
+}
+
+void CausticsPass::record(const FrameContext& frame, const CausticsWindow& window) const {
+  if (window.cells == 0) return;
+  vk::GpuScope scope(frame.timer(), frame.cmd, "caustics");
+  std::vector<vk::Binding> splat{vk::bind(LAGOON_CAUSTICS_BIND_FRAME, frame.uniforms()),
+                                 vk::bind(LAGOON_CAUSTICS_BIND_ACCUM, accum_)};
+  for (uint32_t slot = 0; slot < LAGOON_MAX_CASCADES; ++slot) {
+    const ocean::CascadeTextures t = ocean_.cascade(std::min(slot, ocean_.cascade_count() - 1));
+    splat.push_back(
+        vk::bind(LAGOON_CAUSTICS_BIND_DISPLACEMENT, sampled(*t.displacement, samplers_.repeat), slot));
+    splat.push_back(
+        vk::bind(LAGOON_CAUSTICS_BIND_NORMAL_JACOBIAN, sampled(*t.normal_jacobian, samplers_.repeat), slot));
+  }
+  const gpu::CausticsPush push{
+      .source = glm::vec4(window.source_origin, float(window.source_cells.x), float(window.source_cells.y))};
+  vk::dispatch(frame.cmd, splat_, splat, &push, sizeof(push),
+               vk::groups_for(splat_, {window.source_cells.x, window.source_cells.y, 1}));
+  vk::buffer_barrier(frame.cmd, accum_.handle(), vk::access::kComputeReadWrite,
+                     vk::access::kComputeReadWrite);
+  // The last frame's readers are done with the map before it is rewritten.
+  vk::image_barrier(frame.cmd, map_.handle(), map_.all_subresources(), VK_IMAGE_LAYOUT_GENERAL,
+                    VK_IMAGE_LAYOUT_GENERAL, vk::access::kGraphicsSampled, vk::access::kComputeWrite);
+  vk::dispatch(
+      frame.cmd, resolve_,
+      {vk::bind(LAGOON_CAUSTICS_BIND_ACCUM, accum_),
+       vk::bind(LAGOON_CAUSTICS_BIND_MAP, vk::ImageRef{map_.view(), VK_IMAGE_LAYOUT_GENERAL})},
+      vk::groups_for(resolve_, {LAGOON_CAUSTICS_CELLS, LAGOON_CAUSTICS_CELLS, LAGOON_CAUSTICS_SLICES}));
+  vk::image_barrier(frame.cmd, map_.handle(), map_.all_subresources(), VK_IMAGE_LAYOUT_GENERAL,
+                    VK_IMAGE_LAYOUT_GENERAL, vk::access::kComputeWrite, vk::access::kGraphicsSampled);
+  // The next frame's splat follows this resolve's clearing writes.
+  vk::buffer_barrier(frame.cmd, accum_.handle(), vk::access::kComputeReadWrite,
+                     vk::access::kComputeReadWrite);
+}
+
+std::vector<float> CausticsPass::read_map(vk::Context& ctx) const {
+  const std::vector<std::byte> bytes =
+      vk::readback_image(ctx, map_, VK_IMAGE_LAYOUT_GENERAL, vk::access::kGraphicsSampled);
+  std::vector<float> out(bytes.size() / sizeof(float));
+  std::memcpy(out.data(), bytes.data(), out.size() * sizeof(float));
+  return out;
+}
+
+}  // namespace lagoon::render

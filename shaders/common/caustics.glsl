@@ -1,0 +1,34 @@
+// The caustic map (shared/caustics.h, engine/render/passes/caustics_pass.h) as a gain on the light falling on
+// the floor: the sun's direct share of it is focused by the waves, the diffuse rest is not. Needs, declared
+// by the includer: `frame` (FrameUniforms) and `caustic_map` (sampler2DArray).
+#ifndef LAGOON_COMMON_CAUSTICS_GLSL
+#define LAGOON_COMMON_CAUSTICS_GLSL
+
+// Irradiance at world (xz, depth) relative to the same light under a flat surface; 1 outside the window,
+// fading to 1 over its outer tenth so its edge does not show.
+float caustic_gain(vec2 xz, float depth) {
+  if (frame.caustics.w < 0.5 || depth <= 0.0) return 1.0;
+  vec2 uv = (xz - frame.caustics.xy) / (frame.caustics.z * frame.caustics.w);
+  if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 1.0;
+  // Between slices linearly in depth; above the first towards 1 at the surface (no focusing at depth 0);
+  // below the last, the last.
+  vec4 z = frame.caustic_depths;
+  float e, share;
+  if (depth <= z.x) {
+    float f = depth / z.x;
+    e = mix(1.0, texture(caustic_map, vec3(uv, 0.0)).r, f);
+    share = frame.caustic_share.x;
+  } else {
+    int k = depth < z.y ? 0 : depth < z.z ? 1 : depth < z.w ? 2 : 3;
+    float lo = z[k], hi = z[min(k + 1, 3)];
+    float f = k == 3 ? 0.0 : (depth - lo) / (hi - lo);
+    e = mix(texture(caustic_map, vec3(uv, float(k))).r,
+            texture(caustic_map, vec3(uv, float(min(k + 1, 3)))).r, f);
+    share = mix(frame.caustic_share[k], frame.caustic_share[min(k + 1, 3)], f);
+  }
+  vec2 edge = min(uv, 1.0 - uv);
+  float fade = smoothstep(0.0, 0.1, min(edge.x, edge.y));
+  return 1.0 + fade * share * (e - 1.0);
+}
+
+#endif

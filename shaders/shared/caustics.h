@@ -1,0 +1,25 @@
+// Caustics (engine/render/passes/caustics_pass.cpp, shaders/render/caustics_*.comp): the sun's irradiance on
+// horizontal planes at a few depths under a window of the sea around the camera, relative to the irradiance
+// under a flat surface (1 = no focusing), by splatting the refracted sun rays of the displaced surface.
+#ifndef LAGOON_SHARED_CAUSTICS_H
+#define LAGOON_SHARED_CAUSTICS_H
+#include "shared/interop.h"
+
+#define LAGOON_CAUSTICS_SLICES 4     // depths per frame (FrameUniforms::caustic_depths)
+#define LAGOON_CAUSTICS_CELLS 256    // destination cells per side of the window
+#define LAGOON_CAUSTICS_MARGIN 32    // source cells beyond each side: rays tilted by the waves land inside
+#define LAGOON_CAUSTICS_ONE 65536.0  // fixed-point unit of the accumulation (one ray's energy)
+
+#define LAGOON_CAUSTICS_BIND_FRAME 0
+#define LAGOON_CAUSTICS_BIND_DISPLACEMENT 1     // sampler2DArray[LAGOON_MAX_CASCADES]
+#define LAGOON_CAUSTICS_BIND_NORMAL_JACOBIAN 2  // sampler2DArray[LAGOON_MAX_CASCADES]
+#define LAGOON_CAUSTICS_BIND_ACCUM 3            // uint[SLICES][CELLS][CELLS], fixed point
+#define LAGOON_CAUSTICS_BIND_MAP 4              // r32f image2DArray, one layer per slice
+
+LAGOON_GPU_BEGIN
+struct CausticsPush {
+  vec4 source;  // xy = world xz of source cell (0, 0)'s corner, zw = source cells along x and z
+};
+LAGOON_GPU_END
+
+#endif

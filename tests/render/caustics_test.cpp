@@ -1,0 +1,141 @@
+// Caustics (issue 13, item 2): the sun's light refracted by the displaced cascades, splatted onto planes at
+// four depths. Checked against what physics fixes without computing the pattern: energy is conserved (the
+// mean over the window equals a flat sea's), a flat sea focuses nothing, the pattern follows the ocean in
+// time and is the same for the same time, and focusing grows with depth.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numeric>
+
+#include "render/ocean_renderer.h"
+#include "shared/caustics.h"
+#include "support/vk_fixture.h"
+
+namespace lagoon::test {
+namespace {
+
+constexpr size_t kSliceTexels = size_t{LAGOON_CAUSTICS_CELLS} * LAGOON_CAUSTICS_CELLS;
+
+struct SliceStats {
+  double mean = 0, stddev = 0, max = 0;
+};
+
+SliceStats stats(const std::vector<float>& map, int slice) {
+  SliceStats s;
+  const float* v = &map[slice * kSliceTexels];
+  for (size_t i = 0; i < kSliceTexels; ++i) s.mean += v[i], s.max = std::max(s.max, double(v[i]));
+  s.mean /= kSliceTexels;
+  for (size_t i = 0; i < kSliceTexels; ++i) s.stddev += (v[i] - s.mean) * (v[i] - s.mean);
+  s.stddev = std::sqrt(s.stddev / kSliceTexels);
+  return s;
+}
+
+class Caustics : public GpuTest {
+ protected:
+  std::vector<float> caustic_map(std::vector<std::string> overrides) {
+    overrides.insert(overrides.begin(), {"render.width=64", "render.height=48"});
+    auto s = scene::load_scene(std::string(LAGOON_SOURCE_DIR) + "/scenes/tropical-lagoon.json", overrides);
+    EXPECT_TRUE(s) << s.error().message;
+    if (!s) return {};
+    auto renderer = render::OceanRenderer::create(ctx(), *s);
+    EXPECT_TRUE(renderer) << renderer.error().message;
+    if (!renderer) return {};
+    (*renderer)->render(*s);
+    return (*renderer)->caustics().read_map(ctx());
+  }
+};
+
+TEST_F(Caustics, EnergyIsConservedAtEveryDepth) {
+  // A low sun sends the rays far sideways (12.8 m at 15 m depth for 30°): the surface they come from is
+  // not the one above the window.
+  for (const char* elevation : {"65", "30"}) {
+    const std::vector<float> map = caustic_map({std::string("sun.elevation_deg=") + elevation});
+    ASSERT_EQ(map.size(), LAGOON_CAUSTICS_SLICES * kSliceTexels);
+    for (int k = 0; k < LAGOON_CAUSTICS_SLICES; ++k) {
+      const SliceStats s = stats(map, k);
+      RecordProperty(std::string("sun") + elevation + "_slice" + std::to_string(k),
+                     std::to_string(s.mean) + " mean, " + std::to_string(s.stddev) + " std, " +
+                         std::to_string(s.max) + " max");
+      EXPECT_NEAR(s.mean, 1.0, 0.03) << "sun " << elevation << ", slice " << k;
+      EXPECT_GT(s.stddev, 0.05) << "sun " << elevation << ", slice " << k << ": no pattern at all";
+    }
+  }
+}
+
+TEST_F(Caustics, AFlatSeaFocusesNothing) {
+  // Phillips at a 0.05 m/s breeze (longest wave 2.5e-4 m) with every wave shorter than ~60 m damped away
+  // (exp(−k²l²), l = 10 m): a flat sea, WaveQuery gives height 0 and normal (0, 1, 0).
+  const std::vector<float> map =
+      caustic_map({"ocean.spectrum.type=phillips", "ocean.spectrum.wind_speed_mps=0.05",
+                   "ocean.spectrum.small_wave_cutoff_m=10"});
+  ASSERT_FALSE(map.empty());
+  for (int k = 0; k < LAGOON_CAUSTICS_SLICES; ++k) {
+    const SliceStats s = stats(map, k);
+    EXPECT_NEAR(s.mean, 1.0, 0.01) << "slice " << k;
+    EXPECT_LT(s.stddev, 0.02) << "slice " << k;
+    EXPECT_LT(s.max, 1.05) << "slice " << k;
+  }
+}
+
+TEST_F(Caustics, ThePatternFollowsTheOceanInTime) {
+  const std::vector<float> a = caustic_map({"time_s=4"}), again = caustic_map({"time_s=4"}),
+                           later = caustic_map({"time_s=5"});
+  ASSERT_EQ(a.size(), later.size());
+  EXPECT_EQ(a, again);  // integer accumulation: the same sea gives the same bits
+  double difference = 0;
+  for (size_t i = 0; i < kSliceTexels; ++i) difference += std::abs(a[i] - later[i]);
+  EXPECT_GT(difference / kSliceTexels, 0.05);
+}
+
+TEST_F(Caustics, FocusingGrowsWithDepthBeforeTheFocus) {
+  // In the linear regime E ≈ 1 − z·(1 − 1/n)·∇²h: the pattern's contrast grows in proportion to depth.
+  const std::vector<float> map = caustic_map({});
+  ASSERT_FALSE(map.empty());
+  const double c1 = stats(map, 0).stddev, c2 = stats(map, 1).stddev;  // 1 m and 2.5 m
+  EXPECT_GT(c2, 1.5 * c1) << c1 << " at 1 m, " << c2 << " at 2.5 m";
+}
+
+// Mean and standard deviation of the luminance over the image's lower half (the floor, in these views).
+std::pair<double, double> floor_luminance(const io::Image8& image) {
+  double sum = 0, sum2 = 0;
+  int n = 0;
+  for (uint32_t y = image.height / 2; y < image.height; ++y)
+    for (uint32_t x = 0; x < image.width; ++x) {
+      const uint8_t* p = image.pixel(x, y);
+      const double l = 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+      sum += l, sum2 += l * l, ++n;
+    }
+  const double mean = sum / n;
+  return {mean, std::sqrt(std::max(sum2 / n - mean * mean, 0.0))};
+}
+
+TEST_F(Caustics, VisibleOnTheFloorFromAboveAndFromBelow) {
+  // The lagoon's sand about 3.5 m down seen from 3 m above the water, and from 1.5 m down looking along the
+  // floor;
+  // the floor without its texture, so what varies is the light.
+  const std::vector<std::string> above{"camera.position=[0,3,60]", "camera.look_at=[0,-3,66]"},
+      below{"camera.position=[0,-1.5,60]", "camera.look_at=[0,-4,70]"};
+  for (const auto& view : {above, below}) {
+    const bool is_above = view[0] == above[0];
+    SCOPED_TRACE(is_above ? "above" : "below");
+    std::vector<std::string> on = view;
+    on.insert(on.end(), {"render.width=160", "render.height=96", "seafloor.texture=", "render.exposure=0.7"});
+    std::vector<std::string> off = on;
+    off.push_back("render.effects.caustics=false");
+    auto scene_on = scene::load_scene(std::string(LAGOON_SOURCE_DIR) + "/scenes/tropical-lagoon.json", on);
+    auto scene_off = scene::load_scene(std::string(LAGOON_SOURCE_DIR) + "/scenes/tropical-lagoon.json", off);
+    ASSERT_TRUE(scene_on && scene_off);
+    auto renderer = render::OceanRenderer::create(ctx(), *scene_on);
+    ASSERT_TRUE(renderer) << renderer.error().message;
+    const auto [mean_on, std_on] = floor_luminance((*renderer)->render(*scene_on));
+    const auto [mean_off, std_off] = floor_luminance((*renderer)->render(*scene_off));
+    RecordProperty(is_above ? "above" : "below",
+                   "mean " + std::to_string(mean_on) + " vs " + std::to_string(mean_off) + ", std " +
+                       std::to_string(std_on) + " vs " + std::to_string(std_off));
+    EXPECT_GT(std_on, 1.5 * std_off + 2.0) << "no caustic pattern on the floor";
+    EXPECT_NEAR(mean_on, mean_off, 0.1 * mean_off) << "caustics brighten or darken the floor on average";
+  }
+}
+
+}  // namespace
+}  // namespace lagoon::test
