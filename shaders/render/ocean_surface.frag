@@ -17,6 +17,9 @@ layout(binding = LAGOON_SURFACE_BIND_LUT_T1) uniform sampler2D lut_t1;
 layout(binding = LAGOON_SURFACE_BIND_REFLECTION) uniform sampler2D reflection;  // mirrored objects above the water; a = coverage
 layout(std430, binding = LAGOON_SURFACE_BIND_LIGHTS) readonly buffer Lights { PointLightGpu point_lights[]; };
 layout(binding = LAGOON_SURFACE_BIND_CAUSTICS) uniform sampler2DArray caustic_map;
+layout(binding = LAGOON_SURFACE_BIND_UW_TARGET) uniform sampler2D uw_target;
+layout(binding = LAGOON_SURFACE_BIND_UW_DOWN) uniform sampler2D uw_down;
+layout(binding = LAGOON_SURFACE_BIND_UW_UP) uniform sampler2D uw_up;
 layout(binding = LAGOON_SURFACE_BIND_JACOBIAN_TERMS) uniform sampler2DArray jacobian_terms[LAGOON_MAX_CASCADES];  // (λ∂Dx/∂x, λ∂Dz/∂z, λ∂Dx/∂z, foam)
 
 layout(location = 0) in vec3 v_world;
@@ -25,11 +28,15 @@ layout(location = 0) out vec4 out_colour;
 
 #include "common/surface_normal.glsl"
 #include "common/caustics.glsl"
+#include "common/underwater.glsl"
+#include "common/underwater_lamps.glsl"
 
 // The light leaving the water towards the viewer below the surface, in white units: eq. 22 with the floor
 // point C seen along the refracted ray, r and h measured along that ray (docs/optics.md), or the deep-water
-// colour where there is no floor within the LUT's depth.
-vec3 water_radiance(vec3 n, vec3 v) {
+// colour where there is no floor within the LUT's depth. `lamps`: what the point lights under the water add
+// to it, in white units (not relative to the sun), the floor lit as if horizontal (no normals under water).
+vec3 water_radiance(vec3 n, vec3 v, out vec3 lamps) {
+  lamps = vec3(0.0);
   vec3 deep = frame.water_deep.rgb;
   if (frame.lut.z < 0.5) return deep;
   vec2 screen_uv = gl_FragCoord.xy * frame.screen.zw;
@@ -54,6 +61,7 @@ vec3 water_radiance(vec3 n, vec3 v) {
   vec4 t0 = texture(lut_t0, lut_uv);
   vec3 t1 = texture(lut_t1, lut_uv).rgb;
   vec3 through = t0.a * t0.rgb * albedo.rgb * caustic_gain(floor_point.xz, -floor_point.y) + (1.0 - t0.a) * t1;
+  lamps = albedo.rgb * lamp_irradiance(floor_point, vec3(0.0, 1.0, 0.0)) * underwater_transmittance(l);
   return mix(through, deep, smoothstep(0.8, 1.0, h / frame.lut.y));
 }
 
@@ -81,7 +89,9 @@ void main() {
   float shininess = clamp(2.0 / max(mss, 1e-4) - 2.0, 8.0, 4000.0);
   float glint = (shininess + 2.0) / 8.0 * pow(max(dot(n, h), 0.0), shininess) *
                 fresnel_dielectric(dot(h, v), ior) * max(dot(n, l), 0.0);
-  vec3 surface = fresnel * reflected + glint * frame.sun_irradiance.rgb + (1.0 - fresnel) * water_radiance(n, v) * frame.lut.w;
+  vec3 lamps;
+  vec3 below = water_radiance(n, v, lamps) * frame.lut.w + lamps;
+  vec3 surface = fresnel * reflected + glint * frame.sun_irradiance.rgb + (1.0 - fresnel) * below;
   // Point lights: Blinn-Phong highlights on the water (seed 001), same lobe as the sun's.
   for (int i = 0; i < int(frame.lights.x); ++i) {
     vec3 to_light;

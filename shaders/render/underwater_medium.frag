@@ -2,6 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 #include "shared/frame.h"
 #include "shared/surface.h"
+#include "common/light.glsl"
 #include "common/tonemap.glsl"
 
 // Under the water, everything but the surface: the floor and submerged objects (the refraction pass's albedo
@@ -15,9 +16,11 @@ layout(binding = LAGOON_SURFACE_BIND_UW_TARGET) uniform sampler2D uw_target;
 layout(binding = LAGOON_SURFACE_BIND_UW_DOWN) uniform sampler2D uw_down;
 layout(binding = LAGOON_SURFACE_BIND_UW_UP) uniform sampler2D uw_up;
 layout(binding = LAGOON_SURFACE_BIND_CAUSTICS) uniform sampler2DArray caustic_map;
+layout(std430, binding = LAGOON_SURFACE_BIND_LIGHTS) readonly buffer Lights { PointLightGpu point_lights[]; };
 
 #include "common/underwater.glsl"
 #include "common/caustics.glsl"
+#include "common/underwater_lamps.glsl"
 
 layout(location = 0) in vec2 v_ndc;
 layout(location = 0) out vec4 out_colour;  // tone-mapped for display
@@ -30,21 +33,27 @@ void main() {
   vec3 eye = frame.camera_pos.xyz;
   vec3 dir = normalize(far_point.xyz / far_point.w - eye);
   float camera_depth = max(-eye.y, 0.0);
+  vec4 p = frame.inv_view_proj * vec4(v_ndc, depth, 1.0);
+  vec3 hit = p.xyz / p.w;
+  // The refraction target holds no normals: the geometry's own, from the depth of neighbouring pixels
+  // (outside any branch, where derivatives are defined).
+  vec3 n = normalize(cross(dFdx(hit), dFdy(hit)));
+  if (dot(n, dir) > 0.0) n = -n;
   vec3 radiance;
   if (albedo.a > 0.5) {
-    vec4 p = frame.inv_view_proj * vec4(v_ndc, depth, 1.0);
-    vec3 hit = p.xyz / p.w;
     float d = length(hit - eye);
-    // The target's light at its own depth; the water's along the ray at the ray's mean depth.
-    radiance = albedo.rgb * underwater_target(d, -hit.y).rgb * caustic_gain(hit.xz, -hit.y) +
-               underwater_added(d, 0.5 * (camera_depth - hit.y), dir.y);
+    // The target's light at its own depth; the water's along the ray at the ray's mean depth. Both are
+    // relative to the light above the water (scaled by frame.lut.w); the lamps are not.
+    radiance = (albedo.rgb * underwater_target(d, -hit.y).rgb * caustic_gain(hit.xz, -hit.y) +
+                underwater_added(d, 0.5 * (camera_depth - hit.y), dir.y)) * frame.lut.w;
+    radiance += albedo.rgb * lamp_irradiance(hit, n) * underwater_transmittance(d);
     gl_FragDepth = depth;
   } else {
     // Nothing within reach: the water to the end of the table (α below 1e-3 there for every Jerlov type).
     float d = frame.underwater.x;
     float end_depth = max(camera_depth - d * dir.y, 0.0);
-    radiance = underwater_added(d, 0.5 * (camera_depth + end_depth), dir.y);
+    radiance = underwater_added(d, 0.5 * (camera_depth + end_depth), dir.y) * frame.lut.w;
     gl_FragDepth = 1.0;
   }
-  out_colour = vec4(display_encode(frame, radiance * frame.lut.w), 1.0);
+  out_colour = vec4(display_encode(frame, radiance), 1.0);
 }

@@ -60,6 +60,12 @@ TEST(CameraMedium, AskTheWavesNotTheMeanLevel) {
 
 class Underwater : public GpuTest {};
 
+optics::UnderwaterSample at_or_die(const optics::LutInputs& in, double d, double z) {
+  auto s = optics::underwater_sample(in, d, z);
+  EXPECT_TRUE(s) << s.error().message;
+  return s ? *s : optics::UnderwaterSample{};
+}
+
 double luminance(const io::Image8& image, uint32_t x, uint32_t y) {
   const uint8_t* p = &image.rgba[(size_t{y} * image.width + x) * 4];
   return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
@@ -157,6 +163,83 @@ TEST_F(Underwater, FloorThroughTheWaterHasTheModelsColour) {
     EXPECT_GE(checked, 6);
     RecordProperty(std::string("worst_abs_") + type, std::to_string(worst));
   }
+}
+
+TEST_F(Underwater, ALampLightsTheFloorThroughTheWater) {
+  // No sun: only a lamp 4 m above a flat white floor 8 m down (an AUV's), seen from 2 m down. Its light
+  // falls with the square of the distance and is attenuated by the water on its way to the floor and on
+  // the way to the camera, by the optics model's white-light transmittance over each distance.
+  for (const char* type : {"jerlov-IB", "jerlov-3C"}) {
+    SCOPED_TRACE(type);
+    const glm::dvec3 lamp{0, -4, 4};
+    const scene::Scene s = load_scene(
+        {"camera.position=[0,-2,0]", "camera.look_at=[0,-8,4]", "camera.fov_deg=60", "render.width=120",
+         "render.height=90", "seafloor.type=slope", "seafloor.depth_near_m=8", "seafloor.depth_far_m=8",
+         "seafloor.albedo=[1,1,1]", "seafloor.texture=\"\"", "objects=[]", "sun.intensity=0",
+         "lights=[{\"position\":[0,-4,4],\"colour\":[1,1,1],\"intensity\":8,\"range_m\":40}]",
+         "render.tone_map=clamp", "render.gamma=1", "render.exposure=1", std::string("water.type=") + type});
+    auto renderer = render::OceanRenderer::create(ctx(), s);
+    ASSERT_TRUE(renderer) << renderer.error().message;
+    const io::Image8 image = (*renderer)->render(s);
+    auto inputs = optics::lut_inputs(s.water, s.sun.elevation_deg);
+    ASSERT_TRUE(inputs);
+    auto transmittance = [&](double distance) {
+      return at_or_die(*inputs, distance, 0).target / at_or_die(*inputs, 0, 0).target;
+    };
+    const render::CameraMatrices cam = render::camera_matrices(s.camera, 120.0f / 90.0f);
+    const glm::mat4 inv = glm::inverse(cam.view_proj);
+    double worst = 0;
+    for (uint32_t y : {40u, 45u, 55u})
+      for (uint32_t x : {50u, 60u, 70u}) {
+        const glm::vec4 far = inv * glm::vec4((x + 0.5f) / 60.f - 1.f, 1.f - (y + 0.5f) / 45.f, 1.f, 1.f);
+        const glm::dvec3 eye(s.camera.position);
+        const glm::dvec3 dir = glm::normalize(glm::dvec3(far) / double(far.w) - eye);
+        ASSERT_LT(dir.y, -0.1);
+        const glm::dvec3 floor_point = eye + dir * ((8.0 - 2.0) / -dir.y);
+        const glm::dvec3 to_lamp = lamp - floor_point;
+        const double r = glm::length(to_lamp), cosine = to_lamp.y / r;
+        const double window = std::pow(std::clamp(1.0 - std::pow(r / 40.0, 4.0), 0.0, 1.0), 2.0);
+        const glm::dvec3 expected = glm::clamp(8.0 * cosine * window / (r * r) * transmittance(r) *
+                                                   transmittance(glm::length(floor_point - eye)),
+                                               0.0, 1.0);
+        const uint8_t* p = &image.rgba[(size_t{y} * image.width + x) * 4];
+        for (int c = 0; c < 3; ++c) {
+          worst = std::max(worst, std::abs(p[c] / 255.0 - expected[c]));
+          EXPECT_NEAR(p[c] / 255.0, expected[c], std::max(0.05 * expected[c], 2.5 / 255))
+              << "pixel " << x << "," << y << " channel " << c << " at r = " << r << " m";
+        }
+      }
+    RecordProperty(std::string("lamp_worst_abs_") + type, std::to_string(worst));
+  }
+}
+
+TEST_F(Underwater, ALampUnderTheWaterIsSeenFromAbove) {
+  // No sun; the camera 4 m above a calm sea looking down at the floor 3 m down, where a lamp 1 m above the
+  // floor lights it. The same view without the lamp is dark.
+  const std::vector<std::string> base{"camera.position=[0,4,0]", "camera.look_at=[0,-3,0.01]",
+                                      "render.width=64",         "render.height=64",
+                                      "seafloor.type=slope",     "seafloor.depth_near_m=3",
+                                      "seafloor.depth_far_m=3",  "seafloor.albedo=[1,1,1]",
+                                      "seafloor.texture=\"\"",   "objects=[]",
+                                      "sun.intensity=0",         "ocean.spectrum.wind_speed_mps=2",
+                                      "render.tone_map=clamp",   "render.gamma=1",
+                                      "render.exposure=0.15"};
+  auto centre_luminance = [&](const std::vector<std::string>& overrides) {
+    const scene::Scene s = load_scene(overrides);
+    auto renderer = render::OceanRenderer::create(ctx(), s);
+    EXPECT_TRUE(renderer) << renderer.error().message;
+    const io::Image8 image = (*renderer)->render(s);
+    double sum = 0;
+    for (uint32_t y = 28; y < 36; ++y)
+      for (uint32_t x = 28; x < 36; ++x) sum += luminance(image, x, y);
+    return sum / 64;
+  };
+  std::vector<std::string> lit = base;
+  lit.push_back("lights=[{\"position\":[0,-2,0],\"colour\":[1,1,1],\"intensity\":4,\"range_m\":20}]");
+  const double dark = centre_luminance(base), bright = centre_luminance(lit);
+  RecordProperty("luminance",
+                 std::to_string(dark) + " without the lamp, " + std::to_string(bright) + " with");
+  EXPECT_GT(bright, dark + 40);
 }
 
 }  // namespace

@@ -37,7 +37,10 @@ void SurfacePass::record(const FrameContext& frame, const Inputs& in, vk::Target
       vk::bind(LAGOON_SURFACE_BIND_LUT_T0, sampled(luts_.t0, samplers_.clamp)),
       vk::bind(LAGOON_SURFACE_BIND_LUT_T1, sampled(luts_.t1, samplers_.clamp)),
       vk::bind(LAGOON_SURFACE_BIND_LIGHTS, frame.slot.lights),
-      vk::bind(LAGOON_SURFACE_BIND_CAUSTICS, sampled(in.caustics, samplers_.clamp))};
+      vk::bind(LAGOON_SURFACE_BIND_CAUSTICS, sampled(in.caustics, samplers_.clamp)),
+      vk::bind(LAGOON_SURFACE_BIND_UW_TARGET, sampled(luts_.uw_target, samplers_.clamp)),
+      vk::bind(LAGOON_SURFACE_BIND_UW_DOWN, sampled(luts_.uw_down, samplers_.clamp)),
+      vk::bind(LAGOON_SURFACE_BIND_UW_UP, sampled(luts_.uw_up, samplers_.clamp))};
   for (vk::Binding& b : cascade_bindings(ocean_, samplers_)) bindings.push_back(b);
   // Its own render pass, so the timestamps bracket real work on tilers such as lavapipe.
   vk::GpuScope scope(frame.timer(), frame.cmd, "surface");
