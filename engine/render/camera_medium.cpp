@@ -1,14 +1,22 @@
 #include "render/camera_medium.h"
 
+#include <cmath>
+
 namespace lagoon::render {
 
-bool CameraMedium::under_water(const glm::vec3& camera, double time_s) {
+CameraSide CameraMedium::side(const glm::vec3& camera, double lens_m, double time_s) {
   last_queried_ = false;
-  if (camera.y > reach_m_) return false;
-  if (camera.y < -reach_m_) return true;
+  if (forced_) return *forced_;
+  // The near plane's corners lie up to lens_m away, where the surface may be up to lens_m higher or lower
+  // (slopes below 1) than above the camera.
+  const double band = lens_m > 0 ? 2.0 * lens_m + 0.02 : 0.0;
+  if (camera.y > reach_m_ + band) return CameraSide::Above;
+  if (camera.y < -reach_m_ - band) return CameraSide::Below;
   if (!query_) query_ = std::make_unique<ocean::WaveQuery>(params_, spectra_);
   last_queried_ = true;
-  return camera.y < query_->sample(time_s, camera.x, camera.z).height;
+  const double height = query_->sample(time_s, camera.x, camera.z).height;
+  if (std::abs(camera.y - height) < band) return CameraSide::Waterline;
+  return camera.y < height ? CameraSide::Below : CameraSide::Above;
 }
 
 }  // namespace lagoon::render

@@ -1,10 +1,12 @@
-// Whether the camera is under the water: its point against the displaced surface right above it, from
-// WaveQuery (compute/ocean/wave_query.h) at the frame's time. The query costs an FFT per new time (tens of ms
-// on a CPU), so it is asked only when the camera is within the waves' reach of the mean level; further up or
-// down the answer is plain.
+// Where the camera is: above the water, under it, or with its lens cutting the surface (the near plane
+// crosses the waterline, so the image splits along it). Judged against the displaced surface right above the
+// camera, from WaveQuery (compute/ocean/wave_query.h) at the frame's time. The query costs an FFT per new
+// time (tens of ms on a CPU), so it is asked only when the camera is within the waves' reach of the mean
+// level; further up or down the answer is plain.
 #pragma once
 #include <glm/vec3.hpp>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "ocean/initial_spectrum.h"
@@ -13,15 +15,26 @@
 
 namespace lagoon::render {
 
+enum class CameraSide { Above, Below, Waterline };
+
 class CameraMedium {
  public:
   // `reach_m`: a height the surface does not pass (the renderer's 6σ + 1 m displacement bound).
   CameraMedium(const ocean::OceanParams& params, std::vector<ocean::CascadeSpectrum> spectra, double reach_m)
       : params_(params), spectra_(std::move(spectra)), reach_m_(reach_m) {}
 
-  bool under_water(const glm::vec3& camera, double time_s);
+  // `lens_m`: how far the near plane reaches from the camera's point (half its diagonal). Within that of
+  // the surface, allowing for the surface's slope across it, the frame is drawn on both sides of the
+  // waterline.
+  CameraSide side(const glm::vec3& camera, double lens_m, double time_s);
+  bool under_water(const glm::vec3& camera, double time_s) {
+    return side(camera, 0.0, time_s) == CameraSide::Below;
+  }
   // How the last answer was found: false when the camera was beyond the waves' reach (no query).
   bool last_queried() const { return last_queried_; }
+
+  // For tests and tools: answer `side` whatever the camera (nullopt: judge again).
+  void force(std::optional<CameraSide> side) { forced_ = side; }
 
  private:
   ocean::OceanParams params_;
@@ -29,6 +42,7 @@ class CameraMedium {
   double reach_m_;
   std::unique_ptr<ocean::WaveQuery> query_;  // created on first need
   bool last_queried_ = false;
+  std::optional<CameraSide> forced_;
 };
 
 }  // namespace lagoon::render

@@ -3,6 +3,7 @@
 #pragma once
 #include <vulkan/vulkan.h>
 
+#include "render/camera_medium.h"
 #include "scene/scene.h"
 #include "vk/buffer.h"
 #include "vk/gpu_timer.h"
@@ -24,7 +25,7 @@ struct FrameContext {
   VkExtent2D extent{};
   const scene::Scene& scene;
   FrameSlot& slot;
-  bool under_water = false;  // the camera is below the displaced surface (render/camera_medium.h)
+  CameraSide camera_side = CameraSide::Above;  // against the displaced surface (render/camera_medium.h)
   vk::BufferRef uniforms() const { return {slot.frame.handle()}; }
   vk::GpuTimer* timer() const { return &slot.timer; }
 };

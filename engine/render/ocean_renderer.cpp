@@ -1,6 +1,7 @@
 #include "render/ocean_renderer.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 #include "render/camera.h"
@@ -54,6 +55,7 @@ Result<void> OceanRenderer::init(const scene::Scene& scene) {
       std::make_unique<SurfacePass>(ctx_, ocean(), *objects_, luts_, samplers_, kColorFormat, kDepthFormat);
   sky_ = std::make_unique<SkyPass>(ctx_, kColorFormat, kDepthFormat);
   caustics_ = std::make_unique<CausticsPass>(ctx_, ocean(), samplers_);
+  waterline_ = std::make_unique<WaterlinePass>(ctx_, ocean(), samplers_, kColorFormat, kDepthFormat);
   underwater_ = std::make_unique<UnderwaterPass>(ctx_, ocean(), luts_, samplers_, kColorFormat, kDepthFormat);
   camera_medium_ =
       std::make_unique<CameraMedium>(ocean().params(), ocean().spectra(), double(shading_.bound.vertical_m));
@@ -70,10 +72,11 @@ void OceanRenderer::record_frame(const FrameContext& f, const CausticsWindow& ca
   refraction_->record(f);
   vk::use(cmd, {refraction_->albedo(), refraction_->depth()}, Attachment, Sampled);
 
-  if (f.under_water) {
+  const UnderwaterPass::Inputs below{refraction_->albedo_image(), refraction_->depth_image(),
+                                     caustics_->map()};
+  if (f.camera_side == CameraSide::Below) {
     vk::use(cmd, {color, depth}, Discard, Attachment);
-    underwater_->record(f, {refraction_->albedo_image(), refraction_->depth_image(), caustics_->map()}, color,
-                        depth);
+    underwater_->record(f, below, color, depth);
     return;
   }
 
@@ -88,6 +91,13 @@ void OceanRenderer::record_frame(const FrameContext& f, const CausticsWindow& ca
       color, depth);
   vk::use(cmd, {color, depth}, Attachment, Attachment);
   sky_->record(f, color, depth);
+  if (f.camera_side != CameraSide::Waterline) return;
+
+  vk::use(cmd, {waterline_->below_color(), waterline_->below_depth()}, Discard, Attachment);
+  underwater_->record(f, below, waterline_->below_color(), waterline_->below_depth());
+  vk::use(cmd, {waterline_->below_color(), waterline_->below_depth()}, Attachment, Sampled);
+  vk::use(cmd, {color, depth}, Attachment, Attachment);
+  waterline_->record(f, color, depth);
 }
 
 void OceanRenderer::prepare(const scene::Scene& scene) {
@@ -97,7 +107,10 @@ void OceanRenderer::prepare(const scene::Scene& scene) {
 FrameContext OceanRenderer::begin_frame(VkCommandBuffer cmd, const scene::Scene& scene, VkExtent2D extent,
                                         uint32_t slot_index, const CausticsWindow& caustics) {
   FrameSlot& slot = slots_[slot_index % kSlots];
-  const bool under_water = camera_medium_->under_water(scene.camera.position, scene.time_s);
+  const float aspect = float(extent.width) / float(extent.height);
+  const double lens_m = scene.camera.near_m * std::tan(0.5 * glm::radians(double(scene.camera.fov_deg))) *
+                        std::sqrt(1.0 + double(aspect) * aspect);
+  const CameraSide side = camera_medium_->side(scene.camera.position, lens_m, scene.time_s);
   const uint32_t light_count =
       write_point_lights(scene, reinterpret_cast<gpu::PointLightGpu*>(slot.lights.mapped()));
   slot.lights.flush();
@@ -116,7 +129,7 @@ FrameContext OceanRenderer::begin_frame(VkCommandBuffer cmd, const scene::Scene&
                                                       .view_proj = cam.view_proj,
                                                       .reach_m = reach,
                                                       .light_count = light_count,
-                                                      .under_water = under_water,
+                                                      .under_water = side == CameraSide::Below,
                                                       .caustics = caustics});
   std::memcpy(slot.frame.mapped(), &uniforms, sizeof(uniforms));
   slot.frame.flush();
@@ -124,7 +137,7 @@ FrameContext OceanRenderer::begin_frame(VkCommandBuffer cmd, const scene::Scene&
   // targets, so this frame's work starts after everything submitted before it.
   vk::memory_barrier(cmd, vk::access::kAllCommands, vk::access::kAllCommands);
   slot.timer.reset(cmd);
-  return FrameContext{.cmd = cmd, .extent = extent, .scene = scene, .slot = slot, .under_water = under_water};
+  return FrameContext{.cmd = cmd, .extent = extent, .scene = scene, .slot = slot, .camera_side = side};
 }
 
 void OceanRenderer::resize(VkExtent2D extent) {
@@ -132,6 +145,7 @@ void OceanRenderer::resize(VkExtent2D extent) {
   if (extent_.width != 0) ctx_.wait_idle();  // frames in flight may still use the old size
   refraction_->resize(extent);
   reflection_->resize(extent);
+  waterline_->resize(extent);
   extent_ = extent;
 }
 

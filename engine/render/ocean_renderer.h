@@ -1,9 +1,9 @@
 // The frame renderer: the FFT ocean (compute/ocean/gpu) drawn over an analytic sky whose light comes from
 // the optics model, water colour from the optics LUTs, tone mapping (seed 000's eq. 18) and gamma.
 // The frame is a sequence of passes (engine/render/passes/, one file each), wired in record_frame():
-// ocean step, refraction, reflection, surface, sky; with the camera under the water, ocean step, refraction,
-// underwater. docs/architecture.md shows the frame and how to add a
-// pass; docs/rendering.md the shading.
+// ocean step, caustics, refraction, reflection, surface, sky; with the camera under the water, ocean step,
+// caustics, refraction, underwater; with the lens cutting the surface, both, joined by the waterline pass.
+// docs/architecture.md shows the frame and how to add a pass; docs/rendering.md the shading.
 #pragma once
 #include <array>
 #include <memory>
@@ -23,6 +23,7 @@
 #include "render/passes/sky_pass.h"
 #include "render/passes/surface_pass.h"
 #include "render/passes/underwater_pass.h"
+#include "render/passes/waterline_pass.h"
 #include "render/samplers.h"
 #include "render/scene_objects.h"
 #include "render/water_luts.h"
@@ -91,6 +92,8 @@ class OceanRenderer {
   const ocean::GpuOcean& ocean() const { return ocean_step_->ocean(); }
   // The caustics of the last frame (e.g. for a check of their energy after render()).
   const CausticsPass& caustics() const { return *caustics_; }
+  // Where the camera is judged to be (above, below, cutting the surface); tests and tools may force a side.
+  CameraMedium& camera_medium() { return *camera_medium_; }
 
  private:
   explicit OceanRenderer(vk::Context& ctx);
@@ -120,6 +123,7 @@ class OceanRenderer {
   std::unique_ptr<SkyPass> sky_;
   std::unique_ptr<UnderwaterPass> underwater_;
   std::unique_ptr<CausticsPass> caustics_;
+  std::unique_ptr<WaterlinePass> waterline_;
   std::unique_ptr<CameraMedium> camera_medium_;
   VkExtent2D extent_{};  // of the passes' targets
   std::unique_ptr<OwnTargets> own_;

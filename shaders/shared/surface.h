@@ -19,5 +19,7 @@
 #define LAGOON_SURFACE_BIND_UW_DOWN 11           // ... the water's light looking down
 #define LAGOON_SURFACE_BIND_UW_UP 12             // ... looking up
 #define LAGOON_SURFACE_BIND_CAUSTICS 13          // caustic map (shared/caustics.h), sampler2DArray
+#define LAGOON_SURFACE_BIND_BELOW_COLOR 14       // waterline.frag: the frame drawn from below, colour
+#define LAGOON_SURFACE_BIND_BELOW_DEPTH 15       // ... and depth
 
 #endif

@@ -242,5 +242,71 @@ TEST_F(Underwater, ALampUnderTheWaterIsSeenFromAbove) {
   EXPECT_GT(bright, dark + 40);
 }
 
+// The frame's pixel (x, y) from above (0) or below (1): whichever of the two one-sided renders it is closer
+// to.
+int side_of(const io::Image8& frame, const io::Image8& above, const io::Image8& below, uint32_t x,
+            uint32_t y) {
+  auto distance = [&](const io::Image8& other) {
+    int sum = 0;
+    for (int c = 0; c < 3; ++c) sum += std::abs(int(frame.pixel(x, y)[c]) - int(other.pixel(x, y)[c]));
+    return sum;
+  };
+  return distance(below) < distance(above) ? 1 : 0;
+}
+
+TEST_F(Underwater, TheWaterlineFollowsTheSurfaceAcrossTheLens) {
+  // A camera at the water's height looking along the sea: its near plane (3 m out and 4.8 m wide, a pixel
+  // there is 5 cm) cuts the displaced surface, which rises and falls by several pixels across it. In each
+  // column the image must switch from the view above to the view below where the near-plane point goes under
+  // the surface that WaveQuery gives there.
+  const uint32_t width = 96, height = 120;
+  scene::Scene s =
+      load_scene({"render.width=" + std::to_string(width), "render.height=" + std::to_string(height),
+                  "camera.fov_deg=90", "camera.near_m=3", "objects=[]", "time_s=6"});
+  ocean::WaveQuery query(s.ocean);
+  const double h0 = query.sample(s.time_s, 0.0, 3.0).height;
+  s.camera.position = glm::vec3(0.0f, float(h0), 0.0f);
+  s.camera.look_at = glm::vec3(0.0f, float(h0), 10.0f);
+  auto renderer = render::OceanRenderer::create(ctx(), s);
+  ASSERT_TRUE(renderer) << renderer.error().message;
+  const io::Image8 both = (*renderer)->render(s);
+  std::vector<vk::PassTime> timings = (*renderer)->timings(0);
+  EXPECT_TRUE(std::any_of(timings.begin(), timings.end(), [](const vk::PassTime& t) {
+    return t.name == "waterline";
+  })) << "the camera was not judged to be at the waterline";
+  (*renderer)->camera_medium().force(render::CameraSide::Above);
+  const io::Image8 above = (*renderer)->render(s);
+  (*renderer)->camera_medium().force(render::CameraSide::Below);
+  const io::Image8 below = (*renderer)->render(s);
+
+  const render::CameraMatrices cam = render::camera_matrices(s.camera, float(width) / float(height));
+  const glm::mat4 inv = glm::inverse(cam.view_proj);
+  auto lens_point = [&](uint32_t x, double row) {
+    const glm::vec4 p =
+        inv * glm::vec4((x + 0.5f) / (width / 2.f) - 1.f, 1.f - float(row + 0.5) / (height / 2.f), 0.f, 1.f);
+    return glm::dvec3(p) / double(p.w);
+  };
+  int checked = 0, worst = 0;
+  for (uint32_t x = 2; x < width - 2; x += 4) {
+    // Expected: the first row (from the top) whose near-plane point is under the surface.
+    int expected = -1;
+    for (uint32_t y = 0; y < height && expected < 0; ++y) {
+      const glm::dvec3 p = lens_point(x, y);
+      if (p.y < query.sample(s.time_s, p.x, p.z).height) expected = int(y);
+    }
+    int rendered = -1;
+    for (uint32_t y = 0; y < height && rendered < 0; ++y)
+      if (side_of(both, above, below, x, y) == 1 &&
+          (y + 1 >= height || side_of(both, above, below, x, y + 1) == 1))
+        rendered = int(y);
+    ASSERT_GE(expected, 0) << "column " << x << ": the lens is not cut by the surface";
+    EXPECT_NEAR(rendered, expected, 1) << "column " << x;
+    worst = std::max(worst, std::abs(rendered - expected));
+    ++checked;
+  }
+  RecordProperty("worst_rows", std::to_string(worst));
+  EXPECT_GE(checked, 20);
+}
+
 }  // namespace
 }  // namespace lagoon::test
