@@ -35,7 +35,7 @@ vec3 displacement_at(vec2 rest) {
 float water_height(vec2 xz) {
   vec2 rest = xz;
   vec3 d = displacement_at(rest);
-  for (int i = 0; i < 6; ++i) {
+  for (int i = 0; i < 3; ++i) {
     rest = xz - d.xz;
     d = displacement_at(rest);
   }

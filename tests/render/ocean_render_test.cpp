@@ -173,7 +173,9 @@ TEST_P(ShippedScenes, MatchGolden) {
                              tolerance, std::string(LAGOON_TEST_ARTIFACTS) + "/render"));
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, ShippedScenes, ::testing::Values("default", "open-ocean", "tropical-lagoon"),
+INSTANTIATE_TEST_SUITE_P(Scenes, ShippedScenes,
+                         ::testing::Values("default", "open-ocean", "tropical-lagoon", "reef-dive",
+                                           "waterline"),
                          [](const auto& info) {
                            std::string n = info.param;
                            std::replace(n.begin(), n.end(), '-', '_');
