@@ -55,6 +55,7 @@ Result<void> OceanRenderer::init(const scene::Scene& scene) {
       std::make_unique<SurfacePass>(ctx_, ocean(), *objects_, luts_, samplers_, kColorFormat, kDepthFormat);
   sky_ = std::make_unique<SkyPass>(ctx_, kColorFormat, kDepthFormat);
   caustics_ = std::make_unique<CausticsPass>(ctx_, ocean(), samplers_);
+  particles_ = std::make_unique<ParticlesPass>(ctx_, luts_, samplers_, kColorFormat, kDepthFormat);
   waterline_ = std::make_unique<WaterlinePass>(ctx_, ocean(), samplers_, kColorFormat, kDepthFormat);
   underwater_ = std::make_unique<UnderwaterPass>(ctx_, ocean(), luts_, samplers_, kColorFormat, kDepthFormat);
   camera_medium_ =
@@ -77,6 +78,8 @@ void OceanRenderer::record_frame(const FrameContext& f, const CausticsWindow& ca
   if (f.camera_side == CameraSide::Below) {
     vk::use(cmd, {color, depth}, Discard, Attachment);
     underwater_->record(f, below, color, depth);
+    vk::use(cmd, {color, depth}, Attachment, Attachment);
+    particles_->record(f, color, depth);
     return;
   }
 
@@ -95,6 +98,8 @@ void OceanRenderer::record_frame(const FrameContext& f, const CausticsWindow& ca
 
   vk::use(cmd, {waterline_->below_color(), waterline_->below_depth()}, Discard, Attachment);
   underwater_->record(f, below, waterline_->below_color(), waterline_->below_depth());
+  vk::use(cmd, {waterline_->below_color(), waterline_->below_depth()}, Attachment, Attachment);
+  particles_->record(f, waterline_->below_color(), waterline_->below_depth());
   vk::use(cmd, {waterline_->below_color(), waterline_->below_depth()}, Attachment, Sampled);
   vk::use(cmd, {color, depth}, Attachment, Attachment);
   waterline_->record(f, color, depth);

@@ -18,6 +18,7 @@
 #include "render/frame_uniforms.h"
 #include "render/passes/caustics_pass.h"
 #include "render/passes/ocean_step_pass.h"
+#include "render/passes/particles_pass.h"
 #include "render/passes/reflection_pass.h"
 #include "render/passes/refraction_pass.h"
 #include "render/passes/sky_pass.h"
@@ -124,6 +125,7 @@ class OceanRenderer {
   std::unique_ptr<UnderwaterPass> underwater_;
   std::unique_ptr<CausticsPass> caustics_;
   std::unique_ptr<WaterlinePass> waterline_;
+  std::unique_ptr<ParticlesPass> particles_;
   std::unique_ptr<CameraMedium> camera_medium_;
   VkExtent2D extent_{};  // of the passes' targets
   std::unique_ptr<OwnTargets> own_;

@@ -89,6 +89,8 @@ void read_scene(ObjectReader& r, Scene& s) {
           "glTF models placed in the world (boats, buoys, rocks), above or below the water.");
   r.array("lights", s.lights, 0, LAGOON_MAX_LIGHTS, read_light,
           "Point lights, in addition to the sun and sky.");
+  r.block("underwater", s.underwater, read_underwater,
+          "What a camera under the water sees in the water itself (docs/rendering.md, Under the surface).");
   r.block("render", s.render, read_render, "Output image settings and effects.");
   r.number("time_s", s.time_s, Bounds::between(0, 86400), "s",
            "Simulation time of the rendered frame (at most one day: wave phases are 32-bit floats).");

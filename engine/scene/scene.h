@@ -37,7 +37,22 @@ struct RenderEffects {
   bool reflection = true;  // planar reflection of what is above the water (else the sky alone)
   bool refraction = true;  // the floor and submerged objects seen through the water, coloured by the LUTs
   bool foam = true;
-  bool caustics = true;  // the sun focused by the waves on the floor and submerged objects
+  bool caustics = true;   // the sun focused by the waves on the floor and submerged objects
+  bool particles = true;  // suspended particles, seen by a camera under the water
+};
+
+// Suspended particles in the water (underwater.particles): seen by a camera under the water.
+struct Particles {
+  float density_per_m3 = 20.f;                // mean number of particles per cubic metre
+  float size_mm = 1.5f;                       // diameter
+  float albedo = 0.6f;                        // how much of the light falling on them they scatter
+  float patch_size_m = 2.f;                   // scale of the 4-D simplex noise that makes them patchy
+  glm::vec3 drift_mps{0.03f, 0.005f, 0.02f};  // how the water carries them
+  uint32_t seed = 1;                          // the same seed gives the same particles
+};
+
+struct Underwater {
+  Particles particles;
 };
 
 // Scene brightness to display (render.tone_map).
@@ -94,6 +109,7 @@ struct Scene {
   ocean::OceanParams ocean;
   optics::WaterParams water;  // water.table, seafloor.texture/file and objects[].file, when relative, are
                               // resolved against the scene file's folder
+  Underwater underwater;
   RenderSettings render;
   float time_s = 0.f;  // simulation time of the rendered frame
 };

@@ -18,9 +18,29 @@ void read_effects(ObjectReader& r, RenderEffects& e) {
       "caustics", e.caustics,
       "The sun focused by the displaced surface onto the floor and submerged objects, from above and below "
       "(docs/rendering.md, Caustics); false = the light under a flat surface.");
+  r.flag("particles", e.particles,
+         "Suspended particles in the water, seen from under the water (underwater.particles).");
 }
 
 }  // namespace
+
+void read_particles(ObjectReader& r, Particles& p) {
+  r.number("density_per_m3", p.density_per_m3, Bounds::between(0, 1000), "1/m³",
+           "Mean number of particles per cubic metre of water; 0 = none.");
+  r.number("size_mm", p.size_mm, Bounds::above_up_to(0, 100), "mm", "Particle diameter.");
+  r.number("albedo", p.albedo, Bounds::between(0, 1), "",
+           "Share of the light falling on a particle that it scatters (sand and plankton: 0.3 to 0.8).");
+  r.number("patch_size_m", p.patch_size_m, Bounds::above_up_to(0, 1000), "m",
+           "Size of the clouds the particles gather in: the scale of the 4-D simplex noise (x, y, z, t) that "
+           "sets their local density.");
+  r.vec3("drift_mps", p.drift_mps, "m/s", "Velocity of the water carrying the particles.");
+  r.integer("seed", p.seed, Bounds::between(0, 4294967295.0), "",
+            "Random seed: the same seed gives the same particles, another seed others.");
+}
+
+void read_underwater(ObjectReader& r, Underwater& u) {
+  r.block("particles", u.particles, read_particles, "Suspended particles (seed 002's 4-D simplex noise).");
+}
 
 void read_seafloor(ObjectReader& r, Seafloor& f) {
   r.choice("type", f.type,

@@ -60,6 +60,12 @@ TEST(CameraMedium, AskTheWavesNotTheMeanLevel) {
 
 class Underwater : public GpuTest {};
 
+scene::Scene load_scene_file(const std::string& name, const std::vector<std::string>& overrides) {
+  auto s = scene::load_scene(std::string(LAGOON_SOURCE_DIR) + "/scenes/" + name + ".json", overrides);
+  EXPECT_TRUE(s) << s.error().message;
+  return s ? *s : scene::Scene{};
+}
+
 optics::UnderwaterSample at_or_die(const optics::LutInputs& in, double d, double z) {
   auto s = optics::underwater_sample(in, d, z);
   EXPECT_TRUE(s) << s.error().message;
@@ -306,6 +312,40 @@ TEST_F(Underwater, TheWaterlineFollowsTheSurfaceAcrossTheLens) {
   }
   RecordProperty("worst_rows", std::to_string(worst));
   EXPECT_GE(checked, 20);
+}
+
+TEST_F(Underwater, ParticlesAreTheSameForTheSameSeedAndOthersForAnother) {
+  auto render_with = [&](std::vector<std::string> overrides) {
+    overrides.insert(overrides.begin(), {"render.width=128", "render.height=96"});
+    const scene::Scene s = load_scene_file("reef-dive", overrides);
+    auto renderer = render::OceanRenderer::create(ctx(), s);
+    EXPECT_TRUE(renderer) << renderer.error().message;
+    return (*renderer)->render(s);
+  };
+  const std::vector<std::string> dense{"underwater.particles.density_per_m3=100",
+                                       "underwater.particles.size_mm=5"};
+  auto with = [&](std::string extra) {
+    std::vector<std::string> o = dense;
+    o.push_back(std::move(extra));
+    return o;
+  };
+  const io::Image8 a = render_with(with("underwater.particles.seed=7"));
+  const io::Image8 again = render_with(with("underwater.particles.seed=7"));
+  const io::Image8 other = render_with(with("underwater.particles.seed=8"));
+  const io::Image8 none = render_with(with("render.effects.particles=false"));
+  EXPECT_EQ(a.rgba, again.rgba);
+  auto differing = [](const io::Image8& x, const io::Image8& y) {
+    size_t n = 0;
+    for (size_t i = 0; i < x.rgba.size(); i += 4)
+      if (std::abs(int(x.rgba[i]) - int(y.rgba[i])) + std::abs(int(x.rgba[i + 1]) - int(y.rgba[i + 1])) > 6)
+        ++n;
+    return n;
+  };
+  const size_t seed_change = differing(a, other), shown = differing(a, none);
+  RecordProperty("pixels", std::to_string(shown) + " show particles, " + std::to_string(seed_change) +
+                               " change with the seed");
+  EXPECT_GT(shown, 20u) << "no particles drawn";
+  EXPECT_GT(seed_change, 20u) << "another seed gives the same particles";
 }
 
 }  // namespace
