@@ -22,6 +22,25 @@ layout(std430, binding = LAGOON_SURFACE_BIND_LIGHTS) readonly buffer Lights { Po
 #include "common/caustics.glsl"
 #include "common/underwater_lamps.glsl"
 
+// Forward scattering: the light from a target that was scattered into the phase function's forward peak
+// arrives spread over a cone around the line of sight. Its share is the table's blur (optics/underwater.h);
+// the cone's half-angle, ~2° for ocean particles' forward peak, is fixed here. The albedo seen through it is
+// the refraction target's, averaged over 8 taps on a disc of that angular radius (in pixels, constant with
+// distance: what grows with distance is the share).
+const float kBlurHalfAngleRad = 0.035;
+
+vec3 blurred_albedo(ivec2 pixel, vec3 sharp, float radius_px) {
+  vec3 sum = sharp;
+  float weight = 1.0;
+  for (int k = 0; k < 8; ++k) {
+    float r = radius_px * sqrt((float(k) + 0.5) / 8.0), a = 2.3999632 * float(k);  // a Vogel disc
+    ivec2 tap = clamp(pixel + ivec2(round(r * vec2(cos(a), sin(a)))), ivec2(0), ivec2(frame.screen.xy) - 1);
+    vec4 albedo = texelFetch(refraction_albedo, tap, 0);
+    if (albedo.a > 0.5) sum += albedo.rgb, weight += 1.0;
+  }
+  return sum / weight;
+}
+
 layout(location = 0) in vec2 v_ndc;
 layout(location = 0) out vec4 out_colour;  // tone-mapped for display
 
@@ -39,12 +58,16 @@ void main() {
   // (outside any branch, where derivatives are defined).
   vec3 n = normalize(cross(dFdx(hit), dFdy(hit)));
   if (dot(n, dir) > 0.0) n = -n;
+  float pixel_angle = max(length(dFdx(dir)), 1e-6);
   vec3 radiance;
   if (albedo.a > 0.5) {
     float d = length(hit - eye);
     // The target's light at its own depth; the water's along the ray at the ray's mean depth. Both are
     // relative to the light above the water (scaled by frame.lut.w); the lamps are not.
-    radiance = (albedo.rgb * underwater_target(d, -hit.y).rgb * caustic_gain(hit.xz, -hit.y) +
+    vec4 target = underwater_target(d, -hit.y);
+    vec3 seen = albedo.rgb;
+    if (target.a > 0.01) seen = mix(seen, blurred_albedo(pixel, seen, kBlurHalfAngleRad / pixel_angle), target.a);
+    radiance = (seen * target.rgb * caustic_gain(hit.xz, -hit.y) +
                 underwater_added(d, 0.5 * (camera_depth - hit.y), dir.y)) * frame.lut.w;
     radiance += albedo.rgb * lamp_irradiance(hit, n) * underwater_transmittance(d);
     gl_FragDepth = depth;
