@@ -40,6 +40,9 @@ Result<void> upload_underwater(vk::Context& ctx, const optics::LutInputs& inputs
   out.uw_target = upload_rgba(ctx, dn, zn, as_rgba(table->target, dn, zn, 4), "underwater target");
   out.uw_down = upload_rgba(ctx, dn, zn, as_rgba(table->water_down, dn, zn, 3), "underwater water down");
   out.uw_up = upload_rgba(ctx, dn, zn, as_rgba(table->water_up, dn, zn, 3), "underwater water up");
+  const int green = (550 - optics::kLambdaMinNm) / optics::kLambdaStepNm;
+  out.scattering_550 = float(inputs.water.scattering_per_m[green]);
+  out.phase_g_550 = float(optics::phase_x1_at(inputs, green) / 3.0);
   out.d_max_m = table->d_m.back();
   out.z_max_m = table->z_m.back();
   const glm::vec4 depths = CausticsWindow{}.depths;

@@ -18,7 +18,9 @@ struct WaterLuts {
   double r_max_m = 1, h_max_m = 1;
   vk::Image uw_target, uw_down, uw_up;  // RGBA: target (RGB, blur), the water's light down, up (RGB, 1)
   double d_max_m = 1, z_max_m = 1;
-  glm::vec4 caustic_share{0};  // the sun's direct share of the light at each caustic slice's depth
+  glm::vec4 caustic_share{0};
+  float scattering_550 = 0, phase_g_550 = 0;  // σ (1/m) and the phase function's g at 550 nm  // the sun's
+                                              // direct share of the light at each caustic slice's depth
 };
 
 // Fails with the optics model's message (e.g. an unreadable custom water table).

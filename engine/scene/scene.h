@@ -37,8 +37,10 @@ struct RenderEffects {
   bool reflection = true;  // planar reflection of what is above the water (else the sky alone)
   bool refraction = true;  // the floor and submerged objects seen through the water, coloured by the LUTs
   bool foam = true;
-  bool caustics = true;   // the sun focused by the waves on the floor and submerged objects
-  bool particles = true;  // suspended particles, seen by a camera under the water
+  bool caustics = true;    // the sun focused by the waves on the floor and submerged objects
+  bool particles = true;   // suspended particles, seen by a camera under the water
+  bool shafts = true;      // light shafts: the sun's focused beams seen in the water
+  bool underwater = true;  // the water's attenuation and light along a view ray under the water
 };
 
 // Suspended particles in the water (underwater.particles): seen by a camera under the water.

@@ -20,6 +20,13 @@ void read_effects(ObjectReader& r, RenderEffects& e) {
       "(docs/rendering.md, Caustics); false = the light under a flat surface.");
   r.flag("particles", e.particles,
          "Suspended particles in the water, seen from under the water (underwater.particles).");
+  r.flag("shafts", e.shafts,
+         "Light shafts: the sun's beams, focused by the waves, seen in the water from under it (a cheap "
+         "volumetric estimate, docs/rendering.md).");
+  r.flag(
+      "underwater", e.underwater,
+      "Under the water, the water's effect on light along each view ray (attenuation, its own light, "
+      "blur); false = what lies in the water as if the water were clear (it is still lit as under water).");
 }
 
 }  // namespace

@@ -15,6 +15,7 @@ layout(binding = LAGOON_SURFACE_BIND_JACOBIAN_TERMS) uniform sampler2DArray jaco
 layout(binding = LAGOON_SURFACE_BIND_UW_TARGET) uniform sampler2D uw_target;
 layout(binding = LAGOON_SURFACE_BIND_UW_DOWN) uniform sampler2D uw_down;
 layout(binding = LAGOON_SURFACE_BIND_UW_UP) uniform sampler2D uw_up;
+layout(binding = LAGOON_SURFACE_BIND_CAUSTICS) uniform sampler2DArray caustic_map;
 
 layout(location = 0) in vec3 v_world;
 layout(location = 1) in vec2 v_rest;
@@ -22,6 +23,8 @@ layout(location = 0) out vec4 out_colour;
 
 #include "common/surface_normal.glsl"
 #include "common/underwater.glsl"
+#include "common/caustics.glsl"
+#include "common/light_shafts.glsl"
 
 vec3 mirrored_below(vec3 r) {
   float down = max(-r.y, 0.02);
@@ -50,7 +53,10 @@ void main() {
   surface = mix(surface, 0.5 * frame.water_deep.w * frame.lut.w * vec3(1.0), clamp(ss.foam, 0.0, 1.0));
   float d = length(eye - v_world);
   float camera_depth = max(-eye.y, 0.0);
-  surface = surface * underwater_transmittance(d) +
-            underwater_added(d, 0.5 * (camera_depth + max(-v_world.y, 0.0)), -v.y) * frame.lut.w;
+  if (frame.water_volume.w > 0.5)
+    surface = max(surface * underwater_transmittance(d) +
+                      (underwater_added(d, 0.5 * (camera_depth + max(-v_world.y, 0.0)), -v.y) +
+                       light_shafts(eye, -v, d, ivec2(gl_FragCoord.xy))) * frame.lut.w,
+                  vec3(0.0));
   out_colour = vec4(display_encode(frame, surface), 1.0);
 }

@@ -21,6 +21,7 @@ layout(std430, binding = LAGOON_SURFACE_BIND_LIGHTS) readonly buffer Lights { Po
 #include "common/underwater.glsl"
 #include "common/caustics.glsl"
 #include "common/underwater_lamps.glsl"
+#include "common/light_shafts.glsl"
 
 // Forward scattering: the light from a target that was scattered into the phase function's forward peak
 // arrives spread over a cone around the line of sight. Its share is the table's blur (optics/underwater.h);
@@ -59,24 +60,29 @@ void main() {
   vec3 n = normalize(cross(dFdx(hit), dFdy(hit)));
   if (dot(n, dir) > 0.0) n = -n;
   float pixel_angle = max(length(dFdx(dir)), 1e-6);
+  bool volume = frame.water_volume.w > 0.5;  // render.effects.underwater
   vec3 radiance;
   if (albedo.a > 0.5) {
     float d = length(hit - eye);
+    vec4 target = underwater_target(volume ? d : 0.0, -hit.y);
+    vec3 seen = albedo.rgb;
+    if (volume && target.a > 0.01) seen = mix(seen, blurred_albedo(pixel, seen, kBlurHalfAngleRad / pixel_angle), target.a);
     // The target's light at its own depth; the water's along the ray at the ray's mean depth. Both are
     // relative to the light above the water (scaled by frame.lut.w); the lamps are not.
-    vec4 target = underwater_target(d, -hit.y);
-    vec3 seen = albedo.rgb;
-    if (target.a > 0.01) seen = mix(seen, blurred_albedo(pixel, seen, kBlurHalfAngleRad / pixel_angle), target.a);
-    radiance = (seen * target.rgb * caustic_gain(hit.xz, -hit.y) +
-                underwater_added(d, 0.5 * (camera_depth - hit.y), dir.y)) * frame.lut.w;
-    radiance += albedo.rgb * lamp_irradiance(hit, n) * underwater_transmittance(d);
+    radiance = seen * target.rgb * caustic_gain(hit.xz, -hit.y);
+    if (volume) radiance += underwater_added(d, 0.5 * (camera_depth - hit.y), dir.y) + light_shafts(eye, dir, d, pixel);
+    radiance *= frame.lut.w;
+    radiance += albedo.rgb * lamp_irradiance(hit, n) * (volume ? underwater_transmittance(d) : vec3(1.0));
     gl_FragDepth = depth;
   } else {
     // Nothing within reach: the water to the end of the table (α below 1e-3 there for every Jerlov type).
     float d = frame.underwater.x;
     float end_depth = max(camera_depth - d * dir.y, 0.0);
-    radiance = underwater_added(d, 0.5 * (camera_depth + end_depth), dir.y) * frame.lut.w;
+    radiance = volume ? (underwater_added(d, 0.5 * (camera_depth + end_depth), dir.y) + light_shafts(eye, dir, d, pixel)) *
+                            frame.lut.w
+                      : vec3(0.0);
     gl_FragDepth = 1.0;
   }
+  radiance = max(radiance, vec3(0.0));  // shafts darken where the caustics do, never below black
   out_colour = vec4(display_encode(frame, radiance), 1.0);
 }

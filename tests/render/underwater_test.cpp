@@ -396,8 +396,71 @@ TEST_F(UnderwaterBlur, TurbidWaterBlursTheFloorAtTenMetresClearWaterDoesNot) {
     RecordProperty(std::string("kept_") + water, std::to_string(far / near) + " (" + std::to_string(far) +
                                                      " at 10 m, " + std::to_string(near) + " at 1 m)");
   }
-  EXPECT_GT(kept["jerlov-I"], 0.9);  // measured 0.98
+  EXPECT_GT(kept["jerlov-I"], 0.9);   // measured 0.98
   EXPECT_LT(kept["jerlov-1C"], 0.8);  // measured 0.66; 1.01 without the blur
+}
+
+// Mean absolute difference (levels, all channels) between two frames.
+double mean_difference(const io::Image8& a, const io::Image8& b) {
+  double sum = 0;
+  for (size_t i = 0; i < a.rgba.size(); ++i)
+    if (i % 4 != 3) sum += std::abs(int(a.rgba[i]) - int(b.rgba[i]));
+  return sum / (a.rgba.size() * 3 / 4);
+}
+
+TEST_F(Underwater, LightShaftsComeFromTheFocusedSunAndFaceIt) {
+  // 6 m down in the reef scene, looking level towards the sun and away from it; shafts on and off.
+  auto frame = [&](const std::string& look_at, bool shafts, const char* wind) {
+    const scene::Scene s = load_scene_file(
+        "reef-dive",
+        {"render.width=96", "render.height=64", "camera.position=[0,-6,30]", "camera.look_at=" + look_at,
+         "objects=[]", "render.effects.particles=false", std::string("ocean.spectrum.wind_speed_mps=") + wind,
+         std::string("render.effects.shafts=") + (shafts ? "true" : "false")});
+    auto renderer = render::OceanRenderer::create(ctx(), s);
+    EXPECT_TRUE(renderer) << renderer.error().message;
+    return (*renderer)->render(s);
+  };
+  const std::string towards = "[3.4,-5,20.6]", away = "[-3.4,-5,39.4]";  // the sun's azimuth is 160°
+  const double facing = mean_difference(frame(towards, true, "5"), frame(towards, false, "5"));
+  const double behind = mean_difference(frame(away, true, "5"), frame(away, false, "5"));
+  RecordProperty("shafts",
+                 std::to_string(facing) + " levels facing the sun, " + std::to_string(behind) + " away");
+  EXPECT_GT(facing, 0.3) << "no shafts towards the sun";
+  EXPECT_GT(facing, 2.0 * behind)
+      << "the forward-peaked phase function should favour the view towards the sun";
+  // Without waves nothing is focused: no shafts at all (Phillips at a breeze: a flat sea).
+  const scene::Scene calm_on = load_scene_file(
+      "reef-dive", {"render.width=96", "render.height=64", "camera.look_at=" + towards,
+                    "camera.position=[0,-6,30]", "objects=[]", "render.effects.particles=false",
+                    "ocean.spectrum.type=phillips", "ocean.spectrum.wind_speed_mps=0.05"});
+  scene::Scene calm_off = calm_on;
+  calm_off.render.effects.shafts = false;
+  auto renderer = render::OceanRenderer::create(ctx(), calm_on);
+  ASSERT_TRUE(renderer) << renderer.error().message;
+  EXPECT_LT(mean_difference((*renderer)->render(calm_on), (*renderer)->render(calm_off)), 0.05);
+}
+
+TEST_F(Underwater, WithTheWaterSwitchedOffTheFloorIsLitButNotSeenThroughWater) {
+  // render.effects.underwater = false: the floor 9 m down keeps the light that reaches its depth, target(0,
+  // 9), but nothing is lost or added between it and the camera.
+  const scene::Scene s = load_scene(
+      {"camera.position=[0,-3,0]", "camera.look_at=[0,-7,10]", "camera.fov_deg=70", "render.width=160",
+       "render.height=120", "seafloor.type=slope", "seafloor.depth_near_m=9", "seafloor.depth_far_m=9",
+       "seafloor.albedo=[1,1,1]", "seafloor.texture=\"\"", "objects=[]", "lights=[]", "render.tone_map=clamp",
+       "render.gamma=1", "render.exposure=1.5", "water.type=jerlov-3C", "render.effects.caustics=false",
+       "render.effects.underwater=false"});
+  auto renderer = render::OceanRenderer::create(ctx(), s);
+  ASSERT_TRUE(renderer) << renderer.error().message;
+  const io::Image8 image = (*renderer)->render(s);
+  auto inputs = optics::lut_inputs(s.water, s.sun.elevation_deg);
+  ASSERT_TRUE(inputs);
+  const glm::dvec3 expected = glm::clamp(
+      double(render::sky_light(s.sun).light_scale) * at_or_die(*inputs, 0.0, 9.0).target * 1.5, 0.0, 1.0);
+  for (uint32_t y : {80u, 110u})
+    for (uint32_t x : {30u, 130u})
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(image.pixel(x, y)[c] / 255.0, expected[c], std::max(0.05 * expected[c], 2.5 / 255))
+            << x << "," << y << " channel " << c;
 }
 
 }  // namespace
