@@ -39,7 +39,7 @@ struct RenderEffects {
   bool foam = true;
   bool caustics = true;    // the sun focused by the waves on the floor and submerged objects
   bool particles = true;   // suspended particles, seen by a camera under the water
-  bool shafts = true;      // light shafts: the sun's focused beams seen in the water
+  bool shafts = false;     // light shafts: the sun's focused beams in the water (costly on a CPU device)
   bool underwater = true;  // the water's attenuation and light along a view ray under the water
 };
 

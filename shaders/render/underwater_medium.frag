@@ -26,15 +26,15 @@ layout(std430, binding = LAGOON_SURFACE_BIND_LIGHTS) readonly buffer Lights { Po
 // Forward scattering: the light from a target that was scattered into the phase function's forward peak
 // arrives spread over a cone around the line of sight. Its share is the table's blur (optics/underwater.h);
 // the cone's half-angle, ~2° for ocean particles' forward peak, is fixed here. The albedo seen through it is
-// the refraction target's, averaged over 8 taps on a disc of that angular radius (in pixels, constant with
+// the refraction target's, averaged over 4 taps on a disc of that angular radius (in pixels, constant with
 // distance: what grows with distance is the share).
 const float kBlurHalfAngleRad = 0.035;
 
 vec3 blurred_albedo(ivec2 pixel, vec3 sharp, float radius_px) {
   vec3 sum = sharp;
   float weight = 1.0;
-  for (int k = 0; k < 8; ++k) {
-    float r = radius_px * sqrt((float(k) + 0.5) / 8.0), a = 2.3999632 * float(k);  // a Vogel disc
+  for (int k = 0; k < 4; ++k) {
+    float r = radius_px * sqrt((float(k) + 0.5) / 4.0), a = 2.3999632 * float(k);  // a Vogel disc
     ivec2 tap = clamp(pixel + ivec2(round(r * vec2(cos(a), sin(a)))), ivec2(0), ivec2(frame.screen.xy) - 1);
     vec4 albedo = texelFetch(refraction_albedo, tap, 0);
     if (albedo.a > 0.5) sum += albedo.rgb, weight += 1.0;

@@ -19,7 +19,10 @@
 #define LAGOON_SURFACE_BIND_UW_DOWN 11           // ... the water's light looking down
 #define LAGOON_SURFACE_BIND_UW_UP 12             // ... looking up
 #define LAGOON_SURFACE_BIND_CAUSTICS 13          // caustic map (shared/caustics.h), sampler2DArray
-#define LAGOON_SURFACE_BIND_BELOW_COLOR 14       // waterline.frag: the frame drawn from below, colour
-#define LAGOON_SURFACE_BIND_BELOW_DEPTH 15       // ... and depth
+// Specialisation constant of the shaders that include common/light_shafts.glsl: shafts compiled in (1) or
+// not.
+#define LAGOON_UNDERWATER_SPEC_SHAFTS 0
+#define LAGOON_SURFACE_BIND_BELOW_COLOR 14  // waterline.frag: the frame drawn from below, colour
+#define LAGOON_SURFACE_BIND_BELOW_DEPTH 15  // ... and depth
 
 #endif

@@ -9,24 +9,29 @@ namespace lagoon::render {
 
 UnderwaterPass::UnderwaterPass(vk::Context& ctx, const ocean::GpuOcean& ocean, const WaterLuts& luts,
                                const Samplers& samplers, VkFormat color_format, VkFormat depth_format)
-    : ocean_(ocean),
-      luts_(luts),
-      samplers_(samplers),
-      // Every pixel, writing the depth of what it shows (the far plane where it shows only water).
-      medium_(vk::GraphicsPipeline::create(ctx, {.vertex = &shaders::render_fullscreen_vert,
-                                                 .fragment = &shaders::render_underwater_medium_frag,
-                                                 .color_formats = {color_format},
-                                                 .depth_format = depth_format,
-                                                 .depth_test = true,
-                                                 .depth_write = true,
-                                                 .depth_compare = VK_COMPARE_OP_ALWAYS})),
-      // The surface mesh with either winding: from below its triangles face away from the camera.
-      surface_(vk::GraphicsPipeline::create(ctx, {.vertex = &shaders::render_ocean_surface_vert,
-                                                  .fragment = &shaders::render_ocean_surface_below_frag,
-                                                  .color_formats = {color_format},
-                                                  .depth_format = depth_format,
-                                                  .depth_test = true,
-                                                  .depth_write = true})) {}
+    : ocean_(ocean), luts_(luts), samplers_(samplers) {
+  for (uint32_t shafts = 0; shafts < 2; ++shafts) {
+    const std::vector<vk::SpecConstant> spec{{LAGOON_UNDERWATER_SPEC_SHAFTS, shafts}};
+    // Every pixel, writing the depth of what it shows (the far plane where it shows only water).
+    medium_[shafts] = vk::GraphicsPipeline::create(ctx, {.vertex = &shaders::render_fullscreen_vert,
+                                                         .fragment = &shaders::render_underwater_medium_frag,
+                                                         .color_formats = {color_format},
+                                                         .depth_format = depth_format,
+                                                         .depth_test = true,
+                                                         .depth_write = true,
+                                                         .depth_compare = VK_COMPARE_OP_ALWAYS,
+                                                         .spec = spec});
+    // The surface mesh with either winding: from below its triangles face away from the camera.
+    surface_[shafts] =
+        vk::GraphicsPipeline::create(ctx, {.vertex = &shaders::render_ocean_surface_vert,
+                                           .fragment = &shaders::render_ocean_surface_below_frag,
+                                           .color_formats = {color_format},
+                                           .depth_format = depth_format,
+                                           .depth_test = true,
+                                           .depth_write = true,
+                                           .spec = spec});
+  }
+}
 
 std::vector<vk::Binding> UnderwaterPass::table_bindings(const FrameContext& frame) const {
   return {vk::bind(LAGOON_SURFACE_BIND_FRAME, frame.uniforms()),
@@ -48,11 +53,12 @@ void UnderwaterPass::record(const FrameContext& frame, const Inputs& in, vk::Tar
       vk::bind(LAGOON_SURFACE_BIND_REFRACTION_DEPTH, sampled(in.refraction_depth, samplers_.nearest)));
   medium.push_back(vk::bind(LAGOON_SURFACE_BIND_CAUSTICS, sampled(in.caustics, samplers_.clamp)));
   medium.push_back(vk::bind(LAGOON_SURFACE_BIND_LIGHTS, frame.slot.lights));
-  vk::draw(frame.cmd, medium_, medium, nullptr, 0, 3);
+  const size_t shafts = frame.scene.render.effects.shafts ? 1 : 0;
+  vk::draw(frame.cmd, medium_[shafts], medium, nullptr, 0, 3);
   std::vector<vk::Binding> surface = table_bindings(frame);
   surface.push_back(vk::bind(LAGOON_SURFACE_BIND_CAUSTICS, sampled(in.caustics, samplers_.clamp)));
   for (vk::Binding& b : cascade_bindings(ocean_, samplers_)) surface.push_back(b);
-  vk::draw_indexed(frame.cmd, surface_, surface, frame.slot.surface_indices.handle(),
+  vk::draw_indexed(frame.cmd, surface_[shafts], surface, frame.slot.surface_indices.handle(),
                    frame.slot.surface_index_count);
   vk::end_rendering(frame.cmd);
 }

@@ -3,6 +3,8 @@
 // then the surface from below with Snell's window and total internal reflection (ocean_surface_below.frag).
 // Light and colour come from the underwater tables (optics/underwater.h) of the scene's water.
 #pragma once
+#include <array>
+
 #include "ocean/gpu/gpu_ocean.h"
 #include "render/frame_context.h"
 #include "render/samplers.h"
@@ -34,7 +36,8 @@ class UnderwaterPass {
   const ocean::GpuOcean& ocean_;
   const WaterLuts& luts_;
   const Samplers& samplers_;
-  vk::GraphicsPipeline medium_, surface_;
+  // [0]: without light shafts, [1]: with (render.effects.shafts), as a specialisation constant.
+  std::array<vk::GraphicsPipeline, 2> medium_, surface_;
 };
 
 }  // namespace lagoon::render
