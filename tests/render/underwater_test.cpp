@@ -397,7 +397,7 @@ TEST_F(UnderwaterBlur, TurbidWaterBlursTheFloorAtTenMetresClearWaterDoesNot) {
                                                      " at 10 m, " + std::to_string(near) + " at 1 m)");
   }
   EXPECT_GT(kept["jerlov-I"], 0.9);   // measured 0.98
-  EXPECT_LT(kept["jerlov-1C"], 0.8);  // measured 0.66; 1.01 without the blur
+  EXPECT_LT(kept["jerlov-1C"], 0.8);  // measured 0.70; 1.01 without the blur
 }
 
 // Mean absolute difference (levels, all channels) between two frames.
