@@ -4,6 +4,7 @@
 #ifndef LAGOON_SHARED_CAUSTICS_H
 #define LAGOON_SHARED_CAUSTICS_H
 #include "shared/interop.h"
+#include "shared/surface.h"
 
 #define LAGOON_CAUSTICS_SLICES 4     // depths per frame (FrameUniforms::caustic_depths)
 #define LAGOON_CAUSTICS_CELLS 256    // destination cells per side of the window
@@ -11,10 +12,12 @@
 #define LAGOON_CAUSTICS_ONE 65536.0  // fixed-point unit of the accumulation (one ray's energy)
 
 #define LAGOON_CAUSTICS_BIND_FRAME 0
-#define LAGOON_CAUSTICS_BIND_DISPLACEMENT 1     // sampler2DArray[LAGOON_MAX_CASCADES]
-#define LAGOON_CAUSTICS_BIND_NORMAL_JACOBIAN 2  // sampler2DArray[LAGOON_MAX_CASCADES]
-#define LAGOON_CAUSTICS_BIND_ACCUM 3            // uint[SLICES][CELLS][CELLS], fixed point
-#define LAGOON_CAUSTICS_BIND_MAP 4              // r32f image2DArray, one layer per slice
+// The cascades in the surface shaders' slots, so render/cascade_bindings.h serves this pass too.
+#define LAGOON_CAUSTICS_BIND_DISPLACEMENT LAGOON_SURFACE_BIND_DISPLACEMENT  // sampler2DArray[MAX_CASCADES]
+#define LAGOON_CAUSTICS_BIND_NORMAL_JACOBIAN \
+  LAGOON_SURFACE_BIND_NORMAL_JACOBIAN  // sampler2DArray[MAX_CASCADES]
+#define LAGOON_CAUSTICS_BIND_ACCUM 3   // uint[SLICES][CELLS][CELLS], fixed point
+#define LAGOON_CAUSTICS_BIND_MAP 4     // r32f image2DArray, one layer per slice
 
 LAGOON_GPU_BEGIN
 struct CausticsPush {

@@ -6,7 +6,9 @@
 #include <glm/geometric.hpp>
 
 #include "lagoon_shaders/shaders.h"
+#include "render/cascade_bindings.h"
 #include "shared/limits.h"
+#include "shared/surface.h"
 #include "vk/barriers.h"
 #include "vk/transfer.h"
 
@@ -70,13 +72,9 @@ void CausticsPass::record(const FrameContext& frame, const CausticsWindow& windo
   vk::GpuScope scope(frame.timer(), frame.cmd, "caustics");
   std::vector<vk::Binding> splat{vk::bind(LAGOON_CAUSTICS_BIND_FRAME, frame.uniforms()),
                                  vk::bind(LAGOON_CAUSTICS_BIND_ACCUM, accum_)};
-  for (uint32_t slot = 0; slot < LAGOON_MAX_CASCADES; ++slot) {
-    const ocean::CascadeTextures t = ocean_.cascade(std::min(slot, ocean_.cascade_count() - 1));
-    splat.push_back(
-        vk::bind(LAGOON_CAUSTICS_BIND_DISPLACEMENT, sampled(*t.displacement, samplers_.repeat), slot));
-    splat.push_back(
-        vk::bind(LAGOON_CAUSTICS_BIND_NORMAL_JACOBIAN, sampled(*t.normal_jacobian, samplers_.repeat), slot));
-  }
+  // The surface shaders' cascade slots (shared/caustics.h names them the same), without the Jacobian terms.
+  for (const vk::Binding& b : cascade_bindings(ocean_, samplers_))
+    if (b.binding != LAGOON_SURFACE_BIND_JACOBIAN_TERMS) splat.push_back(b);
   const gpu::CausticsPush push{
       .source = glm::vec4(window.source_origin, float(window.source_cells.x), float(window.source_cells.y))};
   vk::dispatch(frame.cmd, splat_, splat, &push, sizeof(push),
