@@ -82,9 +82,9 @@ gpu::FrameUniforms frame_uniforms(const FrameInputs& in) {
       .caustics = glm::vec4(in.caustics.origin, in.caustics.cell_m, float(in.caustics.cells)),
       .caustic_depths = in.caustics.depths,
       .caustic_share = in.luts.caustic_share,
-      .water_volume =
-          glm::vec4(in.luts.scattering_550, in.luts.phase_g_550, scene.render.effects.shafts ? 1.0f : 0.0f,
-                    scene.render.effects.underwater ? 1.0f : 0.0f)};
+      .water_volume = glm::vec4(in.luts.scattering_550, in.luts.phase_g_550, 0.0f,
+                                scene.render.effects.underwater ? 1.0f : 0.0f),
+      .underwater_top = glm::vec4(in.luts.underwater_top, 0.0f)};
   for (uint32_t c = 0; c < drawn; ++c) {
     const ocean::CascadeTextures tex = in.ocean.cascade(c);
     f.cascade_patch[c] = float(tex.patch_size_m);

@@ -38,6 +38,7 @@ Result<void> upload_underwater(vk::Context& ctx, const optics::LutInputs& inputs
   if (!table) return table.error();
   const uint32_t dn = table->d_count, zn = table->z_count;
   out.uw_target = upload_rgba(ctx, dn, zn, as_rgba(table->target, dn, zn, 4), "underwater target");
+  out.underwater_top = glm::vec3(table->target[0], table->target[1], table->target[2]);
   out.uw_down = upload_rgba(ctx, dn, zn, as_rgba(table->water_down, dn, zn, 3), "underwater water down");
   out.uw_up = upload_rgba(ctx, dn, zn, as_rgba(table->water_up, dn, zn, 3), "underwater water up");
   const int green = (550 - optics::kLambdaMinNm) / optics::kLambdaStepNm;

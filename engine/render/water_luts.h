@@ -19,6 +19,7 @@ struct WaterLuts {
   vk::Image uw_target, uw_down, uw_up;  // RGBA: target (RGB, blur), the water's light down, up (RGB, 1)
   double d_max_m = 1, z_max_m = 1;
   glm::vec4 caustic_share{0};
+  glm::vec3 underwater_top{1};  // the target table at (0, 0), which every transmittance divides by
   float scattering_550 = 0, phase_g_550 = 0;  // σ (1/m) and the phase function's g at 550 nm  // the sun's
                                               // direct share of the light at each caustic slice's depth
 };

@@ -22,11 +22,11 @@ vec3 underwater_added(float d, float z, float dir_y) {
 }
 
 // The share of light leaving a point just below the surface with the spectrum of the light above that still
-// arrives after d metres: the target's fall-off with distance at depth 0.
+// arrives after d metres: the target's fall-off with distance at depth 0 (its value at d = 0 is constant,
+// so it comes with the frame instead of a lookup per call).
 vec3 underwater_transmittance(float d) {
-  vec3 near_rgb = texture(uw_target, underwater_uv(0.0, 0.0)).rgb;
   vec3 far_rgb = texture(uw_target, underwater_uv(d, 0.0)).rgb;
-  return far_rgb / max(near_rgb, vec3(1e-6));
+  return far_rgb / max(frame.underwater_top.rgb, vec3(1e-6));
 }
 
 #endif

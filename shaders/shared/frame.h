@@ -41,7 +41,10 @@ struct FrameUniforms {
   vec4 caustic_depths;  // depth m of each caustic slice, increasing
   vec4 caustic_share;   // the sun's direct share of the light at each slice's depth (optics/underwater.h)
   vec4 water_volume;    // x = scattering coefficient σ at 550 nm (1/m), y = its phase function's g,
-                        // z = light shafts on (1), w = the water's effect along view rays on (1)
+                        // z unused (shafts are a specialisation constant), w = the water's effect along view
+                        // rays on (1)
+  vec4 underwater_top;  // rgb = target(0, 0) of the underwater tables: the light just under the surface, w
+                        // unused
 };
 
 // One point light of the scene's "lights" block (storage buffer, std430).
@@ -52,7 +55,7 @@ struct PointLightGpu {
 LAGOON_GPU_END
 
 #ifdef __cplusplus
-LAGOON_CHECK_SIZE(FrameUniforms, 512);
+LAGOON_CHECK_SIZE(FrameUniforms, 528);
 LAGOON_CHECK_SIZE(PointLightGpu, 32);
 LAGOON_CHECK_OFFSET(FrameUniforms, camera_pos, 128);
 LAGOON_CHECK_OFFSET(FrameUniforms, water_deep, 208);
