@@ -3,6 +3,7 @@
 
   buoy.gltf + buoy.bin   navigation buoy, 2.2 m tall, waterline at y = 0
   boat.gltf + boat.bin   5 m open motor boat, waterline at y = 0, bow toward +z
+  rocks.gltf + rocks.bin three boulders bedded in sand, the sand at y = 0
   sand.png               256x256 seamlessly tiling RGBA8 sand texture
   README.md              what each asset is and how to regenerate it
 
@@ -348,6 +349,7 @@ MATERIALS = {
     "boat_deck": ((196, 194, 184), 0.85),
     "boat_windscreen": ((34, 42, 52), 0.1),
     "boat_motor": ((36, 36, 40), 0.4),
+    "rock_grey": ((118, 112, 100), 0.9),
 }
 
 
@@ -395,6 +397,109 @@ def build_buoy():
     nodes = [("float", flt, None), ("mast", mast, None), ("cage", cage, None),
              ("topmark", top, [0.0, 1.98, 0.0])]
     return "buoy", nodes
+
+
+# --------------------------------------------------------------------------------------------------------
+# Rocks: three boulders for a sandy floor (a cluster; place the root at the sand). Each is an icosphere
+# (3 subdivisions) stretched to an ellipsoid, cut by a few random planes so it has the broken faces of real
+# stone, roughened by smooth random bumps, and flattened 0.25 m below y = 0 so it sits buried in the sand.
+# Normals are area-weighted vertex averages (one smooth shell per rock). Seeded, so byte-identical.
+
+ROCK_SEED = 1913
+ROCK_SUBDIV = 3
+ROCKS = [  # node, translation, half-extents (x, y, z) in m
+    ("rock_large", [0.0, 0.0, 0.0], (1.6, 1.1, 1.3)),
+    ("rock_medium", [2.3, 0.0, 0.9], (0.9, 0.7, 0.8)),
+    ("rock_small", [-1.4, 0.0, 1.9], (0.55, 0.4, 0.5)),
+]
+ROCK_BURY = 0.25
+
+
+def icosphere(levels):
+    """Unit icosphere: (points, triangles) with shared vertices, counter-clockwise seen from outside."""
+    t = (1.0 + math.sqrt(5.0)) / 2.0
+    pts = [normalize(p) for p in [(-1, t, 0), (1, t, 0), (-1, -t, 0), (1, -t, 0), (0, -1, t), (0, 1, t),
+                                  (0, -1, -t), (0, 1, -t), (t, 0, -1), (t, 0, 1), (-t, 0, -1), (-t, 0, 1)]]
+    tris = [(0, 11, 5), (0, 5, 1), (0, 1, 7), (0, 7, 10), (0, 10, 11), (1, 5, 9), (5, 11, 4), (11, 10, 2),
+            (10, 7, 6), (7, 1, 8), (3, 9, 4), (3, 4, 2), (3, 2, 6), (3, 6, 8), (3, 8, 9), (4, 9, 5),
+            (2, 4, 11), (6, 2, 10), (8, 6, 7), (9, 8, 1)]
+    for _ in range(levels):
+        mid, out = {}, []
+
+        def midpoint(a, b):
+            key = (min(a, b), max(a, b))
+            if key not in mid:
+                pts.append(normalize(mul(add(pts[a], pts[b]), 0.5)))
+                mid[key] = len(pts) - 1
+            return mid[key]
+        for a, b, c in tris:
+            ab, bc, ca = midpoint(a, b), midpoint(b, c), midpoint(c, a)
+            out += [(a, ab, ca), (b, bc, ab), (c, ca, bc), (ab, bc, ca)]
+        tris = out
+    return pts, tris
+
+
+def rock_radius(d, cuts, bumps):
+    """Distance from the centre to the rock's surface along unit direction d (unit-sphere space)."""
+    r = 1.0
+    for n, dist in cuts:  # a plane at distance dist along n caps the ray where it crosses the plane
+        c = dot(d, n)
+        if c > 1e-6:
+            r = min(r, dist / c)
+    for centre, amp, width in bumps:
+        r += amp * math.exp((dot(d, centre) - 1.0) / width)
+    return r
+
+
+def random_unit(rng):
+    while True:
+        v = (2.0 * rng.random() - 1.0, 2.0 * rng.random() - 1.0, 2.0 * rng.random() - 1.0)
+        if 0.01 < dot(v, v) <= 1.0:
+            return normalize(v)
+
+
+def rock_mesh(name, half, rng):
+    cuts = [(random_unit(rng), 0.7 + 0.15 * rng.random()) for _ in range(11)]
+    bumps = [(random_unit(rng), 0.06 * (2.0 * rng.random() - 1.0), 0.02 + 0.04 * rng.random())
+             for _ in range(40)]
+    dirs, tris = icosphere(ROCK_SUBDIV)
+    pts = []
+    for d in dirs:
+        r = rock_radius(d, cuts, bumps)
+        # The ellipsoid's centre sits at y = half_y - ROCK_BURY * 2 so the flattened base is buried.
+        p = (half[0] * r * d[0], half[1] * r * d[1] + half[1] - 2.0 * ROCK_BURY, half[2] * r * d[2])
+        pts.append(qp((p[0], max(p[1], -ROCK_BURY), p[2])))
+    # The flat base is a hard edge: its faces get their own vertices facing down, and the sides' normals
+    # average the side faces only.
+    on_base = [p[1] == -ROCK_BURY for p in pts]
+    side = [t for t in tris if not all(on_base[k] for k in t)]
+    nrm = [(0.0, 0.0, 0.0)] * len(pts)
+    for a, b, c in side:
+        face = cross(sub(pts[b], pts[a]), sub(pts[c], pts[a]))  # length = 2 x area: area weighting
+        for k in (a, b, c):
+            nrm[k] = add(nrm[k], face)
+    mesh = Mesh(name)
+    prim = mesh.prim("rock_grey")
+
+    def uv(p):
+        return (p[0] + 0.5 * p[2], p[1] + 0.5 * p[2])
+    ids = [prim.vert(p, n, uv(p)) for p, n in zip(pts, nrm)]
+    base = {}
+    for t in tris:
+        if t in side:
+            prim.tri(*[ids[k] for k in t])
+            continue
+        for k in t:
+            if k not in base:
+                base[k] = prim.vert(pts[k], (0.0, -1.0, 0.0), (pts[k][0], pts[k][2]))
+        prim.tri(*[base[k] for k in t])
+    return mesh
+
+
+def build_rocks():
+    rng = random.Random(ROCK_SEED)
+    nodes = [(name, rock_mesh(name, half, rng), offset) for name, offset, half in ROCKS]
+    return "rocks", nodes
 
 
 # --------------------------------------------------------------------------------------------------------
@@ -909,6 +1014,20 @@ def expect_boat(s):
             raise CheckError("boat: expected " + what)
 
 
+def expect_rocks(s):
+    m = {x["node"]: x for x in s["meshes"]}
+    conds = [(2000 <= s["triangles"] <= 6000, "2k-6k triangles"),
+             (all(near(x["lo"][1], -ROCK_BURY, 1e-6) for x in s["meshes"]), "every base flat at y = -0.25"),
+             (1.0 <= m["rock_large"]["hi"][1] <= 1.8, "the large rock 1.0-1.8 m above the sand"),
+             (m["rock_small"]["hi"][1] < m["rock_medium"]["hi"][1] < m["rock_large"]["hi"][1],
+              "three sizes"),
+             (all(x["volume"] > 0.1 for x in s["meshes"]), "solid rocks"),
+             (s["bin_bytes"] < 300000, ".bin under 300 KB")]
+    for ok, what in conds:
+        if not ok:
+            raise CheckError("rocks: expected " + what)
+
+
 def check_png(files, fresh_rows):
     w, h, rows = decode_png(files["sand.png"])
     if (w, h) != (SAND_SIZE, SAND_SIZE):
@@ -939,7 +1058,7 @@ def fmt_box(lo, hi):
     return "x %.2f..%.2f, y %.2f..%.2f, z %.2f..%.2f" % (lo[0], hi[0], lo[1], hi[1], lo[2], hi[2])
 
 
-def readme(files, buoy, boat):
+def readme(files, buoy, boat, rocks):
     def table(s):
         lines = ["| node | mesh | triangles | bounds (m, model space) | materials (primitive order) |",
                  "|---|---|---|---|---|"]
@@ -1022,6 +1141,21 @@ scene (+z = north) the unrotated boat heads north.
 Materials:
 %(boat_mats)s
 
+## rocks.gltf / rocks.bin
+
+Three boulders for a sandy sea floor, as one cluster (rocks.gltf %(rocks_gltf)d bytes, rocks.bin
+%(rocks_bin)d bytes). **y = 0 is the sand**: place the root node on the floor (e.g. at y = -10 for a floor
+10 m down). Each rock is a closed, smooth shell whose flat base lies 0.25 m below y = 0, so it looks
+bedded in the sand rather than resting on it. The shapes are icospheres stretched to ellipsoids, cut by a
+few random planes (the broken faces of stone) and roughened by smooth random bumps, from a fixed seed.
+The largest rock (at the origin) reaches %(rock_top).2f m above the sand. %(rocks_tris)d triangles,
+%(rocks_verts)d vertices. Bounds: %(rocks_box)s.
+
+%(rocks_table)s
+
+Materials:
+%(rocks_mats)s
+
 ## sand.png
 
 A 256 x 256 RGBA8 sand texture (alpha 255 everywhere) that tiles seamlessly in both directions: pale
@@ -1037,7 +1171,12 @@ tile per 2 to 4 m of sea floor or beach.
         "boat_gltf": len(files["boat.gltf"]), "boat_bin": len(files["boat.bin"]),
         "boat_tris": boat["triangles"], "boat_verts": boat["vertices"],
         "boat_box": fmt_box(boat["lo"], boat["hi"]),
-        "boat_table": table(boat), "boat_mats": mats(boat)}
+        "boat_table": table(boat), "boat_mats": mats(boat),
+        "rocks_gltf": len(files["rocks.gltf"]), "rocks_bin": len(files["rocks.bin"]),
+        "rock_top": [m for m in rocks["meshes"] if m["node"] == "rock_large"][0]["hi"][1],
+        "rocks_tris": rocks["triangles"], "rocks_verts": rocks["vertices"],
+        "rocks_box": fmt_box(rocks["lo"], rocks["hi"]),
+        "rocks_table": table(rocks), "rocks_mats": mats(rocks)}
 
 
 # --------------------------------------------------------------------------------------------------------
@@ -1045,19 +1184,20 @@ tile per 2 to 4 m of sea floor or beach.
 
 def generate():
     files = {}
-    for build in (build_buoy, build_boat):
+    for build in (build_buoy, build_boat, build_rocks):
         root_name, nodes = build()
         files.update(write_gltf(root_name, root_name, nodes))
     rows = sand_pixels()
     files["sand.png"] = encode_png(rows, SAND_SIZE, SAND_SIZE)
     buoy = check_gltf("buoy", files, expect_buoy)
     boat = check_gltf("boat", files, expect_boat)
-    files["README.md"] = readme(files, buoy, boat).encode("utf-8")
-    return files, rows, {"buoy": buoy, "boat": boat}
+    rocks = check_gltf("rocks", files, expect_rocks)
+    files["README.md"] = readme(files, buoy, boat, rocks).encode("utf-8")
+    return files, rows, {"buoy": buoy, "boat": boat, "rocks": rocks}
 
 
 def summary(stats, png):
-    for name in ("buoy", "boat"):
+    for name in ("buoy", "boat", "rocks"):
         s = stats[name]
         print("%s.gltf: %d triangles, %d vertices, %s.bin %d bytes, bounds %s"
               % (name, s["triangles"], s["vertices"], name, s["bin_bytes"], fmt_box(s["lo"], s["hi"])))
@@ -1111,7 +1251,8 @@ def main(argv):
     try:
         if len(disk) == len(files):
             stats = {"buoy": check_gltf("buoy", disk, expect_buoy),
-                     "boat": check_gltf("boat", disk, expect_boat)}
+                     "boat": check_gltf("boat", disk, expect_boat),
+                     "rocks": check_gltf("rocks", disk, expect_rocks)}
             png = check_png(disk, rows)
             summary(stats, png)
     except (CheckError, ValueError, KeyError, struct.error, zlib.error) as e:
