@@ -1,7 +1,9 @@
 #include "render/scene_objects.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <glm/gtc/matrix_transform.hpp>
+#include <limits>
 
 #include "gltf/gltf_loader.h"
 #include "lagoon_shaders/shaders.h"
@@ -17,6 +19,16 @@ glm::mat4 object_transform(const scene::Object& object) {
   transform = glm::rotate(transform, glm::radians(-object.rotation_deg.y), glm::vec3(1, 0, 0));
   transform = glm::rotate(transform, glm::radians(object.rotation_deg.z), glm::vec3(0, 0, 1));
   return glm::scale(transform, glm::vec3(object.scale));
+}
+
+// Lowest and highest world y of a primitive's vertices.
+glm::vec2 world_y_range(const glm::mat4& world, const std::vector<glm::vec3>& positions) {
+  glm::vec2 range(std::numeric_limits<float>::max(), std::numeric_limits<float>::lowest());
+  for (const glm::vec3& p : positions) {
+    const float y = (world * glm::vec4(p, 1.0f)).y;
+    range = glm::vec2(std::min(range.x, y), std::max(range.y, y));
+  }
+  return range;
 }
 
 }  // namespace
@@ -79,6 +91,7 @@ Result<void> SceneObjects::load_model(const std::string& file, const glm::mat4& 
       for (size_t i = 0; i < vertices.size(); ++i)
         vertices[i] = {p.positions[i], p.normals[i], i < p.uvs.size() ? p.uvs[i] : glm::vec2(0)};
       ObjectDraw draw{.mesh = upload_mesh(ctx_, vertices, p.indices), .world = transform * instance.world};
+      draw.y_range = world_y_range(draw.world, p.positions);
       if (p.material >= 0) {
         const gltf::Material& m = model->materials[p.material];
         draw.base_colour = glm::vec4(glm::vec3(m.base_color_factor), m.base_color_texture >= 0 ? 1.0f : 0.0f);
@@ -104,6 +117,9 @@ void SceneObjects::draw_mesh(const FrameContext& frame, gpu::MeshMode mode, cons
 
 void SceneObjects::draw(const FrameContext& frame, gpu::MeshMode mode) const {
   for (const ObjectDraw& o : objects_) {
+    // mesh.frag keeps only what is on its pass's side of y = 0; a mesh wholly on the other side is skipped.
+    const bool wanted = mode == gpu::MeshMode::Refraction ? o.y_range.x < 0.0f : o.y_range.y > 0.0f;
+    if (!wanted) continue;
     const gpu::MeshPush push{.model = o.world, .base_colour = o.base_colour, .mode = uint32_t(mode)};
     draw_mesh(frame, mode, o.mesh, push, o.texture >= 0 ? textures_[o.texture] : white_texture_);
   }

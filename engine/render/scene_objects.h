@@ -44,6 +44,7 @@ class SceneObjects {
     glm::mat4 world{1.0f};
     glm::vec4 base_colour{1.0f};  // a = 1 when `texture` is used
     int texture = -1;             // index into textures_
+    glm::vec2 y_range{0.0f};      // lowest and highest world y of its vertices
   };
   vk::Context& ctx_;
   const Samplers& samplers_;
