@@ -57,6 +57,7 @@ Result<void> OceanRenderer::init(const scene::Scene& scene) {
   caustics_ = std::make_unique<CausticsPass>(ctx_, ocean(), samplers_);
   particles_ = std::make_unique<ParticlesPass>(ctx_, luts_, samplers_, kColorFormat, kDepthFormat);
   waterline_ = std::make_unique<WaterlinePass>(ctx_, ocean(), samplers_, kColorFormat, kDepthFormat);
+  window_ = std::make_unique<SnellWindowPass>(ctx_, *objects_, kHdrFormat, kDepthFormat);
   underwater_ = std::make_unique<UnderwaterPass>(ctx_, ocean(), luts_, samplers_, kColorFormat, kDepthFormat);
   camera_medium_ =
       std::make_unique<CameraMedium>(ocean().params(), ocean().spectra(), double(shading_.bound.vertical_m));
@@ -74,7 +75,12 @@ void OceanRenderer::record_frame(const FrameContext& f, const CausticsWindow& ca
   vk::use(cmd, {refraction_->albedo(), refraction_->depth()}, Attachment, Sampled);
 
   const UnderwaterPass::Inputs below{refraction_->albedo_image(), refraction_->depth_image(),
-                                     caustics_->map()};
+                                     caustics_->map(), window_->color_image()};
+  if (f.camera_side != CameraSide::Above) {
+    vk::use(cmd, {window_->color(), window_->depth()}, Discard, Attachment);
+    window_->record(f);
+    vk::use(cmd, {window_->color(), window_->depth()}, Attachment, Sampled);
+  }
   if (f.camera_side == CameraSide::Below) {
     vk::use(cmd, {color, depth}, Discard, Attachment);
     underwater_->record(f, below, color, depth);
@@ -150,6 +156,7 @@ void OceanRenderer::resize(VkExtent2D extent) {
   if (extent_.width != 0) ctx_.wait_idle();  // frames in flight may still use the old size
   refraction_->resize(extent);
   reflection_->resize(extent);
+  window_->resize(extent);
   waterline_->resize(extent);
   extent_ = extent;
 }

@@ -22,6 +22,7 @@
 #include "render/passes/reflection_pass.h"
 #include "render/passes/refraction_pass.h"
 #include "render/passes/sky_pass.h"
+#include "render/passes/snell_window_pass.h"
 #include "render/passes/surface_pass.h"
 #include "render/passes/underwater_pass.h"
 #include "render/passes/waterline_pass.h"
@@ -123,6 +124,7 @@ class OceanRenderer {
   std::unique_ptr<SurfacePass> surface_;
   std::unique_ptr<SkyPass> sky_;
   std::unique_ptr<UnderwaterPass> underwater_;
+  std::unique_ptr<SnellWindowPass> window_;
   std::unique_ptr<CausticsPass> caustics_;
   std::unique_ptr<WaterlinePass> waterline_;
   std::unique_ptr<ParticlesPass> particles_;

@@ -8,7 +8,7 @@
 // LAGOON_MESH_LIT: lit radiance above the water, tone-mapped for display (the surface pass writes the final
 // frame). LAGOON_MESH_REFRACTION: albedo only, for the refraction pass; the water's light
 // transport (the LUTs) lights it in the surface pass. LAGOON_MESH_MIRRORED: lit, mirrored, only what is above
-// the water.
+// the water. LAGOON_MESH_WINDOW: lit, only what is above the water, into the Snell's window map.
 layout(std140, binding = LAGOON_MESH_BIND_FRAME) uniform Frame { FrameUniforms frame; };
 layout(binding = LAGOON_MESH_BIND_ALBEDO) uniform sampler2D albedo_texture;
 layout(std430, binding = LAGOON_MESH_BIND_LIGHTS) readonly buffer Lights { PointLightGpu point_lights[]; };

@@ -7,7 +7,8 @@
 
 // The water surface seen from below. Exact Fresnel from the water side: inside Snell's window (incidence
 // below asin(1/n), 48.6° for n = 1.333) the sky and sun come through, refracted and compressed, their radiance
-// raised by n² (radiance/n² is invariant across the boundary); beyond it total internal reflection mirrors
+// raised by n² (radiance/n² is invariant across the boundary), and the objects above the water
+// (common/snell_window.glsl) in front of the sky; beyond it total internal reflection mirrors
 // the water below. Then the water between the surface and the camera (common/underwater.glsl).
 layout(std140, binding = LAGOON_SURFACE_BIND_FRAME) uniform Frame { FrameUniforms frame; };
 layout(binding = LAGOON_SURFACE_BIND_NORMAL_JACOBIAN) uniform sampler2DArray normal_jacobian[LAGOON_MAX_CASCADES];
@@ -16,6 +17,7 @@ layout(binding = LAGOON_SURFACE_BIND_UW_TARGET) uniform sampler2D uw_target;
 layout(binding = LAGOON_SURFACE_BIND_UW_DOWN) uniform sampler2D uw_down;
 layout(binding = LAGOON_SURFACE_BIND_UW_UP) uniform sampler2D uw_up;
 layout(binding = LAGOON_SURFACE_BIND_CAUSTICS) uniform sampler2DArray caustic_map;
+layout(binding = LAGOON_SURFACE_BIND_WINDOW) uniform sampler2D window_map;         // premultiplied, a = coverage
 
 layout(location = 0) in vec3 v_world;
 layout(location = 1) in vec2 v_rest;
@@ -25,6 +27,7 @@ layout(location = 0) out vec4 out_colour;
 #include "common/underwater.glsl"
 #include "common/caustics.glsl"
 #include "common/light_shafts.glsl"
+#include "common/snell_window.glsl"
 
 vec3 mirrored_below(vec3 r) {
   float down = max(-r.y, 0.02);
@@ -35,6 +38,18 @@ vec3 mirrored_below(vec3 r) {
   return frame.floor_below.y * underwater_target(d, floor_depth).rgb + underwater_added(d, 0.5 * floor_depth, r.y);
 }
 
+// What a ray leaving the water along t (upward, in the air) meets: the objects above the water from the
+// window picture (drawn as a flat surface shows them; the waves bend where it is looked up), over the sky.
+vec3 seen_above(vec3 t) {
+  vec3 sky = sky_radiance(frame, t, true);
+  vec4 clip = frame.view_proj * vec4(frame.camera_pos.xyz + window_flat_direction(t), 1.0);
+  if (clip.w <= 0.0) return sky;
+  vec2 uv = vec2(0.5, -0.5) * clip.xy / clip.w + 0.5;  // the viewport flips y (vk/rendering.cpp)
+  if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return sky;
+  vec4 object = textureLod(window_map, uv, 0.0);  // premultiplied: a = coverage
+  return sky * (1.0 - object.a) + object.rgb;
+}
+
 void main() {
   vec3 eye = frame.camera_pos.xyz;
   vec3 v = normalize(eye - v_world);  // towards the camera, below
@@ -43,7 +58,7 @@ void main() {
   float ior = frame.sun_dir.w;
   float fresnel = fresnel_dielectric(dot(n, v), 1.0 / ior);  // from water into air: 1 beyond the critical angle
   vec3 t = refract(-v, n, ior);
-  vec3 through = fresnel < 1.0 ? ior * ior * sky_radiance(frame, t, true) : vec3(0.0);
+  vec3 through = fresnel < 1.0 ? ior * ior * seen_above(t) : vec3(0.0);
   // What total internal reflection shows: the floor, taken as flat at its depth under the camera with the
   // water's mean bottom albedo, or the water below where there is no floor.
   vec3 r = reflect(-v, n);

@@ -7,6 +7,9 @@
 #define LAGOON_MESH_LIT 0u         // lit and tone-mapped, above the water, into the displayed frame
 #define LAGOON_MESH_REFRACTION 1u  // albedo of what is under the water, into the refraction target
 #define LAGOON_MESH_MIRRORED 2u    // lit, mirrored about the mean water level, into the reflection target
+#define LAGOON_MESH_WINDOW \
+  3u  // lit, above the water, as seen from below through a flat surface
+      // (common/snell_window.glsl), into the Snell's window target
 
 // Binding slots of mesh.vert and mesh.frag.
 #define LAGOON_MESH_BIND_FRAME 0     // FrameUniforms (shared/frame.h)
@@ -34,7 +37,8 @@ namespace lagoon::gpu {
 enum class MeshMode : uint32_t {
   Lit = LAGOON_MESH_LIT,
   Refraction = LAGOON_MESH_REFRACTION,
-  Mirrored = LAGOON_MESH_MIRRORED
+  Mirrored = LAGOON_MESH_MIRRORED,
+  Window = LAGOON_MESH_WINDOW
 };
 }
 #endif

@@ -24,5 +24,6 @@
 #define LAGOON_UNDERWATER_SPEC_SHAFTS 0
 #define LAGOON_SURFACE_BIND_BELOW_COLOR 14  // waterline.frag: the frame drawn from below, colour
 #define LAGOON_SURFACE_BIND_BELOW_DEPTH 15  // ... and depth
+#define LAGOON_SURFACE_BIND_WINDOW 16  // ocean_surface_below.frag: objects above, seen through Snell's window
 
 #endif

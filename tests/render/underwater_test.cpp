@@ -120,6 +120,57 @@ TEST_F(Underwater, SnellsWindowHasTheCriticalAngle) {
   EXPECT_NEAR(edge_deg, critical, 1.0) << "inside " << inside << ", outside " << outside;
 }
 
+// The smallest angle from the zenith (degrees) under which a camera dc metres under a flat surface sees the
+// buoy's top mark (scenes/assets/buoy.gltf: a sphere of radius 0.22 m centred 1.98 m up) standing r metres
+// away: the ray leaves the camera at θw, crosses the surface dc·tan θw out, goes on at sin θa = n sin θw and
+// must touch the sphere. Independent of the renderer: a 2-D ray-circle test in the plane through the buoy.
+double top_mark_inner_edge_deg(double dc, double r, double n) {
+  const glm::dvec2 centre{r, 1.98};
+  const double radius = 0.22;
+  for (double deg = 0.0; deg < 48.0; deg += 0.01) {
+    const double tw = deg * kPi / 180.0, ta = std::asin(n * std::sin(tw));
+    const glm::dvec2 start{dc * std::tan(tw), 0.0}, dir{std::sin(ta), std::cos(ta)};
+    const glm::dvec2 to_centre = centre - start;
+    const double along = glm::dot(to_centre, dir);
+    if (along > 0 && glm::length(to_centre - along * dir) <= radius) return deg;
+  }
+  return 90.0;
+}
+
+TEST_F(Underwater, ObjectsAboveAreSeenRefractedInTheWindow) {
+  // Looking straight up from 3 m under a calm sea at the buoy 3 m to the side: its red top mark is seen
+  // inside Snell's window where refraction at the surface puts it: 24.9° from the zenith, where a straight
+  // line would give 28.9°, and looking the refracted ray up from the surface point straight above the camera
+  // instead of from where it leaves the water, 36.8°.
+  const uint32_t size = 400;
+  const double depth = 3.0, distance = 3.0;
+  const scene::Scene s =
+      load_scene({"camera.position=[0,-3,0]", "camera.look_at=[0,10,0.001]", "camera.fov_deg=120",
+                  "render.width=" + std::to_string(size), "render.height=" + std::to_string(size),
+                  "ocean.spectrum.wind_speed_mps=0.5", "water.type=jerlov-I", "seafloor.type=none",
+                  "objects=[{\"file\":\"assets/buoy.gltf\",\"position\":[3,0,0]}]", "sun.elevation_deg=80",
+                  "render.effects.particles=false"});
+  auto renderer = render::OceanRenderer::create(ctx(), s);
+  ASSERT_TRUE(renderer) << renderer.error().message;
+  const io::Image8 image = (*renderer)->render(s);
+  // The red pixel nearest the optical axis: the top mark's inner edge. The sky is blue (r < b); the top
+  // mark, seen from below on its shaded side, is a dark red; the float's submerged part is seen straight
+  // through the water from 38.7° out.
+  const double focal = (size / 2.0) / std::tan(60.0 * kPi / 180.0);
+  double inner_deg = 90.0;
+  for (uint32_t y = 0; y < size; ++y)
+    for (uint32_t x = 0; x < size; ++x) {
+      const uint8_t* p = &image.rgba[(size_t{y} * size + x) * 4];
+      if (p[0] < p[2] + 10) continue;
+      const double r = std::hypot(x + 0.5 - size / 2.0, y + 0.5 - size / 2.0);
+      inner_deg = std::min(inner_deg, std::atan(r / focal) * 180.0 / kPi);
+    }
+  const double expected = top_mark_inner_edge_deg(depth, distance, s.water.ior);
+  RecordProperty("inner_edge_deg", std::to_string(inner_deg));
+  RecordProperty("expected_deg", std::to_string(expected));
+  EXPECT_NEAR(inner_deg, expected, 1.0);
+}
+
 // Display value (0..1) of a linear radiance under render.tone_map = clamp with exposure e and gamma 1.
 glm::dvec3 clamp_encode(glm::dvec3 radiance, double exposure) {
   return glm::clamp(radiance * exposure, 0.0, 1.0);

@@ -57,6 +57,7 @@ void UnderwaterPass::record(const FrameContext& frame, const Inputs& in, vk::Tar
   vk::draw(frame.cmd, medium_[shafts], medium, nullptr, 0, 3);
   std::vector<vk::Binding> surface = table_bindings(frame);
   surface.push_back(vk::bind(LAGOON_SURFACE_BIND_CAUSTICS, sampled(in.caustics, samplers_.clamp)));
+  surface.push_back(vk::bind(LAGOON_SURFACE_BIND_WINDOW, sampled(in.window, samplers_.clamp)));
   for (vk::Binding& b : cascade_bindings(ocean_, samplers_)) surface.push_back(b);
   vk::draw_indexed(frame.cmd, surface_[shafts], surface, frame.slot.surface_indices.handle(),
                    frame.slot.surface_index_count);
