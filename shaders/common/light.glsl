@@ -27,13 +27,17 @@ float fresnel_dielectric(float cos_i, float ior) {
 
 // Irradiance (white units) from point light `light` at point p with normal n: inverse square, cut at range
 // with a smooth window so lights end without a visible edge.
+// The smooth cut at a light's range: (1 - (r/range)^4)², from the squared distance.
+float light_range_window(float dist2, float range) {
+  float window = clamp(1.0 - dist2 * dist2 / (range * range * range * range), 0.0, 1.0);
+  return window * window;
+}
+
 vec3 point_light_irradiance(PointLightGpu light, vec3 p, vec3 n, out vec3 to_light) {
   vec3 d = light.position_range.xyz - p;
   float dist2 = max(dot(d, d), 1e-4);
   to_light = d * inversesqrt(dist2);
-  float range = light.position_range.w;
-  float window = clamp(1.0 - dist2 * dist2 / (range * range * range * range), 0.0, 1.0);
-  return light.colour.rgb * (window * window / dist2) * max(dot(n, to_light), 0.0);
+  return light.colour.rgb * (light_range_window(dist2, light.position_range.w) / dist2) * max(dot(n, to_light), 0.0);
 }
 
 #endif

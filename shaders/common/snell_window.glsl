@@ -2,24 +2,18 @@
 // LAGOON_MESH_WINDOW) where a flat surface at y = 0 shows them to the camera: each vertex moves to the
 // direction of the ray that leaves the camera, crosses the surface and, bent by Snell's law, reaches it.
 // ocean_surface_below.frag then looks its own refracted ray up in that picture. Needs `frame`.
+#include "common/snell_path.glsl"
 
 float window_camera_depth() { return max(-frame.camera_pos.y, 0.01); }
 
-// Where the refracted path from the camera to p (above the surface) crosses the flat surface: the horizontal
-// distance a from the camera solves n·a/√(a² + dc²) = (D − a)/√((D − a)² + h²) (n sin θw = sin θa), which
-// increases with a from −1 at a = 0 to > 0 at a = D, so bisection finds it.
+// Where the refracted path from the camera to p (above the surface) crosses the flat surface.
 vec3 window_crossing(vec3 p) {
   vec3 eye = frame.camera_pos.xyz;
   vec2 across = p.xz - eye.xz;
-  float dist = length(across), dc = window_camera_depth(), h = max(p.y, 1e-3), n = frame.sun_dir.w;
-  float lo = 0.0, hi = dist;
-  for (int i = 0; i < 24; ++i) {
-    float a = 0.5 * (lo + hi);
-    bool past = n * a * inversesqrt(a * a + dc * dc) > (dist - a) * inversesqrt((dist - a) * (dist - a) + h * h);
-    if (past) hi = a; else lo = a;
-  }
+  float dist = length(across);
+  float a = snell_crossing(dist, window_camera_depth(), max(p.y, 1e-3), frame.sun_dir.w);
   vec2 dir = dist > 0.0 ? across / dist : vec2(0.0);
-  return vec3(eye.xz + 0.5 * (lo + hi) * dir, 0.0).xzy;
+  return vec3(eye.xz + a * dir, 0.0).xzy;
 }
 
 // Where to draw p so the camera sees it along the refracted path's first leg, as far away as the whole path.

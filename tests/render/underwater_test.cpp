@@ -272,6 +272,75 @@ TEST_F(Underwater, ALampLightsTheFloorThroughTheWater) {
   }
 }
 
+// Unpolarised Fresnel reflectance from air into water at incidence cos_i (the test's own, in double).
+double fresnel_air_to_water(double cos_i, double n) {
+  const double sin_t = std::sqrt(1.0 - cos_i * cos_i) / n, cos_t = std::sqrt(1.0 - sin_t * sin_t);
+  const double rs = (cos_i - n * cos_t) / (cos_i + n * cos_t), rp = (n * cos_i - cos_t) / (n * cos_i + cos_t);
+  return 0.5 * (rs * rs + rp * rp);
+}
+
+// Irradiance at a horizontal target `depth` under a flat surface from a lamp of intensity 1 at `height`
+// above it, `across` metres aside, and the path's length in the water. Found independently of the shader:
+// the path by bisection on the ray's landing distance, the spreading by a finite difference of it.
+std::pair<double, double> lamp_above_on_floor(double across, double depth, double height, double n) {
+  auto landing = [&](double ta) {  // horizontal distance travelled by the ray leaving the lamp at θa
+    return height * std::tan(ta) + depth * std::tan(std::asin(std::sin(ta) / n));
+  };
+  double lo = 0, hi = kPi / 2 - 1e-9;
+  for (int i = 0; i < 200; ++i) (landing(0.5 * (lo + hi)) < across ? lo : hi) = 0.5 * (lo + hi);
+  const double ta = std::max(0.5 * (lo + hi), 1e-4), tw = std::asin(std::sin(ta) / n);
+  const double h = 1e-6, r = landing(ta), dr = (landing(ta + h) - landing(ta - h)) / (2 * h);
+  const double perpendicular = (1.0 - fresnel_air_to_water(std::cos(ta), n)) * std::sin(ta) / (r * std::cos(tw) * dr);
+  return {perpendicular * std::cos(tw), depth / std::cos(tw)};
+}
+
+TEST_F(Underwater, ALampAboveTheWaterLightsTheFloorThroughTheSurface) {
+  // No sun: a lamp on a pole 3 m above a calm sea lights a flat white floor 8 m down, seen from 2 m down.
+  // Its light is refracted at the surface (it spreads less than in air: the lamp seems 3 + 8/n m away
+  // straight under it, not 11), loses the Fresnel reflection there and is attenuated by the water.
+  const glm::dvec3 lamp{0, 3, 4};
+  const double intensity = 60;
+  const scene::Scene s = load_scene(
+      {"camera.position=[0,-2,0]", "camera.look_at=[0,-8,4]", "camera.fov_deg=60", "render.width=120",
+       "render.height=90", "seafloor.type=slope", "seafloor.depth_near_m=8", "seafloor.depth_far_m=8",
+       "seafloor.albedo=[1,1,1]", "seafloor.texture=\"\"", "objects=[]", "sun.intensity=0",
+       "ocean.spectrum.wind_speed_mps=0.5", "render.effects.caustics=false",
+       "lights=[{\"position\":[0,3,4],\"colour\":[1,1,1],\"intensity\":60,\"range_m\":40}]",
+       "render.tone_map=clamp", "render.gamma=1", "render.exposure=1", "water.type=jerlov-IB"});
+  auto renderer = render::OceanRenderer::create(ctx(), s);
+  ASSERT_TRUE(renderer) << renderer.error().message;
+  const io::Image8 image = (*renderer)->render(s);
+  auto inputs = optics::lut_inputs(s.water, s.sun.elevation_deg);
+  ASSERT_TRUE(inputs);
+  auto transmittance = [&](double distance) {
+    return at_or_die(*inputs, distance, 0).target / at_or_die(*inputs, 0, 0).target;
+  };
+  const render::CameraMatrices cam = render::camera_matrices(s.camera, 120.0f / 90.0f);
+  const glm::mat4 inv = glm::inverse(cam.view_proj);
+  double worst = 0;
+  for (uint32_t y : {40u, 45u, 55u})
+    for (uint32_t x : {50u, 60u, 70u}) {
+      const glm::vec4 far = inv * glm::vec4((x + 0.5f) / 60.f - 1.f, 1.f - (y + 0.5f) / 45.f, 1.f, 1.f);
+      const glm::dvec3 eye(s.camera.position);
+      const glm::dvec3 dir = glm::normalize(glm::dvec3(far) / double(far.w) - eye);
+      const glm::dvec3 floor_point = eye + dir * ((8.0 - 2.0) / -dir.y);
+      const double across = glm::length(glm::dvec2(lamp.x - floor_point.x, lamp.z - floor_point.z));
+      const auto [irradiance, water_path] = lamp_above_on_floor(across, 8.0, lamp.y, s.water.ior);
+      const double path = water_path + std::hypot(across - std::sqrt(water_path * water_path - 64.0), lamp.y);
+      const double window = std::pow(std::clamp(1.0 - std::pow(path / 40.0, 4.0), 0.0, 1.0), 2.0);
+      const glm::dvec3 expected = glm::clamp(intensity * irradiance * window * transmittance(water_path) *
+                                                 transmittance(glm::length(floor_point - eye)),
+                                             0.0, 1.0);
+      const uint8_t* p = &image.rgba[(size_t{y} * image.width + x) * 4];
+      for (int c = 0; c < 3; ++c) {
+        worst = std::max(worst, std::abs(p[c] / 255.0 - expected[c]));
+        EXPECT_NEAR(p[c] / 255.0, expected[c], std::max(0.05 * expected[c], 2.5 / 255))
+            << "pixel " << x << "," << y << " channel " << c << " at " << across << " m aside";
+      }
+    }
+  RecordProperty("lamp_above_worst_abs", std::to_string(worst));
+}
+
 TEST_F(Underwater, ALampUnderTheWaterIsSeenFromAbove) {
   // No sun; the camera 4 m above a calm sea looking down at the floor 3 m down, where a lamp 1 m above the
   // floor lights it. The same view without the lamp is dark.
