@@ -290,7 +290,8 @@ std::pair<double, double> lamp_above_on_floor(double across, double depth, doubl
   for (int i = 0; i < 200; ++i) (landing(0.5 * (lo + hi)) < across ? lo : hi) = 0.5 * (lo + hi);
   const double ta = std::max(0.5 * (lo + hi), 1e-4), tw = std::asin(std::sin(ta) / n);
   const double h = 1e-6, r = landing(ta), dr = (landing(ta + h) - landing(ta - h)) / (2 * h);
-  const double perpendicular = (1.0 - fresnel_air_to_water(std::cos(ta), n)) * std::sin(ta) / (r * std::cos(tw) * dr);
+  const double perpendicular =
+      (1.0 - fresnel_air_to_water(std::cos(ta), n)) * std::sin(ta) / (r * std::cos(tw) * dr);
   return {perpendicular * std::cos(tw), depth / std::cos(tw)};
 }
 
@@ -300,13 +301,13 @@ TEST_F(Underwater, ALampAboveTheWaterLightsTheFloorThroughTheSurface) {
   // straight under it, not 11), loses the Fresnel reflection there and is attenuated by the water.
   const glm::dvec3 lamp{0, 3, 4};
   const double intensity = 60;
-  const scene::Scene s = load_scene(
-      {"camera.position=[0,-2,0]", "camera.look_at=[0,-8,4]", "camera.fov_deg=60", "render.width=120",
-       "render.height=90", "seafloor.type=slope", "seafloor.depth_near_m=8", "seafloor.depth_far_m=8",
-       "seafloor.albedo=[1,1,1]", "seafloor.texture=\"\"", "objects=[]", "sun.intensity=0",
-       "ocean.spectrum.wind_speed_mps=0.5", "render.effects.caustics=false",
-       "lights=[{\"position\":[0,3,4],\"colour\":[1,1,1],\"intensity\":60,\"range_m\":40}]",
-       "render.tone_map=clamp", "render.gamma=1", "render.exposure=1", "water.type=jerlov-IB"});
+  const scene::Scene s =
+      load_scene({"camera.position=[0,-2,0]", "camera.look_at=[0,-8,4]", "camera.fov_deg=60",
+                  "render.width=120", "render.height=90", "seafloor.type=slope", "seafloor.depth_near_m=8",
+                  "seafloor.depth_far_m=8", "seafloor.albedo=[1,1,1]", "seafloor.texture=\"\"", "objects=[]",
+                  "sun.intensity=0", "ocean.spectrum.wind_speed_mps=0.5", "render.effects.caustics=false",
+                  "lights=[{\"position\":[0,3,4],\"colour\":[1,1,1],\"intensity\":60,\"range_m\":40}]",
+                  "render.tone_map=clamp", "render.gamma=1", "render.exposure=1", "water.type=jerlov-IB"});
   auto renderer = render::OceanRenderer::create(ctx(), s);
   ASSERT_TRUE(renderer) << renderer.error().message;
   const io::Image8 image = (*renderer)->render(s);
