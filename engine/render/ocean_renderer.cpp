@@ -50,14 +50,16 @@ Result<void> OceanRenderer::init(const scene::Scene& scene) {
   if (!objects) return objects.error();
   objects_ = std::move(*objects);
   refraction_ = std::make_unique<RefractionPass>(ctx_, *objects_, kHdrFormat, kDepthFormat);
-  reflection_ = std::make_unique<ReflectionPass>(ctx_, *objects_, kHdrFormat, kDepthFormat);
+  reflection_ = std::make_unique<ObjectsPass>(ctx_, *objects_, gpu::MeshMode::Mirrored, "reflection",
+                                              kHdrFormat, kDepthFormat);
   surface_ =
       std::make_unique<SurfacePass>(ctx_, ocean(), *objects_, luts_, samplers_, kColorFormat, kDepthFormat);
   sky_ = std::make_unique<SkyPass>(ctx_, kColorFormat, kDepthFormat);
   caustics_ = std::make_unique<CausticsPass>(ctx_, ocean(), samplers_);
   particles_ = std::make_unique<ParticlesPass>(ctx_, luts_, samplers_, kColorFormat, kDepthFormat);
   waterline_ = std::make_unique<WaterlinePass>(ctx_, ocean(), samplers_, kColorFormat, kDepthFormat);
-  window_ = std::make_unique<SnellWindowPass>(ctx_, *objects_, kHdrFormat, kDepthFormat);
+  window_ = std::make_unique<ObjectsPass>(ctx_, *objects_, gpu::MeshMode::Window, "snell window", kHdrFormat,
+                                          kDepthFormat);
   underwater_ = std::make_unique<UnderwaterPass>(ctx_, ocean(), luts_, samplers_, kColorFormat, kDepthFormat);
   camera_medium_ =
       std::make_unique<CameraMedium>(ocean().params(), ocean().spectra(), double(shading_.bound.vertical_m));
@@ -90,7 +92,7 @@ void OceanRenderer::record_frame(const FrameContext& f, const CausticsWindow& ca
   }
 
   vk::use(cmd, {reflection_->color(), reflection_->depth()}, Discard, Attachment);
-  reflection_->record(f);
+  reflection_->record(f, f.scene.render.effects.reflection);
   vk::use(cmd, {reflection_->color()}, Attachment, Sampled);
 
   vk::use(cmd, {color, depth}, Discard, Attachment);

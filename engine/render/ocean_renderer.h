@@ -17,12 +17,11 @@
 #include "render/frame_context.h"
 #include "render/frame_uniforms.h"
 #include "render/passes/caustics_pass.h"
+#include "render/passes/objects_pass.h"
 #include "render/passes/ocean_step_pass.h"
 #include "render/passes/particles_pass.h"
-#include "render/passes/reflection_pass.h"
 #include "render/passes/refraction_pass.h"
 #include "render/passes/sky_pass.h"
-#include "render/passes/snell_window_pass.h"
 #include "render/passes/surface_pass.h"
 #include "render/passes/underwater_pass.h"
 #include "render/passes/waterline_pass.h"
@@ -120,11 +119,11 @@ class OceanRenderer {
   std::optional<OceanStepPass> ocean_step_;
   OceanShading shading_;
   std::unique_ptr<RefractionPass> refraction_;
-  std::unique_ptr<ReflectionPass> reflection_;
+  std::unique_ptr<ObjectsPass> reflection_;
   std::unique_ptr<SurfacePass> surface_;
   std::unique_ptr<SkyPass> sky_;
   std::unique_ptr<UnderwaterPass> underwater_;
-  std::unique_ptr<SnellWindowPass> window_;
+  std::unique_ptr<ObjectsPass> window_;
   std::unique_ptr<CausticsPass> caustics_;
   std::unique_ptr<WaterlinePass> waterline_;
   std::unique_ptr<ParticlesPass> particles_;

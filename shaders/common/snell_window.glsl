@@ -1,4 +1,4 @@
-// Objects above the water seen from below through Snell's window. snell_window_pass draws them (mesh.vert,
+// Objects above the water seen from below through Snell's window. The "snell window" objects pass draws them (mesh.vert,
 // LAGOON_MESH_WINDOW) where a flat surface at y = 0 shows them to the camera: each vertex moves to the
 // direction of the ray that leaves the camera, crosses the surface and, bent by Snell's law, reaches it.
 // ocean_surface_below.frag then looks its own refracted ray up in that picture. Needs `frame`.

@@ -22,7 +22,7 @@ class UnderwaterPass {
     const vk::Image& refraction_albedo;
     const vk::Image& refraction_depth;
     const vk::Image& caustics;  // the caustic pass's map
-    const vk::Image& window;  // objects above the water, as seen through Snell's window (snell_window_pass.h)
+    const vk::Image& window;  // objects above the water, as seen through Snell's window (objects_pass.h)
   };
 
   UnderwaterPass(vk::Context& ctx, const ocean::GpuOcean& ocean, const WaterLuts& luts,
