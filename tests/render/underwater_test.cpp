@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <glm/geometric.hpp>
 #include <map>
 
@@ -224,6 +225,59 @@ TEST_F(Underwater, FloorThroughTheWaterHasTheModelsColour) {
   }
 }
 
+// The lamp tests' view: no sun, a flat white floor 8 m down seen from 2 m down, 120 x 90, linear display.
+std::vector<std::string> lit_floor_view(std::vector<std::string> more) {
+  std::vector<std::string> overrides{"camera.position=[0,-2,0]",
+                                     "camera.look_at=[0,-8,4]",
+                                     "camera.fov_deg=60",
+                                     "render.width=120",
+                                     "render.height=90",
+                                     "seafloor.type=slope",
+                                     "seafloor.depth_near_m=8",
+                                     "seafloor.depth_far_m=8",
+                                     "seafloor.albedo=[1,1,1]",
+                                     "seafloor.texture=\"\"",
+                                     "objects=[]",
+                                     "sun.intensity=0",
+                                     "render.tone_map=clamp",
+                                     "render.gamma=1",
+                                     "render.exposure=1"};
+  overrides.insert(overrides.end(), more.begin(), more.end());
+  return overrides;
+}
+
+// Compares 9 pixels of the lit floor view with expected(floor point) (display values 0..1) within 5 % per
+// channel; returns the largest difference.
+template <class Expected>
+double compare_lit_floor(const io::Image8& image, const scene::Scene& s, Expected expected) {
+  const render::CameraMatrices cam = render::camera_matrices(s.camera, 120.0f / 90.0f);
+  const glm::mat4 inv = glm::inverse(cam.view_proj);
+  const glm::dvec3 eye(s.camera.position);
+  double worst = 0;
+  for (uint32_t y : {40u, 45u, 55u})
+    for (uint32_t x : {50u, 60u, 70u}) {
+      const glm::vec4 far = inv * glm::vec4((x + 0.5f) / 60.f - 1.f, 1.f - (y + 0.5f) / 45.f, 1.f, 1.f);
+      const glm::dvec3 dir = glm::normalize(glm::dvec3(far) / double(far.w) - eye);
+      EXPECT_LT(dir.y, -0.1);
+      const glm::dvec3 floor_point = eye + dir * ((8.0 - 2.0) / -dir.y);
+      const glm::dvec3 want = glm::clamp(expected(floor_point), 0.0, 1.0);
+      const uint8_t* p = &image.rgba[(size_t{y} * image.width + x) * 4];
+      for (int c = 0; c < 3; ++c) {
+        worst = std::max(worst, std::abs(p[c] / 255.0 - want[c]));
+        EXPECT_NEAR(p[c] / 255.0, want[c], std::max(0.05 * want[c], 2.5 / 255))
+            << "pixel " << x << "," << y << " channel " << c;
+      }
+    }
+  return worst;
+}
+
+// The optics model's white-light transmittance over d metres just under the surface (in double).
+std::function<glm::dvec3(double)> transmittance_of(const scene::Scene& s) {
+  auto inputs = optics::lut_inputs(s.water, s.sun.elevation_deg);
+  EXPECT_TRUE(inputs);
+  return [inputs](double d) { return at_or_die(*inputs, d, 0).target / at_or_die(*inputs, 0, 0).target; };
+}
+
 TEST_F(Underwater, ALampLightsTheFloorThroughTheWater) {
   // No sun: only a lamp 4 m above a flat white floor 8 m down (an AUV's), seen from 2 m down. Its light
   // falls with the square of the distance and is attenuated by the water on its way to the floor and on
@@ -232,42 +286,18 @@ TEST_F(Underwater, ALampLightsTheFloorThroughTheWater) {
     SCOPED_TRACE(type);
     const glm::dvec3 lamp{0, -4, 4};
     const scene::Scene s = load_scene(
-        {"camera.position=[0,-2,0]", "camera.look_at=[0,-8,4]", "camera.fov_deg=60", "render.width=120",
-         "render.height=90", "seafloor.type=slope", "seafloor.depth_near_m=8", "seafloor.depth_far_m=8",
-         "seafloor.albedo=[1,1,1]", "seafloor.texture=\"\"", "objects=[]", "sun.intensity=0",
-         "lights=[{\"position\":[0,-4,4],\"colour\":[1,1,1],\"intensity\":8,\"range_m\":40}]",
-         "render.tone_map=clamp", "render.gamma=1", "render.exposure=1", std::string("water.type=") + type});
+        lit_floor_view({"lights=[{\"position\":[0,-4,4],\"colour\":[1,1,1],\"intensity\":8,\"range_m\":40}]",
+                        std::string("water.type=") + type}));
     auto renderer = render::OceanRenderer::create(ctx(), s);
     ASSERT_TRUE(renderer) << renderer.error().message;
-    const io::Image8 image = (*renderer)->render(s);
-    auto inputs = optics::lut_inputs(s.water, s.sun.elevation_deg);
-    ASSERT_TRUE(inputs);
-    auto transmittance = [&](double distance) {
-      return at_or_die(*inputs, distance, 0).target / at_or_die(*inputs, 0, 0).target;
-    };
-    const render::CameraMatrices cam = render::camera_matrices(s.camera, 120.0f / 90.0f);
-    const glm::mat4 inv = glm::inverse(cam.view_proj);
-    double worst = 0;
-    for (uint32_t y : {40u, 45u, 55u})
-      for (uint32_t x : {50u, 60u, 70u}) {
-        const glm::vec4 far = inv * glm::vec4((x + 0.5f) / 60.f - 1.f, 1.f - (y + 0.5f) / 45.f, 1.f, 1.f);
-        const glm::dvec3 eye(s.camera.position);
-        const glm::dvec3 dir = glm::normalize(glm::dvec3(far) / double(far.w) - eye);
-        ASSERT_LT(dir.y, -0.1);
-        const glm::dvec3 floor_point = eye + dir * ((8.0 - 2.0) / -dir.y);
-        const glm::dvec3 to_lamp = lamp - floor_point;
-        const double r = glm::length(to_lamp), cosine = to_lamp.y / r;
-        const double window = std::pow(std::clamp(1.0 - std::pow(r / 40.0, 4.0), 0.0, 1.0), 2.0);
-        const glm::dvec3 expected = glm::clamp(8.0 * cosine * window / (r * r) * transmittance(r) *
-                                                   transmittance(glm::length(floor_point - eye)),
-                                               0.0, 1.0);
-        const uint8_t* p = &image.rgba[(size_t{y} * image.width + x) * 4];
-        for (int c = 0; c < 3; ++c) {
-          worst = std::max(worst, std::abs(p[c] / 255.0 - expected[c]));
-          EXPECT_NEAR(p[c] / 255.0, expected[c], std::max(0.05 * expected[c], 2.5 / 255))
-              << "pixel " << x << "," << y << " channel " << c << " at r = " << r << " m";
-        }
-      }
+    const auto transmittance = transmittance_of(s);
+    const double worst = compare_lit_floor((*renderer)->render(s), s, [&](glm::dvec3 floor_point) {
+      const glm::dvec3 to_lamp = lamp - floor_point;
+      const double r = glm::length(to_lamp), cosine = to_lamp.y / r;
+      const double window = std::pow(std::clamp(1.0 - std::pow(r / 40.0, 4.0), 0.0, 1.0), 2.0);
+      return 8.0 * cosine * window / (r * r) * transmittance(r) *
+             transmittance(glm::length(floor_point - glm::dvec3(s.camera.position)));
+    });
     RecordProperty(std::string("lamp_worst_abs_") + type, std::to_string(worst));
   }
 }
@@ -301,44 +331,20 @@ TEST_F(Underwater, ALampAboveTheWaterLightsTheFloorThroughTheSurface) {
   // straight under it, not 11), loses the Fresnel reflection there and is attenuated by the water.
   const glm::dvec3 lamp{0, 3, 4};
   const double intensity = 60;
-  const scene::Scene s =
-      load_scene({"camera.position=[0,-2,0]", "camera.look_at=[0,-8,4]", "camera.fov_deg=60",
-                  "render.width=120", "render.height=90", "seafloor.type=slope", "seafloor.depth_near_m=8",
-                  "seafloor.depth_far_m=8", "seafloor.albedo=[1,1,1]", "seafloor.texture=\"\"", "objects=[]",
-                  "sun.intensity=0", "ocean.spectrum.wind_speed_mps=0.5", "render.effects.caustics=false",
-                  "lights=[{\"position\":[0,3,4],\"colour\":[1,1,1],\"intensity\":60,\"range_m\":40}]",
-                  "render.tone_map=clamp", "render.gamma=1", "render.exposure=1", "water.type=jerlov-IB"});
+  const scene::Scene s = load_scene(lit_floor_view(
+      {"ocean.spectrum.wind_speed_mps=0.5", "render.effects.caustics=false", "water.type=jerlov-IB",
+       "lights=[{\"position\":[0,3,4],\"colour\":[1,1,1],\"intensity\":60,\"range_m\":40}]"}));
   auto renderer = render::OceanRenderer::create(ctx(), s);
   ASSERT_TRUE(renderer) << renderer.error().message;
-  const io::Image8 image = (*renderer)->render(s);
-  auto inputs = optics::lut_inputs(s.water, s.sun.elevation_deg);
-  ASSERT_TRUE(inputs);
-  auto transmittance = [&](double distance) {
-    return at_or_die(*inputs, distance, 0).target / at_or_die(*inputs, 0, 0).target;
-  };
-  const render::CameraMatrices cam = render::camera_matrices(s.camera, 120.0f / 90.0f);
-  const glm::mat4 inv = glm::inverse(cam.view_proj);
-  double worst = 0;
-  for (uint32_t y : {40u, 45u, 55u})
-    for (uint32_t x : {50u, 60u, 70u}) {
-      const glm::vec4 far = inv * glm::vec4((x + 0.5f) / 60.f - 1.f, 1.f - (y + 0.5f) / 45.f, 1.f, 1.f);
-      const glm::dvec3 eye(s.camera.position);
-      const glm::dvec3 dir = glm::normalize(glm::dvec3(far) / double(far.w) - eye);
-      const glm::dvec3 floor_point = eye + dir * ((8.0 - 2.0) / -dir.y);
-      const double across = glm::length(glm::dvec2(lamp.x - floor_point.x, lamp.z - floor_point.z));
-      const auto [irradiance, water_path] = lamp_above_on_floor(across, 8.0, lamp.y, s.water.ior);
-      const double path = water_path + std::hypot(across - std::sqrt(water_path * water_path - 64.0), lamp.y);
-      const double window = std::pow(std::clamp(1.0 - std::pow(path / 40.0, 4.0), 0.0, 1.0), 2.0);
-      const glm::dvec3 expected = glm::clamp(intensity * irradiance * window * transmittance(water_path) *
-                                                 transmittance(glm::length(floor_point - eye)),
-                                             0.0, 1.0);
-      const uint8_t* p = &image.rgba[(size_t{y} * image.width + x) * 4];
-      for (int c = 0; c < 3; ++c) {
-        worst = std::max(worst, std::abs(p[c] / 255.0 - expected[c]));
-        EXPECT_NEAR(p[c] / 255.0, expected[c], std::max(0.05 * expected[c], 2.5 / 255))
-            << "pixel " << x << "," << y << " channel " << c << " at " << across << " m aside";
-      }
-    }
+  const auto transmittance = transmittance_of(s);
+  const double worst = compare_lit_floor((*renderer)->render(s), s, [&](glm::dvec3 floor_point) {
+    const double across = glm::length(glm::dvec2(lamp.x - floor_point.x, lamp.z - floor_point.z));
+    const auto [irradiance, water_path] = lamp_above_on_floor(across, 8.0, lamp.y, s.water.ior);
+    const double path = water_path + std::hypot(across - std::sqrt(water_path * water_path - 64.0), lamp.y);
+    const double window = std::pow(std::clamp(1.0 - std::pow(path / 40.0, 4.0), 0.0, 1.0), 2.0);
+    return intensity * irradiance * window * transmittance(water_path) *
+           transmittance(glm::length(floor_point - glm::dvec3(s.camera.position)));
+  });
   RecordProperty("lamp_above_worst_abs", std::to_string(worst));
 }
 
