@@ -26,6 +26,8 @@ struct FrameContext {
   const scene::Scene& scene;
   FrameSlot& slot;
   CameraSide camera_side = CameraSide::Above;  // against the displaced surface (render/camera_medium.h)
+  uint32_t light_count = 0;                    // point lights in slot.lights
+  bool caustics = false;                       // the caustics pass makes a map this frame
   vk::BufferRef uniforms() const { return {slot.frame.handle()}; }
   vk::GpuTimer* timer() const { return &slot.timer; }
 };

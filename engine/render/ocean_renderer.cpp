@@ -150,7 +150,13 @@ FrameContext OceanRenderer::begin_frame(VkCommandBuffer cmd, const scene::Scene&
   // targets, so this frame's work starts after everything submitted before it.
   vk::memory_barrier(cmd, vk::access::kAllCommands, vk::access::kAllCommands);
   slot.timer.reset(cmd);
-  return FrameContext{.cmd = cmd, .extent = extent, .scene = scene, .slot = slot, .camera_side = side};
+  return FrameContext{.cmd = cmd,
+                      .extent = extent,
+                      .scene = scene,
+                      .slot = slot,
+                      .camera_side = side,
+                      .light_count = light_count,
+                      .caustics = caustics.cells > 0};
 }
 
 void OceanRenderer::resize(VkExtent2D extent) {

@@ -4,10 +4,12 @@
 #ifndef LAGOON_COMMON_CAUSTICS_GLSL
 #define LAGOON_COMMON_CAUSTICS_GLSL
 
+layout(constant_id = LAGOON_SURFACE_SPEC_CAUSTICS) const bool kCaustics = true;
+
 // Irradiance at world (xz, depth) relative to the same light under a flat surface; 1 outside the window,
 // fading to 1 over its outer tenth so its edge does not show.
 float caustic_gain(vec2 xz, float depth) {
-  if (frame.caustics.w < 0.5 || depth <= 0.0) return 1.0;
+  if (!kCaustics || frame.caustics.w < 0.5 || depth <= 0.0) return 1.0;
   vec2 uv = (xz - frame.caustics.xy) / (frame.caustics.z * frame.caustics.w);
   if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 1.0;
   // Between slices linearly in depth; above the first towards 1 at the surface (no focusing at depth 0);

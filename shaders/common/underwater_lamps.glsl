@@ -7,6 +7,8 @@
 #define LAGOON_COMMON_UNDERWATER_LAMPS_GLSL
 #include "common/snell_path.glsl"
 
+layout(constant_id = LAGOON_SURFACE_SPEC_LAMPS) const bool kUnderwaterLamps = true;
+
 // A lamp of intensity I at height h above the surface, a point at depth z below it: the path crosses the
 // surface r_a = a from the point (common/snell_path.glsl) and loses the Fresnel reflection there. The rays
 // leaving the lamp within dθa·dφ spread over r·dr·dφ·cos θw across the path at the point, r = h tan θa +
@@ -42,7 +44,11 @@ vec3 lamp_above_irradiance(PointLightGpu light, vec3 p, vec3 n_surface, out floa
 // White units, not relative to the sun: not scaled by frame.lut.w.
 vec3 lamp_irradiance(vec3 p, vec3 n) {
   vec3 sum = vec3(0.0);
+  if (!kUnderwaterLamps) return sum;
   for (int i = 0; i < int(frame.lights.x); ++i) {
+    vec3 offset = point_lights[i].position_range.xyz - p;
+    float range = point_lights[i].position_range.w;
+    if (dot(offset, offset) >= range * range) continue;  // out of range either way (a bent path is longer)
     vec3 e;
     float water_path;
     if (point_lights[i].position_range.y >= 0.0) {

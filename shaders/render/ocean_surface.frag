@@ -61,7 +61,8 @@ vec3 water_radiance(vec3 n, vec3 v, out vec3 lamps) {
   vec4 t0 = texture(lut_t0, lut_uv);
   vec3 t1 = texture(lut_t1, lut_uv).rgb;
   vec3 through = t0.a * t0.rgb * albedo.rgb * caustic_gain(floor_point.xz, -floor_point.y) + (1.0 - t0.a) * t1;
-  lamps = albedo.rgb * lamp_irradiance(floor_point, vec3(0.0, 1.0, 0.0)) * underwater_transmittance(l);
+  if (kUnderwaterLamps)  // compiled out without lights (shared/surface.h)
+    lamps = albedo.rgb * lamp_irradiance(floor_point, vec3(0.0, 1.0, 0.0)) * underwater_transmittance(l);
   return mix(through, deep, smoothstep(0.8, 1.0, h / frame.lut.y));
 }
 

@@ -72,7 +72,8 @@ void main() {
     radiance = seen * target.rgb * caustic_gain(hit.xz, -hit.y);
     if (volume) radiance += underwater_added(d, 0.5 * (camera_depth - hit.y), dir.y) + light_shafts(eye, dir, d, pixel);
     radiance *= frame.lut.w;
-    radiance += albedo.rgb * lamp_irradiance(hit, n) * (volume ? underwater_transmittance(d) : vec3(1.0));
+    if (kUnderwaterLamps)  // compiled out without lights (shared/surface.h)
+      radiance += albedo.rgb * lamp_irradiance(hit, n) * (volume ? underwater_transmittance(d) : vec3(1.0));
     gl_FragDepth = depth;
   } else {
     // Nothing within reach: the water to the end of the table (α below 1e-3 there for every Jerlov type).

@@ -22,6 +22,13 @@
 // Specialisation constant of the shaders that include common/light_shafts.glsl: shafts compiled in (1) or
 // not.
 #define LAGOON_UNDERWATER_SPEC_SHAFTS 0
+// Specialisation constant of the shaders that include common/underwater_lamps.glsl: the lamps' light under
+// the water compiled in (1) or not (no lights in the scene). A uniform branch does not do: on lavapipe the
+// mere presence of the code made the surface pass 45 % slower.
+#define LAGOON_SURFACE_SPEC_LAMPS 1
+// ... and of those that include common/caustics.glsl: caustics compiled in (1) or not (no map this frame),
+// for the same reason.
+#define LAGOON_SURFACE_SPEC_CAUSTICS 2
 #define LAGOON_SURFACE_BIND_BELOW_COLOR 14  // waterline.frag: the frame drawn from below, colour
 #define LAGOON_SURFACE_BIND_BELOW_DEPTH 15  // ... and depth
 #define LAGOON_SURFACE_BIND_WINDOW 16  // ocean_surface_below.frag: objects above, seen through Snell's window

@@ -17,15 +17,19 @@ SurfacePass::SurfacePass(vk::Context& ctx, const ocean::GpuOcean& ocean, const S
       objects_(objects),
       luts_(luts),
       samplers_(samplers),
-      depth_format_(depth_format),
-      // Writes display-referred colour: each shader tone-maps its own output (common/tonemap.glsl), so there
-      // is no HDR frame and no full-screen post pass.
-      surface_(vk::GraphicsPipeline::create(ctx, {.vertex = &shaders::render_ocean_surface_vert,
-                                                  .fragment = &shaders::render_ocean_surface_frag,
-                                                  .color_formats = {color_format},
-                                                  .depth_format = depth_format,
-                                                  .depth_test = true,
-                                                  .depth_write = true})) {}
+      depth_format_(depth_format) {
+  // Writes display-referred colour: each shader tone-maps its own output (common/tonemap.glsl), so there is
+  // no HDR frame and no full-screen post pass.
+  for (uint32_t v = 0; v < surface_.size(); ++v)
+    surface_[v] = vk::GraphicsPipeline::create(
+        ctx, {.vertex = &shaders::render_ocean_surface_vert,
+              .fragment = &shaders::render_ocean_surface_frag,
+              .color_formats = {color_format},
+              .depth_format = depth_format,
+              .depth_test = true,
+              .depth_write = true,
+              .spec = {{LAGOON_SURFACE_SPEC_LAMPS, v & 1u}, {LAGOON_SURFACE_SPEC_CAUSTICS, v >> 1}}});
+}
 
 void SurfacePass::record(const FrameContext& frame, const Inputs& in, vk::Target color,
                          vk::Target depth) const {
@@ -48,8 +52,8 @@ void SurfacePass::record(const FrameContext& frame, const Inputs& in, vk::Target
                       {{.view = color.view, .clear = std::array{0.f, 0.f, 0.f, 1.f}}},
                       vk::DepthTarget{.view = depth.view, .clear = 1.0f});
   objects_.draw(frame, gpu::MeshMode::Lit);  // above-water parts, lit; the surface depth-tests against them
-  vk::draw_indexed(frame.cmd, surface_, bindings, frame.slot.surface_indices.handle(),
-                   frame.slot.surface_index_count);
+  vk::draw_indexed(frame.cmd, surface_[(frame.light_count > 0 ? 1u : 0u) | (frame.caustics ? 2u : 0u)],
+                   bindings, frame.slot.surface_indices.handle(), frame.slot.surface_index_count);
   vk::end_rendering(frame.cmd);
 }
 

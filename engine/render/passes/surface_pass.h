@@ -3,6 +3,7 @@
 // and glints, tone-mapped into the displayed frame (shaders/render/ocean_surface.*). Also draws the
 // surface's ground-truth AOVs (ocean_surface_aov.frag).
 #pragma once
+#include <array>
 #include <vector>
 
 #include "ocean/gpu/gpu_ocean.h"
@@ -43,7 +44,9 @@ class SurfacePass {
   const WaterLuts& luts_;
   const Samplers& samplers_;
   VkFormat depth_format_;
-  vk::GraphicsPipeline surface_;
+  // Variants with the lamps' light under the water (bit 0, LAGOON_SURFACE_SPEC_LAMPS) and the caustics
+  // (bit 1, LAGOON_SURFACE_SPEC_CAUSTICS) compiled in or out.
+  std::array<vk::GraphicsPipeline, 4> surface_;
   vk::GraphicsPipeline aov_;  // created on first use
 };
 

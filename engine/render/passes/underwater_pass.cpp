@@ -13,14 +13,16 @@ UnderwaterPass::UnderwaterPass(vk::Context& ctx, const ocean::GpuOcean& ocean, c
   for (uint32_t shafts = 0; shafts < 2; ++shafts) {
     const std::vector<vk::SpecConstant> spec{{LAGOON_UNDERWATER_SPEC_SHAFTS, shafts}};
     // Every pixel, writing the depth of what it shows (the far plane where it shows only water).
-    medium_[shafts] = vk::GraphicsPipeline::create(ctx, {.vertex = &shaders::render_fullscreen_vert,
-                                                         .fragment = &shaders::render_underwater_medium_frag,
-                                                         .color_formats = {color_format},
-                                                         .depth_format = depth_format,
-                                                         .depth_test = true,
-                                                         .depth_write = true,
-                                                         .depth_compare = VK_COMPARE_OP_ALWAYS,
-                                                         .spec = spec});
+    for (uint32_t lamps = 0; lamps < 2; ++lamps)
+      medium_[shafts][lamps] =
+          vk::GraphicsPipeline::create(ctx, {.vertex = &shaders::render_fullscreen_vert,
+                                             .fragment = &shaders::render_underwater_medium_frag,
+                                             .color_formats = {color_format},
+                                             .depth_format = depth_format,
+                                             .depth_test = true,
+                                             .depth_write = true,
+                                             .depth_compare = VK_COMPARE_OP_ALWAYS,
+                                             .spec = {spec[0], {LAGOON_SURFACE_SPEC_LAMPS, lamps}}});
     // The surface mesh with either winding: from below its triangles face away from the camera.
     surface_[shafts] =
         vk::GraphicsPipeline::create(ctx, {.vertex = &shaders::render_ocean_surface_vert,
@@ -54,7 +56,7 @@ void UnderwaterPass::record(const FrameContext& frame, const Inputs& in, vk::Tar
   medium.push_back(vk::bind(LAGOON_SURFACE_BIND_CAUSTICS, sampled(in.caustics, samplers_.clamp)));
   medium.push_back(vk::bind(LAGOON_SURFACE_BIND_LIGHTS, frame.slot.lights));
   const size_t shafts = frame.scene.render.effects.shafts ? 1 : 0;
-  vk::draw(frame.cmd, medium_[shafts], medium, nullptr, 0, 3);
+  vk::draw(frame.cmd, medium_[shafts][frame.light_count > 0 ? 1 : 0], medium, nullptr, 0, 3);
   std::vector<vk::Binding> surface = table_bindings(frame);
   surface.push_back(vk::bind(LAGOON_SURFACE_BIND_CAUSTICS, sampled(in.caustics, samplers_.clamp)));
   surface.push_back(vk::bind(LAGOON_SURFACE_BIND_WINDOW, sampled(in.window, samplers_.clamp)));

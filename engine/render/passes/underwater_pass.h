@@ -22,7 +22,7 @@ class UnderwaterPass {
     const vk::Image& refraction_albedo;
     const vk::Image& refraction_depth;
     const vk::Image& caustics;  // the caustic pass's map
-    const vk::Image& window;  // objects above the water, as seen through Snell's window (objects_pass.h)
+    const vk::Image& window;    // objects above the water, as seen through Snell's window (objects_pass.h)
   };
 
   UnderwaterPass(vk::Context& ctx, const ocean::GpuOcean& ocean, const WaterLuts& luts,
@@ -38,7 +38,9 @@ class UnderwaterPass {
   const WaterLuts& luts_;
   const Samplers& samplers_;
   // [0]: without light shafts, [1]: with (render.effects.shafts), as a specialisation constant.
-  std::array<vk::GraphicsPipeline, 2> medium_, surface_;
+  std::array<vk::GraphicsPipeline, 2> surface_;
+  // [shafts][lamps]: also without or with the lamps' light (LAGOON_SURFACE_SPEC_LAMPS).
+  std::array<std::array<vk::GraphicsPipeline, 2>, 2> medium_;
 };
 
 }  // namespace lagoon::render
