@@ -3,6 +3,12 @@
 #include <cmath>
 
 namespace lagoon::render {
+namespace {
+
+// The height's error bound: well inside the 2 cm margin of the waterline band.
+constexpr double kToleranceM = 0.01;
+
+}  // namespace
 
 CameraSide CameraMedium::side(const glm::vec3& camera, double lens_m, double time_s) {
   last_queried_ = false;
@@ -12,9 +18,9 @@ CameraSide CameraMedium::side(const glm::vec3& camera, double lens_m, double tim
   const double band = lens_m > 0 ? 2.0 * lens_m + 0.02 : 0.0;
   if (camera.y > reach_m_ + band) return CameraSide::Above;
   if (camera.y < -reach_m_ - band) return CameraSide::Below;
-  if (!query_) query_ = std::make_unique<ocean::WaveQuery>(params_, spectra_);
+  if (!probe_) probe_ = std::make_unique<ocean::HeightProbe>(params_, spectra_, kToleranceM);
   last_queried_ = true;
-  const double height = query_->sample(time_s, camera.x, camera.z).height;
+  const double height = probe_->height(time_s, camera.x, camera.z).height;
   if (std::abs(camera.y - height) < band) return CameraSide::Waterline;
   return camera.y < height ? CameraSide::Below : CameraSide::Above;
 }

@@ -1,17 +1,17 @@
 // Where the camera is: above the water, under it, or with its lens cutting the surface (the near plane
 // crosses the waterline, so the image splits along it). Judged against the displaced surface right above the
-// camera, from WaveQuery (compute/ocean/wave_query.h) at the frame's time. The query costs an FFT per new
-// time (tens of ms on a CPU), so it is asked only when the camera is within the waves' reach of the mean
-// level; further up or down the answer is plain.
+// camera at the frame's time, from HeightProbe (compute/ocean/height_probe.h: within 1 cm of the sum the GPU
+// draws, 1-2 ms on a CPU). It is asked only when the camera is within the waves' reach of the mean level;
+// further up or down the answer is plain.
 #pragma once
 #include <glm/vec3.hpp>
 #include <memory>
 #include <optional>
 #include <vector>
 
+#include "ocean/height_probe.h"
 #include "ocean/initial_spectrum.h"
 #include "ocean/ocean_params.h"
-#include "ocean/wave_query.h"
 
 namespace lagoon::render {
 
@@ -40,7 +40,7 @@ class CameraMedium {
   ocean::OceanParams params_;
   std::vector<ocean::CascadeSpectrum> spectra_;
   double reach_m_;
-  std::unique_ptr<ocean::WaveQuery> query_;  // created on first need
+  std::unique_ptr<ocean::HeightProbe> probe_;  // made on first need (sorting the modes takes ~50 ms)
   bool last_queried_ = false;
   std::optional<CameraSide> forced_;
 };
