@@ -443,6 +443,38 @@ TEST_F(Underwater, TheWaterlineFollowsTheSurfaceAcrossTheLens) {
   EXPECT_GE(checked, 20);
 }
 
+TEST_F(Underwater, DescendingThroughTheSurfaceChangesTheFrameGradually) {
+  // The demo's camera flying down through the surface, in 2 cm steps at a fixed time, from 20 cm above the
+  // surface over the lens to 20 cm below it. As the surface crosses the lens the frame turns from the view
+  // above to the view below row by row (the waterline pass), so the mean brightness falls over several
+  // steps. Switching from one side to the other at once would put the whole change into one step.
+  scene::Scene s = load_scene(
+      {"render.width=96", "render.height=54", "objects=[]", "time_s=6", "render.effects.particles=false"});
+  ocean::WaveQuery query(s.ocean);
+  const double surface = query.sample(s.time_s, 0.0, 0.0).height;
+  auto renderer = render::OceanRenderer::create(ctx(), s);
+  ASSERT_TRUE(renderer) << renderer.error().message;
+  std::vector<double> mean;
+  for (int step = 0; step <= 20; ++step) {
+    const float y = float(surface + 0.2 - 0.02 * step);
+    s.camera.position = glm::vec3(0.0f, y, 0.0f);
+    s.camera.look_at = glm::vec3(0.0f, y, 10.0f);
+    const io::Image8 frame = (*renderer)->render(s);
+    double sum = 0;
+    for (uint32_t y_px = 0; y_px < frame.height; ++y_px)
+      for (uint32_t x = 0; x < frame.width; ++x) sum += luminance(frame, x, y_px);
+    mean.push_back(sum / (frame.width * frame.height));
+  }
+  const double total = std::abs(mean.back() - mean.front());
+  double largest = 0;
+  for (size_t i = 1; i < mean.size(); ++i) largest = std::max(largest, std::abs(mean[i] - mean[i - 1]));
+  std::string trace;
+  for (double m : mean) trace += std::to_string(int(std::lround(m))) + " ";
+  RecordProperty("mean_luminance_by_step", trace);
+  ASSERT_GT(total, 20.0) << "above and below look alike: " << trace;
+  EXPECT_LT(largest, 0.5 * total) << "the frame jumps: " << trace;
+}
+
 TEST_F(Underwater, ParticlesAreTheSameForTheSameSeedAndOthersForAnother) {
   auto render_with = [&](std::vector<std::string> overrides) {
     overrides.insert(overrides.begin(), {"render.width=128", "render.height=96"});
