@@ -129,7 +129,11 @@ FrameContext OceanRenderer::begin_frame(VkCommandBuffer cmd, const scene::Scene&
   slot.lights.flush();
   const CameraMatrices cam = camera_matrices(scene.camera, float(extent.width) / float(extent.height));
   const float reach = std::min(0.8f * scene.camera.far_m, 3000.0f);
-  const SurfaceGrid grid = surface_grid(scene.camera.position, reach, &cam.view_proj, shading_.bound);
+  // Under the water the surface is seen through at least as much water as it is far away, and beyond the
+  // underwater tables' reach the water lets through less than 1e-3 of any light (optics/underwater.h): the
+  // mesh stops there. On lavapipe each triangle's set-up costs ~3 us on one thread; this saves a third.
+  const float mesh_reach = side == CameraSide::Below ? std::min(reach, float(luts_.d_max_m)) : reach;
+  const SurfaceGrid grid = surface_grid(scene.camera.position, mesh_reach, &cam.view_proj, shading_.bound);
   slot.surface_index_count = uint32_t(grid.indices.size());
   std::memcpy(slot.surface_indices.mapped(), grid.indices.data(), grid.indices.size() * sizeof(uint32_t));
   slot.surface_indices.flush();
