@@ -20,4 +20,8 @@ std::vector<vk::Binding> cascade_bindings(const ocean::GpuOcean& ocean, const Sa
   return bindings;
 }
 
+vk::SpecConstant cascade_count_spec(const ocean::GpuOcean& ocean) {
+  return {LAGOON_SPEC_CASCADE_COUNT, ocean.cascade_count()};
+}
+
 }  // namespace lagoon::render

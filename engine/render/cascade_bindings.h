@@ -12,4 +12,7 @@ namespace lagoon::render {
 
 std::vector<vk::Binding> cascade_bindings(const ocean::GpuOcean& ocean, const Samplers& samplers);
 
+// The cascade count as the shaders that sum the cascades take it (LAGOON_SPEC_CASCADE_COUNT).
+vk::SpecConstant cascade_count_spec(const ocean::GpuOcean& ocean);
+
 }  // namespace lagoon::render

@@ -30,7 +30,7 @@ void main() {
   // The cascades filtered to the cell size: shorter waves would alias into the pattern.
   vec3 d = vec3(0.0);
   vec2 slope = vec2(0.0);
-  int count = int(frame.grid.w);
+  const int count = kCascadeCount;  // compiled out beyond it (shared/limits.h)
 #define LAGOON_CASCADE(c)                                                         \
   if (count > c && cell < frame.cascade_patch[c]) {                               \
     float lod = max(0.0, log2(cell / frame.cascade_texel[c]));                    \

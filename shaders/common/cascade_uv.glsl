@@ -5,6 +5,9 @@
 // Needs `frame` (FrameUniforms) declared by the includer.
 #ifndef LAGOON_COMMON_CASCADE_UV_GLSL
 #define LAGOON_COMMON_CASCADE_UV_GLSL
+#include "shared/limits.h"
+
+layout(constant_id = LAGOON_SPEC_CASCADE_COUNT) const int kCascadeCount = LAGOON_MAX_CASCADES;
 
 vec3 cascade_uvw(vec2 rest, int c) {
   return vec3((rest + 0.5 * frame.cascade_texel[c]) / frame.cascade_patch[c], frame.cascade_layer[c]);

@@ -18,7 +18,7 @@ SurfaceSample surface_sample(vec3 to_viewer) {
   vec2 slope = vec2(0.0);
   float foam = 0.0;
   vec3 terms = vec3(0.0);  // the Jacobian terms of the whole sea: each cascade's summed
-  int count = int(frame.grid.w);
+  const int count = kCascadeCount;  // compiled out beyond it (shared/limits.h)
   // Slopes the mips filter away still roughen the surface: their mean square slope widens the glint
   // (Bruneton et al. 2010). Cascade c carries |k| from k_lo to π/(2·texel), with about equal slope variance
   // per octave (saturation range); a mip level `lod` keeps waves up to π/(texel·2^lod), so (lod - 1)

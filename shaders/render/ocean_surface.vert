@@ -20,7 +20,7 @@ vec3 clipmap_displacement(vec2 rest, float spacing) {
   // whose patch is no larger than the spacing would be read at its 1x1 mip, the patch's mean displacement,
   // which is zero (no k = 0 mode): such lookups are skipped (a third of them on a far-reaching clipmap).
   vec3 d = vec3(0.0);
-  int count = int(frame.grid.w);
+  const int count = kCascadeCount;  // compiled out beyond it (shared/limits.h)
 #define LAGOON_CASCADE(c)                                                                                  \
   if (count > c && spacing < frame.cascade_patch[c]) {                                                     \
     float lod = max(0.0, log2(spacing / frame.cascade_texel[c]));                                          \

@@ -19,7 +19,7 @@ layout(location = 0) out vec4 out_colour;
 
 vec3 displacement_at(vec2 rest) {
   vec3 d = vec3(0.0);
-  int count = int(frame.grid.w);
+  const int count = kCascadeCount;  // compiled out beyond it (shared/limits.h)
 #define LAGOON_CASCADE(c) \
   if (count > c) d += textureLod(displacement[c], cascade_uvw(rest, c), 0.0).xyz;
   LAGOON_CASCADE(0)

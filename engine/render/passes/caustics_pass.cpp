@@ -1,6 +1,7 @@
 #include "render/passes/caustics_pass.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <glm/geometric.hpp>
@@ -49,7 +50,8 @@ CausticsWindow caustics_window(const scene::Scene& scene, glm::vec3 sun, float i
 CausticsPass::CausticsPass(vk::Context& ctx, const ocean::GpuOcean& ocean, const Samplers& samplers)
     : ocean_(ocean),
       samplers_(samplers),
-      splat_(vk::ComputePipeline::create(ctx, shaders::caustics_splat_comp)),
+      splat_(vk::ComputePipeline::create(ctx, shaders::caustics_splat_comp,
+                                         std::array{cascade_count_spec(ocean)})),
       resolve_(vk::ComputePipeline::create(ctx, shaders::caustics_resolve_comp)),
       accum_(vk::Buffer::create(ctx, kMapTexels * sizeof(uint32_t),
                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,

@@ -21,14 +21,15 @@ SurfacePass::SurfacePass(vk::Context& ctx, const ocean::GpuOcean& ocean, const S
   // Writes display-referred colour: each shader tone-maps its own output (common/tonemap.glsl), so there is
   // no HDR frame and no full-screen post pass.
   for (uint32_t v = 0; v < surface_.size(); ++v)
-    surface_[v] = vk::GraphicsPipeline::create(
-        ctx, {.vertex = &shaders::render_ocean_surface_vert,
-              .fragment = &shaders::render_ocean_surface_frag,
-              .color_formats = {color_format},
-              .depth_format = depth_format,
-              .depth_test = true,
-              .depth_write = true,
-              .spec = {{LAGOON_SURFACE_SPEC_LAMPS, v & 1u}, {LAGOON_SURFACE_SPEC_CAUSTICS, v >> 1}}});
+    surface_[v] = vk::GraphicsPipeline::create(ctx, {.vertex = &shaders::render_ocean_surface_vert,
+                                                     .fragment = &shaders::render_ocean_surface_frag,
+                                                     .color_formats = {color_format},
+                                                     .depth_format = depth_format,
+                                                     .depth_test = true,
+                                                     .depth_write = true,
+                                                     .spec = {{LAGOON_SURFACE_SPEC_LAMPS, v & 1u},
+                                                              {LAGOON_SURFACE_SPEC_CAUSTICS, v >> 1},
+                                                              cascade_count_spec(ocean)}});
 }
 
 void SurfacePass::record(const FrameContext& frame, const Inputs& in, vk::Target color,
@@ -65,7 +66,8 @@ void SurfacePass::record_aov(const FrameContext& frame, vk::Target normal_foam, 
                                                .color_formats = {kAovFormat, kAovFormat},
                                                .depth_format = depth_format_,
                                                .depth_test = true,
-                                               .depth_write = true});
+                                               .depth_write = true,
+                                               .spec = {cascade_count_spec(ocean_)}});
   vk::begin_rendering(frame.cmd, frame.extent,
                       {{.view = normal_foam.view, .clear = std::array{0.f, 0.f, 0.f, 0.f}},
                        {.view = world.view, .clear = std::array{0.f, 0.f, 0.f, 0.f}}},

@@ -31,7 +31,7 @@ UnderwaterPass::UnderwaterPass(vk::Context& ctx, const ocean::GpuOcean& ocean, c
                                            .depth_format = depth_format,
                                            .depth_test = true,
                                            .depth_write = true,
-                                           .spec = spec});
+                                           .spec = {spec[0], cascade_count_spec(ocean)}});
   }
 }
 

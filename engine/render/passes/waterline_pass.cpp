@@ -20,7 +20,8 @@ WaterlinePass::WaterlinePass(vk::Context& ctx, const ocean::GpuOcean& ocean, con
                                                     .depth_format = depth_format,
                                                     .depth_test = true,
                                                     .depth_write = true,
-                                                    .depth_compare = VK_COMPARE_OP_ALWAYS})) {}
+                                                    .depth_compare = VK_COMPARE_OP_ALWAYS,
+                                                    .spec = {cascade_count_spec(ocean)}})) {}
 
 void WaterlinePass::resize(VkExtent2D extent) {
   const VkImageUsageFlags sampled = VK_IMAGE_USAGE_SAMPLED_BIT;
