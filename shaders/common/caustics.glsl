@@ -13,21 +13,15 @@ float caustic_gain(vec2 xz, float depth) {
   vec2 uv = (xz - frame.caustics.xy) / (frame.caustics.z * frame.caustics.w);
   if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 1.0;
   // Between slices linearly in depth; above the first towards 1 at the surface (no focusing at depth 0);
-  // below the last, the last.
+  // below the last, the last. Selects, not branches, so only two lookups run (lavapipe runs both sides of a
+  // branch).
   vec4 z = frame.caustic_depths;
-  float e, share;
-  if (depth <= z.x) {
-    float f = depth / z.x;
-    e = mix(1.0, texture(caustic_map, vec3(uv, 0.0)).r, f);
-    share = frame.caustic_share.x;
-  } else {
-    int k = depth < z.y ? 0 : depth < z.z ? 1 : depth < z.w ? 2 : 3;
-    float lo = z[k], hi = z[min(k + 1, 3)];
-    float f = k == 3 ? 0.0 : (depth - lo) / (hi - lo);
-    e = mix(texture(caustic_map, vec3(uv, float(k))).r,
-            texture(caustic_map, vec3(uv, float(min(k + 1, 3)))).r, f);
-    share = mix(frame.caustic_share[k], frame.caustic_share[min(k + 1, 3)], f);
-  }
+  int k = depth < z.y ? 0 : depth < z.z ? 1 : depth < z.w ? 2 : 3;
+  int next = min(k + 1, 3);
+  float f = k == 3 ? 0.0 : clamp((depth - z[k]) / (z[next] - z[k]), 0.0, 1.0);
+  float e = mix(texture(caustic_map, vec3(uv, float(k))).r, texture(caustic_map, vec3(uv, float(next))).r, f);
+  e = depth < z.x ? mix(1.0, e, depth / z.x) : e;  // there k = 0 and f = 0: e is the first slice's
+  float share = mix(frame.caustic_share[k], frame.caustic_share[next], f);
   vec2 edge = min(uv, 1.0 - uv);
   float fade = smoothstep(0.0, 0.1, min(edge.x, edge.y));
   return 1.0 + fade * share * (e - 1.0);

@@ -32,10 +32,12 @@ layout(location = 0) out vec4 out_colour;
 vec3 mirrored_below(vec3 r) {
   float down = max(-r.y, 0.02);
   float floor_depth = frame.floor_below.x;
-  if (floor_depth <= 0.0 || floor_depth / down > frame.underwater.x)
-    return underwater_added(frame.underwater.x, 0.5 * min(frame.underwater.x * down, frame.underwater.y), r.y);
-  float d = floor_depth / down;
-  return frame.floor_below.y * underwater_target(d, floor_depth).rgb + underwater_added(d, 0.5 * floor_depth, r.y);
+  // Selects rather than a branch: lavapipe would run both sides' lookups.
+  bool floor_seen = floor_depth > 0.0 && floor_depth / down <= frame.underwater.x;
+  float d = floor_seen ? floor_depth / down : frame.underwater.x;
+  float mean_depth = 0.5 * (floor_seen ? floor_depth : min(frame.underwater.x * down, frame.underwater.y));
+  vec3 floor_light = floor_seen ? frame.floor_below.y * underwater_target(d, floor_depth).rgb : vec3(0.0);
+  return floor_light + underwater_added(d, mean_depth, r.y);
 }
 
 // What a ray leaving the water along t (upward, in the air) meets: the objects above the water from the

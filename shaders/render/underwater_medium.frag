@@ -61,29 +61,26 @@ void main() {
   if (dot(n, dir) > 0.0) n = -n;
   float pixel_angle = max(length(dFdx(dir)), 1e-6);
   bool volume = frame.water_volume.w > 0.5;  // render.effects.underwater
-  vec3 radiance;
-  if (albedo.a > 0.5) {
-    float d = length(hit - eye);
+  // Both sides of a branch run on lavapipe, so the water along the ray (two lookups) is looked up once, for
+  // the distance and mean depth each case sets.
+  bool hit_something = albedo.a > 0.5;
+  float d = hit_something ? length(hit - eye) : frame.underwater.x;
+  // Nothing within reach: the water to the end of the table (α below 1e-3 there for every Jerlov type).
+  float end_depth = hit_something ? -hit.y : max(camera_depth - d * dir.y, 0.0);
+  vec3 water = volume ? underwater_added(d, 0.5 * (camera_depth + end_depth), dir.y) + light_shafts(eye, dir, d, pixel)
+                      : vec3(0.0);
+  vec3 radiance = water * frame.lut.w;
+  if (hit_something) {
     vec4 target = underwater_target(volume ? d : 0.0, -hit.y);
     vec3 seen = albedo.rgb;
     if (volume && target.a > 0.01) seen = mix(seen, blurred_albedo(pixel, seen, kBlurHalfAngleRad / pixel_angle), target.a);
     // The target's light at its own depth; the water's along the ray at the ray's mean depth. Both are
     // relative to the light above the water (scaled by frame.lut.w); the lamps are not.
-    radiance = seen * target.rgb * caustic_gain(hit.xz, -hit.y);
-    if (volume) radiance += underwater_added(d, 0.5 * (camera_depth - hit.y), dir.y) + light_shafts(eye, dir, d, pixel);
-    radiance *= frame.lut.w;
+    radiance += seen * target.rgb * caustic_gain(hit.xz, -hit.y) * frame.lut.w;
     if (kUnderwaterLamps)  // compiled out without lights (shared/surface.h)
       radiance += albedo.rgb * lamp_irradiance(hit, n) * (volume ? underwater_transmittance(d) : vec3(1.0));
-    gl_FragDepth = depth;
-  } else {
-    // Nothing within reach: the water to the end of the table (α below 1e-3 there for every Jerlov type).
-    float d = frame.underwater.x;
-    float end_depth = max(camera_depth - d * dir.y, 0.0);
-    radiance = volume ? (underwater_added(d, 0.5 * (camera_depth + end_depth), dir.y) + light_shafts(eye, dir, d, pixel)) *
-                            frame.lut.w
-                      : vec3(0.0);
-    gl_FragDepth = 1.0;
   }
+  gl_FragDepth = hit_something ? depth : 1.0;
   radiance = max(radiance, vec3(0.0));  // shafts darken where the caustics do, never below black
   out_colour = vec4(display_encode(frame, radiance), 1.0);
 }
