@@ -37,14 +37,16 @@ Result<std::unique_ptr<SceneObjects>> SceneObjects::load(vk::Context& ctx, const
                                                          const Samplers& samplers, VkFormat display_format,
                                                          VkFormat hdr_format, VkFormat depth_format) {
   std::unique_ptr<SceneObjects> objects(new SceneObjects(ctx, samplers));
-  for (auto [pipeline, format] :
-       {std::pair{&objects->display_, display_format}, {&objects->hdr_, hdr_format}})
-    *pipeline = vk::GraphicsPipeline::create(ctx, {.vertex = &shaders::render_mesh_vert,
-                                                   .fragment = &shaders::render_mesh_frag,
-                                                   .color_formats = {format},
-                                                   .depth_format = depth_format,
-                                                   .depth_test = true,
-                                                   .depth_write = true});
+  static_assert(LAGOON_MESH_WINDOW + 1 == std::tuple_size_v<decltype(pipelines_)>, "a pipeline per mode");
+  for (uint32_t mode = 0; mode < objects->pipelines_.size(); ++mode)
+    objects->pipelines_[mode] = vk::GraphicsPipeline::create(
+        ctx, {.vertex = &shaders::render_mesh_vert,
+              .fragment = &shaders::render_mesh_frag,
+              .color_formats = {mode == LAGOON_MESH_LIT ? display_format : hdr_format},
+              .depth_format = depth_format,
+              .depth_test = true,
+              .depth_write = true,
+              .spec = {{LAGOON_MESH_SPEC_MODE, mode}}});
   const io::Image8 white{.width = 1, .height = 1, .rgba = {255, 255, 255, 255}};
   objects->white_texture_ = upload_texture(ctx, white, "white");
   if (auto r = objects->load_floor(scene); !r) return r.error();
@@ -105,7 +107,7 @@ Result<void> SceneObjects::load_model(const std::string& file, const glm::mat4& 
 
 void SceneObjects::draw_mesh(const FrameContext& frame, gpu::MeshMode mode, const GpuMesh& mesh,
                              const gpu::MeshPush& push, const vk::Image& texture) const {
-  const vk::GraphicsPipeline& pipeline = mode == gpu::MeshMode::Lit ? display_ : hdr_;
+  const vk::GraphicsPipeline& pipeline = pipelines_[uint32_t(mode)];
   vk::draw(
       frame.cmd, pipeline,
       {vk::bind(LAGOON_MESH_BIND_FRAME, frame.uniforms()), vk::bind(LAGOON_MESH_BIND_VERTICES, mesh.vertices),
@@ -120,7 +122,7 @@ void SceneObjects::draw(const FrameContext& frame, gpu::MeshMode mode) const {
     // mesh.frag keeps only what is on its pass's side of y = 0; a mesh wholly on the other side is skipped.
     const bool wanted = mode == gpu::MeshMode::Refraction ? o.y_range.x < 0.0f : o.y_range.y > 0.0f;
     if (!wanted) continue;
-    const gpu::MeshPush push{.model = o.world, .base_colour = o.base_colour, .mode = uint32_t(mode)};
+    const gpu::MeshPush push{.model = o.world, .base_colour = o.base_colour};
     draw_mesh(frame, mode, o.mesh, push, o.texture >= 0 ? textures_[o.texture] : white_texture_);
   }
 }
@@ -129,7 +131,6 @@ void SceneObjects::draw_floor(const FrameContext& frame) const {
   if (!floor_) return;
   const gpu::MeshPush push{.model = glm::mat4(1.0f),
                            .base_colour = glm::vec4(floor_albedo_, floor_textured_ ? 1.0f : 0.0f),
-                           .mode = LAGOON_MESH_REFRACTION,
                            .texture_scale = floor_texture_scale_};
   draw_mesh(frame, gpu::MeshMode::Refraction, *floor_, push,
             floor_textured_ ? floor_texture_ : white_texture_);

@@ -2,6 +2,7 @@
 // floor, with their textures and the mesh pipelines (shaders/render/mesh.*). Passes draw them in one of the
 // three modes of shared/mesh.h.
 #pragma once
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
@@ -56,7 +57,8 @@ class SceneObjects {
   bool floor_textured_ = false;
   glm::vec3 floor_albedo_{1};
   float floor_texture_scale_ = 1;
-  vk::GraphicsPipeline display_, hdr_;  // into the displayed frame / into HDR targets
+  // One per gpu::MeshMode (LAGOON_MESH_SPEC_MODE): Lit into the displayed frame, the others into HDR targets.
+  std::array<vk::GraphicsPipeline, 4> pipelines_;
 };
 
 }  // namespace lagoon::render

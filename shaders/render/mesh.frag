@@ -13,6 +13,7 @@ layout(std140, binding = LAGOON_MESH_BIND_FRAME) uniform Frame { FrameUniforms f
 layout(binding = LAGOON_MESH_BIND_ALBEDO) uniform sampler2D albedo_texture;
 layout(std430, binding = LAGOON_MESH_BIND_LIGHTS) readonly buffer Lights { PointLightGpu point_lights[]; };
 layout(push_constant) uniform Push { MeshPush p; };
+layout(constant_id = LAGOON_MESH_SPEC_MODE) const uint kMode = LAGOON_MESH_LIT;
 
 layout(location = 0) in vec3 v_world;
 layout(location = 1) in vec3 v_normal;
@@ -20,7 +21,7 @@ layout(location = 2) in vec2 v_uv;
 layout(location = 0) out vec4 out_colour;
 
 void main() {
-  const uint mode = p.mode;
+  const uint mode = kMode;
   if (mode == LAGOON_MESH_REFRACTION && v_world.y > 0.0) discard;  // the refraction pass sees only what is under the water
   if (mode != LAGOON_MESH_REFRACTION && v_world.y < 0.0) discard;  // above-water passes see only what is above
   vec3 albedo = p.base_colour.rgb;

@@ -9,6 +9,7 @@ struct Vertex { float px, py, pz, nx, ny, nz, u, v; };
 layout(std430, binding = LAGOON_MESH_BIND_VERTICES) readonly buffer Vertices { Vertex vertices[]; };
 layout(std430, binding = LAGOON_MESH_BIND_INDICES) readonly buffer Indices { uint indices[]; };
 layout(push_constant) uniform Push { MeshPush p; };
+layout(constant_id = LAGOON_MESH_SPEC_MODE) const uint kMode = LAGOON_MESH_LIT;
 #include "common/snell_window.glsl"
 
 layout(location = 0) out vec3 v_world;
@@ -21,7 +22,7 @@ void main() {
   v_world = world.xyz;
   v_normal = normalize(mat3(p.model) * vec3(vtx.nx, vtx.ny, vtx.nz));
   v_uv = p.texture_scale > 0.0 ? world.xz / p.texture_scale : vec2(vtx.u, vtx.v);
-  if (p.mode == LAGOON_MESH_MIRRORED) world.y = -world.y;  // reflection: the scene mirrored about the mean water level
-  if (p.mode == LAGOON_MESH_WINDOW) world.xyz = window_apparent_position(world.xyz);
+  if (kMode == LAGOON_MESH_MIRRORED) world.y = -world.y;  // reflection: the scene mirrored about the mean water level
+  if (kMode == LAGOON_MESH_WINDOW) world.xyz = window_apparent_position(world.xyz);
   gl_Position = frame.view_proj * world;
 }
