@@ -11,7 +11,7 @@
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
-set(LAGOON_EXPORT_ROOTS lagoon_core lagoon_fft_cpu lagoon_ocean lagoon_optics lagoon_render)
+set(LAGOON_EXPORT_ROOTS lagoon_core lagoon_fft_cpu lagoon_ocean lagoon_optics lagoon_physics lagoon_render)
 set(LAGOON_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/Lagoon)
 set(LAGOON_INSTALL_INCLUDEDIR ${CMAKE_INSTALL_INCLUDEDIR}/lagoon)
 

@@ -1,0 +1,61 @@
+#include "physics/floating_body.h"
+
+#include <algorithm>
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+namespace lagoon::physics {
+
+FloatingBody::FloatingBody(const TriangleMesh& hull, const MassProperties& mass, Damping damping,
+                           WaterProperties water)
+    : indices_(hull.indices), mass_(mass), damping_(damping), water_(water) {
+  hull_.reserve(hull.vertices.size());
+  for (const glm::dvec3& v : hull.vertices) hull_.push_back(v - mass.centre);
+  for (size_t t = 0; t + 2 < indices_.size(); t += 3)
+    hull_area_ += 0.5 * glm::length(glm::cross(hull_[indices_[t + 1]] - hull_[indices_[t]],
+                                               hull_[indices_[t + 2]] - hull_[indices_[t]]));
+  inverse_inertia_ = glm::inverse(mass.inertia);
+  world_.resize(hull_.size());
+}
+
+void FloatingBody::place(glm::dvec3 origin, glm::dquat orientation) {
+  state_ = BodyState{};
+  state_.orientation = glm::normalize(orientation);
+  state_.position = origin + state_.orientation * mass_.centre;
+}
+
+glm::dvec3 FloatingBody::model_origin() const {
+  return state_.position - state_.orientation * mass_.centre;
+}
+
+double FloatingBody::kinetic_energy() const {
+  const glm::dmat3 r = glm::mat3_cast(state_.orientation);
+  const glm::dvec3 w = state_.angular_velocity;
+  return 0.5 * mass_.mass * glm::dot(state_.velocity, state_.velocity) +
+         0.5 * glm::dot(w, r * mass_.inertia * glm::transpose(r) * w);
+}
+
+void FloatingBody::step(double dt, const WaterHeight& water) {
+  const glm::dmat3 r = glm::mat3_cast(state_.orientation);
+  for (size_t i = 0; i < hull_.size(); ++i) world_[i] = state_.position + r * hull_[i];
+  wrench_ = hydrostatic_wrench(world_, indices_, water, state_.position, water_.density, water_.gravity);
+  const double wet = hull_area_ > 0 ? std::min(wrench_.wetted_area / hull_area_, 1.0) : 0.0;
+
+  const glm::dvec3 v = state_.velocity, w = state_.angular_velocity;
+  const glm::dmat3 inertia = r * mass_.inertia * glm::transpose(r);
+  glm::dvec3 force = wrench_.force + glm::dvec3(0.0, -water_.gravity * mass_.mass, 0.0);
+  force -= wet * (damping_.linear + damping_.quadratic * glm::length(v)) * mass_.mass * v;
+  glm::dvec3 torque = wrench_.torque;
+  torque -= wet * (damping_.angular + damping_.angular_quadratic * glm::length(w)) * (inertia * w);
+
+  // Semi-implicit Euler: velocities first, then positions with the new velocities.
+  state_.velocity += dt * force / mass_.mass;
+  const glm::dmat3 inverse_inertia = r * inverse_inertia_ * glm::transpose(r);
+  state_.angular_velocity += dt * (inverse_inertia * (torque - glm::cross(w, inertia * w)));
+  state_.position += dt * state_.velocity;
+  const glm::dvec3 wn = state_.angular_velocity;
+  state_.orientation =
+      glm::normalize(state_.orientation + 0.5 * dt * glm::dquat(0.0, wn.x, wn.y, wn.z) * state_.orientation);
+}
+
+}  // namespace lagoon::physics
