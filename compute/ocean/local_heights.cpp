@@ -1,0 +1,83 @@
+#include "ocean/local_heights.h"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/common.hpp>
+
+namespace lagoon::ocean {
+namespace {
+
+// Catmull-Rom weights of the four samples at -1, 0, 1, 2 for a point s in [0, 1] between 0 and 1.
+std::array<double, 4> catmull_rom(double s) {
+  const double s2 = s * s, s3 = s2 * s;
+  return {0.5 * (-s3 + 2 * s2 - s), 0.5 * (3 * s3 - 5 * s2 + 2), 0.5 * (-3 * s3 + 4 * s2 + s),
+          0.5 * (s3 - s2)};
+}
+
+}  // namespace
+
+LocalHeights::LocalHeights(const OceanParams& params, std::vector<CascadeSpectrum> spectra,
+                           LocalHeightsOptions options)
+    : query_(params, std::move(spectra)), options_(options) {
+  now_.assign(size_t(options_.points_per_side) * options_.points_per_side, 0.0);
+}
+
+void LocalHeights::recentre(glm::dvec2 centre) {
+  const double s = options_.spacing_m, half = 0.5 * (options_.points_per_side - 1) * s;
+  origin_ = glm::floor((centre - half) / s) * s;
+  placed_ = true;
+  knots_.clear();
+}
+
+const std::vector<double>& LocalHeights::knot(long long index) {
+  for (const auto& [i, heights] : knots_)
+    if (i == index) return heights;
+  const int n = options_.points_per_side;
+  std::vector<glm::dvec2> points;
+  points.reserve(size_t(n) * n);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) points.push_back(origin_ + glm::dvec2(i, j) * options_.spacing_m);
+  const std::vector<WaveSample> samples = query_.sample(double(index) * options_.knot_interval_s, points);
+  std::vector<double> heights(samples.size());
+  for (size_t k = 0; k < samples.size(); ++k) heights[k] = samples[k].height;
+  ++knots_sampled_;
+  knots_.emplace_back(index, std::move(heights));
+  return knots_.back().second;
+}
+
+void LocalHeights::update(double time_s, glm::dvec2 centre) {
+  const int n = options_.points_per_side;
+  const double s = options_.spacing_m;
+  // Keep the body two spacings inside the lattice's inner part (bicubic taps reach one point out).
+  const glm::dvec2 local = (centre - origin_) / s;
+  const double lo = 0.25 * (n - 1), hi = 0.75 * (n - 1);
+  if (!placed_ || local.x < lo || local.y < lo || local.x > hi || local.y > hi) recentre(centre);
+  const double u = time_s / options_.knot_interval_s;
+  const long long k = (long long)std::floor(u);
+  const std::array<double, 4> w = catmull_rom(u - double(k));
+  // Only the knots k - 1 .. k + 2 are kept; the missing ones are sampled, then looked up (so no reference
+  // outlives a change of the list).
+  std::erase_if(knots_, [k](const auto& knot) { return knot.first < k - 1 || knot.first > k + 2; });
+  for (int m = 0; m < 4; ++m) knot(k - 1 + m);
+  std::array<const std::vector<double>*, 4> at{};
+  for (int m = 0; m < 4; ++m) at[m] = &knot(k - 1 + m);
+  for (size_t i = 0; i < now_.size(); ++i)
+    now_[i] = w[0] * (*at[0])[i] + w[1] * (*at[1])[i] + w[2] * (*at[2])[i] + w[3] * (*at[3])[i];
+}
+
+double LocalHeights::height(double x, double z) const {
+  const int n = options_.points_per_side;
+  const glm::dvec2 local =
+      glm::clamp((glm::dvec2(x, z) - origin_) / options_.spacing_m, glm::dvec2(0.0), glm::dvec2(n - 1));
+  const int ix = std::min(int(local.x), n - 2), iz = std::min(int(local.y), n - 2);
+  const std::array<double, 4> wx = catmull_rom(local.x - ix), wz = catmull_rom(local.y - iz);
+  double sum = 0;
+  for (int b = 0; b < 4; ++b)
+    for (int a = 0; a < 4; ++a) {
+      const int i = std::clamp(ix - 1 + a, 0, n - 1), j = std::clamp(iz - 1 + b, 0, n - 1);
+      sum += wx[a] * wz[b] * now_[size_t(j) * n + i];
+    }
+  return sum;
+}
+
+}  // namespace lagoon::ocean

@@ -1,0 +1,50 @@
+// The sea's height around a floating body, for its buoyancy at every physics step (issue 14). WaveQuery's
+// FFT per new time (15-30 ms on 2 cores) is too slow for 120 steps a second, so the heights are sampled from
+// WaveQuery only at time knots (every knot_interval_s) on a small square lattice around the body, and in
+// between interpolated: Catmull-Rom through four knots in time, bicubic Catmull-Rom in space. The lattice
+// is fixed in the world (its origin a multiple of the spacing) and moves only when the body nears its edge,
+// which re-samples the knots. Waves much shorter than the spacing are not resolved: they average out over a
+// hull of several spacings.
+#pragma once
+#include <array>
+#include <glm/vec2.hpp>
+#include <vector>
+
+#include "ocean/wave_query.h"
+
+namespace lagoon::ocean {
+
+struct LocalHeightsOptions {
+  int points_per_side = 16;      // lattice points along each side
+  double spacing_m = 0.5;        // between them
+  double knot_interval_s = 0.2;  // between WaveQuery evaluations
+};
+
+class LocalHeights {
+ public:
+  LocalHeights(const OceanParams& params, std::vector<CascadeSpectrum> spectra, LocalHeightsOptions options);
+
+  // Makes height() answer at time t around `centre` (the body's position): samples the knots it lacks.
+  void update(double time_s, glm::dvec2 centre);
+  // The displaced surface's height at (x, z) at the last update's time. Outside the lattice: its edge value.
+  double height(double x, double z) const;
+
+  // How many knots were sampled from WaveQuery so far (each costs one evaluation of the sea's fields).
+  int knots_sampled() const { return knots_sampled_; }
+  const LocalHeightsOptions& options() const { return options_; }
+
+ private:
+  void recentre(glm::dvec2 centre);
+  const std::vector<double>& knot(long long index);
+
+  WaveQuery query_;
+  LocalHeightsOptions options_;
+  glm::dvec2 origin_{0.0};  // the lattice point (0, 0), world xz
+  bool placed_ = false;
+  // The knots k - 1 .. k + 2 around the last update's time (index, heights on the lattice).
+  std::vector<std::pair<long long, std::vector<double>>> knots_;
+  std::vector<double> now_;  // the lattice at the last update's time
+  int knots_sampled_ = 0;
+};
+
+}  // namespace lagoon::ocean

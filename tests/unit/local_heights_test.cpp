@@ -1,0 +1,128 @@
+// LocalHeights (compute/ocean/local_heights.h): the sea's height around a body from WaveQuery knots,
+// interpolated in time and space, against WaveQuery itself at the exact time; and a floating box riding the
+// default scene's sea with it.
+#include "ocean/local_heights.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "physics/floating_body.h"
+#include "scene/scene.h"
+
+namespace lagoon::test {
+namespace {
+
+scene::Scene default_scene() {
+  auto s = scene::load_scene(std::string(LAGOON_SOURCE_DIR) + "/scenes/default.json", {});
+  EXPECT_TRUE(s) << s.error().message;
+  return s ? *s : scene::Scene{};
+}
+
+std::vector<ocean::CascadeSpectrum> spectra_of(const ocean::OceanParams& params) {
+  std::vector<ocean::CascadeSpectrum> out;
+  for (uint32_t c = 0; c < params.cascades.size(); ++c)
+    out.push_back(ocean::make_cascade_spectrum(params, c));
+  return out;
+}
+
+TEST(LocalHeights, FollowWaveQueryBetweenKnots) {
+  const scene::Scene s = default_scene();
+  const auto spectra = spectra_of(s.ocean);
+  ocean::LocalHeights local(s.ocean, spectra, {});
+  ocean::WaveQuery exact(s.ocean, spectra);
+  const glm::dvec2 centre(3.0, -7.0);
+  double sum2 = 0, error2 = 0, worst = 0;
+  int count = 0;
+  // What buoyancy sees: the mean height over a hull's patch. Waves shorter than the lattice resolves (under
+  // 4 spacings, 2 m) are not there, but over a 1 m square they average out in the truth as well.
+  auto patch_mean = [](auto&& height, double x0, double z0) {
+    double sum = 0;
+    for (int a = 0; a < 5; ++a)
+      for (int b = 0; b < 5; ++b) sum += height(x0 + 0.2 * a, z0 + 0.2 * b);
+    return sum / 25;
+  };
+  for (int step = 0; step < 12; ++step) {
+    const double t = 4.0 + 0.137 * step;  // between knots, at every phase of the interval
+    local.update(t, centre);
+    for (int i = -2; i <= 1; ++i)
+      for (int j = -2; j <= 1; ++j) {
+        const double x = centre.x + 1.03 * i, z = centre.y + 0.97 * j;
+        const double h =
+            patch_mean([&](double px, double pz) { return exact.sample(t, px, pz).height; }, x, z);
+        const double e = patch_mean([&](double px, double pz) { return local.height(px, pz); }, x, z) - h;
+        sum2 += h * h;
+        error2 += e * e;
+        worst = std::max(worst, std::abs(e));
+        ++count;
+      }
+  }
+  const double rms = std::sqrt(sum2 / count), rms_error = std::sqrt(error2 / count);
+  std::printf(
+      "LocalHeights vs WaveQuery, 1 m patch means: rms error %.4f m (worst %.4f m), rms %.3f m, %d knots\n",
+      rms_error, worst, rms, local.knots_sampled());
+  RecordProperty("rms_error_m", std::to_string(rms_error));
+  RecordProperty("sea_rms_m", std::to_string(rms));
+  EXPECT_GT(rms, 0.03) << "too calm a sea to tell";
+  EXPECT_LT(rms_error, 0.1 * rms);
+  EXPECT_LE(local.knots_sampled(), 12) << "knots are sampled again and again";
+}
+
+TEST(LocalHeights, ABoxRidesTheScenesSea) {
+  const scene::Scene s = default_scene();
+  const auto spectra = spectra_of(s.ocean);
+  physics::TriangleMesh hull;
+  for (int k = 0; k < 8; ++k)
+    hull.vertices.push_back({k & 1 ? 0.5 : -0.5, k & 2 ? 0.2 : -0.2, k & 4 ? 0.5 : -0.5});
+  const uint32_t quads[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4},
+                                {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
+  for (const auto& q : quads) hull.indices.insert(hull.indices.end(), {q[0], q[1], q[2], q[0], q[2], q[3]});
+  auto run = [&](std::vector<double>* water_at_body) {
+    ocean::LocalHeights local(s.ocean, spectra, {});
+    physics::FloatingBody body(hull, physics::solid_mass_properties(hull, 1025.0 / 2), {}, {});
+    body.place({0, 0, 0}, glm::dquat(1, 0, 0, 0));
+    std::vector<double> heave;
+    const double dt = 1.0 / 120;
+    for (int i = 0; i < 20 * 120; ++i) {
+      const double t = i * dt;
+      local.update(t, glm::dvec2(body.state().position.x, body.state().position.z));
+      body.step(dt, [&](double x, double z) { return local.height(x, z); });
+      if (i >= 5 * 120) {
+        heave.push_back(body.state().position.y);
+        if (water_at_body)
+          water_at_body->push_back(local.height(body.state().position.x, body.state().position.z));
+      }
+    }
+    return heave;
+  };
+  std::vector<double> water;
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<double> heave = run(&water);
+  const double ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  // It rides the sea: its centre follows the water at its centre (a half-density box floats with its centre
+  // at the surface), closely for waves much longer than the box.
+  double mean_h = 0, mean_w = 0;
+  for (size_t i = 0; i < heave.size(); ++i)
+    mean_h += heave[i] / heave.size(), mean_w += water[i] / water.size();
+  double sxy = 0, sxx = 0, syy = 0;
+  for (size_t i = 0; i < heave.size(); ++i) {
+    sxy += (heave[i] - mean_h) * (water[i] - mean_w);
+    sxx += (heave[i] - mean_h) * (heave[i] - mean_h);
+    syy += (water[i] - mean_w) * (water[i] - mean_w);
+  }
+  const double correlation = sxy / std::sqrt(sxx * syy), ratio = std::sqrt(sxx / syy);
+  std::printf("box in the default sea: heave/water rms %.3f, correlation %.3f, 20 s simulated in %.0f ms\n",
+              ratio, correlation, ms);
+  RecordProperty("heave_ratio", std::to_string(ratio));
+  RecordProperty("correlation", std::to_string(correlation));
+  EXPECT_GT(correlation, 0.9);
+  EXPECT_NEAR(ratio, 1.0, 0.3);
+  // Deterministic: the same run gives the same bits.
+  EXPECT_EQ(run(nullptr), heave);
+}
+
+}  // namespace
+}  // namespace lagoon::test
