@@ -2,30 +2,24 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <glm/gtc/matrix_transform.hpp>
 #include <limits>
 
+#include <glm/common.hpp>
 #include "gltf/gltf_loader.h"
 #include "lagoon_shaders/shaders.h"
+
+#include "render/object_pose.h"
 #include "render/seafloor.h"
 
 namespace lagoon::render {
 namespace {
 
-// T(position) · Ry(yaw) · Rx(−pitch) · Rz(roll) · S(scale) (docs/scene-format.md, Objects).
-glm::mat4 object_transform(const scene::Object& object) {
-  glm::mat4 transform = glm::translate(glm::mat4(1.0f), object.position);
-  transform = glm::rotate(transform, glm::radians(object.rotation_deg.x), glm::vec3(0, 1, 0));
-  transform = glm::rotate(transform, glm::radians(-object.rotation_deg.y), glm::vec3(1, 0, 0));
-  transform = glm::rotate(transform, glm::radians(object.rotation_deg.z), glm::vec3(0, 0, 1));
-  return glm::scale(transform, glm::vec3(object.scale));
-}
-
-// Lowest and highest world y of a primitive's vertices.
-glm::vec2 world_y_range(const glm::mat4& world, const std::vector<glm::vec3>& positions) {
+// Lowest and highest world y of a box's corners under `world` (a bound of what it holds).
+glm::vec2 world_y_range(const glm::mat4& world, glm::vec3 lo, glm::vec3 hi) {
   glm::vec2 range(std::numeric_limits<float>::max(), std::numeric_limits<float>::lowest());
-  for (const glm::vec3& p : positions) {
-    const float y = (world * glm::vec4(p, 1.0f)).y;
+  for (int k = 0; k < 8; ++k) {
+    const glm::vec3 corner(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
+    const float y = (world * glm::vec4(corner, 1.0f)).y;
     range = glm::vec2(std::min(range.x, y), std::max(range.y, y));
   }
   return range;
@@ -52,8 +46,10 @@ Result<std::unique_ptr<SceneObjects>> SceneObjects::load(vk::Context& ctx, const
   if (auto r = objects->load_floor(scene); !r) return r.error();
   for (size_t o = 0; o < scene.objects.size(); ++o) {
     const std::string field = "objects[" + std::to_string(o) + "].file";
+    const size_t first = objects->objects_.size();
     if (auto r = objects->load_model(scene.objects[o].file, object_transform(scene.objects[o]), field); !r)
       return r.error();
+    objects->object_draws_.push_back({first, objects->objects_.size()});
   }
   return objects;
 }
@@ -92,8 +88,12 @@ Result<void> SceneObjects::load_model(const std::string& file, const glm::mat4& 
       std::vector<MeshVertex> vertices(p.positions.size());
       for (size_t i = 0; i < vertices.size(); ++i)
         vertices[i] = {p.positions[i], p.normals[i], i < p.uvs.size() ? p.uvs[i] : glm::vec2(0)};
-      ObjectDraw draw{.mesh = upload_mesh(ctx_, vertices, p.indices), .world = transform * instance.world};
-      draw.y_range = world_y_range(draw.world, p.positions);
+      ObjectDraw draw{.mesh = upload_mesh(ctx_, vertices, p.indices),
+                      .world = transform * instance.world,
+                      .local = instance.world};
+      draw.lo = draw.hi = p.positions.empty() ? glm::vec3(0.0f) : p.positions[0];
+      for (const glm::vec3& q : p.positions) draw.lo = glm::min(draw.lo, q), draw.hi = glm::max(draw.hi, q);
+      draw.y_range = world_y_range(draw.world, draw.lo, draw.hi);
       if (p.material >= 0) {
         const gltf::Material& m = model->materials[p.material];
         draw.base_colour = glm::vec4(glm::vec3(m.base_color_factor), m.base_color_texture >= 0 ? 1.0f : 0.0f);
@@ -103,6 +103,14 @@ Result<void> SceneObjects::load_model(const std::string& file, const glm::mat4& 
     }
   }
   return {};
+}
+
+void SceneObjects::place(size_t object, const glm::mat4& model_to_world) {
+  const auto [first, end] = object_draws_.at(object);
+  for (size_t d = first; d < end; ++d) {
+    objects_[d].world = model_to_world * objects_[d].local;
+    objects_[d].y_range = world_y_range(objects_[d].world, objects_[d].lo, objects_[d].hi);
+  }
 }
 
 void SceneObjects::draw_mesh(const FrameContext& frame, gpu::MeshMode mode, const GpuMesh& mesh,

@@ -32,6 +32,8 @@ class SceneObjects {
   void draw(const FrameContext& frame, gpu::MeshMode mode) const;
   // The procedural slope floor (refraction only; a glTF floor is an object). No-op without one.
   void draw_floor(const FrameContext& frame) const;
+  // Moves scene object `object` (objects[object]) to `model_to_world`: a floating body's pose.
+  void place(size_t object, const glm::mat4& model_to_world);
 
  private:
   SceneObjects(vk::Context& ctx, const Samplers& samplers) : ctx_(ctx), samplers_(samplers) {}
@@ -43,13 +45,16 @@ class SceneObjects {
   struct ObjectDraw {
     GpuMesh mesh;
     glm::mat4 world{1.0f};
-    glm::vec4 base_colour{1.0f};  // a = 1 when `texture` is used
-    int texture = -1;             // index into textures_
-    glm::vec2 y_range{0.0f};      // lowest and highest world y of its vertices
+    glm::mat4 local{1.0f};         // within its model (the glTF node's transform)
+    glm::vec3 lo{0.0f}, hi{0.0f};  // its vertices' bounds within the node
+    glm::vec4 base_colour{1.0f};   // a = 1 when `texture` is used
+    int texture = -1;              // index into textures_
+    glm::vec2 y_range{0.0f};       // lowest and highest world y of its vertices
   };
   vk::Context& ctx_;
   const Samplers& samplers_;
   std::vector<ObjectDraw> objects_;
+  std::vector<std::pair<size_t, size_t>> object_draws_;  // per scene object, its range in objects_
   std::vector<vk::Image> textures_;
   vk::Image white_texture_;
   std::optional<GpuMesh> floor_;
