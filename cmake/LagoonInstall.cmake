@@ -199,7 +199,7 @@ write_basic_package_version_file(${PROJECT_BINARY_DIR}/LagoonConfigVersion.cmake
 install(FILES ${PROJECT_BINARY_DIR}/LagoonConfig.cmake ${PROJECT_BINARY_DIR}/LagoonConfigVersion.cmake
         DESTINATION ${LAGOON_INSTALL_CMAKEDIR})
 
-# pkg-config (docs/embedding.md): lagoon-ocean and lagoon-optics need no Vulkan; lagoon is everything. The
+# pkg-config (docs/embedding.md): lagoon-ocean, lagoon-optics and lagoon-physics need no Vulkan; lagoon is everything. The
 # libraries are static, so each file lists its archives in link order (users before what they use) and the
 # system libraries they pull in. The prefix is found from the .pc file's own place, so
 # `cmake --install --prefix` anywhere gives working files.
@@ -234,6 +234,7 @@ _lagoon_pkg_config(lagoon-ocean "Lagoon's FFT ocean and WaveQuery, plain C++ (no
                    "-llagoon_ocean -llagoon_fft_cpu -pthread")
 _lagoon_pkg_config(lagoon-optics "Lagoon's spectral water-colour model, plain C++ (no Vulkan)" "glm"
                    "-llagoon_optics")
+_lagoon_pkg_config(lagoon-physics "Lagoon's floating bodies, plain C++ (no Vulkan)" "glm" "-llagoon_physics")
 _lagoon_pkg_config(lagoon "Lagoon: ocean simulation and rendering on Vulkan (every module)"
-                   "lagoon-ocean lagoon-optics vulkan nlohmann_json"
+                   "lagoon-ocean lagoon-optics lagoon-physics vulkan nlohmann_json"
                    "-llagoon_render -llagoon_ocean_gpu -llagoon_fft -llagoon_gltf -llagoon_scene -llagoon_io -llagoon_shaders -llagoon_vk -lstb -pthread")
