@@ -49,6 +49,9 @@ Result<void> OceanRenderer::init(const scene::Scene& scene) {
   auto objects = SceneObjects::load(ctx_, scene, samplers_, kColorFormat, kHdrFormat, kDepthFormat);
   if (!objects) return objects.error();
   objects_ = std::move(*objects);
+  auto floating = FloatingObjects::create(scene, ocean().params(), ocean().spectra());
+  if (!floating) return floating.error();
+  floating_ = std::move(*floating);
   refraction_ = std::make_unique<RefractionPass>(ctx_, *objects_, kHdrFormat, kDepthFormat);
   reflection_ = std::make_unique<ObjectsPass>(ctx_, *objects_, gpu::MeshMode::Mirrored, "reflection",
                                               kHdrFormat, kDepthFormat);
@@ -124,6 +127,7 @@ FrameContext OceanRenderer::begin_frame(VkCommandBuffer cmd, const scene::Scene&
   const double lens_m = scene.camera.near_m * std::tan(0.5 * glm::radians(double(scene.camera.fov_deg))) *
                         std::sqrt(1.0 + double(aspect) * aspect);
   const CameraSide side = camera_medium_->side(scene.camera.position, lens_m, scene.time_s);
+  place_floating_objects(scene.time_s);
   const uint32_t light_count =
       write_point_lights(scene, reinterpret_cast<gpu::PointLightGpu*>(slot.lights.mapped()));
   slot.lights.flush();
@@ -161,6 +165,13 @@ FrameContext OceanRenderer::begin_frame(VkCommandBuffer cmd, const scene::Scene&
                       .camera_side = side,
                       .light_count = light_count,
                       .caustics = caustics.cells > 0};
+}
+
+void OceanRenderer::place_floating_objects(double time_s) {
+  if (floating_->empty()) return;
+  floating_->advance(time_s);
+  for (const FloatingObjects::Pose& pose : floating_->poses())
+    objects_->place(pose.object, pose.model_to_world);
 }
 
 void OceanRenderer::resize(VkExtent2D extent) {

@@ -14,6 +14,7 @@
 #include "io/png.h"
 #include "ocean/gpu/gpu_ocean.h"
 #include "render/camera_medium.h"
+#include "render/floating_objects.h"
 #include "render/frame_context.h"
 #include "render/frame_uniforms.h"
 #include "render/passes/caustics_pass.h"
@@ -108,6 +109,8 @@ class OceanRenderer {
   // The passes' own targets, kept across frames of the same size (allocating ~30 MB of images every frame
   // cost lavapipe several ms).
   void resize(VkExtent2D extent);
+  // Brings the floating objects to time_s and moves their meshes there.
+  void place_floating_objects(double time_s);
   // The renderer's own colour and depth (and readback) for record(extent) and render().
   struct OwnTargets;
   const OwnTargets& own_targets(VkExtent2D extent);
@@ -128,6 +131,7 @@ class OceanRenderer {
   std::unique_ptr<WaterlinePass> waterline_;
   std::unique_ptr<ParticlesPass> particles_;
   std::unique_ptr<CameraMedium> camera_medium_;
+  std::unique_ptr<FloatingObjects> floating_;
   VkExtent2D extent_{};  // of the passes' targets
   std::unique_ptr<OwnTargets> own_;
   std::array<FrameSlot, kSlots> slots_;

@@ -86,12 +86,25 @@ struct Seafloor {
   std::string file;                       // gltf: mesh file, relative to the scene file
 };
 
+// An object that rides the waves (objects[].floating; compute/physics, docs/physics.md): a rigid body whose
+// mass is `density` times its mesh's volume, pushed by the water's pressure on its hull.
+struct Floating {
+  bool enabled = false;
+  float density_kg_m3 = 500.f;           // of the model as a solid
+  float mass_kg = 0.f;                   // > 0: this mass instead (inertia scaled with it)
+  glm::vec3 centre_of_mass_offset{0.f};  // model coordinates, from the solid's centroid (ballast: y < 0)
+  float linear_damping = 0.5f;           // 1/s, against its motion while in the water
+  float quadratic_damping = 0.5f;        // 1/m
+  float angular_damping = 0.5f;          // 1/s
+};
+
 struct Object {
   std::string name;
   std::string file;             // glTF 2.0 (.gltf or .glb), relative to the scene file
   glm::vec3 position{0.f};      // metres
   glm::vec3 rotation_deg{0.f};  // yaw (about y), pitch (about x), roll (about z), applied in that order
   float scale = 1.f;
+  Floating floating;
 };
 
 struct PointLight {

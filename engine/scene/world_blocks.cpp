@@ -86,6 +86,27 @@ void read_seafloor(ObjectReader& r, Seafloor& f) {
              "; a slope is generated, not loaded: remove `file`, or set type \"gltf\" to use the mesh");
 }
 
+void read_floating(ObjectReader& r, Floating& f) {
+  r.flag("enabled", f.enabled,
+         "Ride the waves: the model becomes a rigid body pushed by the water's pressure on its mesh, from "
+         "`position` and `rotation_deg` at rest at time 0 (docs/physics.md). Its mesh must be closed.");
+  r.number("density_kg_m3", f.density_kg_m3, Bounds::between(1, 20000), "kg/m^3",
+           "Density of the model as a solid; its mass is this times the mesh's volume. Sea water is 1025: "
+           "half of that floats half under.");
+  r.number("mass_kg", f.mass_kg, Bounds::between(0, 1e9), "kg",
+           "The body's mass; 0 = density_kg_m3 times the mesh's volume. The inertia is scaled with it.");
+  r.vec3("centre_of_mass_offset", f.centre_of_mass_offset, "[x, y, z]", Bounds::between(-1000, 1000), "m",
+         "Moves the centre of mass from the solid's centroid, in the model's coordinates: ballast low in a "
+         "hull (y < 0) keeps it upright. A uniform solid buoy or boat with its weight high capsizes, as it "
+         "would.");
+  r.number("linear_damping", f.linear_damping, Bounds::between(0, 100), "1/s",
+           "Damping of its motion while in the water: a force of this times its mass and velocity.");
+  r.number("quadratic_damping", f.quadratic_damping, Bounds::between(0, 100), "1/m",
+           "Damping that grows with speed: this times its mass, speed and velocity.");
+  r.number("angular_damping", f.angular_damping, Bounds::between(0, 100), "1/s",
+           "Damping of its rotation while in the water.");
+}
+
 void read_object(ObjectReader& r, Object& o) {
   r.text("name", o.name, "Label for messages and tools; need not be unique.");
   r.text("file", o.file, "glTF 2.0 model (.gltf or .glb), relative to the scene file's folder.");
@@ -96,6 +117,7 @@ void read_object(ObjectReader& r, Object& o) {
          "Yaw about the vertical (clockwise from +z toward +x, like camera.yaw_deg), then pitch (positive "
          "raises the model's +z end), then roll about the model's z axis; see Objects below.");
   r.number("scale", o.scale, Bounds::above_up_to(0, 1000), "", "Uniform scale of the model.");
+  r.block("floating", o.floating, read_floating, "An object that rides the waves (docs/physics.md).");
 }
 
 void read_light(ObjectReader& r, PointLight& l) {

@@ -1,0 +1,117 @@
+#include "render/floating_objects.h"
+
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+#include <string>
+
+#include "gltf/gltf_loader.h"
+#include "render/object_pose.h"
+
+namespace lagoon::render {
+namespace {
+
+// The model's meshes as one triangle soup in its own coordinates, scaled: the body's hull.
+Result<physics::TriangleMesh> load_hull(const scene::Object& object, const std::string& field) {
+  auto model = gltf::load_gltf(object.file);
+  if (!model) return make_error(field + ".file: " + model.error().message);
+  physics::TriangleMesh hull;
+  for (const gltf::Instance& instance : model->instances)
+    for (const gltf::Primitive& p : model->meshes[instance.mesh].primitives) {
+      const uint32_t base = uint32_t(hull.vertices.size());
+      for (const glm::vec3& v : p.positions)
+        hull.vertices.push_back(double(object.scale) * glm::dvec3(instance.world * glm::vec4(v, 1.0f)));
+      for (uint32_t i : p.indices) hull.indices.push_back(base + i);
+    }
+  return hull;
+}
+
+// The body's mass properties: the solid's, with the scene's mass and ballast (parallel-axis theorem for the
+// moved centre).
+physics::MassProperties body_mass(const physics::TriangleMesh& hull, const scene::Floating& f) {
+  physics::MassProperties m = physics::solid_mass_properties(hull, double(f.density_kg_m3));
+  if (f.mass_kg > 0 && m.mass > 0) {
+    m.inertia *= double(f.mass_kg) / m.mass;
+    m.mass = double(f.mass_kg);
+  }
+  const glm::dvec3 d(f.centre_of_mass_offset);
+  m.centre += d;
+  m.inertia += m.mass * (glm::dot(d, d) * glm::dmat3(1.0) - glm::outerProduct(d, d));
+  return m;
+}
+
+}  // namespace
+
+Result<std::unique_ptr<FloatingObjects>> FloatingObjects::create(
+    const scene::Scene& scene, const ocean::OceanParams& ocean,
+    const std::vector<ocean::CascadeSpectrum>& spectra) {
+  std::unique_ptr<FloatingObjects> out(new FloatingObjects(scene, ocean, spectra));
+  for (size_t o = 0; o < scene.objects.size(); ++o) {
+    const scene::Object& object = scene.objects[o];
+    if (!object.floating.enabled) continue;
+    const std::string field = "objects[" + std::to_string(o) + "]";
+    auto hull = load_hull(object, field);
+    if (!hull) return hull.error();
+    const physics::MassProperties mass =
+        physics::solid_mass_properties(*hull, double(object.floating.density_kg_m3));
+    if (!(mass.volume > 1e-9))
+      return make_error(field + ".floating: the model's mesh encloses no volume (" +
+                        std::to_string(mass.volume) +
+                        " m^3); a floating object needs a closed mesh with outward faces, or set "
+                        "floating.enabled to false");
+    out->hulls_.push_back(std::move(*hull));
+  }
+  out->reset();
+  return out;
+}
+
+void FloatingObjects::reset() {
+  bodies_.clear();
+  size_t h = 0;
+  for (size_t o = 0; o < scene_.objects.size(); ++o) {
+    const scene::Object& object = scene_.objects[o];
+    if (!object.floating.enabled) continue;
+    const physics::TriangleMesh& hull = hulls_[h++];
+    const scene::Floating& f = object.floating;
+    physics::FloatingBody body(hull, body_mass(hull, f),
+                               {.linear = f.linear_damping,
+                                .quadratic = f.quadratic_damping,
+                                .angular = f.angular_damping,
+                                .angular_quadratic = f.angular_damping},
+                               {});
+    body.place(glm::dvec3(object.position), object_orientation(object));
+    bodies_.push_back(
+        {o, double(object.scale), std::move(body),
+         std::make_unique<ocean::LocalHeights>(ocean_, spectra_, ocean::LocalHeightsOptions{})});
+  }
+  steps_ = 0;
+}
+
+void FloatingObjects::advance(double time_s) {
+  const long long target = (long long)std::floor(std::max(time_s, 0.0) / kStepS + 1e-9);
+  if (target < steps_) reset();
+  for (; steps_ < target; ++steps_) {
+    const double t = double(steps_) * kStepS;
+    for (Body& b : bodies_) {
+      const glm::dvec3 at = b.body.state().position;
+      b.heights->update(t, glm::dvec2(at.x, at.z));
+      const ocean::LocalHeights& heights = *b.heights;
+      b.body.step(kStepS, [&heights](double x, double z) { return heights.height(x, z); });
+    }
+  }
+}
+
+std::vector<FloatingObjects::Pose> FloatingObjects::poses() const {
+  std::vector<Pose> out;
+  for (const Body& b : bodies_)
+    out.push_back({b.object, object_transform(b.body.model_origin(), b.body.state().orientation, b.scale)});
+  return out;
+}
+
+const physics::FloatingBody* FloatingObjects::body(size_t object) const {
+  for (const Body& b : bodies_)
+    if (b.object == object) return &b.body;
+  return nullptr;
+}
+
+}  // namespace lagoon::render

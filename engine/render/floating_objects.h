@@ -1,0 +1,60 @@
+// The scene's floating objects (objects[].floating, docs/physics.md): each a rigid body (physics/
+// floating_body.h) on the sea's heights around it (ocean/local_heights.h), stepped at a fixed 120 Hz from
+// time 0, at rest where the scene puts it. advance() brings them to a frame's time, simulating again from 0
+// when asked for an earlier one, so a frame at time t shows the same poses however it was reached.
+#pragma once
+#include <memory>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+
+#include "core/result.h"
+#include "ocean/initial_spectrum.h"
+#include "ocean/local_heights.h"
+#include "physics/floating_body.h"
+#include "scene/scene.h"
+
+namespace lagoon::render {
+
+class FloatingObjects {
+ public:
+  static constexpr double kStepS = 1.0 / 120.0;
+
+  // Loads the hull of every floating object (its glTF mesh, scaled). Fails naming the field when a hull is
+  // not a closed surface with a positive volume.
+  static Result<std::unique_ptr<FloatingObjects>> create(const scene::Scene& scene,
+                                                         const ocean::OceanParams& ocean,
+                                                         const std::vector<ocean::CascadeSpectrum>& spectra);
+
+  bool empty() const { return bodies_.empty(); }
+  void advance(double time_s);
+
+  struct Pose {
+    size_t object;             // index into the scene's objects
+    glm::mat4 model_to_world;  // where to draw its model
+  };
+  std::vector<Pose> poses() const;
+  // For tools and tests: the body of objects[object], or nullptr when it does not float.
+  const physics::FloatingBody* body(size_t object) const;
+
+ private:
+  struct Body {
+    size_t object;
+    double scale;
+    physics::FloatingBody body;
+    std::unique_ptr<ocean::LocalHeights> heights;
+  };
+  FloatingObjects(const scene::Scene& scene, ocean::OceanParams ocean,
+                  std::vector<ocean::CascadeSpectrum> spectra)
+      : scene_(scene), ocean_(std::move(ocean)), spectra_(std::move(spectra)) {}
+  void reset();
+
+  scene::Scene scene_;
+  ocean::OceanParams ocean_;
+  std::vector<ocean::CascadeSpectrum> spectra_;
+  std::vector<physics::TriangleMesh> hulls_;
+  std::vector<Body> bodies_;
+  long long steps_ = 0;  // taken since time 0
+};
+
+}  // namespace lagoon::render
