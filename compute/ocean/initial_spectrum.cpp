@@ -60,6 +60,12 @@ void fill_rows(const OceanParams& params, uint32_t cascade, const DirectionalSpe
 
 }  // namespace
 
+std::vector<CascadeSpectrum> make_cascade_spectra(const OceanParams& params) {
+  std::vector<CascadeSpectrum> out;
+  for (uint32_t c = 0; c < params.cascades.size(); ++c) out.push_back(make_cascade_spectrum(params, c));
+  return out;
+}
+
 CascadeSpectrum make_cascade_spectrum(const OceanParams& params, uint32_t cascade) {
   CascadeSpectrum out;
   if (cascade >= params.cascades.size()) return out;

@@ -35,5 +35,7 @@ struct CascadeSpectrum {
 // of range or the cascade has no size (run validate() first). Deterministic: bit-identical for equal params
 // whatever the thread count. Takes a few ms per 256² cascade (rows are spread over up to 8 threads).
 CascadeSpectrum make_cascade_spectrum(const OceanParams& params, uint32_t cascade);
+// Every cascade's, in order.
+std::vector<CascadeSpectrum> make_cascade_spectra(const OceanParams& params);
 
 }  // namespace lagoon::ocean

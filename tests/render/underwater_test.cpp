@@ -18,6 +18,7 @@
 #include "render/camera_medium.h"
 #include "render/ocean_renderer.h"
 #include "render/sky_light.h"
+#include "support/shipped_scene.h"
 #include "support/vk_fixture.h"
 
 namespace lagoon::test {
@@ -25,21 +26,8 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-scene::Scene load_scene(std::vector<std::string> overrides) {
-  auto s = scene::load_scene(std::string(LAGOON_SOURCE_DIR) + "/scenes/default.json", overrides);
-  EXPECT_TRUE(s) << s.error().message;
-  return s ? *s : scene::Scene{};
-}
-
-std::vector<ocean::CascadeSpectrum> spectra_of(const ocean::OceanParams& params) {
-  std::vector<ocean::CascadeSpectrum> out;
-  for (uint32_t c = 0; c < params.cascades.size(); ++c)
-    out.push_back(ocean::make_cascade_spectrum(params, c));
-  return out;
-}
-
 TEST(CameraMedium, AskTheWavesNotTheMeanLevel) {
-  const scene::Scene s = load_scene({});
+  const scene::Scene s = shipped_scene("default", {});
   ocean::WaveQuery query(s.ocean);
   // A crest well above the mean level.
   glm::dvec2 crest{0, 0};
@@ -48,7 +36,7 @@ TEST(CameraMedium, AskTheWavesNotTheMeanLevel) {
     for (double z = 0; z < 60 && height < 0.3; z += 0.5)
       if (const double h = query.sample(s.time_s, x, z).height; h > height) height = h, crest = {x, z};
   ASSERT_GT(height, 0.3);
-  render::CameraMedium medium(s.ocean, spectra_of(s.ocean), 20.0);
+  render::CameraMedium medium(s.ocean, ocean::make_cascade_spectra(s.ocean), 20.0);
   const float x = float(crest.x), z = float(crest.y);
   // Above the mean level but inside the crest: under the water, which y < 0 would get wrong.
   EXPECT_TRUE(medium.under_water({x, float(height - 0.05), z}, s.time_s));
@@ -62,12 +50,6 @@ TEST(CameraMedium, AskTheWavesNotTheMeanLevel) {
 }
 
 class Underwater : public GpuTest {};
-
-scene::Scene load_scene_file(const std::string& name, const std::vector<std::string>& overrides) {
-  auto s = scene::load_scene(std::string(LAGOON_SOURCE_DIR) + "/scenes/" + name + ".json", overrides);
-  EXPECT_TRUE(s) << s.error().message;
-  return s ? *s : scene::Scene{};
-}
 
 optics::UnderwaterSample at_or_die(const optics::LutInputs& in, double d, double z) {
   auto s = optics::underwater_sample(in, d, z);
@@ -84,8 +66,8 @@ TEST_F(Underwater, SnellsWindowHasTheCriticalAngle) {
   // Looking straight up from 6 m under a calm sea with no floor: inside the window the sky, outside it the
   // dark water mirrored by total internal reflection.
   const uint32_t size = 200;
-  const scene::Scene s =
-      load_scene({"camera.position=[0,-6,0]", "camera.look_at=[0,10,0.001]", "camera.fov_deg=120",
+  const scene::Scene s = shipped_scene(
+      "default", {"camera.position=[0,-6,0]", "camera.look_at=[0,10,0.001]", "camera.fov_deg=120",
                   "render.width=" + std::to_string(size), "render.height=" + std::to_string(size),
                   "ocean.spectrum.wind_speed_mps=0.5", "water.type=jerlov-I", "seafloor.type=none",
                   "objects=[]", "sun.elevation_deg=80"});
@@ -145,8 +127,8 @@ TEST_F(Underwater, ObjectsAboveAreSeenRefractedInTheWindow) {
   // instead of from where it leaves the water, 36.8°.
   const uint32_t size = 400;
   const double depth = 3.0, distance = 3.0;
-  const scene::Scene s =
-      load_scene({"camera.position=[0,-3,0]", "camera.look_at=[0,10,0.001]", "camera.fov_deg=120",
+  const scene::Scene s = shipped_scene(
+      "default", {"camera.position=[0,-3,0]", "camera.look_at=[0,10,0.001]", "camera.fov_deg=120",
                   "render.width=" + std::to_string(size), "render.height=" + std::to_string(size),
                   "ocean.spectrum.wind_speed_mps=0.5", "water.type=jerlov-I", "seafloor.type=none",
                   "objects=[{\"file\":\"assets/buoy.gltf\",\"position\":[3,0,0]}]", "sun.elevation_deg=80",
@@ -181,7 +163,8 @@ TEST_F(Underwater, FloorThroughTheWaterHasTheModelsColour) {
   // A flat white floor 9 m down, the camera 3 m down looking down at it; two water types.
   for (const char* type : {"jerlov-IB", "jerlov-3C"}) {
     SCOPED_TRACE(type);
-    const scene::Scene s = load_scene(
+    const scene::Scene s = shipped_scene(
+        "default",
         {"camera.position=[0,-3,0]", "camera.look_at=[0,-7,10]", "camera.fov_deg=70", "render.width=160",
          "render.height=120", "seafloor.type=slope", "seafloor.depth_near_m=9", "seafloor.depth_far_m=9",
          "seafloor.albedo=[1,1,1]", "seafloor.texture=\"\"", "objects=[]", "lights=[]",
@@ -285,7 +268,8 @@ TEST_F(Underwater, ALampLightsTheFloorThroughTheWater) {
   for (const char* type : {"jerlov-IB", "jerlov-3C"}) {
     SCOPED_TRACE(type);
     const glm::dvec3 lamp{0, -4, 4};
-    const scene::Scene s = load_scene(
+    const scene::Scene s = shipped_scene(
+        "default",
         lit_floor_view({"lights=[{\"position\":[0,-4,4],\"colour\":[1,1,1],\"intensity\":8,\"range_m\":40}]",
                         std::string("water.type=") + type}));
     auto renderer = render::OceanRenderer::create(ctx(), s);
@@ -331,9 +315,11 @@ TEST_F(Underwater, ALampAboveTheWaterLightsTheFloorThroughTheSurface) {
   // straight under it, not 11), loses the Fresnel reflection there and is attenuated by the water.
   const glm::dvec3 lamp{0, 3, 4};
   const double intensity = 60;
-  const scene::Scene s = load_scene(lit_floor_view(
-      {"ocean.spectrum.wind_speed_mps=0.5", "render.effects.caustics=false", "water.type=jerlov-IB",
-       "lights=[{\"position\":[0,3,4],\"colour\":[1,1,1],\"intensity\":60,\"range_m\":40}]"}));
+  const scene::Scene s = shipped_scene(
+      "default",
+      lit_floor_view({"ocean.spectrum.wind_speed_mps=0.5", "render.effects.caustics=false",
+                      "water.type=jerlov-IB",
+                      "lights=[{\"position\":[0,3,4],\"colour\":[1,1,1],\"intensity\":60,\"range_m\":40}]"}));
   auto renderer = render::OceanRenderer::create(ctx(), s);
   ASSERT_TRUE(renderer) << renderer.error().message;
   const auto transmittance = transmittance_of(s);
@@ -360,7 +346,7 @@ TEST_F(Underwater, ALampUnderTheWaterIsSeenFromAbove) {
                                       "render.tone_map=clamp",   "render.gamma=1",
                                       "render.exposure=0.15"};
   auto centre_luminance = [&](const std::vector<std::string>& overrides) {
-    const scene::Scene s = load_scene(overrides);
+    const scene::Scene s = shipped_scene("default", overrides);
     auto renderer = render::OceanRenderer::create(ctx(), s);
     EXPECT_TRUE(renderer) << renderer.error().message;
     const io::Image8 image = (*renderer)->render(s);
@@ -395,8 +381,8 @@ TEST_F(Underwater, TheWaterlineFollowsTheSurfaceAcrossTheLens) {
   // column the image must switch from the view above to the view below where the near-plane point goes under
   // the surface that WaveQuery gives there.
   const uint32_t width = 96, height = 120;
-  scene::Scene s =
-      load_scene({"render.width=" + std::to_string(width), "render.height=" + std::to_string(height),
+  scene::Scene s = shipped_scene(
+      "default", {"render.width=" + std::to_string(width), "render.height=" + std::to_string(height),
                   "camera.fov_deg=90", "camera.near_m=3", "objects=[]", "time_s=6"});
   ocean::WaveQuery query(s.ocean);
   const double h0 = query.sample(s.time_s, 0.0, 3.0).height;
@@ -448,8 +434,8 @@ TEST_F(Underwater, DescendingThroughTheSurfaceChangesTheFrameGradually) {
   // surface over the lens to 20 cm below it. As the surface crosses the lens the frame turns from the view
   // above to the view below row by row (the waterline pass), so the mean brightness falls over several
   // steps. Switching from one side to the other at once would put the whole change into one step.
-  scene::Scene s = load_scene(
-      {"render.width=96", "render.height=54", "objects=[]", "time_s=6", "render.effects.particles=false"});
+  scene::Scene s = shipped_scene("default", {"render.width=96", "render.height=54", "objects=[]", "time_s=6",
+                                             "render.effects.particles=false"});
   ocean::WaveQuery query(s.ocean);
   const double surface = query.sample(s.time_s, 0.0, 0.0).height;
   auto renderer = render::OceanRenderer::create(ctx(), s);
@@ -478,7 +464,7 @@ TEST_F(Underwater, DescendingThroughTheSurfaceChangesTheFrameGradually) {
 TEST_F(Underwater, ParticlesAreTheSameForTheSameSeedAndOthersForAnother) {
   auto render_with = [&](std::vector<std::string> overrides) {
     overrides.insert(overrides.begin(), {"render.width=128", "render.height=96"});
-    const scene::Scene s = load_scene_file("reef-dive", overrides);
+    const scene::Scene s = shipped_scene("reef-dive", overrides);
     auto renderer = render::OceanRenderer::create(ctx(), s);
     EXPECT_TRUE(renderer) << renderer.error().message;
     return (*renderer)->render(s);
@@ -521,7 +507,7 @@ double UnderwaterBlur::floor_texture_contrast(const char* water, double distance
   auto inputs = optics::lut_inputs(optics::WaterParams{.type = water}, 70.0);
   EXPECT_TRUE(inputs);
   const double exposure = 0.5 / optics::linear_srgb_luminance(at_or_die(*inputs, distance, 12.0).target);
-  const scene::Scene s = load_scene_file(
+  const scene::Scene s = shipped_scene(
       "reef-dive",
       {"render.width=96", "render.height=96", "camera.fov_deg=40",
        "camera.position=[0," + std::to_string(camera_y) + ",40]",
@@ -570,7 +556,7 @@ double mean_difference(const io::Image8& a, const io::Image8& b) {
 TEST_F(Underwater, LightShaftsComeFromTheFocusedSunAndFaceIt) {
   // 6 m down in the reef scene, looking level towards the sun and away from it; shafts on and off.
   auto frame = [&](const std::string& look_at, bool shafts, const char* wind) {
-    const scene::Scene s = load_scene_file(
+    const scene::Scene s = shipped_scene(
         "reef-dive",
         {"render.width=96", "render.height=64", "camera.position=[0,-6,30]", "camera.look_at=" + look_at,
          "objects=[]", "render.effects.particles=false", std::string("ocean.spectrum.wind_speed_mps=") + wind,
@@ -588,10 +574,10 @@ TEST_F(Underwater, LightShaftsComeFromTheFocusedSunAndFaceIt) {
   EXPECT_GT(facing, 2.0 * behind)
       << "the forward-peaked phase function should favour the view towards the sun";
   // Without waves nothing is focused: no shafts at all (Phillips at a breeze: a flat sea).
-  const scene::Scene calm_on = load_scene_file(
-      "reef-dive", {"render.width=96", "render.height=64", "camera.look_at=" + towards,
-                    "camera.position=[0,-6,30]", "objects=[]", "render.effects.particles=false",
-                    "ocean.spectrum.type=phillips", "ocean.spectrum.wind_speed_mps=0.05"});
+  const scene::Scene calm_on =
+      shipped_scene("reef-dive", {"render.width=96", "render.height=64", "camera.look_at=" + towards,
+                                  "camera.position=[0,-6,30]", "objects=[]", "render.effects.particles=false",
+                                  "ocean.spectrum.type=phillips", "ocean.spectrum.wind_speed_mps=0.05"});
   scene::Scene calm_off = calm_on;
   calm_off.render.effects.shafts = false;
   auto renderer = render::OceanRenderer::create(ctx(), calm_on);
@@ -602,7 +588,8 @@ TEST_F(Underwater, LightShaftsComeFromTheFocusedSunAndFaceIt) {
 TEST_F(Underwater, WithTheWaterSwitchedOffTheFloorIsLitButNotSeenThroughWater) {
   // render.effects.underwater = false: the floor 9 m down keeps the light that reaches its depth, target(0,
   // 9), but nothing is lost or added between it and the camera.
-  const scene::Scene s = load_scene(
+  const scene::Scene s = shipped_scene(
+      "default",
       {"camera.position=[0,-3,0]", "camera.look_at=[0,-7,10]", "camera.fov_deg=70", "render.width=160",
        "render.height=120", "seafloor.type=slope", "seafloor.depth_near_m=9", "seafloor.depth_far_m=9",
        "seafloor.albedo=[1,1,1]", "seafloor.texture=\"\"", "objects=[]", "lights=[]", "render.tone_map=clamp",

@@ -10,31 +10,19 @@
 #include <fstream>
 
 #include "ocean/wave_query.h"
+#include "support/shipped_scene.h"
 #include "support/temp_dir.h"
 
 namespace lagoon::test {
 namespace {
-
-scene::Scene scene_with(std::vector<std::string> overrides) {
-  auto s = scene::load_scene(std::string(LAGOON_SOURCE_DIR) + "/scenes/default.json", overrides);
-  EXPECT_TRUE(s) << s.error().message;
-  return s ? *s : scene::Scene{};
-}
-
-std::vector<ocean::CascadeSpectrum> spectra_of(const ocean::OceanParams& params) {
-  std::vector<ocean::CascadeSpectrum> out;
-  for (uint32_t c = 0; c < params.cascades.size(); ++c)
-    out.push_back(ocean::make_cascade_spectrum(params, c));
-  return out;
-}
 
 const std::string kFloatingBuoy =
     R"(objects=[{"file":"assets/buoy.gltf","position":[2,0,12],"floating":{"enabled":true,"density_kg_m3":400,)"
     R"("centre_of_mass_offset":[0,-0.6,0]}}])";
 
 TEST(FloatingObjects, TheBuoyRidesTheScenesSea) {
-  const scene::Scene s = scene_with({kFloatingBuoy});
-  const auto spectra = spectra_of(s.ocean);
+  const scene::Scene s = shipped_scene("default", {kFloatingBuoy});
+  const auto spectra = ocean::make_cascade_spectra(s.ocean);
   auto floating = render::FloatingObjects::create(s, s.ocean, spectra);
   ASSERT_TRUE(floating) << floating.error().message;
   ASSERT_FALSE((*floating)->empty());
@@ -72,8 +60,8 @@ TEST(FloatingObjects, TheBuoyRidesTheScenesSea) {
 }
 
 TEST(FloatingObjects, AnEarlierTimeIsSimulatedAgainFromZero) {
-  const scene::Scene s = scene_with({kFloatingBuoy});
-  const auto spectra = spectra_of(s.ocean);
+  const scene::Scene s = shipped_scene("default", {kFloatingBuoy});
+  const auto spectra = ocean::make_cascade_spectra(s.ocean);
   auto a = render::FloatingObjects::create(s, s.ocean, spectra);
   auto b = render::FloatingObjects::create(s, s.ocean, spectra);
   ASSERT_TRUE(a && b);
@@ -93,10 +81,10 @@ TEST(FloatingObjects, AMeshThatEnclosesNothingIsRefusedNamingTheField) {
       << R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,0,1]}],)"
       << R"("bufferViews":[{"buffer":0,"byteLength":36}],"buffers":[{"byteLength":36,)"
       << R"("uri":"data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAAAAAAAAAAAAAIA/AACAPwAAAAAAAAAA"}]})";
-  scene::Scene s = scene_with({});
+  scene::Scene s = shipped_scene("default", {});
   s.objects = {scene::Object{.file = (dir / "sheet.gltf").string()}};
   s.objects[0].floating.enabled = true;
-  auto floating = render::FloatingObjects::create(s, s.ocean, spectra_of(s.ocean));
+  auto floating = render::FloatingObjects::create(s, s.ocean, ocean::make_cascade_spectra(s.ocean));
   ASSERT_FALSE(floating);
   EXPECT_NE(floating.error().message.find("objects[0].floating"), std::string::npos)
       << floating.error().message;

@@ -17,13 +17,6 @@
 namespace lagoon::test {
 namespace {
 
-std::vector<ocean::CascadeSpectrum> spectra_of(const ocean::OceanParams& params) {
-  std::vector<ocean::CascadeSpectrum> out;
-  for (uint32_t c = 0; c < params.cascades.size(); ++c)
-    out.push_back(ocean::make_cascade_spectrum(params, c));
-  return out;
-}
-
 // The exact height of the surface point displaced to (x, z): the rest point by fixed-point iteration on the
 // full sums of Dx and Dz, then the full sum of the height there.
 double exact_height(const std::vector<ocean::CascadeSpectrum>& spectra, double choppiness, double t, double x,
@@ -43,7 +36,7 @@ TEST(HeightProbe, MatchesTheExactSumWithinItsBound) {
   ocean::OceanParams params;
   params.choppiness = 1.0;
   params.cascades = {{200.0, 64}, {30.0, 64}};
-  const auto spectra = spectra_of(params);
+  const auto spectra = ocean::make_cascade_spectra(params);
   const ocean::HeightProbe probe(params, spectra, 0.01);
   EXPECT_LT(probe.modes(), 2u * 64 * 64) << "no mode was left out";
   double worst = 0, spread = 0;
@@ -67,7 +60,7 @@ TEST(HeightProbe, AgreesWithWaveQueryOnTheShippedScenes) {
     SCOPED_TRACE(name);
     auto s = scene::load_scene(std::string(LAGOON_SOURCE_DIR) + "/scenes/" + name + ".json", {});
     ASSERT_TRUE(s) << s.error().message;
-    const auto spectra = spectra_of(s->ocean);
+    const auto spectra = ocean::make_cascade_spectra(s->ocean);
     const ocean::HeightProbe probe(s->ocean, spectra, 0.01);
     ocean::WaveQuery query(s->ocean, spectra);
     double worst = 0, probe_ms = 0;

@@ -10,27 +10,14 @@
 #include <cstdio>
 
 #include "physics/floating_body.h"
-#include "scene/scene.h"
+#include "support/shipped_scene.h"
 
 namespace lagoon::test {
 namespace {
 
-scene::Scene default_scene() {
-  auto s = scene::load_scene(std::string(LAGOON_SOURCE_DIR) + "/scenes/default.json", {});
-  EXPECT_TRUE(s) << s.error().message;
-  return s ? *s : scene::Scene{};
-}
-
-std::vector<ocean::CascadeSpectrum> spectra_of(const ocean::OceanParams& params) {
-  std::vector<ocean::CascadeSpectrum> out;
-  for (uint32_t c = 0; c < params.cascades.size(); ++c)
-    out.push_back(ocean::make_cascade_spectrum(params, c));
-  return out;
-}
-
 TEST(LocalHeights, FollowWaveQueryBetweenKnots) {
-  const scene::Scene s = default_scene();
-  const auto spectra = spectra_of(s.ocean);
+  const scene::Scene s = shipped_scene("default");
+  const auto spectra = ocean::make_cascade_spectra(s.ocean);
   ocean::LocalHeights local(s.ocean, spectra, {});
   ocean::WaveQuery exact(s.ocean, spectra);
   const glm::dvec2 centre(3.0, -7.0);
@@ -71,8 +58,8 @@ TEST(LocalHeights, FollowWaveQueryBetweenKnots) {
 }
 
 TEST(LocalHeights, ABoxRidesTheScenesSea) {
-  const scene::Scene s = default_scene();
-  const auto spectra = spectra_of(s.ocean);
+  const scene::Scene s = shipped_scene("default");
+  const auto spectra = ocean::make_cascade_spectra(s.ocean);
   physics::TriangleMesh hull;
   for (int k = 0; k < 8; ++k)
     hull.vertices.push_back({k & 1 ? 0.5 : -0.5, k & 2 ? 0.2 : -0.2, k & 4 ? 0.5 : -0.5});

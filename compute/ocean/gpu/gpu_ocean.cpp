@@ -104,8 +104,7 @@ GpuOcean::GpuOcean(vk::Context& ctx, const OceanParams& params, FftVariant varia
       variant_(variant),
       mips_(vk::ComputePipeline::create(ctx, shaders::ocean_mips_comp)) {
   if (auto valid = validate(params); !valid) throw std::logic_error("GpuOcean: " + valid.error().message);
-  std::vector<CascadeSpectrum> spectra;
-  for (uint32_t c = 0; c < params.cascades.size(); ++c) spectra.push_back(make_cascade_spectrum(params, c));
+  std::vector<CascadeSpectrum> spectra = make_cascade_spectra(params);
   build(std::move(spectra));
 }
 
