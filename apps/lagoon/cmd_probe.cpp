@@ -1,4 +1,5 @@
-// lagoon probe: wave height, normal and velocity at points, from WaveQuery (CPU, exact time, no GPU).
+// lagoon probe: wave height, normal and velocity at points, from WaveQuery (CPU, exact time, no GPU); or the
+// pose and velocities of a floating object (objects[].floating), simulated from time 0 on the CPU.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -9,6 +10,7 @@
 
 #include "commands.h"
 #include "ocean/wave_query.h"
+#include "render/floating_objects.h"
 #include "scene_args.h"
 
 namespace lagoon::cli {
@@ -27,6 +29,62 @@ double resolution(double v) {
   return std::nextafter(std::abs(v), HUGE_VAL) - std::abs(v);
 }
 
+nlohmann::json vec(glm::dvec3 v) {
+  return {v.x, v.y, v.z};
+}
+
+// The index of the floating object called `name`; prints why there is none.
+std::optional<size_t> floating_object(const scene::Scene& scene, const std::string& name) {
+  std::string names;
+  for (size_t o = 0; o < scene.objects.size(); ++o) {
+    if (scene.objects[o].name == name) {
+      if (scene.objects[o].floating.enabled) return o;
+      std::fprintf(stderr,
+                   "lagoon probe: objects[%zu] \"%s\" does not float; set objects[%zu].floating.enabled to "
+                   "true (docs/physics.md) to probe its motion\n",
+                   o, name.c_str(), o);
+      return std::nullopt;
+    }
+    names += (names.empty() ? "\"" : ", \"") + scene.objects[o].name + "\"";
+  }
+  std::fprintf(stderr, "lagoon probe: no object is named \"%s\"; the scene's objects: %s\n", name.c_str(),
+               names.empty() ? "none" : names.c_str());
+  return std::nullopt;
+}
+
+// --object: the body's pose and velocities at `frames` times from `time`, 1/fps apart.
+int probe_object(const ParsedArgs& args, const scene::Scene& scene, double time) {
+  const auto frames = integer_option(args, "frames", 1, 1, 100000);
+  const auto fps = number_option(args, "fps", 30, 0.001, 10000);
+  if (!frames || !fps) {
+    std::fprintf(stderr, "lagoon probe: %s\n", (!frames ? frames.error() : fps.error()).message.c_str());
+    return kExitUsage;
+  }
+  const auto index = floating_object(scene, *args.get("object"));
+  if (!index) return kExitFailure;
+  auto floating =
+      render::FloatingObjects::create(scene, scene.ocean, ocean::make_cascade_spectra(scene.ocean));
+  if (!floating) {
+    std::fprintf(stderr, "lagoon probe: %s\n", floating.error().message.c_str());
+    return kExitFailure;
+  }
+  for (long long f = 0; f < *frames; ++f) {
+    const double t = time + double(f) / *fps;
+    (*floating)->advance(t);
+    const physics::FloatingBody& body = *(*floating)->body(*index);
+    const glm::dquat q = body.state().orientation;
+    const nlohmann::json line{{"object", scene.objects[*index].name},
+                              {"time_s", t},
+                              {"origin", vec(body.model_origin())},
+                              {"orientation_wxyz", {q.w, q.x, q.y, q.z}},
+                              {"centre_of_mass", vec(body.state().position)},
+                              {"velocity_mps", vec(body.state().velocity)},
+                              {"angular_velocity_radps", vec(body.state().angular_velocity)}};
+    std::printf("%s\n", line.dump().c_str());
+  }
+  return kExitOk;
+}
+
 int run_probe(const ParsedArgs& args) {
   const auto time = parse_number(*args.get("time"));
   if (!time) {
@@ -39,6 +97,20 @@ int run_probe(const ParsedArgs& args) {
                  "so the phases of the waves would be noise; give a time within that range\n",
                  args.get("time")->c_str(), ocean::kWaveQueryMaxTimeS, resolution(*time));
     return kExitUsage;
+  }
+  if (args.get("object") && !args.all("at").empty()) {
+    std::fprintf(stderr,
+                 "lagoon probe: give --at (the water at points) or --object (a floating body), not both\n");
+    return kExitUsage;
+  }
+  if (!args.get("object") && args.all("at").empty()) {
+    std::fprintf(stderr,
+                 "lagoon probe: give --at X,Z (the water at a point) or --object NAME (a floating body)\n");
+    return kExitUsage;
+  }
+  if (args.get("object")) {
+    auto scene = load_scene_from_args(args, "probe");
+    return scene ? probe_object(args, *scene, *time) : kExitFailure;
   }
   std::vector<glm::dvec2> points;
   for (const std::string& at : args.all("at")) {
@@ -85,15 +157,22 @@ const Command& probe_command() {
   static const Command command{
       .spec =
           {.name = "probe",
-           .summary = "Prints one JSON object per point: the wave height, normal and surface velocity at "
-                      "(x, z) and time T (summed over all cascades, horizontal displacement inverted), and "
-                      "the query's error bound. Computed on the CPU (WaveQuery); needs no Vulkan device.",
+           .summary =
+               "Prints one JSON object per point: the wave height, normal and surface velocity at "
+               "(x, z) and time T (summed over all cascades, horizontal displacement inverted), and "
+               "the query's error bound. Or, with --object, one per frame: a floating object's pose "
+               "(model origin, orientation as a quaternion w, x, y, z), centre of mass and velocities, "
+               "simulated from time 0. Computed on the CPU; needs no Vulkan device.",
            .options = {scene_option(),
                        {"time", "T", "simulation time in seconds", true},
-                       {"at", "X,Z", "a point in metres (repeatable)", true, true},
+                       {"at", "X,Z", "a point in metres (repeatable)", false, true},
+                       {"object", "NAME", "a floating object (objects[].name with floating.enabled)", false},
+                       {"frames", "N", "with --object: N lines, from T on (default 1)", false},
+                       {"fps", "F", "with --object: lines per second of simulation time (default 30)", false},
                        set_option()},
            .details =
-               "example:\n  lagoon probe --scene scenes/default.json --time 3.5 --at 0,0 --at 12.5,-40\n"},
+               "examples:\n  lagoon probe --scene scenes/default.json --time 3.5 --at 0,0 --at 12.5,-40\n"
+               "  lagoon probe --scene harbour.json --object buoy --time 5 --frames 60 --fps 30\n"},
       .run = run_probe};
   return command;
 }

@@ -157,5 +157,50 @@ TEST(OceanCli, ProbeUsageErrors) {
   EXPECT_NE(r.output.find("ocean.depth_m"), std::string::npos) << r.output;
 }
 
+const std::string kFloatingBuoy =
+    R"( --set 'objects=[{"name":"buoy","file":"assets/buoy.gltf","position":[2,0,12],"floating":{"enabled":true,)"
+    R"("density_kg_m3":400,"centre_of_mass_offset":[0,-0.6,0]}}]')";
+
+TEST(OceanCli, ProbeObjectPrintsAFloatingObjectsPoseFrameByFrame) {
+  const std::string command =
+      "probe --scene " + kScene + " --time 2 --object buoy --frames 3" + kFloatingBuoy;
+  auto r = lagoon(command);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::istringstream lines(r.output);
+  std::string line;
+  int count = 0;
+  while (std::getline(lines, line)) {
+    const auto j = nlohmann::json::parse(line);
+    for (const char* key : {"object", "time_s", "origin", "orientation_wxyz", "centre_of_mass",
+                            "velocity_mps", "angular_velocity_radps"})
+      EXPECT_TRUE(j.contains(key)) << key << " in " << line;
+    EXPECT_NEAR(j["time_s"].get<double>(), 2.0 + count / 30.0, 1e-12);
+    const auto q = j["orientation_wxyz"];
+    EXPECT_NEAR(std::hypot(std::hypot(q[0].get<double>(), q[1].get<double>()),
+                           std::hypot(q[2].get<double>(), q[3].get<double>())),
+                1.0, 1e-9)
+        << "not a unit quaternion: " << line;
+    ++count;
+  }
+  EXPECT_EQ(count, 3);
+  EXPECT_EQ(lagoon(command).output, r.output) << "not deterministic";
+}
+
+TEST(OceanCli, ProbeObjectErrorsNameTheFix) {
+  const std::string scene = "probe --scene " + kScene + " --time 1 ";
+  auto r = lagoon(scene + "--object boat");
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("objects[1] \"boat\" does not float; set objects[1].floating.enabled"),
+            std::string::npos)
+      << r.output;
+  r = lagoon(scene + "--object dinghy");
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("no object is named \"dinghy\"; the scene's objects: \"buoy\", \"boat\""),
+            std::string::npos)
+      << r.output;
+  EXPECT_EQ(lagoon(scene + "--object buoy --at 1,2").exit_code, 2);
+  EXPECT_EQ(lagoon(scene + "--object buoy --frames 0").exit_code, 2);
+}
+
 }  // namespace
 }  // namespace lagoon::test
