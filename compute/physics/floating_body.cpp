@@ -24,6 +24,28 @@ void FloatingBody::place(glm::dvec3 origin, glm::dquat orientation) {
   state_.position = origin + state_.orientation * mass_.centre;
 }
 
+bool FloatingBody::settle_vertically(double level) {
+  const glm::dmat3 r = glm::mat3_cast(state_.orientation);
+  double lo = 1e30, hi = -1e30;  // the hull's lowest and highest point relative to the centre of mass
+  for (const glm::dvec3& v : hull_) lo = std::min(lo, (r * v).y), hi = std::max(hi, (r * v).y);
+  const WaterHeight still = [level](double, double) { return level; };
+  auto lift = [&](double centre_y) {  // buoyancy minus weight with the centre of mass at centre_y
+    for (size_t i = 0; i < hull_.size(); ++i)
+      world_[i] = glm::dvec3(state_.position.x, centre_y, state_.position.z) + r * hull_[i];
+    return hydrostatic_wrench(world_, indices_, still, state_.position, water_.density, water_.gravity)
+               .force.y -
+           mass_.mass * water_.gravity;
+  };
+  double deep = level - hi, high = level - lo;  // fully under, fully out
+  if (lift(deep) < 0) return false;
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (deep + high);
+    (lift(mid) > 0 ? deep : high) = mid;
+  }
+  state_.position.y = 0.5 * (deep + high);
+  return true;
+}
+
 glm::dvec3 FloatingBody::model_origin() const {
   return state_.position - state_.orientation * mass_.centre;
 }

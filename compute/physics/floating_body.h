@@ -41,6 +41,9 @@ class FloatingBody {
 
   // Places the body's model origin at `origin` with `orientation`, at rest.
   void place(glm::dvec3 origin, glm::dquat orientation);
+  // Moves it vertically, keeping its orientation, to where the water's pressure in still water at height
+  // `level` carries its weight (bisection). False, unmoved, when it cannot float (it sinks even submerged).
+  bool settle_vertically(double level);
   // One step of dt seconds with the water's height as it is at the step's start.
   void step(double dt, const WaterHeight& water);
 

@@ -80,6 +80,7 @@ void FloatingObjects::reset() {
                                 .angular_quadratic = f.angular_damping},
                                {});
     body.place(glm::dvec3(object.position), object_orientation(object));
+    body.settle_vertically(0.0);  // at its draught on the mean level, so it does not start with a bounce
     bodies_.push_back(
         {o, double(object.scale), std::move(body),
          std::make_unique<ocean::LocalHeights>(ocean_, spectra_, ocean::LocalHeightsOptions{})});

@@ -87,9 +87,11 @@ void read_seafloor(ObjectReader& r, Seafloor& f) {
 }
 
 void read_floating(ObjectReader& r, Floating& f) {
-  r.flag("enabled", f.enabled,
-         "Ride the waves: the model becomes a rigid body pushed by the water's pressure on its mesh, from "
-         "`position` and `rotation_deg` at rest at time 0 (docs/physics.md). Its mesh must be closed.");
+  r.flag(
+      "enabled", f.enabled,
+      "Ride the waves: the model becomes a rigid body pushed by the water's pressure on its mesh. At time 0 "
+      "it is at rest at `position` (x, z) and `rotation_deg`, at the height where still water carries it; "
+      "a body that cannot float starts at `position` and sinks (docs/physics.md). Its mesh must be closed.");
   r.number("density_kg_m3", f.density_kg_m3, Bounds::between(1, 20000), "kg/m^3",
            "Density of the model as a solid; its mass is this times the mesh's volume. Sea water is 1025: "
            "half of that floats half under.");

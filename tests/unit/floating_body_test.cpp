@@ -89,6 +89,25 @@ TEST(FloatingBody, HalfDensityBoxFloatsAtHalfItsHeightAndSettles) {
   RecordProperty("centre_y", std::to_string(body.state().position.y));
 }
 
+TEST(FloatingBody, SettlesVerticallyToItsDraughtInStillWater) {
+  // A half-density box tilted 30° about z still floats with half its volume under: its centre at the level
+  // (symmetric about its centre, so half under means centre on the waterline).
+  const glm::dvec3 h(0.5, 0.3, 0.5);
+  physics::FloatingBody body = half_density_box(h);
+  body.place(glm::dvec3(1, 5, 2), glm::angleAxis(0.5236, glm::dvec3(0, 0, 1)));
+  ASSERT_TRUE(body.settle_vertically(0.25));
+  EXPECT_NEAR(body.state().position.y, 0.25, 1e-6);
+  EXPECT_NEAR(body.state().position.x, 1.0, 1e-12);
+  body.step(1.0 / 120, flat(0.25));
+  EXPECT_NEAR(body.state().velocity.y, 0.0, 1e-6) << "it was not at rest";
+  // Twice water's density: it cannot float and stays where it was put.
+  const physics::TriangleMesh hull = box(h);
+  physics::FloatingBody stone(hull, physics::solid_mass_properties(hull, 2 * kRhoWater), {}, {});
+  stone.place(glm::dvec3(0, 3, 0), glm::dquat(1, 0, 0, 0));
+  EXPECT_FALSE(stone.settle_vertically(0.0));
+  EXPECT_EQ(stone.state().position.y, 3.0);
+}
+
 TEST(FloatingBody, ADropFromOneMetreComesToRest) {
   const glm::dvec3 h(0.5, 0.3, 0.5);
   physics::FloatingBody body = half_density_box(h);
