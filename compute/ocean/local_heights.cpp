@@ -18,7 +18,10 @@ std::array<double, 4> catmull_rom(double s) {
 
 LocalHeights::LocalHeights(const OceanParams& params, std::vector<CascadeSpectrum> spectra,
                            LocalHeightsOptions options)
-    : query_(params, std::move(spectra)), options_(options) {
+    : LocalHeights(std::make_shared<WaveQuery>(params, std::move(spectra)), options) {}
+
+LocalHeights::LocalHeights(std::shared_ptr<WaveQuery> query, LocalHeightsOptions options)
+    : query_(std::move(query)), options_(options) {
   now_.assign(size_t(options_.points_per_side) * options_.points_per_side, 0.0);
 }
 
@@ -37,7 +40,7 @@ const std::vector<double>& LocalHeights::knot(long long index) {
   points.reserve(size_t(n) * n);
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) points.push_back(origin_ + glm::dvec2(i, j) * options_.spacing_m);
-  const std::vector<WaveSample> samples = query_.sample(double(index) * options_.knot_interval_s, points);
+  const std::vector<WaveSample> samples = query_->sample(double(index) * options_.knot_interval_s, points);
   std::vector<double> heights(samples.size());
   for (size_t k = 0; k < samples.size(); ++k) heights[k] = samples[k].height;
   ++knots_sampled_;

@@ -8,6 +8,7 @@
 #pragma once
 #include <array>
 #include <glm/vec2.hpp>
+#include <memory>
 #include <vector>
 
 #include "ocean/wave_query.h"
@@ -23,6 +24,9 @@ struct LocalHeightsOptions {
 class LocalHeights {
  public:
   LocalHeights(const OceanParams& params, std::vector<CascadeSpectrum> spectra, LocalHeightsOptions options);
+  // Sharing one WaveQuery between the bodies of a scene: bodies stepped together ask for the same knot
+  // times, so the sea's fields are evaluated once per knot for all of them.
+  LocalHeights(std::shared_ptr<WaveQuery> query, LocalHeightsOptions options);
 
   // Makes height() answer at time t around `centre` (the body's position): samples the knots it lacks.
   void update(double time_s, glm::dvec2 centre);
@@ -37,7 +41,7 @@ class LocalHeights {
   void recentre(glm::dvec2 centre);
   const std::vector<double>& knot(long long index);
 
-  WaveQuery query_;
+  std::shared_ptr<WaveQuery> query_;
   LocalHeightsOptions options_;
   glm::dvec2 origin_{0.0};  // the lattice point (0, 0), world xz
   bool placed_ = false;

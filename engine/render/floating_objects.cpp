@@ -67,6 +67,7 @@ Result<std::unique_ptr<FloatingObjects>> FloatingObjects::create(
 
 void FloatingObjects::reset() {
   bodies_.clear();
+  if (!sea_ && !hulls_.empty()) sea_ = std::make_shared<ocean::WaveQuery>(ocean_, spectra_);
   size_t h = 0;
   for (size_t o = 0; o < scene_.objects.size(); ++o) {
     const scene::Object& object = scene_.objects[o];
@@ -81,9 +82,8 @@ void FloatingObjects::reset() {
                                {});
     body.place(glm::dvec3(object.position), object_orientation(object));
     body.settle_vertically(0.0);  // at its draught on the mean level, so it does not start with a bounce
-    bodies_.push_back(
-        {o, double(object.scale), std::move(body),
-         std::make_unique<ocean::LocalHeights>(ocean_, spectra_, ocean::LocalHeightsOptions{})});
+    bodies_.push_back({o, double(object.scale), std::move(body),
+                       std::make_unique<ocean::LocalHeights>(sea_, ocean::LocalHeightsOptions{})});
   }
   steps_ = 0;
 }

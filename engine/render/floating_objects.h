@@ -53,6 +53,7 @@ class FloatingObjects {
   ocean::OceanParams ocean_;
   std::vector<ocean::CascadeSpectrum> spectra_;
   std::vector<physics::TriangleMesh> hulls_;
+  std::shared_ptr<ocean::WaveQuery> sea_;  // shared by every body's LocalHeights: one evaluation per knot
   std::vector<Body> bodies_;
   long long steps_ = 0;  // taken since time 0
 };
