@@ -141,8 +141,8 @@ int run_probe(const ParsedArgs& args) {
                               {"z", points[i].y},
                               {"time_s", *time},
                               {"height_m", s.height},
-                              {"normal", {s.normal.x, s.normal.y, s.normal.z}},
-                              {"velocity_mps", {s.velocity.x, s.velocity.y, s.velocity.z}},
+                              {"normal", vec(s.normal)},
+                              {"velocity_mps", vec(s.velocity)},
                               {"rest_position", {s.rest_position.x, s.rest_position.y}},
                               {"error_bound_m", s.error_bound_m},
                               {"converged", s.converged}};

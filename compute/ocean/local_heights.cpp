@@ -4,17 +4,9 @@
 #include <cmath>
 #include <glm/common.hpp>
 
+#include "ocean/catmull_rom.h"
+
 namespace lagoon::ocean {
-namespace {
-
-// Catmull-Rom weights of the four samples at -1, 0, 1, 2 for a point s in [0, 1] between 0 and 1.
-std::array<double, 4> catmull_rom(double s) {
-  const double s2 = s * s, s3 = s2 * s;
-  return {0.5 * (-s3 + 2 * s2 - s), 0.5 * (3 * s3 - 5 * s2 + 2), 0.5 * (-3 * s3 + 4 * s2 + s),
-          0.5 * (s3 - s2)};
-}
-
-}  // namespace
 
 LocalHeights::LocalHeights(const OceanParams& params, std::vector<CascadeSpectrum> spectra,
                            LocalHeightsOptions options)
@@ -57,7 +49,7 @@ void LocalHeights::update(double time_s, glm::dvec2 centre) {
   if (!placed_ || local.x < lo || local.y < lo || local.x > hi || local.y > hi) recentre(centre);
   const double u = time_s / options_.knot_interval_s;
   const long long k = (long long)std::floor(u);
-  const std::array<double, 4> w = catmull_rom(u - double(k));
+  const std::array<double, 4> w = catmull_rom_weights(u - double(k));
   // Only the knots k - 1 .. k + 2 are kept; the missing ones are sampled, then looked up (so no reference
   // outlives a change of the list).
   std::erase_if(knots_, [k](const auto& knot) { return knot.first < k - 1 || knot.first > k + 2; });
@@ -73,7 +65,7 @@ double LocalHeights::height(double x, double z) const {
   const glm::dvec2 local =
       glm::clamp((glm::dvec2(x, z) - origin_) / options_.spacing_m, glm::dvec2(0.0), glm::dvec2(n - 1));
   const int ix = std::min(int(local.x), n - 2), iz = std::min(int(local.y), n - 2);
-  const std::array<double, 4> wx = catmull_rom(local.x - ix), wz = catmull_rom(local.y - iz);
+  const std::array<double, 4> wx = catmull_rom_weights(local.x - ix), wz = catmull_rom_weights(local.y - iz);
   double sum = 0;
   for (int b = 0; b < 4; ++b)
     for (int a = 0; a < 4; ++a) {

@@ -1,11 +1,13 @@
 #include "ocean/wave_query.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <complex>
 #include <glm/geometric.hpp>
 #include <numbers>
 
+#include "ocean/catmull_rom.h"
 #include "ocean/spectral_fields.h"
 
 namespace lagoon::ocean {
@@ -15,23 +17,13 @@ constexpr Field kFields[] = {Field::Dx,     Field::Height,    Field::Dz,        
                              Field::SlopeZ, Field::VelocityX, Field::VelocityY, Field::VelocityZ};
 enum { kDx, kHeight, kDz, kSlopeX, kSlopeZ, kVx, kVy, kVz, kFieldCount };
 
-// Catmull-Rom weights for samples at offsets -1, 0, 1, 2 and fraction s in [0, 1).
-void catmull_rom_weights(double s, double w[4]) {
-  const double s2 = s * s, s3 = s2 * s;
-  w[0] = 0.5 * (-s3 + 2 * s2 - s);
-  w[1] = 0.5 * (3 * s3 - 5 * s2 + 2);
-  w[2] = 0.5 * (-3 * s3 + 4 * s2 + s);
-  w[3] = 0.5 * (s3 - s2);
-}
-
 }  // namespace
 
 double catmull_rom_exponential_error(double theta) {
   double worst = 0;
   for (int i = 0; i <= 256; ++i) {
     const double s = i / 256.0;
-    double w[4];
-    catmull_rom_weights(s, w);
+    const std::array<double, 4> w = catmull_rom_weights(s);
     std::complex<double> v = 0;
     for (int m = -1; m <= 2; ++m) v += w[m + 1] * std::polar(1.0, theta * m);
     worst = std::max(worst, std::abs(v - std::polar(1.0, theta * s)));
@@ -42,8 +34,7 @@ double catmull_rom_exponential_error(double theta) {
 double catmull_rom_lebesgue_constant() {
   double worst = 0;
   for (int i = 0; i <= 256; ++i) {
-    double w[4];
-    catmull_rom_weights(i / 256.0, w);
+    const std::array<double, 4> w = catmull_rom_weights(i / 256.0);
     worst = std::max(worst, std::abs(w[0]) + std::abs(w[1]) + std::abs(w[2]) + std::abs(w[3]));
   }
   return worst;
@@ -58,9 +49,7 @@ struct WaveQuery::Grid {
   void sample(glm::dvec2 p, int first, int count, double* out) const {
     const double u = p.x / texel_m, v = p.y / texel_m;
     const double fu = std::floor(u), fv = std::floor(v);
-    double wu[4], wv[4];
-    catmull_rom_weights(u - fu, wu);
-    catmull_rom_weights(v - fv, wv);
+    const std::array<double, 4> wu = catmull_rom_weights(u - fu), wv = catmull_rom_weights(v - fv);
     const long iu = long(fu), iv = long(fv), mask = long(n) - 1;  // n is a power of two
     size_t rows[4], cols[4];
     for (int m = 0; m < 4; ++m) {
