@@ -4,6 +4,7 @@
   buoy.gltf + buoy.bin   navigation buoy, 2.2 m tall, waterline at y = 0
   boat.gltf + boat.bin   5 m open motor boat, waterline at y = 0, bow toward +z
   rocks.gltf + rocks.bin three boulders bedded in sand, the sand at y = 0
+  auv.gltf + auv.bin     2 m torpedo-shaped AUV, axis along z, bow toward +z, origin at its centre
   sand.png               256x256 seamlessly tiling RGBA8 sand texture
   README.md              what each asset is and how to regenerate it
 
@@ -350,6 +351,8 @@ MATERIALS = {
     "boat_windscreen": ((34, 42, 52), 0.1),
     "boat_motor": ((36, 36, 40), 0.4),
     "rock_grey": ((118, 112, 100), 0.9),
+    "auv_yellow": ((236, 180, 22), 0.35),
+    "auv_black": ((28, 28, 30), 0.5),
 }
 
 
@@ -500,6 +503,36 @@ def build_rocks():
     rng = random.Random(ROCK_SEED)
     nodes = [(name, rock_mesh(name, half, rng), offset) for name, offset, half in ROCKS]
     return "rocks", nodes
+
+
+# --------------------------------------------------------------------------------------------------------
+# AUV: a 2 m torpedo-shaped survey vehicle (in the manner of a REMUS 100): a yellow cylinder of radius
+# 0.16 m with an ellipsoidal nose, a black tail cone and four thin cruciform fins, axis along z.
+
+AUV_HALF, AUV_R = 1.0, 0.16
+
+
+def build_auv():
+    body = Mesh("auv_body")
+    nose = [(AUV_R * math.cos(0.5 * math.pi * k / 10), 0.7 + 0.3 * math.sin(0.5 * math.pi * k / 10))
+            for k in range(11)]
+    nose[-1] = (0.0, AUV_HALF)
+    revolve(body, [("auv_black", [(0.0, -AUV_HALF), (0.04, -AUV_HALF)], None),
+                   ("auv_black", [(0.04, -AUV_HALF), (AUV_R, -0.55)], None),
+                   ("auv_yellow", [(AUV_R, -0.55), (AUV_R, 0.7)], None),
+                   ("auv_yellow", nose, None)], 32, AUV_R, Xform.along((0.0, 0.0, 0.0), (0.0, 0.0, 1.0)))
+    fins = Mesh("auv_fins")
+    for k in range(4):  # a plate 0.12 m out from the tail cone, 0.2 m long, 1 cm thick
+        a = 0.5 * math.pi * k
+        out, side = (math.sin(a), math.cos(a), 0.0), (math.cos(a), -math.sin(a), 0.0)
+        corners = []
+        for c in range(8):
+            r = 0.16 if c & 1 else 0.06
+            z = -0.75 if c & 4 else -0.95
+            t = -0.005 if c & 2 else 0.005  # (out, -side, z) is right-handed: outward faces
+            corners.append(add(add(mul(out, r), mul(side, t)), (0.0, 0.0, z)))
+        hexahedron(fins.prim("auv_black"), corners)
+    return "auv", [("body", body, None), ("fins", fins, None)]
 
 
 # --------------------------------------------------------------------------------------------------------
@@ -1028,6 +1061,19 @@ def expect_rocks(s):
             raise CheckError("rocks: expected " + what)
 
 
+def expect_auv(s):
+    m = {x["node"]: x for x in s["meshes"]}
+    body = m["body"]
+    conds = [(500 <= s["triangles"] <= 4000, "0.5k-4k triangles"),
+             (near(body["lo"][2], -1.0, 1e-6) and near(body["hi"][2], 1.0, 1e-6), "body from z = -1 to 1"),
+             (near(body["hi"][0], AUV_R, 1e-3) and near(body["lo"][1], -AUV_R, 1e-3), "radius 0.16"),
+             (near(body["volume"], math.pi * AUV_R ** 2 * 1.6, 0.03), "body volume ~ a 1.6 m cylinder"),
+             (s["bin_bytes"] < 300000, ".bin under 300 KB")]
+    for ok, what in conds:
+        if not ok:
+            raise CheckError("auv: expected " + what)
+
+
 def check_png(files, fresh_rows):
     w, h, rows = decode_png(files["sand.png"])
     if (w, h) != (SAND_SIZE, SAND_SIZE):
@@ -1058,7 +1104,7 @@ def fmt_box(lo, hi):
     return "x %.2f..%.2f, y %.2f..%.2f, z %.2f..%.2f" % (lo[0], hi[0], lo[1], hi[1], lo[2], hi[2])
 
 
-def readme(files, buoy, boat, rocks):
+def readme(files, buoy, boat, rocks, auv):
     def table(s):
         lines = ["| node | mesh | triangles | bounds (m, model space) | materials (primitive order) |",
                  "|---|---|---|---|---|"]
@@ -1156,6 +1202,20 @@ The largest rock (at the origin) reaches %(rock_top).2f m above the sand. %(rock
 Materials:
 %(rocks_mats)s
 
+## auv.gltf / auv.bin
+
+A 2 m torpedo-shaped autonomous underwater vehicle in the manner of a REMUS 100 (auv.gltf %(auv_gltf)d
+bytes, auv.bin %(auv_bin)d bytes). **Axis along z, bow toward +z**; the origin is on the axis at the middle
+of its length (not a waterline: it runs submerged, e.g. as `vehicles[].depth_m`). A yellow cylinder of
+radius 0.16 m from z = -0.55 to 0.7 with an ellipsoidal nose to z = 1.0, a black tail cone to z = -1.0 and
+four black cruciform fins (1 cm plates, 0.2 m long) on the cone. %(auv_tris)d triangles, %(auv_verts)d
+vertices. Bounds: %(auv_box)s.
+
+%(auv_table)s
+
+Materials:
+%(auv_mats)s
+
 ## sand.png
 
 A 256 x 256 RGBA8 sand texture (alpha 255 everywhere) that tiles seamlessly in both directions: pale
@@ -1176,7 +1236,10 @@ tile per 2 to 4 m of sea floor or beach.
         "rock_top": [m for m in rocks["meshes"] if m["node"] == "rock_large"][0]["hi"][1],
         "rocks_tris": rocks["triangles"], "rocks_verts": rocks["vertices"],
         "rocks_box": fmt_box(rocks["lo"], rocks["hi"]),
-        "rocks_table": table(rocks), "rocks_mats": mats(rocks)}
+        "rocks_table": table(rocks), "rocks_mats": mats(rocks),
+        "auv_gltf": len(files["auv.gltf"]), "auv_bin": len(files["auv.bin"]),
+        "auv_tris": auv["triangles"], "auv_verts": auv["vertices"], "auv_box": fmt_box(auv["lo"], auv["hi"]),
+        "auv_table": table(auv), "auv_mats": mats(auv)}
 
 
 # --------------------------------------------------------------------------------------------------------
@@ -1184,7 +1247,7 @@ tile per 2 to 4 m of sea floor or beach.
 
 def generate():
     files = {}
-    for build in (build_buoy, build_boat, build_rocks):
+    for build in (build_buoy, build_boat, build_rocks, build_auv):
         root_name, nodes = build()
         files.update(write_gltf(root_name, root_name, nodes))
     rows = sand_pixels()
@@ -1192,12 +1255,13 @@ def generate():
     buoy = check_gltf("buoy", files, expect_buoy)
     boat = check_gltf("boat", files, expect_boat)
     rocks = check_gltf("rocks", files, expect_rocks)
-    files["README.md"] = readme(files, buoy, boat, rocks).encode("utf-8")
-    return files, rows, {"buoy": buoy, "boat": boat, "rocks": rocks}
+    auv = check_gltf("auv", files, expect_auv)
+    files["README.md"] = readme(files, buoy, boat, rocks, auv).encode("utf-8")
+    return files, rows, {"buoy": buoy, "boat": boat, "rocks": rocks, "auv": auv}
 
 
 def summary(stats, png):
-    for name in ("buoy", "boat", "rocks"):
+    for name in ("buoy", "boat", "rocks", "auv"):
         s = stats[name]
         print("%s.gltf: %d triangles, %d vertices, %s.bin %d bytes, bounds %s"
               % (name, s["triangles"], s["vertices"], name, s["bin_bytes"], fmt_box(s["lo"], s["hi"])))
@@ -1252,7 +1316,8 @@ def main(argv):
         if len(disk) == len(files):
             stats = {"buoy": check_gltf("buoy", disk, expect_buoy),
                      "boat": check_gltf("boat", disk, expect_boat),
-                     "rocks": check_gltf("rocks", disk, expect_rocks)}
+                     "rocks": check_gltf("rocks", disk, expect_rocks),
+                     "auv": check_gltf("auv", disk, expect_auv)}
             png = check_png(disk, rows)
             summary(stats, png)
     except (CheckError, ValueError, KeyError, struct.error, zlib.error) as e:

@@ -1,5 +1,6 @@
 // lagoon probe: wave height, normal and velocity at points, from WaveQuery (CPU, exact time, no GPU); or the
-// pose and velocities of a floating object (objects[].floating), simulated from time 0 on the CPU.
+// pose and velocities of a floating object (objects[].floating) or a vehicle (vehicles[]), simulated from
+// time 0 on the CPU.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -33,23 +34,64 @@ nlohmann::json vec(glm::dvec3 v) {
   return {v.x, v.y, v.z};
 }
 
-// The index of the floating object called `name`; prints why there is none.
-std::optional<size_t> floating_object(const scene::Scene& scene, const std::string& name) {
+// What --object names: a floating object (objects[index]) or a vehicle (vehicles[index]).
+struct Target {
+  bool vehicle = false;
+  size_t index = 0;
+};
+
+// The floating object or vehicle called `name`; prints why there is none.
+std::optional<Target> find_target(const scene::Scene& scene, const std::string& name) {
   std::string names;
+  const auto list = [&names](const std::string& n) { names += (names.empty() ? "\"" : ", \"") + n + "\""; };
   for (size_t o = 0; o < scene.objects.size(); ++o) {
     if (scene.objects[o].name == name) {
-      if (scene.objects[o].floating.enabled) return o;
+      if (scene.objects[o].floating.enabled) return Target{false, o};
       std::fprintf(stderr,
                    "lagoon probe: objects[%zu] \"%s\" does not float; set objects[%zu].floating.enabled to "
                    "true (docs/physics.md) to probe its motion\n",
                    o, name.c_str(), o);
       return std::nullopt;
     }
-    names += (names.empty() ? "\"" : ", \"") + scene.objects[o].name + "\"";
+    list(scene.objects[o].name);
   }
-  std::fprintf(stderr, "lagoon probe: no object is named \"%s\"; the scene's objects: %s\n", name.c_str(),
+  for (size_t v = 0; v < scene.vehicles.size(); ++v) {
+    if (scene.vehicles[v].name == name) return Target{true, v};
+    list(scene.vehicles[v].name);
+  }
+  std::fprintf(stderr, "lagoon probe: no object or vehicle is named \"%s\"; the scene's: %s\n", name.c_str(),
                names.empty() ? "none" : names.c_str());
   return std::nullopt;
+}
+
+// One line of --object: the target's pose and velocities at time t.
+nlohmann::json pose_line(const scene::Scene& scene, const render::FloatingObjects& moving, Target target,
+                         double t) {
+  glm::dvec3 origin, centre, velocity, angular;
+  glm::dquat q;
+  if (target.vehicle) {
+    const physics::VehicleMotion& motion = moving.vehicle(target.index);
+    origin = motion.model_origin();
+    q = motion.orientation();
+    centre = motion.hull() ? motion.hull()->state().position : origin;
+    velocity = motion.velocity();
+    angular = motion.angular_velocity();
+  } else {
+    const physics::FloatingBody& body = *moving.body(target.index);
+    origin = body.model_origin();
+    q = body.state().orientation;
+    centre = body.state().position;
+    velocity = body.state().velocity;
+    angular = body.state().angular_velocity;
+  }
+  return {{target.vehicle ? "vehicle" : "object",
+           target.vehicle ? scene.vehicles[target.index].name : scene.objects[target.index].name},
+          {"time_s", t},
+          {"origin", vec(origin)},
+          {"orientation_wxyz", {q.w, q.x, q.y, q.z}},
+          {"centre_of_mass", vec(centre)},
+          {"velocity_mps", vec(velocity)},
+          {"angular_velocity_radps", vec(angular)}};
 }
 
 // --object: the body's pose and velocities at `frames` times from `time`, 1/fps apart.
@@ -60,27 +102,17 @@ int probe_object(const ParsedArgs& args, const scene::Scene& scene, double time)
     std::fprintf(stderr, "lagoon probe: %s\n", (!frames ? frames.error() : fps.error()).message.c_str());
     return kExitUsage;
   }
-  const auto index = floating_object(scene, *args.get("object"));
-  if (!index) return kExitFailure;
-  auto floating =
-      render::FloatingObjects::create(scene, scene.ocean, ocean::make_cascade_spectra(scene.ocean));
-  if (!floating) {
-    std::fprintf(stderr, "lagoon probe: %s\n", floating.error().message.c_str());
+  const auto target = find_target(scene, *args.get("object"));
+  if (!target) return kExitFailure;
+  auto moving = render::FloatingObjects::create(scene, scene.ocean, ocean::make_cascade_spectra(scene.ocean));
+  if (!moving) {
+    std::fprintf(stderr, "lagoon probe: %s\n", moving.error().message.c_str());
     return kExitFailure;
   }
   for (long long f = 0; f < *frames; ++f) {
     const double t = time + double(f) / *fps;
-    (*floating)->advance(t);
-    const physics::FloatingBody& body = *(*floating)->body(*index);
-    const glm::dquat q = body.state().orientation;
-    const nlohmann::json line{{"object", scene.objects[*index].name},
-                              {"time_s", t},
-                              {"origin", vec(body.model_origin())},
-                              {"orientation_wxyz", {q.w, q.x, q.y, q.z}},
-                              {"centre_of_mass", vec(body.state().position)},
-                              {"velocity_mps", vec(body.state().velocity)},
-                              {"angular_velocity_radps", vec(body.state().angular_velocity)}};
-    std::printf("%s\n", line.dump().c_str());
+    (*moving)->advance(t);
+    std::printf("%s\n", pose_line(scene, **moving, *target, t).dump().c_str());
   }
   return kExitOk;
 }
@@ -99,8 +131,10 @@ int run_probe(const ParsedArgs& args) {
     return kExitUsage;
   }
   if (args.get("object") && !args.all("at").empty()) {
-    std::fprintf(stderr,
-                 "lagoon probe: give --at (the water at points) or --object (a floating body), not both\n");
+    std::fprintf(
+        stderr,
+        "lagoon probe: give --at (the water at points) or --object (a floating body or vehicle), not "
+        "both\n");
     return kExitUsage;
   }
   if (!args.get("object") && args.all("at").empty()) {
@@ -160,16 +194,20 @@ const Command& probe_command() {
            .summary =
                "Prints one JSON object per point: the wave height, normal and surface velocity at "
                "(x, z) and time T (summed over all cascades, horizontal displacement inverted), and "
-               "the query's error bound. Or, with --object, one per frame: a floating object's pose "
+               "the query's error bound. Or, with --object, one per frame: a floating object's or a "
+               "vehicle's pose "
                "(model origin, orientation as a quaternion w, x, y, z), centre of mass and velocities, "
                "simulated from time 0. Computed on the CPU; needs no Vulkan device.",
-           .options = {scene_option(),
-                       {"time", "T", "simulation time in seconds", true},
-                       {"at", "X,Z", "a point in metres (repeatable)", false, true},
-                       {"object", "NAME", "a floating object (objects[].name with floating.enabled)", false},
-                       {"frames", "N", "with --object: N lines, from T on (default 1)", false},
-                       {"fps", "F", "with --object: lines per second of simulation time (default 30)", false},
-                       set_option()},
+           .options =
+               {scene_option(),
+                {"time", "T", "simulation time in seconds", true},
+                {"at", "X,Z", "a point in metres (repeatable)", false, true},
+                {"object", "NAME",
+                 "a floating object (objects[].name with floating.enabled) or a vehicle (vehicles[].name)",
+                 false},
+                {"frames", "N", "with --object: N lines, from T on (default 1)", false},
+                {"fps", "F", "with --object: lines per second of simulation time (default 30)", false},
+                set_option()},
            .details =
                "examples:\n  lagoon probe --scene scenes/default.json --time 3.5 --at 0,0 --at 12.5,-40\n"
                "  lagoon probe --scene harbour.json --object buoy --time 5 --frames 60 --fps 30\n"},

@@ -1,5 +1,6 @@
 #include "render/floating_objects.h"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
@@ -12,15 +13,15 @@ namespace lagoon::render {
 namespace {
 
 // The model's meshes as one triangle soup in its own coordinates, scaled: the body's hull.
-Result<physics::TriangleMesh> load_hull(const scene::Object& object, const std::string& field) {
-  auto model = gltf::load_gltf(object.file);
+Result<physics::TriangleMesh> load_hull(const std::string& file, float scale, const std::string& field) {
+  auto model = gltf::load_gltf(file);
   if (!model) return make_error(field + ".file: " + model.error().message);
   physics::TriangleMesh hull;
   for (const gltf::Instance& instance : model->instances)
     for (const gltf::Primitive& p : model->meshes[instance.mesh].primitives) {
       const uint32_t base = uint32_t(hull.vertices.size());
       for (const glm::vec3& v : p.positions)
-        hull.vertices.push_back(double(object.scale) * glm::dvec3(instance.world * glm::vec4(v, 1.0f)));
+        hull.vertices.push_back(double(scale) * glm::dvec3(instance.world * glm::vec4(v, 1.0f)));
       for (uint32_t i : p.indices) hull.indices.push_back(base + i);
     }
   return hull;
@@ -28,7 +29,7 @@ Result<physics::TriangleMesh> load_hull(const scene::Object& object, const std::
 
 // The body's mass properties: the solid's, with the scene's mass and ballast (parallel-axis theorem for the
 // moved centre).
-physics::MassProperties body_mass(const physics::TriangleMesh& hull, const scene::Floating& f) {
+physics::MassProperties body_mass(const physics::TriangleMesh& hull, const scene::HullBody& f) {
   physics::MassProperties m = physics::solid_mass_properties(hull, double(f.density_kg_m3));
   if (f.mass_kg > 0 && m.mass > 0) {
     m.inertia *= double(f.mass_kg) / m.mass;
@@ -40,6 +41,49 @@ physics::MassProperties body_mass(const physics::TriangleMesh& hull, const scene
   return m;
 }
 
+physics::FloatingBody make_body(const physics::TriangleMesh& hull, const scene::HullBody& f) {
+  return physics::FloatingBody(hull, body_mass(hull, f),
+                               {.linear = f.linear_damping,
+                                .quadratic = f.quadratic_damping,
+                                .angular = f.angular_damping,
+                                .angular_quadratic = f.angular_damping},
+                               {});
+}
+
+// A closed hull with a positive volume, or an error naming `field`.
+// `owner` names the scene's element ("objects[2]"), `field` the block the error is about.
+Result<physics::TriangleMesh> load_closed_hull(const std::string& file, float scale, const scene::HullBody& f,
+                                               const std::string& owner, const std::string& field) {
+  auto hull = load_hull(file, scale, owner);
+  if (!hull) return hull.error();
+  const physics::MassProperties mass = physics::solid_mass_properties(*hull, double(f.density_kg_m3));
+  if (!(mass.volume > 1e-9))
+    return make_error(field + ": the model's mesh encloses no volume (" + std::to_string(mass.volume) +
+                      " m^3); a body in the water needs a closed mesh with outward faces");
+  return hull;
+}
+
+// A lattice of heights that keeps the whole hull inside it while the body stays in its inner half, with
+// one point to spare for the bicubic taps (ocean/local_heights.h).
+ocean::LocalHeightsOptions lattice_for(const physics::TriangleMesh& hull) {
+  ocean::LocalHeightsOptions options;
+  double radius = 0;
+  for (const glm::dvec3& v : hull.vertices) radius = std::max(radius, std::hypot(v.x, v.z));
+  const int needed = int(std::ceil(4.0 * (radius / options.spacing_m + 1.0))) + 1;
+  options.points_per_side = std::max(options.points_per_side, needed);
+  return options;
+}
+
+std::vector<glm::dvec2> waypoints(const scene::VehiclePath& path) {
+  std::vector<glm::dvec2> out;
+  for (const glm::vec2& w : path.waypoints) out.emplace_back(w);
+  return out;
+}
+
+physics::WaypointPath vehicle_path(const scene::VehiclePath& path) {
+  return physics::WaypointPath(waypoints(path), path.loop, path.speed_mps, path.start_m);
+}
+
 }  // namespace
 
 Result<std::unique_ptr<FloatingObjects>> FloatingObjects::create(
@@ -49,17 +93,18 @@ Result<std::unique_ptr<FloatingObjects>> FloatingObjects::create(
   for (size_t o = 0; o < scene.objects.size(); ++o) {
     const scene::Object& object = scene.objects[o];
     if (!object.floating.enabled) continue;
-    const std::string field = "objects[" + std::to_string(o) + "]";
-    auto hull = load_hull(object, field);
-    if (!hull) return hull.error();
-    const physics::MassProperties mass =
-        physics::solid_mass_properties(*hull, double(object.floating.density_kg_m3));
-    if (!(mass.volume > 1e-9))
-      return make_error(field + ".floating: the model's mesh encloses no volume (" +
-                        std::to_string(mass.volume) +
-                        " m^3); a floating object needs a closed mesh with outward faces, or set "
-                        "floating.enabled to false");
+    const std::string owner = "objects[" + std::to_string(o) + "]";
+    auto hull = load_closed_hull(object.file, object.scale, object.floating, owner, owner + ".floating");
+    if (!hull) return make_error(hull.error().message + ", or set floating.enabled to false");
     out->hulls_.push_back(std::move(*hull));
+  }
+  for (size_t v = 0; v < scene.vehicles.size(); ++v) {
+    const scene::Vehicle& vehicle = scene.vehicles[v];
+    if (vehicle.depth_m > 0) continue;
+    const std::string owner = "vehicles[" + std::to_string(v) + "]";
+    auto hull = load_closed_hull(vehicle.file, vehicle.scale, vehicle.body, owner, owner);
+    if (!hull) return make_error(hull.error().message + ", or run it submerged (depth_m > 0)");
+    out->vehicle_hulls_.push_back(std::move(*hull));
   }
   out->reset();
   return out;
@@ -67,23 +112,33 @@ Result<std::unique_ptr<FloatingObjects>> FloatingObjects::create(
 
 void FloatingObjects::reset() {
   bodies_.clear();
-  if (!sea_ && !hulls_.empty()) sea_ = std::make_shared<ocean::WaveQuery>(ocean_, spectra_);
+  if (!sea_ && !(hulls_.empty() && vehicle_hulls_.empty()))
+    sea_ = std::make_shared<ocean::WaveQuery>(ocean_, spectra_);
   size_t h = 0;
   for (size_t o = 0; o < scene_.objects.size(); ++o) {
     const scene::Object& object = scene_.objects[o];
     if (!object.floating.enabled) continue;
     const physics::TriangleMesh& hull = hulls_[h++];
     const scene::Floating& f = object.floating;
-    physics::FloatingBody body(hull, body_mass(hull, f),
-                               {.linear = f.linear_damping,
-                                .quadratic = f.quadratic_damping,
-                                .angular = f.angular_damping,
-                                .angular_quadratic = f.angular_damping},
-                               {});
+    physics::FloatingBody body = make_body(hull, f);
     body.place(glm::dvec3(object.position), object_orientation(object));
     body.settle_vertically(0.0);  // at its draught on the mean level, so it does not start with a bounce
     bodies_.push_back({o, double(object.scale), std::move(body),
-                       std::make_unique<ocean::LocalHeights>(sea_, ocean::LocalHeightsOptions{})});
+                       std::make_unique<ocean::LocalHeights>(sea_, lattice_for(hull))});
+  }
+  vehicles_.clear();
+  size_t vh = 0;
+  for (const scene::Vehicle& vehicle : scene_.vehicles) {
+    if (vehicle.depth_m > 0) {
+      vehicles_.push_back({double(vehicle.scale),
+                           physics::VehicleMotion(vehicle_path(vehicle.path), double(vehicle.depth_m)),
+                           nullptr});
+      continue;
+    }
+    const physics::TriangleMesh& hull = vehicle_hulls_[vh++];
+    vehicles_.push_back({double(vehicle.scale),
+                         physics::VehicleMotion(vehicle_path(vehicle.path), make_body(hull, vehicle.body)),
+                         std::make_unique<ocean::LocalHeights>(sea_, lattice_for(hull))});
   }
   steps_ = 0;
 }
@@ -99,6 +154,14 @@ void FloatingObjects::advance(double time_s) {
       const ocean::LocalHeights& heights = *b.heights;
       b.body.step(kStepS, [&heights](double x, double z) { return heights.height(x, z); });
     }
+    for (Vehicle& v : vehicles_) {
+      if (v.heights) {
+        const glm::dvec3 at = v.motion.model_origin();
+        v.heights->update(t, glm::dvec2(at.x, at.z));
+      }
+      const ocean::LocalHeights* heights = v.heights.get();
+      v.motion.step(t, kStepS, [heights](double x, double z) { return heights->height(x, z); });
+    }
   }
 }
 
@@ -106,6 +169,10 @@ std::vector<FloatingObjects::Pose> FloatingObjects::poses() const {
   std::vector<Pose> out;
   for (const Body& b : bodies_)
     out.push_back({b.object, object_transform(b.body.model_origin(), b.body.state().orientation, b.scale)});
+  for (size_t v = 0; v < vehicles_.size(); ++v)
+    out.push_back(
+        {scene_.objects.size() + v, object_transform(vehicles_[v].motion.model_origin(),
+                                                     vehicles_[v].motion.orientation(), vehicles_[v].scale)});
   return out;
 }
 

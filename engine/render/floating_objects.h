@@ -1,7 +1,8 @@
-// The scene's floating objects (objects[].floating, docs/physics.md): each a rigid body (physics/
-// floating_body.h) on the sea's heights around it (ocean/local_heights.h), stepped at a fixed 120 Hz from
-// time 0, at rest where the scene puts it. advance() brings them to a frame's time, simulating again from 0
-// when asked for an earlier one, so a frame at time t shows the same poses however it was reached.
+// What moves in the scene (docs/physics.md): the floating objects (objects[].floating), each a rigid body
+// (physics/floating_body.h) on the sea's heights around it (ocean/local_heights.h), and the vehicles
+// (vehicles[], physics/vehicle_motion.h), stepped together at a fixed 120 Hz from time 0, when they are at
+// rest where the scene puts them. advance() brings them to a frame's time, simulating again from 0 when
+// asked for an earlier one, so a frame at time t shows the same poses however it was reached.
 #pragma once
 #include <memory>
 #include <vector>
@@ -12,6 +13,7 @@
 #include "ocean/initial_spectrum.h"
 #include "ocean/local_heights.h"
 #include "physics/floating_body.h"
+#include "physics/vehicle_motion.h"
 #include "scene/scene.h"
 
 namespace lagoon::render {
@@ -20,22 +22,24 @@ class FloatingObjects {
  public:
   static constexpr double kStepS = 1.0 / 120.0;
 
-  // Loads the hull of every floating object (its glTF mesh, scaled). Fails naming the field when a hull is
-  // not a closed surface with a positive volume.
+  // Loads the hull of every floating object and surface vehicle (its glTF mesh, scaled). Fails naming the
+  // field when a hull is not a closed surface with a positive volume.
   static Result<std::unique_ptr<FloatingObjects>> create(const scene::Scene& scene,
                                                          const ocean::OceanParams& ocean,
                                                          const std::vector<ocean::CascadeSpectrum>& spectra);
 
-  bool empty() const { return bodies_.empty(); }
+  bool empty() const { return bodies_.empty() && vehicles_.empty(); }
   void advance(double time_s);
 
   struct Pose {
-    size_t object;             // index into the scene's objects
+    size_t object;             // index into the scene's objects, then its vehicles (objects.size() + v)
     glm::mat4 model_to_world;  // where to draw its model
   };
   std::vector<Pose> poses() const;
   // For tools and tests: the body of objects[object], or nullptr when it does not float.
   const physics::FloatingBody* body(size_t object) const;
+  // The motion of vehicles[vehicle].
+  const physics::VehicleMotion& vehicle(size_t vehicle) const { return vehicles_.at(vehicle).motion; }
 
  private:
   struct Body {
@@ -43,6 +47,11 @@ class FloatingObjects {
     double scale;
     physics::FloatingBody body;
     std::unique_ptr<ocean::LocalHeights> heights;
+  };
+  struct Vehicle {
+    double scale;
+    physics::VehicleMotion motion;
+    std::unique_ptr<ocean::LocalHeights> heights;  // null when submerged
   };
   FloatingObjects(const scene::Scene& scene, ocean::OceanParams ocean,
                   std::vector<ocean::CascadeSpectrum> spectra)
@@ -52,9 +61,11 @@ class FloatingObjects {
   scene::Scene scene_;
   ocean::OceanParams ocean_;
   std::vector<ocean::CascadeSpectrum> spectra_;
-  std::vector<physics::TriangleMesh> hulls_;
+  std::vector<physics::TriangleMesh> hulls_;          // floating objects', in scene order
+  std::vector<physics::TriangleMesh> vehicle_hulls_;  // surface vehicles', in scene order
   std::shared_ptr<ocean::WaveQuery> sea_;  // shared by every body's LocalHeights: one evaluation per knot
   std::vector<Body> bodies_;
+  std::vector<Vehicle> vehicles_;
   long long steps_ = 0;  // taken since time 0
 };
 

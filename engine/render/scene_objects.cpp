@@ -51,6 +51,17 @@ Result<std::unique_ptr<SceneObjects>> SceneObjects::load(vk::Context& ctx, const
       return r.error();
     objects->object_draws_.push_back({first, objects->objects_.size()});
   }
+  // Vehicles follow the objects (object index objects.size() + v); their pose is set every frame.
+  for (size_t v = 0; v < scene.vehicles.size(); ++v) {
+    const scene::Vehicle& vehicle = scene.vehicles[v];
+    const std::string field = "vehicles[" + std::to_string(v) + "].file";
+    const size_t first = objects->objects_.size();
+    const glm::vec2 start = vehicle.path.waypoints.empty() ? glm::vec2(0.0f) : vehicle.path.waypoints.front();
+    const glm::mat4 at = object_transform(glm::dvec3(start.x, -vehicle.depth_m, start.y),
+                                          glm::dquat(1, 0, 0, 0), vehicle.scale);
+    if (auto r = objects->load_model(vehicle.file, at, field); !r) return r.error();
+    objects->object_draws_.push_back({first, objects->objects_.size()});
+  }
   return objects;
 }
 

@@ -1,6 +1,6 @@
-// The scene's meshes on the GPU: the glTF objects (objects[]), a glTF sea floor, and the procedural slope
-// floor, with their textures and the mesh pipelines (shaders/render/mesh.*). Passes draw them in one of the
-// three modes of shared/mesh.h.
+// The scene's meshes on the GPU: the glTF objects (objects[]) and vehicles (vehicles[]), a glTF sea floor,
+// and the procedural slope floor, with their textures and the mesh pipelines (shaders/render/mesh.*). Passes
+// draw them in one of the three modes of shared/mesh.h.
 #pragma once
 #include <array>
 #include <memory>
@@ -32,7 +32,8 @@ class SceneObjects {
   void draw(const FrameContext& frame, gpu::MeshMode mode) const;
   // The procedural slope floor (refraction only; a glTF floor is an object). No-op without one.
   void draw_floor(const FrameContext& frame) const;
-  // Moves scene object `object` (objects[object]) to `model_to_world`: a floating body's pose.
+  // Moves scene object `object` (objects[object], then vehicles[object - objects.size()]) to
+  // `model_to_world`: a floating body's or a vehicle's pose.
   void place(size_t object, const glm::mat4& model_to_world);
 
  private:

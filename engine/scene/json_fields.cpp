@@ -303,6 +303,46 @@ void ObjectReader::vec2(std::string_view name, glm::vec2& value, std::string_vie
     value = {components[0], components[1]};
 }
 
+void ObjectReader::points2(std::string_view name, std::vector<glm::vec2>& value, size_t min_size,
+                           size_t max_size, std::string_view unit, std::string_view doc) {
+  std::string defaults;
+  for (const glm::vec2& p : value) defaults += (defaults.empty() ? "[" : ", ") + format_floats({&p.x, 2});
+  defaults = defaults.empty() ? "[]" : defaults + "]";
+  const std::string range = std::to_string(min_size) + " to " + std::to_string(max_size) + " points";
+  if (describing()) {
+    describe(name, "array of [x, z]", unit, defaults, range, doc);
+    catalog_->back().min_elements = min_size;
+    catalog_->back().max_elements = max_size;
+    return;
+  }
+  const json* j = lookup(name);
+  if (!j) return;
+  const std::string path = child_path(name);
+  const std::string fix = "allowed: an array of " + range + " [x, z]" +
+                          (unit.empty() ? "" : " in " + std::string(unit)) + ", e.g. [[0, 0], [40, 10]]";
+  if (!j->is_array() || j->size() < min_size || j->size() > max_size) {
+    const std::string got =
+        describe_value(*j) + (j->is_array() ? " with " + std::to_string(j->size()) + " elements" : "");
+    return diag_->error(path, "expected " + range + " [[x, z], ...], got " + got, fix);
+  }
+  std::vector<glm::vec2> points;
+  for (size_t i = 0; i < j->size(); ++i) {
+    const std::string element_path = path + "[" + std::to_string(i) + "]";
+    const json& e = (*j)[i];
+    if (!e.is_array() || e.size() != 2)
+      return diag_->error(element_path, "expected [x, z], got " + describe_value(e), fix);
+    glm::vec2 p{};
+    for (int c = 0; c < 2; ++c) {
+      const std::optional<double> v =
+          finite_number(e[c], element_path + "[" + std::to_string(c) + "]", fix, *diag_);
+      if (!v) return;
+      p[c] = static_cast<float>(*v);
+    }
+    points.push_back(p);
+  }
+  value = std::move(points);
+}
+
 void ObjectReader::flag(std::string_view name, bool& value, std::string_view doc) {
   if (describing()) return describe(name, "boolean", "", value ? "true" : "false", "true, false", doc);
   const json* j = lookup(name);

@@ -100,6 +100,9 @@ class ObjectReader {
             std::string_view unit, std::string_view doc);
   // A point on the horizontal plane, [x, z] (y is up): two finite numbers.
   void vec2(std::string_view name, glm::vec2& value, std::string_view unit, std::string_view doc);
+  // A list of points on the horizontal plane, [[x, z], ...], with min_size to max_size points, each finite.
+  void points2(std::string_view name, std::vector<glm::vec2>& value, size_t min_size, size_t max_size,
+               std::string_view unit, std::string_view doc);
   void flag(std::string_view name, bool& value, std::string_view doc);
   void text(std::string_view name, std::string& value, std::string_view doc);
 

@@ -87,6 +87,8 @@ void read_scene(ObjectReader& r, Scene& s) {
   r.block("seafloor", s.seafloor, read_seafloor, "The sea floor: none, a procedural sloping bay, or a mesh.");
   r.array("objects", s.objects, 0, 256, read_object,
           "glTF models placed in the world (boats, buoys, rocks), above or below the water.");
+  r.array("vehicles", s.vehicles, 0, 16, read_vehicle,
+          "Hulls that follow a path (boats at the surface, AUVs at a depth); docs/physics.md, Vehicles.");
   r.array("lights", s.lights, 0, LAGOON_MAX_LIGHTS, read_light,
           "Point lights, in addition to the sun and sky.");
   r.block("underwater", s.underwater, read_underwater,
@@ -164,6 +166,7 @@ void resolve_files(Scene& scene, const std::filesystem::path& folder) {
   resolve(scene.seafloor.texture);
   resolve(scene.seafloor.file);
   for (Object& object : scene.objects) resolve(object.file);
+  for (Vehicle& vehicle : scene.vehicles) resolve(vehicle.file);
 }
 
 }  // namespace
@@ -232,6 +235,7 @@ nlohmann::ordered_json scene_to_json(const Scene& scene, const std::filesystem::
   relative(copy.seafloor.texture);
   relative(copy.seafloor.file);
   for (Object& object : copy.objects) relative(object.file);
+  for (Vehicle& vehicle : copy.vehicles) relative(vehicle.file);
   return fields_to_json(scene_fields(copy));
 }
 

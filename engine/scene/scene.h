@@ -86,16 +86,20 @@ struct Seafloor {
   std::string file;                       // gltf: mesh file, relative to the scene file
 };
 
-// An object that rides the waves (objects[].floating; compute/physics, docs/physics.md): a rigid body whose
-// mass is `density` times its mesh's volume, pushed by the water's pressure on its hull.
-struct Floating {
-  bool enabled = false;
+// A hull in the water (compute/physics, docs/physics.md): its mass is `density` times its mesh's volume
+// unless given, pushed by the water's pressure on its hull and damped while in the water.
+struct HullBody {
   float density_kg_m3 = 500.f;           // of the model as a solid
   float mass_kg = 0.f;                   // > 0: this mass instead (inertia scaled with it)
   glm::vec3 centre_of_mass_offset{0.f};  // model coordinates, from the solid's centroid (ballast: y < 0)
   float linear_damping = 0.5f;           // 1/s, against its motion while in the water
   float quadratic_damping = 0.5f;        // 1/m
   float angular_damping = 0.5f;          // 1/s
+};
+
+// An object that rides the waves (objects[].floating): a rigid body with six degrees of freedom.
+struct Floating : HullBody {
+  bool enabled = false;
 };
 
 struct Object {
@@ -105,6 +109,26 @@ struct Object {
   glm::vec3 rotation_deg{0.f};  // yaw (about y), pitch (about x), roll (about z), applied in that order
   float scale = 1.f;
   Floating floating;
+};
+
+// Where a vehicle goes (vehicles[].path): a smooth curve through the waypoints (x, z), travelled at a
+// constant speed from `start_m` along it at time 0; closed when `loop`, else it stops at the last point.
+struct VehiclePath {
+  std::vector<glm::vec2> waypoints{{0.f, 0.f}, {40.f, 0.f}};
+  float speed_mps = 3.f;
+  bool loop = true;
+  float start_m = 0.f;
+};
+
+// A glTF hull that follows a path (vehicles[]; docs/physics.md, Vehicles): at the surface its heave, pitch
+// and roll come from buoyancy (`body`); submerged (`depth_m` > 0) it runs level at that depth.
+struct Vehicle {
+  std::string name;
+  std::string file;  // glTF 2.0, relative to the scene file
+  float scale = 1.f;
+  VehiclePath path;
+  float depth_m = 0.f;  // 0 = at the surface; > 0: the model's origin this far below the mean level
+  HullBody body;
 };
 
 struct PointLight {
@@ -120,6 +144,7 @@ struct Scene {
   Sun sun;
   Seafloor seafloor;
   std::vector<Object> objects;
+  std::vector<Vehicle> vehicles;
   std::vector<PointLight> lights;
   ocean::OceanParams ocean;
   optics::WaterParams water;  // water.table, seafloor.texture/file and objects[].file, when relative, are

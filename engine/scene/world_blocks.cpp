@@ -86,12 +86,7 @@ void read_seafloor(ObjectReader& r, Seafloor& f) {
              "; a slope is generated, not loaded: remove `file`, or set type \"gltf\" to use the mesh");
 }
 
-void read_floating(ObjectReader& r, Floating& f) {
-  r.flag(
-      "enabled", f.enabled,
-      "Ride the waves: the model becomes a rigid body pushed by the water's pressure on its mesh. At time 0 "
-      "it is at rest at `position` (x, z) and `rotation_deg`, at the height where still water carries it; "
-      "a body that cannot float starts at `position` and sinks (docs/physics.md). Its mesh must be closed.");
+void read_hull_body(ObjectReader& r, HullBody& f) {
   r.number("density_kg_m3", f.density_kg_m3, Bounds::between(1, 20000), "kg/m^3",
            "Density of the model as a solid; its mass is this times the mesh's volume. Sea water is 1025: "
            "half of that floats half under.");
@@ -107,6 +102,43 @@ void read_floating(ObjectReader& r, Floating& f) {
            "Damping that grows with speed: this times its mass, speed and velocity.");
   r.number("angular_damping", f.angular_damping, Bounds::between(0, 100), "1/s",
            "Damping of its rotation while in the water.");
+}
+
+void read_floating(ObjectReader& r, Floating& f) {
+  r.flag(
+      "enabled", f.enabled,
+      "Ride the waves: the model becomes a rigid body pushed by the water's pressure on its mesh. At time 0 "
+      "it is at rest at `position` (x, z) and `rotation_deg`, at the height where still water carries it; "
+      "a body that cannot float starts at `position` and sinks (docs/physics.md). Its mesh must be closed.");
+  read_hull_body(r, f);
+}
+
+void read_path(ObjectReader& r, VehiclePath& p) {
+  r.points2("waypoints", p.waypoints, 2, 256, "m",
+            "Points (x, z) the vehicle passes through, in order; the path is a smooth curve (Catmull-Rom) "
+            "through them.");
+  r.number("speed_mps", p.speed_mps, Bounds::between(0, 60), "m/s",
+           "Speed along the path; 0 = it stays put.");
+  r.flag("loop", p.loop,
+         "true: the path closes from the last waypoint back to the first and repeats; false: the vehicle "
+         "stops at the last waypoint.");
+  r.number("start_m", p.start_m, Bounds::between(0, 1e7), "m",
+           "Distance along the path where the vehicle is at time 0.");
+}
+
+void read_vehicle(ObjectReader& r, Vehicle& v) {
+  r.text("name", v.name, "Label for messages and tools (lagoon probe --object).");
+  r.text("file", v.file,
+         "glTF 2.0 model (.gltf or .glb) with its bow toward +z, relative to the scene file.");
+  r.rule("file", !v.file.empty(), "a file name (required)",
+         "every vehicle is loaded from a glTF file; add e.g. \"file\": \"assets/boat.gltf\"");
+  r.number("scale", v.scale, Bounds::above_up_to(0, 1000), "", "Uniform scale of the model.");
+  r.block("path", v.path, read_path, "Where the vehicle goes; its heading follows the path.");
+  r.number(
+      "depth_m", v.depth_m, Bounds::between(0, 11000), "m",
+      "0 = at the surface: heave, pitch and roll come from buoyancy (`body`), so the mesh must be closed; "
+      "> 0 = submerged (an AUV): the model's origin runs level at this depth below the mean water level.");
+  r.block("body", v.body, read_hull_body, "Mass and damping of a surface vehicle's hull (docs/physics.md).");
 }
 
 void read_object(ObjectReader& r, Object& o) {

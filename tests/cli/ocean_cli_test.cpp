@@ -195,11 +195,47 @@ TEST(OceanCli, ProbeObjectErrorsNameTheFix) {
       << r.output;
   r = lagoon(scene + "--object dinghy");
   EXPECT_EQ(r.exit_code, 1) << r.output;
-  EXPECT_NE(r.output.find("no object is named \"dinghy\"; the scene's objects: \"buoy\", \"boat\""),
+  EXPECT_NE(r.output.find("no object or vehicle is named \"dinghy\"; the scene's: \"buoy\", \"boat\""),
             std::string::npos)
       << r.output;
   EXPECT_EQ(lagoon(scene + "--object buoy --at 1,2").exit_code, 2);
   EXPECT_EQ(lagoon(scene + "--object buoy --frames 0").exit_code, 2);
+}
+
+// The harbour's vehicles: the AUV runs level at its depth on its path; the boat at the surface moves at its
+// path's speed while the water heaves it.
+TEST(OceanCli, ProbeObjectPrintsAVehiclesPose) {
+  const std::string harbour = std::string(LAGOON_SOURCE_DIR) + "/scenes/harbour.json";
+  auto r = lagoon("probe --scene " + harbour + " --time 3 --object auv --frames 2 --fps 1");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::istringstream lines(r.output);
+  std::string line;
+  std::vector<nlohmann::json> auv;
+  while (std::getline(lines, line)) auv.push_back(nlohmann::json::parse(line));
+  ASSERT_EQ(auv.size(), 2u);
+  EXPECT_EQ(auv[0]["vehicle"], "auv");
+  for (const auto& j : auv) EXPECT_NEAR(j["origin"][1].get<double>(), -4.4, 1e-6) << j;
+  const double moved = std::hypot(auv[1]["origin"][0].get<double>() - auv[0]["origin"][0].get<double>(),
+                                  auv[1]["origin"][2].get<double>() - auv[0]["origin"][2].get<double>());
+  EXPECT_NEAR(moved, 1.5, 0.05);  // 1.5 m/s, one second apart (a chord of a gently curving path)
+  r = lagoon("probe --scene " + harbour + " --time 5 --object boat");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto boat = nlohmann::json::parse(r.output);
+  const auto v = boat["velocity_mps"];
+  EXPECT_NEAR(std::hypot(v[0].get<double>(), v[2].get<double>()), 6.0, 1e-6) << r.output;
+  EXPECT_LT(std::abs(boat["origin"][1].get<double>()), 0.5)
+      << "a surface vehicle rides the water: " << r.output;
+}
+
+TEST(OceanCli, AVehicleWithoutAHullFailsNamingTheField) {
+  const std::string harbour = std::string(LAGOON_SOURCE_DIR) + "/scenes/harbour.json";
+  const std::string out = testing::TempDir() + "never.png";
+  auto r = lagoon("render --scene " + harbour + " --out " + out +
+                  " --set 'vehicles=[{\"file\":\"missing.gltf\"}]'");
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("vehicles[0].file"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("missing.gltf"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(out));
 }
 
 }  // namespace

@@ -25,7 +25,7 @@ for target in ("scene", "gltf", "image", "npy", "demo_script"):
     shutil.rmtree(os.path.join(corpus, target), ignore_errors=True)
 
 # ---- scene: the file's text, then the --set overrides, each after a 0xff byte (fuzz_scene.cpp) ----------
-for s in ("default", "open-ocean", "tropical-lagoon"):
+for s in ("default", "open-ocean", "tropical-lagoon", "harbour"):
     put("scene", s + ".json", read("scenes", s + ".json"))
 put("scene", "overrides", read("scenes", "default.json") +
     b"\xffocean.spectrum.type=pm\xffcamera.fov_deg=40\xffocean.cascades=[{\"patch_size_m\":100,\"resolution\":64}]")

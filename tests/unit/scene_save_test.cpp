@@ -20,7 +20,7 @@ fs::path temp_folder(const std::string& name) {
 }
 
 TEST(SceneSave, ShippedScenesRoundTrip) {
-  for (const char* name : {"default", "open-ocean", "tropical-lagoon", "reef-dive", "waterline"}) {
+  for (const char* name : {"default", "open-ocean", "tropical-lagoon", "reef-dive", "waterline", "harbour"}) {
     const fs::path source = fs::path(LAGOON_SOURCE_DIR) / "scenes" / (std::string(name) + ".json");
     auto scene = scene::load_scene(source);
     ASSERT_TRUE(scene) << scene.error().message;

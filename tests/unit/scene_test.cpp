@@ -1020,6 +1020,60 @@ TEST(SceneWorld, ObjectNeedsAFile) {
   EXPECT_TRUE(Contains(message, "\nscenes/x.json: objects[2].file: must be a file name (required)"));
 }
 
+TEST(SceneWorld, ReadsVehicles) {
+  const json document = json::parse(R"({"vehicles": [
+      {"name": "tender", "file": "boat.gltf", "scale": 0.8,
+       "path": {"waypoints": [[0, 0], [50, 10], [20, 40.5]], "speed_mps": 4, "loop": false, "start_m": 7},
+       "body": {"density_kg_m3": 300, "centre_of_mass_offset": [0, -0.2, 0]}},
+      {"file": "auv.gltf", "depth_m": 6}]})");
+  const Result<Scene> scene = parse_scene(document, kSource);
+  ASSERT_TRUE(scene) << scene.error().message;
+  const Scene& s = *scene;
+  ASSERT_EQ(s.vehicles.size(), 2u);
+  const Vehicle& v = s.vehicles[0];
+  EXPECT_EQ(v.name, "tender");
+  EXPECT_EQ(v.file, "boat.gltf");
+  EXPECT_FLOAT_EQ(v.scale, 0.8f);
+  ASSERT_EQ(v.path.waypoints.size(), 3u);
+  EXPECT_EQ(v.path.waypoints[2], glm::vec2(20, 40.5f));
+  EXPECT_FLOAT_EQ(v.path.speed_mps, 4);
+  EXPECT_FALSE(v.path.loop);
+  EXPECT_FLOAT_EQ(v.path.start_m, 7);
+  EXPECT_FLOAT_EQ(v.depth_m, 0);
+  EXPECT_FLOAT_EQ(v.body.density_kg_m3, 300);
+  EXPECT_EQ(v.body.centre_of_mass_offset, glm::vec3(0, -0.2f, 0));
+  EXPECT_FLOAT_EQ(s.vehicles[1].depth_m, 6);
+  EXPECT_EQ(s.vehicles[1].path.waypoints, Vehicle{}.path.waypoints);  // the default path
+  EXPECT_TRUE(s.vehicles[1].path.loop);
+}
+
+TEST(SceneWorld, VehicleErrorsNameTheFieldAndTheFix) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {R"({"vehicles": [{"path": {}}]})",
+       "vehicles[0].file: must be a file name (required); every vehicle is loaded from a glTF file"},
+      {R"({"vehicles": [{"file": "b.gltf", "path": {"waypoints": [[0, 0]]}}]})",
+       "vehicles[0].path.waypoints: expected 2 to 256 points [[x, z], ...], got array [[0,0]] with 1 "
+       "elements; "
+       "allowed: an array of 2 to 256 points [x, z] in m, e.g. [[0, 0], [40, 10]]"},
+      {R"({"vehicles": [{"file": "b.gltf", "path": {"waypoints": [[0, 0], [1, 2, 3]]}}]})",
+       "vehicles[0].path.waypoints[1]: expected [x, z], got array [1,2,3]"},
+      {R"({"vehicles": [{"file": "b.gltf", "path": {"waypoints": [[0, 0], [1, "2"]]}}]})",
+       "vehicles[0].path.waypoints[1][1]: expected a number, got string \"2\""},
+      {R"({"vehicles": [{"file": "b.gltf", "path": {"waypoints": [[0, 0], [1, 1e39]]}}]})",
+       "vehicles[0].path.waypoints[1][1]: 1e+39 is not a finite 32-bit float"},
+      {R"({"vehicles": [{"file": "b.gltf", "path": {"waypoints": "north"}}]})",
+       "vehicles[0].path.waypoints: expected 2 to 256 points [[x, z], ...], got string \"north\""},
+      {R"({"vehicles": [{"file": "b.gltf", "path": {"speed_mps": -1}}]})",
+       "vehicles[0].path.speed_mps: -1 is out of range"},
+      {R"({"vehicles": [{"file": "b.gltf", "depth_m": -2}]})", "vehicles[0].depth_m: -2 is out of range"},
+      {R"({"vehicles": [{"file": "b.gltf", "body": {"enabled": true}}]})",
+       "vehicles[0].body.enabled: unknown field"},
+  };
+  for (const auto& [document, expected] : cases) {
+    EXPECT_TRUE(Contains(ParseError(document), "scenes/x.json: " + expected));
+  }
+}
+
 TEST(SceneWorld, FieldReferenceRows) {
   std::map<std::string, FieldInfo> rows;
   for (const FieldInfo& f : scene_fields()) rows[f.path] = f;
