@@ -1,0 +1,104 @@
+#include "ocean/gpu/dynamic_layer_gpu.h"
+
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+#include "lagoon_shaders/shaders.h"
+#include "shared/dynamic_layer.h"
+#include "vk/barriers.h"
+#include "vk/check.h"
+
+namespace lagoon::ocean {
+namespace {
+
+constexpr VkBufferUsageFlags kStorage =
+    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+
+gpu::DynamicSource to_gpu(const WakeSource& s, double period) {
+  // A whole period changes no phase of the grid's modes; within one, float phases stay accurate.
+  const glm::dvec2 centre = s.centre - period * glm::floor(s.centre / period);
+  return {.centre = glm::vec2(centre),
+          .velocity = glm::vec2(s.velocity),
+          .sigma = glm::vec2(s.sigma),
+          .heading = float(s.heading),
+          .depression = float(s.depression),
+          .depth = float(s.depth)};
+}
+
+}  // namespace
+
+DynamicLayerGpu::DynamicLayerGpu(vk::Context& ctx, const DynamicLayerParams& params)
+    : params_(params),
+      forward_(ctx, params.n, false),
+      inverse_(ctx, params.n, true),
+      evolve_(vk::ComputePipeline::create(ctx, shaders::ocean_dynamic_evolve_comp)),
+      sponge_(vk::ComputePipeline::create(ctx, shaders::ocean_dynamic_sponge_comp)) {
+  const VkDeviceSize bytes = VkDeviceSize(params.n) * params.n * 2 * sizeof(float);
+  state_ = vk::Buffer::create(ctx, bytes, kStorage, vk::MemoryUsage::Device, "dynamic layer state");
+  scratch_ = vk::Buffer::create(ctx, bytes, kStorage, vk::MemoryUsage::Device, "dynamic layer scratch");
+  sources_ = vk::Buffer::create(ctx, sizeof(gpu::DynamicSource) * LAGOON_DYNAMIC_MAX_SOURCES * kStepsInFlight,
+                                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUsage::Upload,
+                                "dynamic layer sources");
+  fields_ =
+      vk::Image::create(ctx, {.format = VK_FORMAT_R32G32B32A32_SFLOAT,
+                              .extent = {params.n, params.n},
+                              .usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                                       VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                              .debug_name = "dynamic layer fields"});
+  ctx.submit_and_wait([&](VkCommandBuffer cmd) {
+    vk::image_barrier(cmd, fields_.handle(), fields_.all_subresources(), VK_IMAGE_LAYOUT_UNDEFINED,
+                      VK_IMAGE_LAYOUT_GENERAL, vk::access::kNone, vk::access::kTransferWrite);
+    record_clear(cmd);
+  });
+}
+
+void DynamicLayerGpu::record_clear(VkCommandBuffer cmd) {
+  vk::memory_barrier(cmd, vk::access::kComputeReadWrite, vk::access::kTransferWrite);
+  vkCmdFillBuffer(cmd, state_.handle(), 0, VK_WHOLE_SIZE, 0);
+  const VkClearColorValue zero{};
+  const VkImageSubresourceRange range = fields_.all_subresources();
+  vkCmdClearColorImage(cmd, fields_.handle(), VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &range);
+  vk::memory_barrier(cmd, vk::access::kTransferWrite, vk::access::kComputeReadWrite);
+}
+
+void DynamicLayerGpu::record_step(VkCommandBuffer cmd, double dt, std::span<const WakeSource> sources) {
+  if (sources.size() > LAGOON_DYNAMIC_MAX_SOURCES)
+    vk::throw_usage_error("DynamicLayerGpu: more than " + std::to_string(LAGOON_DYNAMIC_MAX_SOURCES) +
+                          " sources in one step");
+  const uint32_t first = next_slot_ * LAGOON_DYNAMIC_MAX_SOURCES;
+  next_slot_ = (next_slot_ + 1) % kStepsInFlight;
+  auto* slot = reinterpret_cast<gpu::DynamicSource*>(sources_.mapped()) + first;
+  const double period = params_.n * params_.cell_m;
+  for (size_t i = 0; i < sources.size(); ++i) slot[i] = to_gpu(sources[i], period);
+  sources_.flush();
+  const gpu::DynamicPush push{.origin = origin_,
+                              .n = params_.n,
+                              .source_count = uint32_t(sources.size()),
+                              .cell = float(params_.cell_m),
+                              .dt = float(dt),
+                              .substeps = dynamic_substeps(dt, sources),
+                              .gravity = float(params_.gravity),
+                              .depth = float(params_.depth_m),
+                              .decay_per_s = float(params_.decay_per_s),
+                              .sponge_cells = float(params_.sponge_m / params_.cell_m),
+                              .sponge_per_s = float(params_.sponge_per_s),
+                              .source_first = first};
+  const std::array<uint32_t, 3> cells{params_.n, params_.n, 1};
+  // The state is in state_; each transform returns its result in the buffer it was given.
+  forward_.record(cmd, state_, scratch_, 1);
+  vk::dispatch(
+      cmd, evolve_,
+      {vk::bind(LAGOON_DYNAMIC_BIND_SPECTRUM, state_), vk::bind(LAGOON_DYNAMIC_BIND_EVOLVED, scratch_),
+       vk::bind(LAGOON_DYNAMIC_BIND_SOURCES, sources_)},
+      push, vk::groups_for(evolve_, cells));
+  vk::memory_barrier(cmd, vk::access::kComputeReadWrite, vk::access::kComputeReadWrite);
+  inverse_.record(cmd, scratch_, state_, 1);
+  vk::dispatch(cmd, sponge_,
+               {vk::bind(LAGOON_DYNAMIC_BIND_RAW, scratch_), vk::bind(LAGOON_DYNAMIC_BIND_STATE, state_),
+                vk::bind(LAGOON_DYNAMIC_BIND_FIELDS, vk::ImageRef{fields_.view(), VK_IMAGE_LAYOUT_GENERAL})},
+               push, vk::groups_for(sponge_, cells));
+  vk::memory_barrier(cmd, vk::access::kComputeReadWrite, vk::access::kComputeReadWrite);
+}
+
+}  // namespace lagoon::ocean

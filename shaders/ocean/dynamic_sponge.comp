@@ -1,0 +1,42 @@
+#version 450
+// The dynamic wave layer's step in space (compute/ocean/dynamic_layer.h): the absorbing border damps the state
+// after the inverse transform, and the renderer's fields are written from the damped heights: (h, dh/dx,
+// dh/dz, dh/dt) per cell, central differences across neighbouring cells (damped on the fly, so no cell waits
+// for another's result). Storage is toroidal: world cell a lives at index a mod n.
+#extension GL_GOOGLE_include_directive : require
+#include "shared/dynamic_layer.h"
+#define dl_real float
+#define dl_real2 vec2
+#define dl_real4 vec4
+#include "shared/dynamic_layer_math.h"
+layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+
+layout(std430, binding = LAGOON_DYNAMIC_BIND_RAW) readonly buffer Raw { vec2 raw[]; };
+layout(std430, binding = LAGOON_DYNAMIC_BIND_STATE) writeonly buffer State { vec2 state[]; };
+layout(rgba32f, binding = LAGOON_DYNAMIC_BIND_FIELDS) writeonly uniform image2D fields;
+layout(push_constant) uniform Push { DynamicPush p; };
+
+int from_edge(int index, int origin, int n) {
+  int a = ((index - origin) % n + n) % n;
+  return min(a, n - 1 - a);
+}
+
+// The damped state at storage index (i, j), wrapped.
+vec2 damped(int i, int j) {
+  int n = int(p.n);
+  i = (i + n) % n;
+  j = (j + n) % n;
+  float edge = float(min(from_edge(i, p.origin.x, n), from_edge(j, p.origin.y, n)));
+  return raw[j * n + i] * dl_sponge(edge, p.sponge_cells, p.sponge_per_s, p.dt);
+}
+
+void main() {
+  int n = int(p.n);
+  ivec2 c = ivec2(gl_GlobalInvocationID.xy);
+  if (c.x >= n || c.y >= n) return;
+  vec2 here = damped(c.x, c.y);
+  state[c.y * n + c.x] = here;
+  float dx = (damped(c.x + 1, c.y).x - damped(c.x - 1, c.y).x) / (2.0 * p.cell);
+  float dz = (damped(c.x, c.y + 1).x - damped(c.x, c.y - 1).x) / (2.0 * p.cell);
+  imageStore(fields, c, vec4(here.x, dx, dz, here.y));
+}

@@ -1,0 +1,57 @@
+// The dynamic wave layer (issue 14, docs/physics.md "Wakes"): push constants, sources and binding slots of
+// its passes (shaders/ocean/dynamic_*.comp, compute/ocean/gpu/dynamic_layer_gpu.*). The physics both sides
+// evaluate is in shared/dynamic_layer_math.h.
+#ifndef LAGOON_SHARED_DYNAMIC_LAYER_H
+#define LAGOON_SHARED_DYNAMIC_LAYER_H
+#include "shared/interop.h"
+
+#define LAGOON_DYNAMIC_MAX_SOURCES 16
+// Evolution in the spectral domain (dynamic_evolve.comp): the transformed state in, the evolved out.
+#define LAGOON_DYNAMIC_BIND_SPECTRUM 0
+#define LAGOON_DYNAMIC_BIND_EVOLVED 1
+#define LAGOON_DYNAMIC_BIND_SOURCES 2
+// The sponge and the fields (dynamic_sponge.comp): the state after the inverse transform in, the damped
+// state and the image (h, dh/dx, dh/dz, dh/dt) out.
+#define LAGOON_DYNAMIC_BIND_RAW 0
+#define LAGOON_DYNAMIC_BIND_STATE 1
+#define LAGOON_DYNAMIC_BIND_FIELDS 2
+
+LAGOON_GPU_BEGIN
+// A pressure patch on the water: a hull's footprint (a Gaussian of its length and beam) moving at
+// `velocity` from `centre` at the step's start.
+struct DynamicSource {
+  vec2 centre;       // world (x, z), m
+  vec2 velocity;     // m/s
+  vec2 sigma;        // along and across the heading, m
+  float heading;     // rad, clockwise from +z toward +x
+  float depression;  // m: the still-water depression at its centre (pressure / (ρ g))
+  float depth;       // m below the surface (0 = at it): its pattern is filtered by exp(-k depth)
+  float pad0;
+  float pad1;
+  float pad2;
+};
+
+struct DynamicPush {
+  ivec2 origin;  // the window's first cell (world cell index); cell a holds world x = a · cell
+  uint n;        // cells per side
+  uint source_count;
+  float cell;          // m
+  float dt;            // s, this step
+  uint substeps;       // the forcing is advanced in this many parts of the step
+  float gravity;       // m/s²
+  float depth;         // m, of the water (<= 0: deep)
+  float decay_per_s;   // damping of every mode
+  float sponge_cells;  // width of the absorbing border
+  float sponge_per_s;  // its strongest damping rate, at the edge
+  uint source_first;   // this step's sources in the sources buffer
+  uint pad0;
+  uint pad1;
+  uint pad2;
+};
+LAGOON_GPU_END
+
+#ifdef __cplusplus
+LAGOON_CHECK_SIZE(DynamicSource, 48);
+LAGOON_CHECK_SIZE(DynamicPush, 64);
+#endif
+#endif

@@ -1,0 +1,60 @@
+// The dynamic wave layer's physics, written once for the GPU (float; shaders/ocean/dynamic_*.comp) and the
+// CPU reference (double; compute/ocean/dynamic_layer.cpp). No include guard: the includer defines dl_real,
+// dl_real2, dl_real4 and makes sqrt, tanh, exp, sin, cos, min, max, dot visible (GLSL has them).
+//
+// The layer is linear water waves on a periodic N x N grid. In the Fourier domain each mode k is an
+// oscillator at the dispersion relation's ω(k) = sqrt(g k tanh(k d)) (Airy), pulled toward the surface's
+// still-water depression under the pressure of the sources, E(k) = -p̂(k) / (ρ g):
+//   h'' = -ω² (h - E),
+// which each step advances exactly for E held constant over a sub-step (no stability limit on dt). Deep
+// water's ω = sqrt(g k) is what gives a moving source its Kelvin wedge (docs/physics.md, Wakes).
+
+// The DFT bin (i, j) of an n x n grid of `cell` metres as a wavevector (rad/m), negative frequencies above
+// n/2.
+LAGOON_FN dl_real2 dl_wavevector(int i, int j, int n, dl_real cell) {
+  int fi = i < n / 2 ? i : i - n;
+  int fj = j < n / 2 ? j : j - n;
+  return dl_real2(fi, fj) * (dl_real(6.283185307179586) / (dl_real(n) * cell));
+}
+
+LAGOON_FN dl_real dl_omega(dl_real k, dl_real gravity, dl_real depth) {
+  // tanh saturates long before 20; the bound keeps it finite for any depth.
+  return depth > dl_real(0) ? sqrt(gravity * k * tanh(min(k * depth, dl_real(20)))) : sqrt(gravity * k);
+}
+
+// The DFT (unnormalised, e^{-i k x}) of the depression under one source centred on `centre`, sampled on a
+// grid of `cell` metres: the continuous transform of a Gaussian over the cell area, filtered by
+// exp(-k depth) for a source below the surface. Complex as (re, im). The mean (k = 0) is left alone: the
+// water a hull pushes aside raises the whole sea, not the layer's window.
+LAGOON_FN dl_real2 dl_source_hat(dl_real2 k, dl_real2 centre, dl_real heading, dl_real2 sigma,
+                                 dl_real depression, dl_real depth, dl_real cell) {
+  dl_real2 along = dl_real2(sin(heading), cos(heading));
+  dl_real2 across = dl_real2(cos(heading), -sin(heading));
+  dl_real kl = dot(k, along) * sigma.x, kb = dot(k, across) * sigma.y;
+  dl_real kk = sqrt(dot(k, k));
+  if (kk <= dl_real(0)) return dl_real2(0, 0);
+  dl_real magnitude = -depression * dl_real(6.283185307179586) * sigma.x * sigma.y / (cell * cell) *
+                      exp(dl_real(-0.5) * (kl * kl + kb * kb) - kk * depth);
+  dl_real phase = -dot(k, centre);
+  return magnitude * dl_real2(cos(phase), sin(phase));
+}
+
+// One mode over dt: hv = (H.re, H.im, V.re, V.im) with V = dH/dt, toward the depression `e`, every
+// amplitude damped by `decay` (the factor for dt).
+LAGOON_FN dl_real4 dl_evolve(dl_real4 hv, dl_real2 e, dl_real omega, dl_real dt, dl_real decay) {
+  dl_real c = cos(omega * dt), s = sin(omega * dt);
+  dl_real s_over_omega = omega > dl_real(1e-9) ? s / omega : dt;
+  dl_real2 d = dl_real2(hv.x, hv.y) - e;
+  dl_real2 v = dl_real2(hv.z, hv.w);
+  dl_real2 h1 = e + (d * c + v * s_over_omega) * decay;
+  dl_real2 v1 = (v * c - d * (omega * s)) * decay;
+  return dl_real4(h1.x, h1.y, v1.x, v1.y);
+}
+
+// The absorbing border: the factor for dt at a cell `from_edge` cells from the window's nearest edge
+// (0 = on it). The rate rises as the square of the depth into a border `width` cells wide, so waves enter it
+// without a step to reflect from.
+LAGOON_FN dl_real dl_sponge(dl_real from_edge, dl_real width, dl_real rate_per_s, dl_real dt) {
+  dl_real into = max(dl_real(0), dl_real(1) - from_edge / width);
+  return exp(-rate_per_s * into * into * dt);
+}
