@@ -1,4 +1,5 @@
-// lagoon bench compute: the GPU ocean step against the FFTW CPU step, measured side by side in one run.
+// lagoon bench compute: the GPU ocean step against the FFTW CPU step, measured side by side in one run;
+// bench render: a scene's frame and passes; bench wakes: the dynamic wave layer's step.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -12,6 +13,8 @@
 #include "fftw_ocean_step.h"
 #include "gpu_session.h"
 #include "io/atomic_file.h"
+#include "ocean/dynamic_layer.h"
+#include "ocean/gpu/dynamic_layer_gpu.h"
 #include "ocean/gpu/gpu_ocean.h"
 #include "ocean/validate.h"
 #include "render/ocean_renderer.h"
@@ -176,6 +179,52 @@ int run_bench_compute(const ParsedArgs& args, int rounds) {
   return validation_status(*ctx);
 }
 
+// One step of the dynamic wave layer (issue 14's wakes) with two hulls: on the device (wall time and GPU
+// timestamps) against the CPU reference in double precision (2 threads), for N = 256, 512 and 1024.
+int run_bench_wakes(const ParsedArgs& args, int rounds) {
+  auto ctx = open_context();
+  if (!ctx) return kExitFailure;
+  std::printf("device: %s (%s); %d rounds per configuration, medians; ratio = GPU / CPU wall time\n",
+              ctx->device_info().name.c_str(), ctx->device_info().type.c_str(), rounds);
+  std::printf("%-44s %12s %12s\n", "Benchmark", "Time (ms)", "Ratio");
+  nlohmann::json results = nlohmann::json::array();
+  const std::vector<ocean::WakeSource> hulls{
+      {.centre = {10, 20}, .velocity = {6, 0}, .heading = 1.57, .sigma = {1.25, 0.5}, .depression = 0.3},
+      {.centre = {-5, 12}, .velocity = {0, 1.5}, .sigma = {0.5, 0.08}, .depression = 0.16, .depth = 4.4}};
+  for (uint32_t n : {256u, 512u, 1024u}) {
+    const ocean::DynamicLayerParams params{.n = n};
+    ocean::DynamicLayerGpu gpu(*ctx, params);
+    ocean::DynamicLayerCpu cpu(params, 2);
+    vk::GpuTimer timer(*ctx, 1);
+    auto gpu_step = [&] {
+      ctx->submit_and_wait([&](VkCommandBuffer cmd) {
+        timer.reset(cmd);
+        vk::GpuScope scope(timer, cmd, "wake step");
+        gpu.record_step(cmd, 0.1, hulls);
+      });
+    };
+    for (int w = 0; w < 2; ++w) gpu_step();  // lavapipe compiles at the first dispatch
+    std::vector<double> wall, device, reference, ratio;
+    for (int r = 0; r < rounds; ++r) {
+      wall.push_back(time_ms(gpu_step));
+      if (const auto d = timer.results(); !d.empty()) device.push_back(d[0].ms);
+      if (r < 3) reference.push_back(time_ms([&] { cpu.step(0.1, hulls); }));  // slow: three are enough
+      ratio.push_back(wall.back() / reference.back());
+    }
+    const std::string config = "/N=" + std::to_string(n);
+    report_row(results, "wake_step/gpu" + config, wall, "wall", 0);
+    if (!device.empty())
+      report_row(results, "wake_step/gpu_timestamps" + config, device, "gpu timestamps", 0);
+    report_row(results, "wake_step/cpu_double_2threads" + config, reference, "wall", median(ratio));
+  }
+  if (auto path = args.get("json")) {
+    const nlohmann::json doc{{"context", report_context(*ctx, rounds)}, {"benchmarks", results}};
+    if (!write_report(*path, doc)) return kExitFailure;
+    std::printf("wrote %s\n", path->c_str());
+  }
+  return validation_status(*ctx);
+}
+
 struct FrameSize {
   long long width = 1280, height = 720;
 };
@@ -275,16 +324,18 @@ std::optional<std::string> render_only_option(const ParsedArgs& args) {
 
 int run_bench(const ParsedArgs& args) {
   const std::string what = args.get("what").value_or("");
-  if (what == "compute" || what == "render") {
-    if (const auto option = render_only_option(args); what == "compute" && option) {
+  if (what == "compute" || what == "render" || what == "wakes") {
+    if (const auto option = render_only_option(args); what != "render" && option) {
       std::fprintf(stderr, "lagoon bench: --%s applies to 'bench render' only\n", option->c_str());
       return kExitUsage;
     }
-    const auto rounds = rounds_option(args, what == "compute" ? 15 : 10);
+    const auto rounds = rounds_option(args, what == "render" ? 10 : 15);
     if (!rounds) return kExitUsage;
+    if (what == "wakes") return run_bench_wakes(args, *rounds);
     return what == "compute" ? run_bench_compute(args, *rounds) : run_bench_render(args, *rounds);
   }
-  std::fprintf(stderr, "lagoon bench: unknown benchmark '%s'; available: compute, render\n", what.c_str());
+  std::fprintf(stderr, "lagoon bench: unknown benchmark '%s'; available: compute, render, wakes\n",
+               what.c_str());
   return kExitUsage;
 }
 
@@ -298,8 +349,10 @@ const Command& bench_command() {
                    "chosen device (wall time and GPU timestamps) against the same step on the CPU with FFTW "
                    "(1 and 2 threads), for N = 128, 256, 512 and 1 or 3 cascades; ratio = GPU wall time / "
                    "CPU time. 'render': each pass of a scene's frame (GPU timestamps) and the whole frame "
-                   "(wall time, with readback).",
-               .options = {{"what", "compute|render", "which benchmark: compute or render", true},
+                   "(wall time, with readback). 'wakes': one step of the dynamic wave layer with two hulls "
+                   "(N = 256, 512, 1024) on the device against its CPU reference in double precision.",
+               .options = {{"what", "compute|render|wakes", "which benchmark: compute, render or wakes",
+                            true},
                            {"scene", "FILE", "render: the scene (default scenes/default.json)"},
                            set_option(),
                            {"width", "W", "render: frame width in pixels, 16 to 8192 (default 1280)"},
@@ -310,7 +363,7 @@ const Command& bench_command() {
                             "\"benchmarks\" (median real_time, min_time, max_time in ms; measure = \"gpu "
                             "timestamps\" or \"wall\")"},
                            {"rounds", "R",
-                            "measured rounds per configuration (default 15 compute, 10 render)"}},
+                            "measured rounds per configuration (default 15 compute and wakes, 10 render)"}},
                .positional = {"what"},
                .details = "Timings are medians after a warm-up (lavapipe compiles shaders at their first "
                           "dispatch). The machine's noise makes single numbers unreliable; compare ratios.\n"

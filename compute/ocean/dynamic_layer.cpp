@@ -26,6 +26,7 @@ using std::tanh;
 namespace {
 
 using complex = std::complex<double>;
+constexpr size_t kMaxSources = 16;  // LAGOON_DYNAMIC_MAX_SOURCES, as the GPU
 
 // A whole period of the grid added to or taken from a source's centre changes no phase of the grid's
 // modes; kept within one period, the GPU's float phases stay accurate far from the origin.
@@ -43,8 +44,13 @@ int cells_from_edge(int index, int origin, int n) {
 uint32_t dynamic_substeps(double dt, std::span<const WakeSource> sources) {
   double parts = 1;
   for (const WakeSource& s : sources) {
-    const double narrowest = std::max(std::min(s.sigma.x, s.sigma.y), 1e-3);
-    parts = std::max(parts, std::ceil(glm::length(s.velocity) * dt / (0.25 * narrowest)));
+    const double speed = glm::length(s.velocity);
+    if (speed <= 0) continue;
+    // The footprint's width along the motion: sigma along the heading for a hull moving ahead.
+    const glm::dvec2 along(std::sin(s.heading), std::cos(s.heading)), across(along.y, -along.x);
+    const double a = glm::dot(s.velocity, along) / speed, b = glm::dot(s.velocity, across) / speed;
+    const double width = 1.0 / std::sqrt(a * a / (s.sigma.x * s.sigma.x) + b * b / (s.sigma.y * s.sigma.y));
+    parts = std::max(parts, std::ceil(speed * dt / (0.25 * std::max(width, 1e-3))));
   }
   return uint32_t(std::min(parts, 64.0));
 }
@@ -69,7 +75,7 @@ void DynamicLayerCpu::step(double dt, std::span<const WakeSource> sources) {
   const uint32_t parts = dynamic_substeps(dt, sources);
   const double sub = dt / parts, decay = std::exp(-params_.decay_per_s * sub);
   const double scale = 1.0 / (double(n) * n);
-  std::vector<WakeSource> local(sources.begin(), sources.end());
+  std::vector<WakeSource> local(sources.begin(), sources.begin() + std::min(sources.size(), kMaxSources));
   for (WakeSource& s : local) s.centre = within_period(s.centre, period);
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
@@ -77,15 +83,24 @@ void DynamicLayerCpu::step(double dt, std::span<const WakeSource> sources) {
       const complex zm = std::conj(spectrum[size_t((n - j) % n) * n + (n - i) % n]);
       const complex h = 0.5 * (z + zm), v = (z - zm) / complex(0, 2);
       const glm::dvec2 k = dl_double::dl_wavevector(i, j, n, params_.cell_m);
-      const double omega = dl_double::dl_omega(glm::length(k), params_.gravity, params_.depth_m);
+      const glm::dvec4 turn =
+          dl_double::dl_turn(dl_double::dl_omega(glm::length(k), params_.gravity, params_.depth_m), sub);
+      // The free evolution plus each source's response from rest (the step is linear), as on the GPU.
       glm::dvec4 hv(h.real(), h.imag(), v.real(), v.imag());
-      for (uint32_t p = 0; p < parts; ++p) {
-        const double mid = (p + 0.5) * sub;
-        glm::dvec2 e(0.0);
-        for (const WakeSource& s : local)
-          e += dl_double::dl_source_hat(k, s.centre + s.velocity * mid, s.heading, s.sigma, s.depression,
-                                        s.depth, params_.cell_m);
-        hv = dl_double::dl_evolve(hv, e, omega, sub, decay);
+      for (uint32_t p = 0; p < parts; ++p) hv = dl_double::dl_evolve(hv, glm::dvec2(0.0), turn, decay);
+      for (const WakeSource& s : local) {
+        const glm::dvec2 along(std::sin(s.heading), std::cos(s.heading));
+        const double exponent = dl_double::dl_source_exponent(k, along, s.sigma, s.depth);
+        if (exponent < dl_double::kDlNegligible) continue;
+        glm::dvec2 e = dl_double::dl_source_hat(k, s.centre + s.velocity * (0.5 * sub), exponent, s.sigma,
+                                                s.depression, params_.cell_m);
+        const glm::dvec2 shift = dl_double::dl_source_shift(k, s.velocity, sub);
+        glm::dvec4 forced(0.0);
+        for (uint32_t p = 0; p < parts; ++p) {
+          forced = dl_double::dl_evolve(forced, e, turn, decay);
+          e = dl_double::dl_complex_mul(e, shift);
+        }
+        hv += forced;
       }
       state_[size_t(j) * n + i] = scale * (complex(hv.x, hv.y) + complex(0, 1) * complex(hv.z, hv.w));
     }

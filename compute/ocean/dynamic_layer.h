@@ -40,8 +40,8 @@ struct WakeSource {
   double depth = 0;          // m
 };
 
-// How many parts a step's forcing is split into: the sources move at most a quarter of their narrowest
-// sigma per part, so the moving footprint is sampled finely enough to make no waves of its own.
+// How many parts a step's forcing is split into: the sources move at most a quarter of their sigma along
+// their motion per part, so the moving footprint is sampled finely enough to make no waves of its own.
 uint32_t dynamic_substeps(double dt, std::span<const WakeSource> sources);
 
 class DynamicLayerCpu {

@@ -28,18 +28,27 @@ void main() {
   vec2 d = 0.5 * (zk - zm);  // V = d / i
   vec4 hv = vec4(h, d.y, -d.x);
   vec2 k = dl_wavevector(m.x, m.y, n, p.cell);
-  float omega = dl_omega(length(k), p.gravity, p.depth);
   float sub = p.dt / float(p.substeps);
+  vec4 turn = dl_turn(dl_omega(length(k), p.gravity, p.depth), sub);
   float decay = exp(-p.decay_per_s * sub);
-  for (uint s = 0u; s < p.substeps; ++s) {
-    float mid = (float(s) + 0.5) * sub;
-    vec2 e = vec2(0.0);
-    for (uint i = 0u; i < p.source_count; ++i) {
-      DynamicSource src = sources[p.source_first + i];
-      e += dl_source_hat(k, src.centre + src.velocity * mid, src.heading, src.sigma, src.depression, src.depth,
-                         p.cell);
+  // The step is linear in the state and the forcing: the free evolution of the state plus, for each source,
+  // the response to it alone from rest. Each source's transform is taken at the first part's middle and
+  // shifted from part to part by one complex multiply.
+  vec4 free_hv = hv;
+  for (uint s = 0u; s < p.substeps; ++s) free_hv = dl_evolve(free_hv, vec2(0.0), turn, decay);
+  hv = free_hv;
+  for (uint i = 0u; i < p.source_count; ++i) {
+    DynamicSource src = sources[p.source_first + i];
+    float exponent = dl_source_exponent(k, src.along, src.sigma, src.depth);
+    if (exponent < kDlNegligible) continue;
+    vec2 e = dl_source_hat(k, src.centre + src.velocity * (0.5 * sub), exponent, src.sigma, src.depression, p.cell);
+    vec2 shift = dl_source_shift(k, src.velocity, sub);
+    vec4 forced = vec4(0.0);
+    for (uint s = 0u; s < p.substeps; ++s) {
+      forced = dl_evolve(forced, e, turn, decay);
+      e = dl_complex_mul(e, shift);
     }
-    hv = dl_evolve(hv, e, omega, sub, decay);
+    hv += forced;
   }
   float scale = 1.0 / (float(n) * float(n));
   evolved[m.y * n + m.x] = scale * (hv.xy + vec2(-hv.w, hv.z));  // H + i V

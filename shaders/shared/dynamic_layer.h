@@ -23,12 +23,11 @@ struct DynamicSource {
   vec2 centre;       // world (x, z), m
   vec2 velocity;     // m/s
   vec2 sigma;        // along and across the heading, m
-  float heading;     // rad, clockwise from +z toward +x
+  vec2 along;        // the heading as a unit vector: (sin, cos) of the yaw
   float depression;  // m: the still-water depression at its centre (pressure / (ρ g))
   float depth;       // m below the surface (0 = at it): its pattern is filtered by exp(-k depth)
   float pad0;
   float pad1;
-  float pad2;
 };
 
 struct DynamicPush {

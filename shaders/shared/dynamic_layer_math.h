@@ -22,32 +22,51 @@ LAGOON_FN dl_real dl_omega(dl_real k, dl_real gravity, dl_real depth) {
   return depth > dl_real(0) ? sqrt(gravity * k * tanh(min(k * depth, dl_real(20)))) : sqrt(gravity * k);
 }
 
-// The DFT (unnormalised, e^{-i k x}) of the depression under one source centred on `centre`, sampled on a
-// grid of `cell` metres: the continuous transform of a Gaussian over the cell area, filtered by
-// exp(-k depth) for a source below the surface. Complex as (re, im). The mean (k = 0) is left alone: the
-// water a hull pushes aside raises the whole sea, not the layer's window.
-LAGOON_FN dl_real2 dl_source_hat(dl_real2 k, dl_real2 centre, dl_real heading, dl_real2 sigma,
-                                 dl_real depression, dl_real depth, dl_real cell) {
-  dl_real2 along = dl_real2(sin(heading), cos(heading));
-  dl_real2 across = dl_real2(cos(heading), -sin(heading));
+// The exponent of a source's footprint at wavevector k (its Gaussian in the rotated frame, and exp(-k depth)
+// for a source below the surface): below kDlNegligible the source adds nothing a float can hold.
+#define kDlNegligible dl_real(-16)
+// `along` is the heading as a unit vector, (sin, cos) of the yaw.
+LAGOON_FN dl_real dl_source_exponent(dl_real2 k, dl_real2 along, dl_real2 sigma, dl_real depth) {
+  dl_real2 across = dl_real2(along.y, -along.x);
   dl_real kl = dot(k, along) * sigma.x, kb = dot(k, across) * sigma.y;
-  dl_real kk = sqrt(dot(k, k));
-  if (kk <= dl_real(0)) return dl_real2(0, 0);
-  dl_real magnitude = -depression * dl_real(6.283185307179586) * sigma.x * sigma.y / (cell * cell) *
-                      exp(dl_real(-0.5) * (kl * kl + kb * kb) - kk * depth);
+  return dl_real(-0.5) * (kl * kl + kb * kb) - sqrt(dot(k, k)) * depth;
+}
+
+// The DFT (unnormalised, e^{-i k x}) of the depression under one source centred on `centre`, sampled on a
+// grid of `cell` metres: the continuous transform of a Gaussian over the cell area, times exp(exponent)
+// from dl_source_exponent. Complex as (re, im). The mean (k = 0) is left alone: the water a hull pushes
+// aside raises the whole sea, not the layer's window.
+LAGOON_FN dl_real2 dl_source_hat(dl_real2 k, dl_real2 centre, dl_real exponent, dl_real2 sigma,
+                                 dl_real depression, dl_real cell) {
+  if (dot(k, k) <= dl_real(0)) return dl_real2(0, 0);
+  dl_real magnitude =
+      -depression * dl_real(6.283185307179586) * sigma.x * sigma.y / (cell * cell) * exp(exponent);
   dl_real phase = -dot(k, centre);
   return magnitude * dl_real2(cos(phase), sin(phase));
 }
 
-// One mode over dt: hv = (H.re, H.im, V.re, V.im) with V = dH/dt, toward the depression `e`, every
-// amplitude damped by `decay` (the factor for dt).
-LAGOON_FN dl_real4 dl_evolve(dl_real4 hv, dl_real2 e, dl_real omega, dl_real dt, dl_real decay) {
-  dl_real c = cos(omega * dt), s = sin(omega * dt);
-  dl_real s_over_omega = omega > dl_real(1e-9) ? s / omega : dt;
+// A source moving at `velocity` for dt shifts its DFT by this factor, e^{-i k·u dt}.
+LAGOON_FN dl_real2 dl_source_shift(dl_real2 k, dl_real2 velocity, dl_real dt) {
+  dl_real phase = -dot(k, velocity) * dt;
+  return dl_real2(cos(phase), sin(phase));
+}
+
+LAGOON_FN dl_real2 dl_complex_mul(dl_real2 a, dl_real2 b) {
+  return dl_real2(a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x);
+}
+
+// One mode over a step of dt: hv = (H.re, H.im, V.re, V.im) with V = dH/dt, toward the depression `e`,
+// every amplitude damped by `decay` (the factor for dt); turn = (cos ωdt, sin ωdt, sin(ωdt)/ω), from
+// dl_turn, the same for every step of a mode.
+LAGOON_FN dl_real4 dl_turn(dl_real omega, dl_real dt) {
+  dl_real s = sin(omega * dt);
+  return dl_real4(cos(omega * dt), s, omega > dl_real(1e-9) ? s / omega : dt, omega);
+}
+LAGOON_FN dl_real4 dl_evolve(dl_real4 hv, dl_real2 e, dl_real4 turn, dl_real decay) {
   dl_real2 d = dl_real2(hv.x, hv.y) - e;
   dl_real2 v = dl_real2(hv.z, hv.w);
-  dl_real2 h1 = e + (d * c + v * s_over_omega) * decay;
-  dl_real2 v1 = (v * c - d * (omega * s)) * decay;
+  dl_real2 h1 = e + (d * turn.x + v * turn.z) * decay;
+  dl_real2 v1 = (v * turn.x - d * (turn.w * turn.y)) * decay;
   return dl_real4(h1.x, h1.y, v1.x, v1.y);
 }
 

@@ -21,7 +21,7 @@ gpu::DynamicSource to_gpu(const WakeSource& s, double period) {
   return {.centre = glm::vec2(centre),
           .velocity = glm::vec2(s.velocity),
           .sigma = glm::vec2(s.sigma),
-          .heading = float(s.heading),
+          .along = glm::vec2(std::sin(s.heading), std::cos(s.heading)),
           .depression = float(s.depression),
           .depth = float(s.depth)};
 }
