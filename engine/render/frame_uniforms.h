@@ -34,6 +34,7 @@ struct FrameInputs {
   uint32_t light_count = 0;
   bool under_water = false;
   const CausticsWindow& caustics;
+  glm::vec4 wakes_window{0.0f};  // WakesPass::window()
 };
 gpu::FrameUniforms frame_uniforms(const FrameInputs& in);
 

@@ -52,18 +52,23 @@ Result<void> OceanRenderer::init(const scene::Scene& scene) {
   auto floating = FloatingObjects::create(scene, ocean().params(), ocean().spectra());
   if (!floating) return floating.error();
   floating_ = std::move(*floating);
+  auto wakes = WakesPass::create(ctx_, scene);
+  if (!wakes) return wakes.error();
+  wakes_ = std::move(*wakes);
+  fields_.emplace(SurfaceFields{ocean(), *wakes_});
   refraction_ = std::make_unique<RefractionPass>(ctx_, *objects_, kHdrFormat, kDepthFormat);
   reflection_ = std::make_unique<ObjectsPass>(ctx_, *objects_, gpu::MeshMode::Mirrored, "reflection",
                                               kHdrFormat, kDepthFormat);
   surface_ =
-      std::make_unique<SurfacePass>(ctx_, ocean(), *objects_, luts_, samplers_, kColorFormat, kDepthFormat);
+      std::make_unique<SurfacePass>(ctx_, *fields_, *objects_, luts_, samplers_, kColorFormat, kDepthFormat);
   sky_ = std::make_unique<SkyPass>(ctx_, kColorFormat, kDepthFormat);
-  caustics_ = std::make_unique<CausticsPass>(ctx_, ocean(), samplers_);
+  caustics_ = std::make_unique<CausticsPass>(ctx_, *fields_, samplers_);
   particles_ = std::make_unique<ParticlesPass>(ctx_, luts_, samplers_, kColorFormat, kDepthFormat);
-  waterline_ = std::make_unique<WaterlinePass>(ctx_, ocean(), samplers_, kColorFormat, kDepthFormat);
+  waterline_ = std::make_unique<WaterlinePass>(ctx_, *fields_, samplers_, kColorFormat, kDepthFormat);
   window_ = std::make_unique<ObjectsPass>(ctx_, *objects_, gpu::MeshMode::Window, "snell window", kHdrFormat,
                                           kDepthFormat);
-  underwater_ = std::make_unique<UnderwaterPass>(ctx_, ocean(), luts_, samplers_, kColorFormat, kDepthFormat);
+  underwater_ =
+      std::make_unique<UnderwaterPass>(ctx_, *fields_, luts_, samplers_, kColorFormat, kDepthFormat);
   camera_medium_ =
       std::make_unique<CameraMedium>(ocean().params(), ocean().spectra(), double(shading_.bound.vertical_m));
   return {};
@@ -118,6 +123,7 @@ void OceanRenderer::record_frame(const FrameContext& f, const CausticsWindow& ca
 
 void OceanRenderer::prepare(const scene::Scene& scene) {
   ocean_step_->prepare(ctx_, scene.time_s);
+  wakes_->prepare(ctx_, scene);
 }
 
 FrameContext OceanRenderer::begin_frame(VkCommandBuffer cmd, const scene::Scene& scene, VkExtent2D extent,
@@ -128,6 +134,7 @@ FrameContext OceanRenderer::begin_frame(VkCommandBuffer cmd, const scene::Scene&
                         std::sqrt(1.0 + double(aspect) * aspect);
   const CameraSide side = camera_medium_->side(scene.camera.position, lens_m, scene.time_s);
   place_floating_objects(scene.time_s);
+  wakes_->follow_camera(scene);
   const uint32_t light_count =
       write_point_lights(scene, reinterpret_cast<gpu::PointLightGpu*>(slot.lights.mapped()));
   slot.lights.flush();
@@ -151,7 +158,8 @@ FrameContext OceanRenderer::begin_frame(VkCommandBuffer cmd, const scene::Scene&
                                                       .reach_m = reach,
                                                       .light_count = light_count,
                                                       .under_water = side == CameraSide::Below,
-                                                      .caustics = caustics});
+                                                      .caustics = caustics,
+                                                      .wakes_window = wakes_->window()});
   std::memcpy(slot.frame.mapped(), &uniforms, sizeof(uniforms));
   slot.frame.flush();
   // Frames may be recorded while the previous one runs; they share the ocean's textures and the passes'
@@ -220,6 +228,7 @@ void OceanRenderer::record(VkCommandBuffer cmd, const scene::Scene& scene, const
   const CausticsWindow caustics = caustics_window(scene, sun_direction(scene.sun), float(scene.water.ior));
   const FrameContext frame = begin_frame(cmd, scene, targets.extent, slot, caustics);
   ocean_step_->record(frame);
+  wakes_->record(frame);
   record_frame(frame, caustics, {targets.color, targets.color_view, VK_IMAGE_ASPECT_COLOR_BIT},
                {targets.depth, targets.depth_view, VK_IMAGE_ASPECT_DEPTH_BIT});
 }

@@ -1,9 +1,9 @@
 // The frame renderer: the FFT ocean (compute/ocean/gpu) drawn over an analytic sky whose light comes from
 // the optics model, water colour from the optics LUTs, tone mapping (seed 000's eq. 18) and gamma.
 // The frame is a sequence of passes (engine/render/passes/, one file each), wired in record_frame():
-// ocean step, caustics, refraction, reflection, surface, sky; with the camera under the water, ocean step,
-// caustics, refraction, underwater; with the lens cutting the surface, both, joined by the waterline pass.
-// docs/architecture.md shows the frame and how to add a pass; docs/rendering.md the shading.
+// ocean step and wakes, caustics, refraction, reflection, surface, sky; with the camera under the water,
+// ocean step, caustics, refraction, underwater; with the lens cutting the surface, both, joined by the
+// waterline pass. docs/architecture.md shows the frame and how to add a pass; docs/rendering.md the shading.
 #pragma once
 #include <array>
 #include <memory>
@@ -25,9 +25,11 @@
 #include "render/passes/sky_pass.h"
 #include "render/passes/surface_pass.h"
 #include "render/passes/underwater_pass.h"
+#include "render/passes/wakes_pass.h"
 #include "render/passes/waterline_pass.h"
 #include "render/samplers.h"
 #include "render/scene_objects.h"
+#include "render/surface_fields.h"
 #include "render/water_luts.h"
 #include "scene/scene.h"
 #include "vk/buffer.h"
@@ -92,6 +94,8 @@ class OceanRenderer {
 
   // The ocean the frames are drawn from (e.g. for a field check after render()).
   const ocean::GpuOcean& ocean() const { return ocean_step_->ocean(); }
+  // The wakes (e.g. for a check of their layer after render()).
+  const WakesPass& wakes() const { return *wakes_; }
   // The caustics of the last frame (e.g. for a check of their energy after render()).
   const CausticsPass& caustics() const { return *caustics_; }
   // Where the camera is judged to be (above, below, cutting the surface); tests and tools may force a side.
@@ -120,6 +124,9 @@ class OceanRenderer {
   WaterLuts luts_;
   std::unique_ptr<SceneObjects> objects_;
   std::optional<OceanStepPass> ocean_step_;
+  std::unique_ptr<WakesPass> wakes_;
+  std::optional<SurfaceFields>
+      fields_;  // the ocean's cascades and the wakes, as the surface passes bind them
   OceanShading shading_;
   std::unique_ptr<RefractionPass> refraction_;
   std::unique_ptr<ObjectsPass> reflection_;

@@ -25,6 +25,7 @@ OceanRenderer::SurfaceAov OceanRenderer::render_surface_aov(const scene::Scene& 
   ctx_.submit_and_wait([&](VkCommandBuffer cmd) {
     const FrameContext frame = begin_frame(cmd, scene, extent, 0, CausticsWindow{});
     ocean_step_->record(frame);
+    wakes_->record(frame);
     vk::use(cmd, {normal.target(), world.target(), depth.target()}, vk::ImageUse::Discard,
             vk::ImageUse::Attachment);
     surface_->record_aov(frame, normal.target(), world.target(), depth.target());

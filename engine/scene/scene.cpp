@@ -89,6 +89,8 @@ void read_scene(ObjectReader& r, Scene& s) {
           "glTF models placed in the world (boats, buoys, rocks), above or below the water.");
   r.array("vehicles", s.vehicles, 0, 16, read_vehicle,
           "Hulls that follow a path (boats at the surface, AUVs at a depth); docs/physics.md, Vehicles.");
+  r.block("wakes", s.wakes, read_wakes,
+          "The dynamic wave layer the vehicles' hulls make their wakes in (docs/physics.md, Wakes).");
   r.array("lights", s.lights, 0, LAGOON_MAX_LIGHTS, read_light,
           "Point lights, in addition to the sun and sky.");
   r.block("underwater", s.underwater, read_underwater,

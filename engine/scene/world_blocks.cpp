@@ -139,6 +139,41 @@ void read_vehicle(ObjectReader& r, Vehicle& v) {
       "0 = at the surface: heave, pitch and roll come from buoyancy (`body`), so the mesh must be closed; "
       "> 0 = submerged (an AUV): the model's origin runs level at this depth below the mean water level.");
   r.block("body", v.body, read_hull_body, "Mass and damping of a surface vehicle's hull (docs/physics.md).");
+  r.number("wake_strength", v.wake_strength, Bounds::between(0, 10), "",
+           "Scales the pressure of its hull on the water, which makes its wake (`wakes`): 1 = the hull's "
+           "draught; 0 = no wake.");
+}
+
+void read_wakes(ObjectReader& r, Wakes& w) {
+  r.flag(
+      "enabled", w.enabled,
+      "Run the dynamic wave layer when a vehicle makes a wake; false = vehicles leave the water untouched.");
+  r.power_of_two(
+      "resolution", w.resolution, 64, 1024, "cells",
+      "Cells per side of the layer's square window around the camera (its cost grows with the square; "
+      "lagoon bench wakes).");
+  r.number("cell_size_m", w.cell_size_m, Bounds::between(0.02, 10), "m",
+           "Size of a cell: the window is resolution x cell_size_m wide. Waves shorter than 4 cells are not "
+           "resolved: keep it below a quarter of the shortest wake wave, two thirds of 2 pi speed^2 / g at "
+           "the cusps.");
+  r.number(
+      "damping_per_s", w.damping_per_s, Bounds::between(0, 10), "1/s",
+      "Damping of every wave of the layer; the wake of a passing boat fades over about 1 / this seconds.");
+  r.number("border_m", w.border_m, Bounds::above_up_to(0, 10000), "m",
+           "Width of the absorbing border inside the window's edges, where waves leaving it are damped away "
+           "instead of coming back; at least a wake wavelength.");
+  r.rule("border_m", w.border_m < 0.5 * w.resolution * w.cell_size_m,
+         "< half the window (resolution x cell_size_m / 2)",
+         "got border_m " + format_number(w.border_m) + " for a window of " +
+             format_number(w.resolution * w.cell_size_m) +
+             " m; make the border narrower or the window larger");
+  r.number("step_s", w.step_s, Bounds::between(0.005, 1), "s",
+           "Time step of the layer; any step is stable (each wave is advanced exactly), shorter ones follow "
+           "the hulls more closely in time and cost more.");
+  r.number("history_s", w.history_s, Bounds::between(0, 3600), "s",
+           "A frame's layer is computed from this long before the frame's time (or from time 0), so a still "
+           "frame at a late time costs history_s / step_s steps; waves older than the window's crossing time "
+           "have left it anyway.");
 }
 
 void read_object(ObjectReader& r, Object& o) {

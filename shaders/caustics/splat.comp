@@ -15,6 +15,7 @@ layout(std430, binding = LAGOON_CAUSTICS_BIND_ACCUM) buffer Accum { uint energy[
 layout(push_constant) uniform Push { CausticsPush p; };
 
 #include "common/cascade_uv.glsl"
+#include "common/wake_fields.glsl"
 
 void splat(int slice, ivec2 cell, uint amount) {
   const int n = LAGOON_CAUSTICS_CELLS;
@@ -44,6 +45,9 @@ void main() {
   LAGOON_CASCADE(2)
   LAGOON_CASCADE(3)
 #undef LAGOON_CASCADE
+  vec3 wake = wake_at(rest);
+  d.y += wake.x;
+  slope += wake.yz;
   vec3 n = normalize(vec3(-slope.x, 1.0, -slope.y));
   vec3 t = refract(-frame.sun_dir.xyz, n, 1.0 / frame.sun_dir.w);
   if (t.y > -1e-3) return;  // the sun at or below this facet's horizon

@@ -11,6 +11,7 @@
 layout(std140, binding = LAGOON_SURFACE_BIND_FRAME) uniform Frame { FrameUniforms frame; };
 layout(binding = LAGOON_SURFACE_BIND_DISPLACEMENT) uniform sampler2DArray displacement[LAGOON_MAX_CASCADES];
 #include "common/cascade_uv.glsl"
+#include "common/wake_fields.glsl"
 
 layout(location = 0) out vec3 v_world;
 layout(location = 1) out vec2 v_rest;
@@ -30,6 +31,7 @@ vec3 clipmap_displacement(vec2 rest, float spacing) {
   LAGOON_CASCADE(1)
   LAGOON_CASCADE(2)
   LAGOON_CASCADE(3)
+  d.y += wake_at(rest).x;  // the wakes, at the rest position (their own motion is vertical)
   return d;
 }
 

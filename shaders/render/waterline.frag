@@ -13,6 +13,7 @@ layout(binding = LAGOON_SURFACE_BIND_BELOW_COLOR) uniform sampler2D below_colour
 layout(binding = LAGOON_SURFACE_BIND_BELOW_DEPTH) uniform sampler2D below_depth;
 
 #include "common/cascade_uv.glsl"
+#include "common/wake_fields.glsl"
 
 layout(location = 0) in vec2 v_ndc;
 layout(location = 0) out vec4 out_colour;
@@ -27,6 +28,7 @@ vec3 displacement_at(vec2 rest) {
   LAGOON_CASCADE(2)
   LAGOON_CASCADE(3)
 #undef LAGOON_CASCADE
+  d.y += wake_at(rest).x;
   return d;
 }
 

@@ -12,12 +12,13 @@
 #define LAGOON_CAUSTICS_ONE 65536.0  // fixed-point unit of the accumulation (one ray's energy)
 
 #define LAGOON_CAUSTICS_BIND_FRAME 0
-// The cascades in the surface shaders' slots, so render/cascade_bindings.h serves this pass too.
+// The cascades in the surface shaders' slots, so render/surface_fields.h serves this pass too.
 #define LAGOON_CAUSTICS_BIND_DISPLACEMENT LAGOON_SURFACE_BIND_DISPLACEMENT  // sampler2DArray[MAX_CASCADES]
 #define LAGOON_CAUSTICS_BIND_NORMAL_JACOBIAN \
   LAGOON_SURFACE_BIND_NORMAL_JACOBIAN  // sampler2DArray[MAX_CASCADES]
 #define LAGOON_CAUSTICS_BIND_ACCUM 3   // uint[SLICES][CELLS][CELLS], fixed point
 #define LAGOON_CAUSTICS_BIND_MAP 4     // r32f image2DArray, one layer per slice
+// ... and the wakes at LAGOON_SURFACE_BIND_WAKES (common/wake_fields.glsl)
 
 LAGOON_GPU_BEGIN
 struct CausticsPush {

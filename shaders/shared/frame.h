@@ -45,6 +45,8 @@ struct FrameUniforms {
                         // rays on (1)
   vec4 underwater_top;  // rgb = target(0, 0) of the underwater tables: the light just under the surface, w
                         // unused
+  vec4 wakes;           // the wakes' window (common/wake_fields.glsl): xy = world xz of its corner, z = its
+                        // width m, w = its cell size m
 };
 
 // One point light of the scene's "lights" block (storage buffer, std430).
@@ -55,7 +57,7 @@ struct PointLightGpu {
 LAGOON_GPU_END
 
 #ifdef __cplusplus
-LAGOON_CHECK_SIZE(FrameUniforms, 528);
+LAGOON_CHECK_SIZE(FrameUniforms, 544);
 LAGOON_CHECK_SIZE(PointLightGpu, 32);
 LAGOON_CHECK_OFFSET(FrameUniforms, camera_pos, 128);
 LAGOON_CHECK_OFFSET(FrameUniforms, water_deep, 208);

@@ -32,5 +32,11 @@
 #define LAGOON_SURFACE_BIND_BELOW_COLOR 14  // waterline.frag: the frame drawn from below, colour
 #define LAGOON_SURFACE_BIND_BELOW_DEPTH 15  // ... and depth
 #define LAGOON_SURFACE_BIND_WINDOW 16  // ocean_surface_below.frag: objects above, seen through Snell's window
+// The wakes' dynamic layer (h, dh/dx, dh/dz, dh/dt), sampler2D with repeat addressing
+// (common/wake_fields.glsl).
+#define LAGOON_SURFACE_BIND_WAKES 17
+// Specialisation constant of the shaders that include common/wake_fields.glsl: the wakes compiled in (1) or
+// not (no vehicle makes one). Ids 0-2 above, 3 is LAGOON_SPEC_CASCADE_COUNT (shared/limits.h).
+#define LAGOON_SURFACE_SPEC_WAKES 4
 
 #endif

@@ -25,6 +25,7 @@ scene::Scene boat_scene(const std::string& waypoints, float time_s) {
       "camera.look_at=[0,0,20]",
       "camera.fov_deg=55",
       "objects=[]",
+      "wakes.enabled=false",  // the hull alone: its wake would move the changed pixels' centre
       R"(vehicles=[{"name":"boat","file":"assets/boat.gltf","path":{"waypoints":)" + waypoints +
           R"(,"speed_mps":5,"loop":false},"body":{"mass_kg":1100,"centre_of_mass_offset":[0,-0.3,0]}}])"};
   auto s = scene::load_scene(std::string(LAGOON_SOURCE_DIR) + "/scenes/default.json", overrides);

@@ -7,7 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "lagoon_shaders/shaders.h"
-#include "render/cascade_bindings.h"
+#include "render/surface_fields.h"
 #include "shared/limits.h"
 #include "shared/surface.h"
 #include "vk/barriers.h"
@@ -47,11 +47,11 @@ CausticsWindow caustics_window(const scene::Scene& scene, glm::vec3 sun, float i
   return w;
 }
 
-CausticsPass::CausticsPass(vk::Context& ctx, const ocean::GpuOcean& ocean, const Samplers& samplers)
-    : ocean_(ocean),
+CausticsPass::CausticsPass(vk::Context& ctx, const SurfaceFields& fields, const Samplers& samplers)
+    : fields_(fields),
       samplers_(samplers),
       splat_(vk::ComputePipeline::create(ctx, shaders::caustics_splat_comp,
-                                         std::array{cascade_count_spec(ocean)})),
+                                         with_surface_field_specs({}, fields))),
       resolve_(vk::ComputePipeline::create(ctx, shaders::caustics_resolve_comp)),
       accum_(vk::Buffer::create(ctx, kMapTexels * sizeof(uint32_t),
                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
@@ -74,8 +74,9 @@ void CausticsPass::record(const FrameContext& frame, const CausticsWindow& windo
   vk::GpuScope scope(frame.timer(), frame.cmd, "caustics");
   std::vector<vk::Binding> splat{vk::bind(LAGOON_CAUSTICS_BIND_FRAME, frame.uniforms()),
                                  vk::bind(LAGOON_CAUSTICS_BIND_ACCUM, accum_)};
-  // The surface shaders' cascade slots (shared/caustics.h names them the same), without the Jacobian terms.
-  for (const vk::Binding& b : cascade_bindings(ocean_, samplers_))
+  // The surface shaders' cascade slots (shared/caustics.h names them the same), without the Jacobian terms,
+  // and the wakes.
+  for (const vk::Binding& b : surface_field_bindings(fields_, samplers_))
     if (b.binding != LAGOON_SURFACE_BIND_JACOBIAN_TERMS) splat.push_back(b);
   const gpu::CausticsPush push{
       .source = glm::vec4(window.source_origin, float(window.source_cells.x), float(window.source_cells.y))};

@@ -11,9 +11,9 @@
 #include <glm/vec4.hpp>
 #include <vector>
 
-#include "ocean/gpu/gpu_ocean.h"
 #include "render/frame_context.h"
 #include "render/samplers.h"
+#include "render/surface_fields.h"
 #include "scene/scene.h"
 #include "shared/caustics.h"
 #include "vk/buffer.h"
@@ -40,7 +40,7 @@ CausticsWindow caustics_window(const scene::Scene& scene, glm::vec3 sun, float i
 
 class CausticsPass {
  public:
-  CausticsPass(vk::Context& ctx, const ocean::GpuOcean& ocean, const Samplers& samplers);
+  CausticsPass(vk::Context& ctx, const SurfaceFields& fields, const Samplers& samplers);
 
   // Computes the map for `window` (nothing when it has no cells) and makes it ready for fragment shaders.
   void record(const FrameContext& frame, const CausticsWindow& window) const;
@@ -51,7 +51,7 @@ class CausticsPass {
   std::vector<float> read_map(vk::Context& ctx) const;
 
  private:
-  const ocean::GpuOcean& ocean_;
+  const SurfaceFields& fields_;
   const Samplers& samplers_;
   vk::ComputePipeline splat_, resolve_;
   vk::Buffer accum_;

@@ -3,17 +3,17 @@
 #include <algorithm>
 
 #include "lagoon_shaders/shaders.h"
-#include "render/cascade_bindings.h"
+#include "render/surface_fields.h"
 #include "shared/surface.h"
 #include "vk/rendering.h"
 
 namespace lagoon::render {
 
-SurfacePass::SurfacePass(vk::Context& ctx, const ocean::GpuOcean& ocean, const SceneObjects& objects,
+SurfacePass::SurfacePass(vk::Context& ctx, const SurfaceFields& fields, const SceneObjects& objects,
                          const WaterLuts& luts, const Samplers& samplers, VkFormat color_format,
                          VkFormat depth_format)
     : ctx_(ctx),
-      ocean_(ocean),
+      fields_(fields),
       objects_(objects),
       luts_(luts),
       samplers_(samplers),
@@ -21,15 +21,15 @@ SurfacePass::SurfacePass(vk::Context& ctx, const ocean::GpuOcean& ocean, const S
   // Writes display-referred colour: each shader tone-maps its own output (common/tonemap.glsl), so there is
   // no HDR frame and no full-screen post pass.
   for (uint32_t v = 0; v < surface_.size(); ++v)
-    surface_[v] = vk::GraphicsPipeline::create(ctx, {.vertex = &shaders::render_ocean_surface_vert,
-                                                     .fragment = &shaders::render_ocean_surface_frag,
-                                                     .color_formats = {color_format},
-                                                     .depth_format = depth_format,
-                                                     .depth_test = true,
-                                                     .depth_write = true,
-                                                     .spec = {{LAGOON_SURFACE_SPEC_LAMPS, v & 1u},
-                                                              {LAGOON_SURFACE_SPEC_CAUSTICS, v >> 1},
-                                                              cascade_count_spec(ocean)}});
+    surface_[v] = vk::GraphicsPipeline::create(
+        ctx, {.vertex = &shaders::render_ocean_surface_vert,
+              .fragment = &shaders::render_ocean_surface_frag,
+              .color_formats = {color_format},
+              .depth_format = depth_format,
+              .depth_test = true,
+              .depth_write = true,
+              .spec = with_surface_field_specs(
+                  {{LAGOON_SURFACE_SPEC_LAMPS, v & 1u}, {LAGOON_SURFACE_SPEC_CAUSTICS, v >> 1}}, fields)});
 }
 
 void SurfacePass::record(const FrameContext& frame, const Inputs& in, vk::Target color,
@@ -46,7 +46,7 @@ void SurfacePass::record(const FrameContext& frame, const Inputs& in, vk::Target
       vk::bind(LAGOON_SURFACE_BIND_UW_TARGET, sampled(luts_.uw_target, samplers_.clamp)),
       vk::bind(LAGOON_SURFACE_BIND_UW_DOWN, sampled(luts_.uw_down, samplers_.clamp)),
       vk::bind(LAGOON_SURFACE_BIND_UW_UP, sampled(luts_.uw_up, samplers_.clamp))};
-  for (vk::Binding& b : cascade_bindings(ocean_, samplers_)) bindings.push_back(b);
+  for (vk::Binding& b : surface_field_bindings(fields_, samplers_)) bindings.push_back(b);
   // Its own render pass, so the timestamps bracket real work on tilers such as lavapipe.
   vk::GpuScope scope(frame.timer(), frame.cmd, "surface");
   vk::begin_rendering(frame.cmd, frame.extent,
@@ -67,12 +67,12 @@ void SurfacePass::record_aov(const FrameContext& frame, vk::Target normal_foam, 
                                                .depth_format = depth_format_,
                                                .depth_test = true,
                                                .depth_write = true,
-                                               .spec = {cascade_count_spec(ocean_)}});
+                                               .spec = with_surface_field_specs({}, fields_)});
   vk::begin_rendering(frame.cmd, frame.extent,
                       {{.view = normal_foam.view, .clear = std::array{0.f, 0.f, 0.f, 0.f}},
                        {.view = world.view, .clear = std::array{0.f, 0.f, 0.f, 0.f}}},
                       vk::DepthTarget{.view = depth.view, .clear = 1.0f});
-  std::vector<vk::Binding> bindings = cascade_bindings(ocean_, samplers_);
+  std::vector<vk::Binding> bindings = surface_field_bindings(fields_, samplers_);
   bindings.push_back(vk::bind(LAGOON_SURFACE_BIND_FRAME, frame.uniforms()));
   vk::draw_indexed(frame.cmd, aov_, bindings, frame.slot.surface_indices.handle(),
                    frame.slot.surface_index_count);

@@ -6,10 +6,10 @@
 #include <array>
 #include <vector>
 
-#include "ocean/gpu/gpu_ocean.h"
 #include "render/frame_context.h"
 #include "render/samplers.h"
 #include "render/scene_objects.h"
+#include "render/surface_fields.h"
 #include "render/water_luts.h"
 #include "vk/context.h"
 #include "vk/image.h"
@@ -27,7 +27,7 @@ class SurfacePass {
     const vk::Image& caustics;  // the caustic pass's map
   };
 
-  SurfacePass(vk::Context& ctx, const ocean::GpuOcean& ocean, const SceneObjects& objects,
+  SurfacePass(vk::Context& ctx, const SurfaceFields& fields, const SceneObjects& objects,
               const WaterLuts& luts, const Samplers& samplers, VkFormat color_format, VkFormat depth_format);
 
   // Into `color` and `depth` as attachments, cleared first.
@@ -39,7 +39,7 @@ class SurfacePass {
 
  private:
   vk::Context& ctx_;
-  const ocean::GpuOcean& ocean_;
+  const SurfaceFields& fields_;
   const SceneObjects& objects_;
   const WaterLuts& luts_;
   const Samplers& samplers_;

@@ -1,15 +1,15 @@
 #include "render/passes/underwater_pass.h"
 
 #include "lagoon_shaders/shaders.h"
-#include "render/cascade_bindings.h"
+#include "render/surface_fields.h"
 #include "shared/surface.h"
 #include "vk/rendering.h"
 
 namespace lagoon::render {
 
-UnderwaterPass::UnderwaterPass(vk::Context& ctx, const ocean::GpuOcean& ocean, const WaterLuts& luts,
+UnderwaterPass::UnderwaterPass(vk::Context& ctx, const SurfaceFields& fields, const WaterLuts& luts,
                                const Samplers& samplers, VkFormat color_format, VkFormat depth_format)
-    : ocean_(ocean), luts_(luts), samplers_(samplers) {
+    : fields_(fields), luts_(luts), samplers_(samplers) {
   for (uint32_t shafts = 0; shafts < 2; ++shafts) {
     const std::vector<vk::SpecConstant> spec{{LAGOON_UNDERWATER_SPEC_SHAFTS, shafts}};
     // Every pixel, writing the depth of what it shows (the far plane where it shows only water).
@@ -31,7 +31,7 @@ UnderwaterPass::UnderwaterPass(vk::Context& ctx, const ocean::GpuOcean& ocean, c
                                            .depth_format = depth_format,
                                            .depth_test = true,
                                            .depth_write = true,
-                                           .spec = {spec[0], cascade_count_spec(ocean)}});
+                                           .spec = with_surface_field_specs({spec[0]}, fields)});
   }
 }
 
@@ -60,7 +60,7 @@ void UnderwaterPass::record(const FrameContext& frame, const Inputs& in, vk::Tar
   std::vector<vk::Binding> surface = table_bindings(frame);
   surface.push_back(vk::bind(LAGOON_SURFACE_BIND_CAUSTICS, sampled(in.caustics, samplers_.clamp)));
   surface.push_back(vk::bind(LAGOON_SURFACE_BIND_WINDOW, sampled(in.window, samplers_.clamp)));
-  for (vk::Binding& b : cascade_bindings(ocean_, samplers_)) surface.push_back(b);
+  for (vk::Binding& b : surface_field_bindings(fields_, samplers_)) surface.push_back(b);
   vk::draw_indexed(frame.cmd, surface_[shafts], surface, frame.slot.surface_indices.handle(),
                    frame.slot.surface_index_count);
   vk::end_rendering(frame.cmd);

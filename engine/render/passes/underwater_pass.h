@@ -5,9 +5,9 @@
 #pragma once
 #include <array>
 
-#include "ocean/gpu/gpu_ocean.h"
 #include "render/frame_context.h"
 #include "render/samplers.h"
+#include "render/surface_fields.h"
 #include "render/water_luts.h"
 #include "vk/context.h"
 #include "vk/image.h"
@@ -25,7 +25,7 @@ class UnderwaterPass {
     const vk::Image& window;    // objects above the water, as seen through Snell's window (objects_pass.h)
   };
 
-  UnderwaterPass(vk::Context& ctx, const ocean::GpuOcean& ocean, const WaterLuts& luts,
+  UnderwaterPass(vk::Context& ctx, const SurfaceFields& fields, const WaterLuts& luts,
                  const Samplers& samplers, VkFormat color_format, VkFormat depth_format);
 
   // Into `color` and `depth` as attachments; every pixel is written.
@@ -34,7 +34,7 @@ class UnderwaterPass {
  private:
   std::vector<vk::Binding> table_bindings(const FrameContext& frame) const;
 
-  const ocean::GpuOcean& ocean_;
+  const SurfaceFields& fields_;
   const WaterLuts& luts_;
   const Samplers& samplers_;
   // [0]: without light shafts, [1]: with (render.effects.shafts), as a specialisation constant.

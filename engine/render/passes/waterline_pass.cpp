@@ -1,16 +1,16 @@
 #include "render/passes/waterline_pass.h"
 
 #include "lagoon_shaders/shaders.h"
-#include "render/cascade_bindings.h"
+#include "render/surface_fields.h"
 #include "shared/surface.h"
 #include "vk/rendering.h"
 
 namespace lagoon::render {
 
-WaterlinePass::WaterlinePass(vk::Context& ctx, const ocean::GpuOcean& ocean, const Samplers& samplers,
+WaterlinePass::WaterlinePass(vk::Context& ctx, const SurfaceFields& fields, const Samplers& samplers,
                              VkFormat color_format, VkFormat depth_format)
     : ctx_(ctx),
-      ocean_(ocean),
+      fields_(fields),
       samplers_(samplers),
       color_format_(color_format),
       depth_format_(depth_format),
@@ -21,7 +21,7 @@ WaterlinePass::WaterlinePass(vk::Context& ctx, const ocean::GpuOcean& ocean, con
                                                     .depth_test = true,
                                                     .depth_write = true,
                                                     .depth_compare = VK_COMPARE_OP_ALWAYS,
-                                                    .spec = {cascade_count_spec(ocean)}})) {}
+                                                    .spec = with_surface_field_specs({}, fields)})) {}
 
 void WaterlinePass::resize(VkExtent2D extent) {
   const VkImageUsageFlags sampled = VK_IMAGE_USAGE_SAMPLED_BIT;
@@ -39,13 +39,14 @@ void WaterlinePass::record(const FrameContext& frame, vk::Target color, vk::Targ
   vk::GpuScope scope(frame.timer(), frame.cmd, "waterline");
   vk::begin_rendering(frame.cmd, frame.extent, {{.view = color.view}},
                       vk::DepthTarget{.view = depth.view, .clear = {}});
-  // Only the displacement of the cascades: the vertex stage's array, without the normals.
+  // Only the displacement of the cascades (the vertex stage's array, without the normals) and the wakes.
   std::vector<vk::Binding> bindings{
       vk::bind(LAGOON_SURFACE_BIND_FRAME, frame.uniforms()),
       vk::bind(LAGOON_SURFACE_BIND_BELOW_COLOR, sampled(color_, samplers_.nearest)),
       vk::bind(LAGOON_SURFACE_BIND_BELOW_DEPTH, sampled(depth_, samplers_.nearest))};
-  for (const vk::Binding& b : cascade_bindings(ocean_, samplers_))
-    if (b.binding == LAGOON_SURFACE_BIND_DISPLACEMENT) bindings.push_back(b);
+  for (const vk::Binding& b : surface_field_bindings(fields_, samplers_))
+    if (b.binding == LAGOON_SURFACE_BIND_DISPLACEMENT || b.binding == LAGOON_SURFACE_BIND_WAKES)
+      bindings.push_back(b);
   vk::draw(frame.cmd, composite_, bindings, nullptr, 0, 3);
   vk::end_rendering(frame.cmd);
 }

@@ -3,9 +3,9 @@
 // puts the pixels whose near-plane point is under the displaced surface from the second over the first,
 // with a thin meniscus along the split.
 #pragma once
-#include "ocean/gpu/gpu_ocean.h"
 #include "render/frame_context.h"
 #include "render/samplers.h"
+#include "render/surface_fields.h"
 #include "vk/context.h"
 #include "vk/image.h"
 #include "vk/pipeline.h"
@@ -14,7 +14,7 @@ namespace lagoon::render {
 
 class WaterlinePass {
  public:
-  WaterlinePass(vk::Context& ctx, const ocean::GpuOcean& ocean, const Samplers& samplers,
+  WaterlinePass(vk::Context& ctx, const SurfaceFields& fields, const Samplers& samplers,
                 VkFormat color_format, VkFormat depth_format);
 
   void resize(VkExtent2D extent);
@@ -27,7 +27,7 @@ class WaterlinePass {
 
  private:
   vk::Context& ctx_;
-  const ocean::GpuOcean& ocean_;
+  const SurfaceFields& fields_;
   const Samplers& samplers_;
   VkFormat color_format_, depth_format_;
   vk::GraphicsPipeline composite_;

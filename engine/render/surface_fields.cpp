@@ -1,4 +1,4 @@
-#include "render/cascade_bindings.h"
+#include "render/surface_fields.h"
 
 #include <algorithm>
 
@@ -6,8 +6,9 @@
 
 namespace lagoon::render {
 
-std::vector<vk::Binding> cascade_bindings(const ocean::GpuOcean& ocean, const Samplers& samplers) {
+std::vector<vk::Binding> surface_field_bindings(const SurfaceFields& fields, const Samplers& samplers) {
   std::vector<vk::Binding> bindings;
+  const ocean::GpuOcean& ocean = fields.ocean;
   for (uint32_t slot = 0; slot < LAGOON_MAX_CASCADES; ++slot) {
     const ocean::CascadeTextures t = ocean.cascade(std::min(slot, ocean.cascade_count() - 1));
     bindings.push_back(
@@ -17,11 +18,16 @@ std::vector<vk::Binding> cascade_bindings(const ocean::GpuOcean& ocean, const Sa
     bindings.push_back(
         vk::bind(LAGOON_SURFACE_BIND_NORMAL_JACOBIAN, sampled(*t.normal_jacobian, samplers.repeat), slot));
   }
+  // Repeat addressing: the layer's storage is toroidal (ocean/dynamic_layer.h).
+  bindings.push_back(vk::bind(LAGOON_SURFACE_BIND_WAKES, sampled(fields.wakes.fields(), samplers.repeat)));
   return bindings;
 }
 
-vk::SpecConstant cascade_count_spec(const ocean::GpuOcean& ocean) {
-  return {LAGOON_SPEC_CASCADE_COUNT, ocean.cascade_count()};
+std::vector<vk::SpecConstant> with_surface_field_specs(std::vector<vk::SpecConstant> own,
+                                                       const SurfaceFields& fields) {
+  own.push_back({LAGOON_SPEC_CASCADE_COUNT, fields.ocean.cascade_count()});
+  own.push_back({LAGOON_SURFACE_SPEC_WAKES, fields.wakes.active() ? 1u : 0u});
+  return own;
 }
 
 }  // namespace lagoon::render

@@ -1,0 +1,28 @@
+// What the surface shaders sample of the water's motion (shared/surface.h): the ocean's cascade textures
+// (displacement, normal and Jacobian terms, one array element per cascade, LAGOON_MAX_CASCADES, the last
+// repeated) and the wakes' dynamic layer (passes/wakes_pass.h). Shared by every pass that draws or follows
+// the surface (from above, from below, its AOVs, the waterline, the caustics), so none of them can leave the
+// wakes out.
+#pragma once
+#include <vector>
+
+#include "ocean/gpu/gpu_ocean.h"
+#include "render/passes/wakes_pass.h"
+#include "render/samplers.h"
+#include "vk/pipeline.h"
+
+namespace lagoon::render {
+
+struct SurfaceFields {
+  const ocean::GpuOcean& ocean;
+  const WakesPass& wakes;
+};
+
+std::vector<vk::Binding> surface_field_bindings(const SurfaceFields& fields, const Samplers& samplers);
+
+// `own` with the constants the shaders that sum the fields take: the cascade count
+// (LAGOON_SPEC_CASCADE_COUNT) and whether the wakes are compiled in (LAGOON_SURFACE_SPEC_WAKES).
+std::vector<vk::SpecConstant> with_surface_field_specs(std::vector<vk::SpecConstant> own,
+                                                       const SurfaceFields& fields);
+
+}  // namespace lagoon::render

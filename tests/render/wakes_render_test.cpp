@@ -1,0 +1,113 @@
+// The wakes in the drawn surface (engine/render/passes/wakes_pass.h): a boat crossing a calm bay leaves waves
+// whose slopes, read back per pixel from the surface pass's ground truth (OceanRenderer::render_surface_aov),
+// are the CPU reference layer's (compute/ocean/dynamic_layer.h, double precision, run here on the same
+// hulls) plus the sea's own (WaveQuery) at the same world points.
+// Slopes, because the shading normal samples the layer per pixel, while heights reach the picture through
+// the surface mesh's vertices, a cell up to 1/12 of the distance apart (render/surface_grid.h).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <vector>
+
+#include "ocean/dynamic_layer.h"
+#include "ocean/wave_query.h"
+#include "render/ocean_renderer.h"
+#include "support/vk_fixture.h"
+
+namespace lagoon::test {
+namespace {
+
+class WakesRender : public GpuTest {};
+
+scene::Scene calm_bay_with_a_boat() {
+  const std::vector<std::string> overrides{
+      "render.width=320", "render.height=180", "time_s=9", "camera.position=[0,14,-6]",
+      "camera.look_at=[0,0,22]", "objects=[]",
+      // A sea of long waves only: one coarse cascade (6 m texels) of a light breeze.
+      "ocean.spectrum.wind_speed_mps=0.5", R"(ocean.cascades=[{"patch_size_m":400,"resolution":64}])",
+      R"(vehicles=[{"name":"boat","file":"assets/boat.gltf","path":{"waypoints":[[-40,20],[40,20]],"speed_mps":5,"loop":false}}])",
+      R"(wakes={"resolution":256,"cell_size_m":0.25,"step_s":0.1,"history_s":30})"};
+  auto s = scene::load_scene(std::string(LAGOON_SOURCE_DIR) + "/scenes/default.json", overrides);
+  EXPECT_TRUE(s) << s.error().message;
+  return s ? *s : scene::Scene{};
+}
+
+// The CPU layer's slope at world (x, z): central differences at the cells, interpolated bilinearly (as the
+// GPU's fields are sampled); cell a holds x = a · cell.
+glm::dvec2 layer_slope(const ocean::DynamicLayerCpu& layer, double x, double z) {
+  const double cell = layer.params().cell_m;
+  auto at = [&](int a, int b) {
+    return glm::dvec2(layer.height(a + 1, b) - layer.height(a - 1, b),
+                      layer.height(a, b + 1) - layer.height(a, b - 1)) /
+           (2 * cell);
+  };
+  const double u = x / cell, v = z / cell;
+  const int a = int(std::floor(u)), b = int(std::floor(v));
+  const double fu = u - a, fv = v - b;
+  return (1 - fu) * (1 - fv) * at(a, b) + fu * (1 - fv) * at(a + 1, b) + (1 - fu) * fv * at(a, b + 1) +
+         fu * fv * at(a + 1, b + 1);
+}
+
+glm::dvec2 slope_of(const glm::dvec4& n) {
+  return {-n.x / n.y, -n.z / n.y};
+}
+
+TEST_F(WakesRender, TheShadedSurfaceCarriesTheReferenceLayersSlopes) {
+  const scene::Scene with = calm_bay_with_a_boat();
+  auto a = render::OceanRenderer::create(ctx(), with);
+  ASSERT_TRUE(a) << a.error().message;
+  const render::OceanRenderer::SurfaceAov waked = (*a)->render_surface_aov(with);
+
+  const render::WakesPass& wakes = (*a)->wakes();
+  ASSERT_TRUE(wakes.active());
+
+  // The same steps on the CPU: the renderer's window, from time 0 (history_s is longer than 9 s).
+  const ocean::DynamicLayerGpu& gpu = *wakes.layer();
+  ocean::DynamicLayerCpu cpu(gpu.params(), 2);
+  cpu.set_window(gpu.window());
+  for (int step = 0; step < 90; ++step) cpu.step(0.1, wakes.sources(step * 0.1));
+
+  const glm::vec4 window = wakes.window();
+  const glm::dvec2 hull = wakes.sources(with.time_s)[0].centre;
+  const double border = with.wakes.border_m;
+  std::vector<glm::dvec2> points, drawn, wake;
+  for (uint32_t y = 0; y < waked.height; ++y)
+    for (uint32_t x = 0; x < waked.width; ++x) {
+      const glm::vec4 p = waked.world_at(x, y);
+      if (p.w < 0.5) continue;
+      if (p.x < window.x + border || p.z < window.y + border || p.x > window.x + window.z - border ||
+          p.z > window.y + window.z - border)
+        continue;  // outside the window's interior
+      // Not under the hull (drawn over it in a frame; here its steep depression, where the mesh's facets
+      // and the layer's cells are of a size, is left out).
+      if (glm::length(glm::dvec2(p.x, p.z) - hull) < 4.0) continue;
+      points.emplace_back(p.x, p.z);
+      drawn.push_back(slope_of(glm::dvec4(waked.normal_at(x, y))));
+      wake.push_back(layer_slope(cpu, p.x, p.z));
+    }
+  // The sea's own slopes there: only waves longer than 12 m are left (one coarse cascade), which no mip
+  // filters at these distances, so WaveQuery's exact ones are what the shader sums.
+  ocean::WaveQuery sea(with.ocean);
+  const std::vector<ocean::WaveSample> own = sea.sample(with.time_s, points);
+  double err2 = 0, ref2 = 0, sea2 = 0;
+  const int count = int(points.size());
+  for (size_t i = 0; i < points.size(); ++i) {
+    const glm::dvec2 sea_slope = slope_of(glm::dvec4(own[i].normal, 0.0));
+    const glm::dvec2 error = drawn[i] - (wake[i] + sea_slope);
+    err2 += glm::dot(error, error);
+    ref2 += glm::dot(wake[i], wake[i]);
+    sea2 += glm::dot(sea_slope, sea_slope);
+  }
+  RecordProperty("sea_rms_slope", std::to_string(std::sqrt(sea2 / count)));
+  ASSERT_GT(count, 2000);
+  const double relative = std::sqrt(err2 / ref2), rms = std::sqrt(ref2 / count);
+  RecordProperty("wake_rms_slope", std::to_string(rms));
+  RecordProperty("relative_rms_error", std::to_string(relative));
+  RecordProperty("pixels", std::to_string(count));
+  EXPECT_GT(rms, 0.01) << "no wake where the camera looks: nothing was compared";
+  EXPECT_LT(relative, 0.05);
+}
+
+}  // namespace
+}  // namespace lagoon::test
