@@ -11,8 +11,11 @@ using dl_real = double;
 using dl_real2 = glm::dvec2;
 using dl_real4 = glm::dvec4;
 using glm::dot;
+using glm::floor;
+using std::clamp;
 using std::cos;
 using std::exp;
+using std::floor;
 using std::max;
 using std::min;
 using std::sin;
@@ -34,12 +37,21 @@ glm::dvec2 within_period(glm::dvec2 centre, double period) {
   return centre - period * glm::floor(centre / period);
 }
 
+// The world cell that storage index `index` holds in a window starting at cell `origin`.
+int window_cell(int index, int origin, int n) {
+  return origin + ((index - origin) % n + n) % n;
+}
+
 int cells_from_edge(int index, int origin, int n) {
   const int a = ((index - origin) % n + n) % n;  // position within the window
   return std::min(a, n - 1 - a);
 }
 
 }  // namespace
+
+double foam_decay_factor(double lifetime_s, double dt) {
+  return lifetime_s > 0 ? std::exp(-3.0 * dt / lifetime_s) : 0.0;
+}
 
 uint32_t dynamic_substeps(double dt, std::span<const WakeSource> sources) {
   double parts = 1;
@@ -60,7 +72,8 @@ DynamicLayerCpu::DynamicLayerCpu(DynamicLayerParams params, unsigned threads)
       threads_(threads),
       forward_(params.n, false),
       inverse_(params.n, true),
-      state_(size_t(params.n) * params.n) {}
+      state_(size_t(params.n) * params.n),
+      foam_(size_t(params.n) * params.n, 0.0) {}
 
 size_t DynamicLayerCpu::index(int a, int b) const {
   const int n = int(params_.n);
@@ -106,10 +119,22 @@ void DynamicLayerCpu::step(double dt, std::span<const WakeSource> sources) {
     }
   inverse_.transform(state_, 1, threads_);
   const double width = params_.sponge_m / params_.cell_m;
+  const double foam_decay = foam_decay_factor(params_.foam_lifetime_s, dt);
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       const int from_edge = std::min(cells_from_edge(i, origin_.x, n), cells_from_edge(j, origin_.y, n));
-      state_[size_t(j) * n + i] *= dl_double::dl_sponge(from_edge, width, params_.sponge_per_s, dt);
+      const double sponge = dl_double::dl_sponge(from_edge, width, params_.sponge_per_s, dt);
+      const size_t c = size_t(j) * n + i;
+      state_[c] *= sponge;
+      // The cell's world position: its index within the window, from the window's first cell.
+      const glm::dvec2 xz =
+          glm::dvec2(window_cell(i, origin_.x, n), window_cell(j, origin_.y, n)) * params_.cell_m;
+      double injected = 0;
+      for (const WakeSource& s : local)
+        injected += dl_double::dl_foam_injection(xz, s.centre, s.velocity,
+                                                 glm::dvec2(std::sin(s.heading), std::cos(s.heading)),
+                                                 s.sigma, s.foam_per_s, dt, period);
+      foam_[c] = dl_double::dl_foam_update(foam_[c], foam_decay, injected) * sponge;
     }
 }
 

@@ -2,7 +2,9 @@
 // camera, forced by the pressure of moving hulls, added to the FFT ocean. Each mode is advanced exactly
 // (shaders/shared/dynamic_layer_math.h), so any step is stable; a border of growing damping absorbs what
 // leaves the window. This is the CPU reference in double precision (FFTs by fft/cpu_fft.h); the renderer runs
-// the same steps on the GPU (ocean/gpu/dynamic_layer_gpu.h), and the two are tested against each other.
+// the same steps on the GPU (ocean/gpu/dynamic_layer_gpu.h), and the two are tested against each other. The
+// hulls' foam trails live on the same grid: injected behind the sterns, saturating at 1, decaying with
+// foam_lifetime_s.
 //
 // Storage is toroidal: world cell (a, b), at (x, z) = (a, b) · cell, lives at index (a mod n, b mod n), so
 // the window moves by whole cells without copying; cells that enter it come from the opposite border, where
@@ -19,13 +21,14 @@
 namespace lagoon::ocean {
 
 struct DynamicLayerParams {
-  uint32_t n = 512;           // cells per side (a supported FFT size)
-  double cell_m = 0.25;       // cell size
-  double gravity = 9.81;      // m/s²
-  double depth_m = 0;         // of the water; <= 0: deep
-  double decay_per_s = 0.02;  // damping of every mode
-  double sponge_m = 16;       // width of the absorbing border
-  double sponge_per_s = 3;    // damping rate at the very edge
+  uint32_t n = 512;             // cells per side (a supported FFT size)
+  double cell_m = 0.25;         // cell size
+  double gravity = 9.81;        // m/s²
+  double depth_m = 0;           // of the water; <= 0: deep
+  double decay_per_s = 0.02;    // damping of every mode
+  double sponge_m = 16;         // width of the absorbing border
+  double sponge_per_s = 3;      // damping rate at the very edge
+  double foam_lifetime_s = 20;  // a trail's foam fades to 5 % (e^-3) in this time
 };
 
 // A hull's pressure on the water as the still-water depression it makes: a Gaussian of `sigma` (along and
@@ -38,11 +41,14 @@ struct WakeSource {
   glm::dvec2 sigma{1.0};     // m
   double depression = 0;     // m
   double depth = 0;          // m
+  double foam_per_s = 0;     // foam builds this fast behind its stern (0.3 of it at its bow); 0 = none
 };
 
 // How many parts a step's forcing is split into: the sources move at most a quarter of their sigma along
 // their motion per part, so the moving footprint is sampled finely enough to make no waves of its own.
 uint32_t dynamic_substeps(double dt, std::span<const WakeSource> sources);
+// The share of its foam a cell keeps over dt: e^-3 over the lifetime.
+double foam_decay_factor(double lifetime_s, double dt);
 
 class DynamicLayerCpu {
  public:
@@ -60,6 +66,9 @@ class DynamicLayerCpu {
   // (h, dh/dt) per storage index (a mod n) + n (b mod n).
   const std::vector<std::complex<double>>& state() const { return state_; }
   std::vector<std::complex<double>>& state() { return state_; }
+  // The foam trails' coverage, 0..1, per storage index.
+  double foam(int a, int b) const { return foam_[index(a, b)]; }
+  const std::vector<double>& foam() const { return foam_; }
 
  private:
   size_t index(int a, int b) const;
@@ -69,6 +78,7 @@ class DynamicLayerCpu {
   fft::CpuFft2d forward_, inverse_;
   glm::ivec2 origin_{0};
   std::vector<std::complex<double>> state_;  // h + i dh/dt
+  std::vector<double> foam_;
 };
 
 }  // namespace lagoon::ocean

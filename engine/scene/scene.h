@@ -130,18 +130,20 @@ struct Vehicle {
   float depth_m = 0.f;  // 0 = at the surface; > 0: the model's origin this far below the mean level
   HullBody body;
   float wake_strength = 1.f;  // scales the pressure its hull puts on the water (wakes); 0 = no wake
+  float foam_per_s = 8.f;     // how fast foam builds behind its stern at the surface; 0 = no trail
 };
 
 // The dynamic wave layer (wakes; docs/physics.md, Wakes): linear waves on a square grid around the camera,
 // forced by the vehicles' hulls and added to the ocean.
 struct Wakes {
-  bool enabled = true;          // runs when some vehicle makes a wake
-  uint32_t resolution = 512;    // cells per side
-  float cell_size_m = 0.25f;    // so the window is resolution x cell_size_m wide
-  float damping_per_s = 0.02f;  // of every wave
-  float border_m = 16.f;        // width of the absorbing border at the window's edges
-  float step_s = 0.1f;          // the layer's time step
-  float history_s = 30.f;       // a frame's layer starts this long before it (or at 0)
+  bool enabled = true;           // runs when some vehicle makes a wake
+  uint32_t resolution = 512;     // cells per side
+  float cell_size_m = 0.25f;     // so the window is resolution x cell_size_m wide
+  float damping_per_s = 0.02f;   // of every wave
+  float border_m = 16.f;         // width of the absorbing border at the window's edges
+  float step_s = 0.1f;           // the layer's time step
+  float history_s = 30.f;        // a frame's layer starts this long before it (or at 0)
+  float foam_lifetime_s = 15.f;  // a foam trail fades to 5 % in this time
 };
 
 struct PointLight {

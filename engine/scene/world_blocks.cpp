@@ -142,6 +142,11 @@ void read_vehicle(ObjectReader& r, Vehicle& v) {
   r.number("wake_strength", v.wake_strength, Bounds::between(0, 10), "",
            "Scales the pressure of its hull on the water, which makes its wake (`wakes`): 1 = the hull's "
            "draught; 0 = no wake.");
+  r.number(
+      "foam_per_s", v.foam_per_s, Bounds::between(0, 1000), "1/s",
+      "How fast foam builds behind its stern (propeller wash) and, at 0.3 of it, at its bow, while it "
+      "runs at the surface: coverage per second where the hull passes, saturating at 1 (`wakes`); 0 = no "
+      "trail. Submerged vehicles leave none.");
 }
 
 void read_wakes(ObjectReader& r, Wakes& w) {
@@ -174,6 +179,8 @@ void read_wakes(ObjectReader& r, Wakes& w) {
            "A frame's layer is computed from this long before the frame's time (or from time 0), so a still "
            "frame at a late time costs history_s / step_s steps; waves older than the window's crossing time "
            "have left it anyway.");
+  r.number("foam_lifetime_s", w.foam_lifetime_s, Bounds::above_up_to(0, 3600), "s",
+           "The vehicles' foam trails fade to 5 % (e^-3) of their coverage in this time.");
 }
 
 void read_object(ObjectReader& r, Object& o) {

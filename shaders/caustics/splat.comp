@@ -45,7 +45,7 @@ void main() {
   LAGOON_CASCADE(2)
   LAGOON_CASCADE(3)
 #undef LAGOON_CASCADE
-  vec3 wake = wake_at(rest);
+  vec3 wake = wake_at(rest).xyz;
   d.y += wake.x;
   slope += wake.yz;
   vec3 n = normalize(vec3(-slope.x, 1.0, -slope.y));

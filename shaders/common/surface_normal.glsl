@@ -45,7 +45,9 @@ SurfaceSample surface_sample(vec3 to_viewer) {
   LAGOON_CASCADE(2)
   LAGOON_CASCADE(3)
 #undef LAGOON_CASCADE
-  slope += wake_at(v_rest).yz;
+  vec4 wake = wake_at(v_rest);
+  slope += wake.yz;
+  foam = max(foam, wake_foam(wake.w, v_rest));  // the hulls' trails, drawn as the sea's own foam
   // Each cascade keeps its own foam with its decay; where the cascades fold the surface only together
   // (long waves squeezing shorter ones), the whole sea's Jacobian adds the foam no single cascade shows.
   float jacobian = (1.0 + terms.x) * (1.0 + terms.y) - terms.z * terms.z;

@@ -1,8 +1,9 @@
 #version 450
 // The dynamic wave layer's step in space (compute/ocean/dynamic_layer.h): the absorbing border damps the state
-// after the inverse transform, and the renderer's fields are written from the damped heights: (h, dh/dx,
-// dh/dz, dh/dt) per cell, central differences across neighbouring cells (damped on the fly, so no cell waits
-// for another's result). Storage is toroidal: world cell a lives at index a mod n.
+// after the inverse transform, the hulls' foam trails decay and grow, and the renderer's fields are written
+// from the damped heights: (h, dh/dx, dh/dz, foam) per cell, central differences across neighbouring cells
+// (damped on the fly, so no cell waits for another's result). Storage is toroidal: world cell a lives at
+// index a mod n.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/dynamic_layer.h"
 #define dl_real float
@@ -14,6 +15,8 @@ layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 layout(std430, binding = LAGOON_DYNAMIC_BIND_RAW) readonly buffer Raw { vec2 raw[]; };
 layout(std430, binding = LAGOON_DYNAMIC_BIND_STATE) writeonly buffer State { vec2 state[]; };
 layout(rgba32f, binding = LAGOON_DYNAMIC_BIND_FIELDS) writeonly uniform image2D fields;
+layout(std430, binding = LAGOON_DYNAMIC_BIND_SOURCES) readonly buffer Sources { DynamicSource sources[]; };
+layout(std430, binding = LAGOON_DYNAMIC_BIND_FOAM) buffer Foam { float foam[]; };
 layout(push_constant) uniform Push { DynamicPush p; };
 
 int from_edge(int index, int origin, int n) {
@@ -21,13 +24,23 @@ int from_edge(int index, int origin, int n) {
   return min(a, n - 1 - a);
 }
 
+// The world cell that storage index `index` holds.
+int window_cell(int index, int origin, int n) {
+  return origin + ((index - origin) % n + n) % n;
+}
+
+float sponge_at(int i, int j) {
+  int n = int(p.n);
+  float edge = float(min(from_edge(i, p.origin.x, n), from_edge(j, p.origin.y, n)));
+  return dl_sponge(edge, p.sponge_cells, p.sponge_per_s, p.dt);
+}
+
 // The damped state at storage index (i, j), wrapped.
 vec2 damped(int i, int j) {
   int n = int(p.n);
   i = (i + n) % n;
   j = (j + n) % n;
-  float edge = float(min(from_edge(i, p.origin.x, n), from_edge(j, p.origin.y, n)));
-  return raw[j * n + i] * dl_sponge(edge, p.sponge_cells, p.sponge_per_s, p.dt);
+  return raw[j * n + i] * sponge_at(i, j);
 }
 
 void main() {
@@ -36,7 +49,16 @@ void main() {
   if (c.x >= n || c.y >= n) return;
   vec2 here = damped(c.x, c.y);
   state[c.y * n + c.x] = here;
+  vec2 xz = vec2(window_cell(c.x, p.origin.x, n), window_cell(c.y, p.origin.y, n)) * p.cell;
+  float injected = 0.0;
+  for (uint s = 0u; s < p.source_count; ++s) {
+    DynamicSource src = sources[p.source_first + s];
+    injected += dl_foam_injection(xz, src.centre, src.velocity, src.along, src.sigma, src.foam_per_s, p.dt,
+                                  float(p.n) * p.cell);
+  }
+  float trail = dl_foam_update(foam[c.y * n + c.x], p.foam_decay, injected) * sponge_at(c.x, c.y);
+  foam[c.y * n + c.x] = trail;
   float dx = (damped(c.x + 1, c.y).x - damped(c.x - 1, c.y).x) / (2.0 * p.cell);
   float dz = (damped(c.x, c.y + 1).x - damped(c.x, c.y - 1).x) / (2.0 * p.cell);
-  imageStore(fields, c, vec4(here.x, dx, dz, here.y));
+  imageStore(fields, c, vec4(here.x, dx, dz, trail));
 }

@@ -10,11 +10,13 @@
 #define LAGOON_DYNAMIC_BIND_SPECTRUM 0
 #define LAGOON_DYNAMIC_BIND_EVOLVED 1
 #define LAGOON_DYNAMIC_BIND_SOURCES 2
-// The sponge and the fields (dynamic_sponge.comp): the state after the inverse transform in, the damped
-// state and the image (h, dh/dx, dh/dz, dh/dt) out.
+// The sponge, the foam and the fields (dynamic_sponge.comp): the state after the inverse transform in, the
+// damped state, the foam (float per cell, read and written) and the image (h, dh/dx, dh/dz, foam) out. The
+// step's sources are at LAGOON_DYNAMIC_BIND_SOURCES, as in the evolution.
 #define LAGOON_DYNAMIC_BIND_RAW 0
 #define LAGOON_DYNAMIC_BIND_STATE 1
-#define LAGOON_DYNAMIC_BIND_FIELDS 2
+#define LAGOON_DYNAMIC_BIND_FIELDS 3
+#define LAGOON_DYNAMIC_BIND_FOAM 4
 
 LAGOON_GPU_BEGIN
 // A pressure patch on the water: a hull's footprint (a Gaussian of its length and beam) moving at
@@ -26,8 +28,8 @@ struct DynamicSource {
   vec2 along;        // the heading as a unit vector: (sin, cos) of the yaw
   float depression;  // m: the still-water depression at its centre (pressure / (ρ g))
   float depth;       // m below the surface (0 = at it): its pattern is filtered by exp(-k depth)
+  float foam_per_s;  // how fast foam builds behind its stern (and at 0.3 of that at its bow)
   float pad0;
-  float pad1;
 };
 
 struct DynamicPush {
@@ -43,7 +45,7 @@ struct DynamicPush {
   float sponge_cells;  // width of the absorbing border
   float sponge_per_s;  // its strongest damping rate, at the edge
   uint source_first;   // this step's sources in the sources buffer
-  uint pad0;
+  float foam_decay;    // the factor the foam keeps over this step
   uint pad1;
   uint pad2;
 };

@@ -77,3 +77,38 @@ LAGOON_FN dl_real dl_sponge(dl_real from_edge, dl_real width, dl_real rate_per_s
   dl_real into = max(dl_real(0), dl_real(1) - from_edge / width);
   return exp(-rate_per_s * into * into * dt);
 }
+
+// Foam trails. A hull leaves foam behind its stern (propeller wash) and, at 0.3 of the rate, at its bow,
+// along the segments those points sweep over a step, in a band of the beam's sigma across: `rate` · dt where
+// a cell lies on the swept path. The foam there saturates at 1 (dl_foam_update), so crossing trails do not
+// add up. Positions are compared on the periodic grid (`period` metres): the nearest image of the source
+// counts.
+LAGOON_FN dl_real dl_segment_distance2(dl_real2 p, dl_real2 a, dl_real2 b) {
+  dl_real2 ab = b - a;
+  dl_real len2 = dot(ab, ab);
+  dl_real t = len2 > dl_real(0) ? clamp(dot(p - a, ab) / len2, dl_real(0), dl_real(1)) : dl_real(0);
+  dl_real2 d = p - (a + ab * t);
+  return dot(d, d);
+}
+
+LAGOON_FN dl_real2 dl_nearest_image(dl_real2 d, dl_real period) {
+  return d - period * floor(d / period + dl_real(0.5));
+}
+
+LAGOON_FN dl_real dl_foam_injection(dl_real2 cell_xz, dl_real2 centre, dl_real2 velocity, dl_real2 along,
+                                    dl_real2 sigma, dl_real rate, dl_real dt, dl_real period) {
+  if (rate <= dl_real(0)) return dl_real(0);
+  // Relative to the source's centre at the step's start, as the nearest periodic image.
+  dl_real2 p = dl_nearest_image(cell_xz - centre, period);
+  dl_real2 travel = velocity * dt;
+  dl_real2 stern = -along * (dl_real(2) * sigma.x), bow = along * (dl_real(2) * sigma.x);
+  dl_real width2 = dl_real(2) * sigma.y * sigma.y;
+  dl_real shape = exp(-dl_segment_distance2(p, stern, stern + travel) / width2) +
+                  dl_real(0.3) * exp(-dl_segment_distance2(p, bow, bow + travel) / width2);
+  return rate * dt * shape;
+}
+
+// A cell's foam over a step: what it had, decayed by the step's factor, plus what the hulls left, at most 1.
+LAGOON_FN dl_real dl_foam_update(dl_real foam, dl_real decay, dl_real injected) {
+  return min(foam * decay + injected, dl_real(1));
+}

@@ -32,7 +32,7 @@
 #define LAGOON_SURFACE_BIND_BELOW_COLOR 14  // waterline.frag: the frame drawn from below, colour
 #define LAGOON_SURFACE_BIND_BELOW_DEPTH 15  // ... and depth
 #define LAGOON_SURFACE_BIND_WINDOW 16  // ocean_surface_below.frag: objects above, seen through Snell's window
-// The wakes' dynamic layer (h, dh/dx, dh/dz, dh/dt), sampler2D with repeat addressing
+// The wakes' dynamic layer (h, dh/dx, dh/dz, foam), sampler2D with repeat addressing
 // (common/wake_fields.glsl).
 #define LAGOON_SURFACE_BIND_WAKES 17
 // Specialisation constant of the shaders that include common/wake_fields.glsl: the wakes compiled in (1) or

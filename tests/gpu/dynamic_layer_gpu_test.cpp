@@ -1,7 +1,7 @@
 // The dynamic wave layer on the GPU (compute/ocean/gpu/dynamic_layer_gpu.h) against its CPU reference in
 // double precision (compute/ocean/dynamic_layer.h): 100 steps of two moving hulls, one submerged, with the
-// window following them, agree within a relative L2 of 1e-4; the fields image holds the same heights and
-// their central-difference slopes.
+// window following them, agree within a relative L2 of 1e-4, and the foam trail within 1e-4; the fields image
+// holds the same heights, their central-difference slopes and the foam.
 #include "ocean/gpu/dynamic_layer_gpu.h"
 
 #include <gtest/gtest.h>
@@ -25,7 +25,8 @@ TEST_F(DynamicLayerGpuTest, HundredStepsMatchTheCpuReference) {
                                         .velocity = {2.5, 1.0},
                                         .heading = 1.19,
                                         .sigma = {1.2, 0.5},
-                                        .depression = 0.25},
+                                        .depression = 0.25,
+                                        .foam_per_s = 6},
                                        {.centre = {1000, -490},
                                         .velocity = {-1.5, 0},
                                         .heading = -1.57,
@@ -59,7 +60,18 @@ TEST_F(DynamicLayerGpuTest, HundredStepsMatchTheCpuReference) {
   EXPECT_GT(largest, 0.02) << "the hulls made no waves: nothing was compared";
   EXPECT_LT(error, 1e-4);
 
-  // The fields: h, and the slopes the renderer uses, from the damped state.
+  // The foam trails.
+  const std::vector<std::byte> foam_raw = vk::readback_buffer(ctx(), gpu.foam());
+  const float* foam = reinterpret_cast<const float*>(foam_raw.data());
+  double foam_error = 0, foam_total = 0;
+  for (size_t i = 0; i < cpu.foam().size(); ++i) {
+    foam_error = std::max(foam_error, std::abs(foam[i] - cpu.foam()[i]));
+    foam_total += cpu.foam()[i];
+  }
+  EXPECT_GT(foam_total, 50.0) << "no trail: nothing was compared";
+  EXPECT_LT(foam_error, 1e-4);
+
+  // The fields: h, and the slopes the renderer uses, from the damped state; and the foam.
   const std::vector<std::byte> image =
       vk::readback_image(ctx(), gpu.fields(), VK_IMAGE_LAYOUT_GENERAL, vk::access::kComputeWrite);
   const float* texel = reinterpret_cast<const float*>(image.data());
@@ -71,6 +83,7 @@ TEST_F(DynamicLayerGpuTest, HundredStepsMatchTheCpuReference) {
       const double dx = (cpu.height(i + 1, j) - cpu.height(i - 1, j)) / (2 * params.cell_m);
       const double dz = (cpu.height(i, j + 1) - cpu.height(i, j - 1)) / (2 * params.cell_m);
       worst_h = std::max(worst_h, std::abs(t[0] - cpu.height(i, j)));
+      EXPECT_NEAR(t[3], cpu.foam(i, j), 1e-4);
       worst_slope = std::max({worst_slope, std::abs(t[1] - dx), std::abs(t[2] - dz)});
       steepest = std::max({steepest, std::abs(dx), std::abs(dz)});
     }

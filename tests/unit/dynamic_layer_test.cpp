@@ -178,5 +178,62 @@ TEST(DynamicLayer, AHullAtConstantSpeedInDeepWaterDrawsKelvinsWedge) {
   EXPECT_NEAR(angle, 19.47, 2.0);
 }
 
+// Foam trails (the layer's foam, shaders/shared/dynamic_layer_math.h): a hull's trail fades as
+// wakes.foam_lifetime_s says (to e^-3 over it), crossing trails saturate at 1, and a submerged vehicle (no
+// foam rate) leaves none.
+double total_foam(const ocean::DynamicLayerCpu& layer) {
+  double sum = 0;
+  for (double f : layer.foam()) sum += f;
+  return sum;
+}
+
+TEST(DynamicLayerFoam, ATrailFadesAsItsLifetimeSays) {
+  ocean::DynamicLayerParams p{.n = 128, .cell_m = 0.25, .sponge_m = 4, .foam_lifetime_s = 10};
+  ocean::DynamicLayerCpu layer(p, 2);
+  ocean::WakeSource hull{.centre = {6, 16},
+                         .velocity = {4, 0},
+                         .heading = kPi / 2,
+                         .sigma = {1.2, 0.5},
+                         .depression = 0.2,
+                         .foam_per_s = 8};
+  for (int s = 0; s < 30; ++s) {  // 3 s: 12 m of trail, well inside the window
+    layer.step(0.1, {&hull, 1});
+    hull.centre += hull.velocity * 0.1;
+  }
+  const double laid = total_foam(layer);
+  ASSERT_GT(laid, 100.0) << "no trail";
+  double largest = 0;
+  for (double f : layer.foam()) largest = std::max(largest, f);
+  EXPECT_LE(largest, 1.0);
+  EXPECT_GT(largest, 0.99) << "the stern's wash saturates the foam";
+  // The hull leaves: the trail only fades.
+  double t = 0;
+  for (double age : {2.0, 5.0, 10.0}) {
+    for (; t < age - 1e-9; t += 0.1) layer.step(0.1, {});
+    const double expected = std::exp(-3.0 * age / p.foam_lifetime_s);
+    EXPECT_NEAR(total_foam(layer) / laid, expected, 0.1 * expected) << "age " << age;
+  }
+}
+
+TEST(DynamicLayerFoam, CrossingTrailsSaturateAndSubmergedHullsLeaveNone) {
+  // A long lifetime: what the crossing holds is what the two trails laid there.
+  ocean::DynamicLayerParams p{.n = 128, .cell_m = 0.25, .sponge_m = 4, .foam_lifetime_s = 3600};
+  ocean::DynamicLayerCpu layer(p, 2);
+  std::vector<ocean::WakeSource> hulls{
+      {.centre = {6, 16}, .velocity = {3, 0}, .heading = kPi / 2, .sigma = {1, 0.5}, .foam_per_s = 40},
+      {.centre = {16, 6}, .velocity = {0, 3}, .heading = 0, .sigma = {1, 0.5}, .foam_per_s = 40},
+      {.centre = {20, 26}, .velocity = {-3, 0}, .heading = -kPi / 2, .sigma = {1, 0.2}, .depth = 4}};
+  for (int s = 0; s < 70; ++s) {
+    layer.step(0.1, hulls);
+    for (ocean::WakeSource& h : hulls) h.centre += h.velocity * 0.1;
+  }
+  double largest = 0;
+  for (double f : layer.foam()) largest = std::max(largest, f);
+  EXPECT_LE(largest, 1.0);
+  EXPECT_GT(layer.foam(64, 64), 0.9) << "the crossing at (16, 16) is covered";
+  // Where only the AUV passed (z = 26), no foam (but the far tail of the second trail's Gaussian, 4 m off).
+  EXPECT_LT(layer.foam(int(12 / 0.25), int(26 / 0.25)), 1e-9);
+}
+
 }  // namespace
 }  // namespace lagoon::test

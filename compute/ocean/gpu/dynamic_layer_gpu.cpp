@@ -23,7 +23,8 @@ gpu::DynamicSource to_gpu(const WakeSource& s, double period) {
           .sigma = glm::vec2(s.sigma),
           .along = glm::vec2(std::sin(s.heading), std::cos(s.heading)),
           .depression = float(s.depression),
-          .depth = float(s.depth)};
+          .depth = float(s.depth),
+          .foam_per_s = float(s.foam_per_s)};
 }
 
 }  // namespace
@@ -37,6 +38,7 @@ DynamicLayerGpu::DynamicLayerGpu(vk::Context& ctx, const DynamicLayerParams& par
   const VkDeviceSize bytes = VkDeviceSize(params.n) * params.n * 2 * sizeof(float);
   state_ = vk::Buffer::create(ctx, bytes, kStorage, vk::MemoryUsage::Device, "dynamic layer state");
   scratch_ = vk::Buffer::create(ctx, bytes, kStorage, vk::MemoryUsage::Device, "dynamic layer scratch");
+  foam_ = vk::Buffer::create(ctx, bytes / 2, kStorage, vk::MemoryUsage::Device, "dynamic layer foam");
   sources_ = vk::Buffer::create(ctx, sizeof(gpu::DynamicSource) * LAGOON_DYNAMIC_MAX_SOURCES * kStepsInFlight,
                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUsage::Upload,
                                 "dynamic layer sources");
@@ -56,6 +58,7 @@ DynamicLayerGpu::DynamicLayerGpu(vk::Context& ctx, const DynamicLayerParams& par
 void DynamicLayerGpu::record_clear(VkCommandBuffer cmd) {
   vk::memory_barrier(cmd, vk::access::kComputeReadWrite, vk::access::kTransferWrite);
   vkCmdFillBuffer(cmd, state_.handle(), 0, VK_WHOLE_SIZE, 0);
+  vkCmdFillBuffer(cmd, foam_.handle(), 0, VK_WHOLE_SIZE, 0);
   const VkClearColorValue zero{};
   const VkImageSubresourceRange range = fields_.all_subresources();
   vkCmdClearColorImage(cmd, fields_.handle(), VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &range);
@@ -83,7 +86,8 @@ void DynamicLayerGpu::record_step(VkCommandBuffer cmd, double dt, std::span<cons
                               .decay_per_s = float(params_.decay_per_s),
                               .sponge_cells = float(params_.sponge_m / params_.cell_m),
                               .sponge_per_s = float(params_.sponge_per_s),
-                              .source_first = first};
+                              .source_first = first,
+                              .foam_decay = float(foam_decay_factor(params_.foam_lifetime_s, dt))};
   const std::array<uint32_t, 3> cells{params_.n, params_.n, 1};
   // The state is in state_; each transform returns its result in the buffer it was given.
   forward_.record(cmd, state_, scratch_, 1);
@@ -96,6 +100,7 @@ void DynamicLayerGpu::record_step(VkCommandBuffer cmd, double dt, std::span<cons
   inverse_.record(cmd, scratch_, state_, 1);
   vk::dispatch(cmd, sponge_,
                {vk::bind(LAGOON_DYNAMIC_BIND_RAW, scratch_), vk::bind(LAGOON_DYNAMIC_BIND_STATE, state_),
+                vk::bind(LAGOON_DYNAMIC_BIND_SOURCES, sources_), vk::bind(LAGOON_DYNAMIC_BIND_FOAM, foam_),
                 vk::bind(LAGOON_DYNAMIC_BIND_FIELDS, vk::ImageRef{fields_.view(), VK_IMAGE_LAYOUT_GENERAL})},
                push, vk::groups_for(sponge_, cells));
   vk::memory_barrier(cmd, vk::access::kComputeReadWrite, vk::access::kComputeReadWrite);

@@ -1,7 +1,7 @@
 // The dynamic wave layer on the GPU (issue 14; the CPU reference and the physics: ocean/dynamic_layer.h).
 // A step: forward FFT of the state h + i dh/dt (fft/gpu_fft.h), the exact evolution of every mode toward the
 // sources' depression (shaders/ocean/dynamic_evolve.comp), the inverse FFT, and the absorbing border with the
-// renderer's fields (dynamic_sponge.comp). Records only; never submits.
+// foam trails and the renderer's fields (dynamic_sponge.comp). Records only; never submits.
 #pragma once
 #include <glm/vec2.hpp>
 #include <span>
@@ -31,19 +31,21 @@ class DynamicLayerGpu {
   // first of them (their sources share a ring).
   void record_step(VkCommandBuffer cmd, double dt, std::span<const WakeSource> sources);
 
-  // (h, dh/dx, dh/dz, dh/dt) per cell, R32G32B32A32 n x n in GENERAL, world cell (a, b) at texel (a mod n,
+  // (h, dh/dx, dh/dz, foam) per cell, R32G32B32A32 n x n in GENERAL, world cell (a, b) at texel (a mod n,
   // b mod n): sample it with repeat addressing at uv = (x, z) / (n · cell) + 0.5 / n. Visible to compute
   // reads after a step; a sampling pass needs its own barrier.
   const vk::Image& fields() const { return fields_; }
   // h + i dh/dt per storage index, as the CPU reference's state() (for tests and export).
   const vk::Buffer& state() const { return state_; }
+  // The foam trails' coverage (float per storage index), as the CPU reference's foam().
+  const vk::Buffer& foam() const { return foam_; }
   const DynamicLayerParams& params() const { return params_; }
 
  private:
   DynamicLayerParams params_;
   fft::GpuFft2d forward_, inverse_;
   vk::ComputePipeline evolve_, sponge_;
-  vk::Buffer state_, scratch_, sources_;
+  vk::Buffer state_, scratch_, sources_, foam_;
   vk::Image fields_;
   glm::ivec2 origin_{0};
   uint32_t next_slot_ = 0;  // in the sources ring

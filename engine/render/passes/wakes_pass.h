@@ -1,9 +1,9 @@
 // The wakes (issue 14, docs/physics.md "Wakes"): the dynamic wave layer
-// (compute/ocean/gpu/dynamic_layer_gpu.h) on a window around the camera, forced by every vehicle's hull along
-// its path, stepped at wakes.step_s to the frame's time. Its fields (h, dh/dx, dh/dz) are added to the
-// ocean's wherever the surface is drawn (render/surface_fields.h, shaders/common/wake_fields.glsl). Without
-// vehicles, or with wakes.enabled false, it is inactive: a 1 x 1 zero image is bound and the shaders compile
-// the lookups out.
+// (compute/ocean/gpu/dynamic_layer_gpu.h) on a window where the camera looks, forced by every vehicle's hull
+// along its path (render/vehicle_wakes.h), stepped at wakes.step_s to the frame's time. Its fields (h, dh/dx,
+// dh/dz, foam trails) are added to the ocean's wherever the surface is drawn (render/surface_fields.h,
+// shaders/common/wake_fields.glsl). Without vehicles, or with wakes.enabled false, it is inactive: a 1 x 1
+// zero image is bound and the shaders compile the lookups out.
 #pragma once
 #include <memory>
 #include <vector>
@@ -11,10 +11,9 @@
 #include <glm/vec4.hpp>
 
 #include "core/result.h"
-#include "ocean/dynamic_layer.h"
 #include "ocean/gpu/dynamic_layer_gpu.h"
-#include "physics/waypoint_path.h"
 #include "render/frame_context.h"
+#include "render/vehicle_wakes.h"
 #include "scene/scene.h"
 #include "vk/context.h"
 #include "vk/image.h"
@@ -23,11 +22,11 @@ namespace lagoon::render {
 
 class WakesPass {
  public:
-  // Fails naming the field when a vehicle's model cannot be read (its footprint comes from its bounds).
+  // Fails naming the field when a vehicle's model cannot be read.
   static Result<std::unique_ptr<WakesPass>> create(vk::Context& ctx, const scene::Scene& scene);
 
   bool active() const { return layer_ != nullptr; }
-  // (h, dh/dx, dh/dz, dh/dt) of the layer (ocean/gpu/dynamic_layer_gpu.h), or a 1 x 1 zero image.
+  // (h, dh/dx, dh/dz, foam trails) of the layer (ocean/gpu/dynamic_layer_gpu.h), or a 1 x 1 zero image.
   const vk::Image& fields() const { return layer_ ? layer_->fields() : idle_; }
   // FrameUniforms.wakes: the window's corner (x, z) in metres, its width, the cell size.
   glm::vec4 window() const;
@@ -35,34 +34,25 @@ class WakesPass {
   // When the frame's time jumps (the first frame, backwards, or more than a few steps ahead), runs the layer
   // from wakes.history_s before it in its own submission and waits. Call before recording the frame.
   void prepare(vk::Context& ctx, const scene::Scene& scene);
-  // Puts the window where the camera looks, the camera inside it (in whole cells; waves in the cells both
-  // windows share are kept). Call before the frame's uniforms are written (window()).
+  // Puts the window where the camera looks (VehicleWakes::window_for; waves in the cells both windows share
+  // are kept). Call before the frame's uniforms are written (window()).
   void follow_camera(const scene::Scene& scene);
   // Steps the layer to the frame's time.
   void record(const FrameContext& frame);
 
-  // The vehicles' hulls on the water at time t (from their paths; their heave does not matter here).
-  std::vector<ocean::WakeSource> sources(double t) const;
-  // For tests and export: the layer itself (null when inactive).
+  // The vehicles' hulls on the water at time t.
+  std::vector<ocean::WakeSource> sources(double t) const { return hulls_.sources(t); }
+  // For tests: the layer itself (null when inactive).
   const ocean::DynamicLayerGpu* layer() const { return layer_.get(); }
 
  private:
-  struct Hull {
-    physics::WaypointPath path;
-    glm::dvec2 sigma;   // along, across
-    double depression;  // m
-    double depth;       // m, of a submerged vehicle
-  };
-  WakesPass() = default;
-  long long target_step(const scene::Scene& scene) const;
+  explicit WakesPass(VehicleWakes hulls) : hulls_(std::move(hulls)) {}
   void record_steps(VkCommandBuffer cmd, long long to);
 
-  std::vector<Hull> hulls_;
-  double step_s_ = 0.1;
-  long long history_steps_ = 300;
+  VehicleWakes hulls_;
   std::unique_ptr<ocean::DynamicLayerGpu> layer_;
   vk::Image idle_;
-  long long steps_done_ = -1;  // the layer is at steps_done_ · step_s_; < 0 before the first prepare
+  long long steps_done_ = -1;  // the layer is at steps_done_ · step_s; < 0 before the first prepare
 };
 
 }  // namespace lagoon::render
