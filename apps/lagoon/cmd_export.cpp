@@ -1,4 +1,5 @@
-// lagoon export: the GPU ocean's fields for a run of frames, as .npy arrays plus meta.json.
+// lagoon export: the GPU ocean's fields for a run of frames, as .npy arrays plus meta.json; with vehicles,
+// the wakes' dynamic layer and foam trails too.
 #include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -12,10 +13,13 @@
 #include "io/atomic_file.h"
 #include "io/disk_space.h"
 #include "io/npy_stream.h"
+#include "ocean/gpu/dynamic_layer_gpu.h"
 #include "ocean/gpu/gpu_ocean.h"
 #include "ocean/initial_spectrum.h"
+#include "render/vehicle_wakes.h"
 #include "scene_args.h"
 #include "staged_output.h"
+#include "vk/transfer.h"
 
 namespace lagoon::cli {
 namespace {
@@ -26,6 +30,22 @@ namespace fs = std::filesystem;
 struct CascadeArrays {
   std::vector<float> displacement, normal, jacobian, foam;
 };
+
+// The wakes' part of meta.json: where the layer's window lies and what its arrays hold.
+nlohmann::json wakes_json(const render::VehicleWakes& wakes, glm::ivec2 window) {
+  const ocean::DynamicLayerParams& p = wakes.params();
+  return {
+      {"resolution", p.n},
+      {"cell_size_m", p.cell_m},
+      {"window_origin_m", {window.x * p.cell_m, window.y * p.cell_m}},
+      {"step_s", wakes.step_s()},
+      {"files", {{"height", "wakes_height.npy"}, {"foam", "wakes_foam.npy"}}},
+      {"layout",
+       "float32 arrays [frame][z][x]: sample (i, j) is the layer at world x = x0 + i*cell, z = z0 + j*cell "
+       "((x0, z0) = window_origin_m), at the last layer step not after the frame's time. height = the wakes' "
+       "height in metres, added to the cascades' (at the surface point's rest position); foam = the foam "
+       "trails' coverage in [0, 1]. The window's absorbing border (wakes.border_m) holds no waves."}};
+}
 
 nlohmann::json meta_json(const scene::Scene& scene, const ocean::GpuOcean& gpu,
                          const std::vector<double>& times) {
@@ -91,8 +111,9 @@ std::string cascade_prefix(uint32_t c) {
 }
 
 // What the export will put on disk: the arrays exactly, meta.json generously (it lists every frame's time).
-uint64_t export_bytes(const ocean::OceanParams& params, size_t frames) {
+uint64_t export_bytes(const ocean::OceanParams& params, const render::VehicleWakes& wakes, size_t frames) {
   uint64_t bytes = 16384 + 32 * uint64_t(frames);
+  if (!wakes.empty()) bytes += 2 * io::npy_file_bytes(scalar_shape(frames, wakes.params().n)).value();
   for (const ocean::CascadeParams& c : params.cascades)
     for (const auto& shape : {vector_shape(frames, c.resolution), vector_shape(frames, c.resolution),
                               scalar_shape(frames, c.resolution), scalar_shape(frames, c.resolution)})
@@ -143,6 +164,60 @@ Result<void> commit_streams(std::vector<CascadeStreams>& streams) {
     for (io::NpyStreamWriter* w : {&s.displacement, &s.normal, &s.jacobian, &s.foam})
       if (auto r = w->commit(); !r) return r;
   return {};
+}
+
+// The wakes' layer stepped with the frames, and its two arrays.
+struct WakeExport {
+  std::unique_ptr<ocean::DynamicLayerGpu> layer;
+  io::NpyStreamWriter height, foam;
+  long long steps_done = 0;
+  std::vector<float> scratch;
+};
+
+Result<WakeExport> open_wake_export(vk::Context& ctx, const StagedOutput& staged,
+                                    const render::VehicleWakes& wakes, const scene::Scene& scene,
+                                    size_t frames) {
+  const std::vector<size_t> shape = scalar_shape(frames, wakes.params().n);
+  auto height = io::NpyStreamWriter::create(staged.file("wakes_height.npy"), shape);
+  if (!height) return height.error();
+  auto foam = io::NpyStreamWriter::create(staged.file("wakes_foam.npy"), shape);
+  if (!foam) return foam.error();
+  WakeExport w{std::make_unique<ocean::DynamicLayerGpu>(ctx, wakes.params()),
+               std::move(*height),
+               std::move(*foam),
+               wakes.first_step_for(scene.time_s),
+               {}};
+  w.layer->set_window(wakes.window_for(scene.camera));
+  return w;
+}
+
+// Steps the layer to time t (in submissions of at most kStepsInFlight steps) and appends its window, in world
+// order, to both arrays.
+Result<void> append_wakes(vk::Context& ctx, const render::VehicleWakes& wakes, WakeExport& w, double t) {
+  const long long target = wakes.step_at(t);
+  do {
+    ctx.submit_and_wait([&](VkCommandBuffer cmd) {
+      const long long end =
+          std::min(target, w.steps_done + (long long)ocean::DynamicLayerGpu::kStepsInFlight);
+      for (; w.steps_done < end; ++w.steps_done)
+        w.layer->record_step(cmd, wakes.step_s(), wakes.sources(double(w.steps_done) * wakes.step_s()));
+      vk::memory_barrier(cmd, vk::access::kComputeWrite, vk::access::kTransferRead);
+    });
+  } while (w.steps_done < target);
+  const int n = int(wakes.params().n);
+  const glm::ivec2 o = w.layer->window();
+  auto window_order = [&](const std::vector<std::byte>& raw, int stride) {
+    const float* values = reinterpret_cast<const float*>(raw.data());
+    w.scratch.resize(size_t(n) * n);
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const int a = ((o.x + i) % n + n) % n, b = ((o.y + j) % n + n) % n;
+        w.scratch[size_t(j) * n + i] = values[stride * (size_t(b) * n + a)];
+      }
+    return w.scratch;
+  };
+  if (auto r = w.height.append(window_order(vk::readback_buffer(ctx, w.layer->state()), 2)); !r) return r;
+  return w.foam.append(window_order(vk::readback_buffer(ctx, w.layer->foam()), 1));
 }
 
 // Refuses an export larger than the free space at --out before any work, with both figures.
@@ -208,18 +283,22 @@ Result<std::vector<CascadeStreams>> open_all_streams(const StagedOutput& staged,
 }
 
 // meta.json, then every array, then the folder itself: the output appears complete or not at all.
-Result<void> commit_export(StagedOutput& staged, std::vector<CascadeStreams>& streams,
+Result<void> commit_export(StagedOutput& staged, std::vector<CascadeStreams>& streams, WakeExport* wakes,
                            const std::string& meta) {
   if (auto r =
           io::write_file_atomic(staged.file("meta.json"), std::as_bytes(std::span(meta.data(), meta.size())));
       !r)
     return r;
   if (auto r = commit_streams(streams); !r) return r;
+  if (wakes)
+    for (io::NpyStreamWriter* w : {&wakes->height, &wakes->foam})
+      if (auto r = w->commit(); !r) return r;
   return staged.commit();
 }
 
 // Steps the GPU ocean frame after frame, streaming every cascade's fields into a staged --out.
-int export_fields(vk::Context& ctx, const scene::Scene& scene, const fs::path& out, const ExportOptions& o) {
+int export_fields(vk::Context& ctx, const scene::Scene& scene, const render::VehicleWakes& wakes,
+                  const fs::path& out, const ExportOptions& o) {
   // Frames go straight into a staging folder beside the output; it is moved into place only when complete,
   // and removed on any failure or interruption (StagedOutput's destructor), so nothing half-written remains.
   InterruptGuard interrupt;
@@ -230,6 +309,12 @@ int export_fields(vk::Context& ctx, const scene::Scene& scene, const fs::path& o
   ocean::GpuOcean& gpu = **gpu_ocean;
   auto streams = open_all_streams(*staged, gpu, size_t(o.frames));
   if (!streams) return export_failure(streams.error().message);
+  std::optional<WakeExport> wake;
+  if (!wakes.empty()) {
+    auto w = open_wake_export(ctx, *staged, wakes, scene, size_t(o.frames));
+    if (!w) return export_failure(w.error().message);
+    wake.emplace(std::move(*w));
+  }
   CascadeArrays scratch;
   std::vector<double> times;
   for (long long f = 0; f < o.frames; ++f) {
@@ -245,12 +330,16 @@ int export_fields(vk::Context& ctx, const scene::Scene& scene, const fs::path& o
     for (uint32_t c = 0; c < gpu.cascade_count(); ++c)
       if (auto r = append_frame((*streams)[c], gpu.read_cascade(c), scratch); !r)
         return export_failure(r.error().message);
+    if (wake)
+      if (auto r = append_wakes(ctx, wakes, *wake, t); !r) return export_failure(r.error().message);
     if (o.frames > 1) std::fprintf(stderr, "\rlagoon export: frame %lld/%lld", f + 1, o.frames);
   }
   if (o.frames > 1) std::fprintf(stderr, "\n");
   if (int status = validation_status(ctx); status != kExitOk) return status;
 
-  if (auto r = commit_export(*staged, *streams, meta_json(scene, gpu, times).dump(2) + "\n"); !r)
+  nlohmann::json meta = meta_json(scene, gpu, times);
+  if (wake) meta["wakes"] = wakes_json(wakes, wake->layer->window());
+  if (auto r = commit_export(*staged, *streams, wake ? &*wake : nullptr, meta.dump(2) + "\n"); !r)
     return export_failure(r.error().message);
   std::printf("wrote %s: %lld frame(s), %u cascade(s), on %s\n", out.c_str(), o.frames, gpu.cascade_count(),
               ctx.device_info().name.c_str());
@@ -266,11 +355,13 @@ int run_export(const ParsedArgs& args) {
   std::error_code ec;
   if (fs::exists(out, ec) && !fs::is_directory(out, ec))  // checked before the GPU work, not after
     return export_failure("--out " + out.string() + " exists and is not a folder");
-  if (auto space = check_space(out, export_bytes(scene->ocean, size_t(options->frames))); !space)
+  auto wakes = render::VehicleWakes::create(*scene);
+  if (!wakes) return export_failure(wakes.error().message);
+  if (auto space = check_space(out, export_bytes(scene->ocean, *wakes, size_t(options->frames))); !space)
     return export_failure(space.error().message);
   auto ctx = open_context();
   if (!ctx) return kExitFailure;
-  return export_fields(*ctx, *scene, out, *options);
+  return export_fields(*ctx, *scene, *wakes, out, *options);
 }
 
 }  // namespace
@@ -279,9 +370,12 @@ const Command& export_command() {
   static const Command command{
       .spec =
           {.name = "export",
-           .summary = "Runs the FFT ocean of a scene for a number of frames on the GPU and writes every "
-                      "cascade's displacement, normal, Jacobian and foam as float32 .npy arrays, with "
-                      "meta.json describing times, parameters, layout and each cascade's wavenumber band.",
+           .summary =
+               "Runs the FFT ocean of a scene for a number of frames on the GPU and writes every "
+               "cascade's displacement, normal, Jacobian and foam as float32 .npy arrays, with "
+               "meta.json describing times, parameters, layout and each cascade's wavenumber band. With "
+               "vehicles (and wakes.enabled), also the wakes' dynamic layer: wakes_height.npy and "
+               "wakes_foam.npy over its window (meta.json's \"wakes\").",
            .options = {scene_option(),
                        {"out", "DIR",
                         "output folder (created; existing files of the same names are replaced)", true},

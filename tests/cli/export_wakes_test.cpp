@@ -1,0 +1,87 @@
+// lagoon export with vehicles: the wakes' layer and foam trails (wakes_height.npy, wakes_foam.npy) over the
+// window meta.json names, against the CPU reference layer (compute/ocean/dynamic_layer.h, double precision)
+// run here on the same hulls (render/vehicle_wakes.h) and window.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "io/npy.h"
+#include "ocean/dynamic_layer.h"
+#include "render/vehicle_wakes.h"
+#include "scene/scene.h"
+#include "support/run_process.h"
+#include "support/temp_dir.h"
+
+namespace lagoon::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(ExportWakes, TheLayerAndItsFoamMatchTheCpuReference) {
+  TempDir dir;
+  const std::string harbour = std::string(LAGOON_SOURCE_DIR) + "/scenes/harbour.json";
+  const std::vector<std::string> overrides{R"(wakes={"resolution":128,"cell_size_m":0.5,"border_m":8})",
+                                           "camera.position=[0,8,20]", "camera.look_at=[0,0,50]",
+                                           R"(ocean.cascades=[{"patch_size_m":100,"resolution":64}])"};
+  std::string command = shell_quote(LAGOON_BINARY) + " export --scene " + harbour + " --out " +
+                        shell_quote((dir / "fields").string()) + " --frames 2 --t0 5 --dt 0.5";
+  for (const std::string& o : overrides) command += " --set " + shell_quote(o);
+  auto r = run_process(command);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::ifstream meta_file(dir / "fields" / "meta.json");
+  const nlohmann::json meta = nlohmann::json::parse(meta_file);
+  ASSERT_TRUE(meta.contains("wakes")) << meta.dump(2);
+  auto height = io::read_npy(dir / "fields" / "wakes_height.npy");
+  auto foam = io::read_npy(dir / "fields" / "wakes_foam.npy");
+  ASSERT_TRUE(height && foam);
+  EXPECT_EQ(height->shape, (std::vector<size_t>{2, 128, 128}));
+  EXPECT_EQ(foam->shape, (std::vector<size_t>{2, 128, 128}));
+
+  // The same layer on the CPU: the scene's hulls, the window meta.json gives, the same steps.
+  auto scene = scene::load_scene(harbour, overrides);
+  ASSERT_TRUE(scene) << scene.error().message;
+  auto wakes = render::VehicleWakes::create(*scene);
+  ASSERT_TRUE(wakes && !wakes->empty());
+  ocean::DynamicLayerCpu cpu(wakes->params(), 2);
+  const double cell = meta["wakes"]["cell_size_m"];
+  const glm::ivec2 window(int(std::lround(meta["wakes"]["window_origin_m"][0].get<double>() / cell)),
+                          int(std::lround(meta["wakes"]["window_origin_m"][1].get<double>() / cell)));
+  EXPECT_EQ(window, wakes->window_for(scene->camera));
+  cpu.set_window(window);
+  long long step = wakes->first_step_for(5.0);
+  for (int frame = 0; frame < 2; ++frame) {
+    for (; step < wakes->step_at(5.0 + 0.5 * frame); ++step)
+      cpu.step(wakes->step_s(), wakes->sources(double(step) * wakes->step_s()));
+    double d2 = 0, n2 = 0, foam_error = 0, foam_total = 0;
+    for (int j = 0; j < 128; ++j)
+      for (int i = 0; i < 128; ++i) {
+        const size_t at = (size_t(frame) * 128 + j) * 128 + i;
+        const double h = cpu.height(window.x + i, window.y + j), f = cpu.foam(window.x + i, window.y + j);
+        d2 += std::pow(height->data[at] - h, 2);
+        n2 += h * h;
+        foam_error = std::max(foam_error, std::abs(foam->data[at] - f));
+        foam_total += f;
+      }
+    EXPECT_GT(n2, 0.1) << "no wake in the window at frame " << frame;
+    EXPECT_LT(std::sqrt(d2 / n2), 1e-4) << "frame " << frame;
+    EXPECT_GT(foam_total, 10.0) << "no trail in the window at frame " << frame;
+    EXPECT_LT(foam_error, 1e-4) << "frame " << frame;
+  }
+}
+
+TEST(ExportWakes, ASceneWithoutVehiclesWritesNoWakes) {
+  TempDir dir;
+  auto r = run_process(shell_quote(LAGOON_BINARY) + " export --scene " + std::string(LAGOON_SOURCE_DIR) +
+                       "/scenes/default.json --out " + shell_quote((dir / "fields").string()) +
+                       " --set 'ocean.cascades=[{\"patch_size_m\":100,\"resolution\":64}]'");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_FALSE(fs::exists(dir / "fields" / "wakes_height.npy"));
+  std::ifstream meta_file(dir / "fields" / "meta.json");
+  EXPECT_FALSE(nlohmann::json::parse(meta_file).contains("wakes"));
+}
+
+}  // namespace
+}  // namespace lagoon::test
