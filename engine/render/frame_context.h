@@ -15,6 +15,7 @@ namespace lagoon::render {
 struct FrameSlot {
   vk::Buffer frame;            // gpu::FrameUniforms (shared/frame.h)
   vk::Buffer lights;           // gpu::PointLightGpu[kMaxLights]
+  vk::Buffer sediment;         // gpu::SedimentHeader, then gpu::SedimentPuffGpu[LAGOON_MAX_SEDIMENT_PUFFS]
   vk::Buffer surface_indices;  // the clipmap cells drawn for this camera (render/surface_grid.h)
   uint32_t surface_index_count = 0;
   vk::GpuTimer timer;

@@ -32,6 +32,7 @@ OceanShading ocean_shading(const ocean::GpuOcean& ocean) {
     variance += ocean::height_variance(ocean.spectra()[c]);
   }
   const double sigma = std::sqrt(variance);
+  out.significant_height_m = float(4.0 * sigma);
   out.bound = {.horizontal_m = float(6.0 * sigma * ocean.params().choppiness + 1.0),
                .vertical_m = float(6.0 * sigma + 1.0)};
   const double last_k = ocean::cascade_bands(ocean.params())[drawn - 1].k_max;
@@ -68,7 +69,11 @@ gpu::FrameUniforms frame_uniforms(const FrameInputs& in) {
       .grid = glm::vec4(in.grid.grid.x, in.grid.grid.y, 0.35f * in.reach_m, float(drawn)),
       .clipmap = in.grid.clipmap,
       .cascade_mss = in.shading.cascade_mss,
-      .glint = glm::vec4(in.shading.subgrid_mss, float(in.ocean.params().foam.threshold), 0, 0),
+      .glint = glm::vec4(in.shading.subgrid_mss, float(in.ocean.params().foam.threshold),
+                         scene.render.effects.shore_foam && scene.render.effects.foam
+                             ? in.shading.significant_height_m
+                             : 0.0f,
+                         0),
       .post = glm::vec4(scene.render.exposure, scene.render.gamma, float(curve.m), float(curve.exponent)),
       .post2 = glm::vec4(float(curve.white), float(curve.world_adaptation),
                          scene.render.tone_map == scene::ToneMap::Clamp ? 0.0f : 1.0f, 0.0f),

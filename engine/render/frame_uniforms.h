@@ -16,9 +16,10 @@ namespace lagoon::render {
 
 // What the surface shader needs of the ocean's statistics; fixed with the ocean, so computed once.
 struct OceanShading {
-  glm::vec4 cascade_mss{0};  // mean square slope of each drawn cascade (ocean/slope_statistics.h)
-  float subgrid_mss = 0;     // ... of the waves shorter than the last drawn cascade, down to 1 cm
-  DisplacementBound bound;   // 6σ of the whole ocean's displacement plus a metre, for culling
+  glm::vec4 cascade_mss{0};        // mean square slope of each drawn cascade (ocean/slope_statistics.h)
+  float subgrid_mss = 0;           // ... of the waves shorter than the last drawn cascade, down to 1 cm
+  DisplacementBound bound;         // 6σ of the whole ocean's displacement plus a metre, for culling
+  float significant_height_m = 0;  // H_s = 4σ of the drawn cascades' height
 };
 OceanShading ocean_shading(const ocean::GpuOcean& ocean);
 

@@ -23,6 +23,9 @@ OceanRenderer::OceanRenderer(vk::Context& ctx) : ctx_(ctx), samplers_(Samplers::
     slot.lights =
         vk::Buffer::create(ctx, sizeof(gpu::PointLightGpu) * LAGOON_MAX_LIGHTS,
                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUsage::Upload, "point lights");
+    slot.sediment = vk::Buffer::create(
+        ctx, sizeof(gpu::SedimentHeader) + sizeof(gpu::SedimentPuffGpu) * LAGOON_MAX_SEDIMENT_PUFFS,
+        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUsage::Upload, "sediment");
     slot.timer = vk::GpuTimer(ctx, 32);
     slot.surface_indices =
         vk::Buffer::create(ctx, kClipmapMaxIndices * sizeof(uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT,
@@ -55,7 +58,10 @@ Result<void> OceanRenderer::init(const scene::Scene& scene) {
   auto wakes = WakesPass::create(ctx_, scene);
   if (!wakes) return wakes.error();
   wakes_ = std::move(*wakes);
-  fields_.emplace(SurfaceFields{ocean(), *wakes_});
+  auto sediment = VehicleSediment::create(scene);
+  if (!sediment) return sediment.error();
+  sediment_ = std::move(*sediment);
+  fields_.emplace(SurfaceFields{ocean(), *wakes_, !sediment_.empty()});
   refraction_ = std::make_unique<RefractionPass>(ctx_, *objects_, kHdrFormat, kDepthFormat);
   reflection_ = std::make_unique<ObjectsPass>(ctx_, *objects_, gpu::MeshMode::Mirrored, "reflection",
                                               kHdrFormat, kDepthFormat);
@@ -138,6 +144,7 @@ FrameContext OceanRenderer::begin_frame(VkCommandBuffer cmd, const scene::Scene&
   const uint32_t light_count =
       write_point_lights(scene, reinterpret_cast<gpu::PointLightGpu*>(slot.lights.mapped()));
   slot.lights.flush();
+  write_sediment(scene.time_s, slot);
   const CameraMatrices cam = camera_matrices(scene.camera, float(extent.width) / float(extent.height));
   const float reach = std::min(0.8f * scene.camera.far_m, 3000.0f);
   // Under the water the surface is seen through at least as much water as it is far away, and beyond the
@@ -180,6 +187,16 @@ void OceanRenderer::place_floating_objects(double time_s) {
   floating_->advance(time_s);
   for (const FloatingObjects::Pose& pose : floating_->poses())
     objects_->place(pose.object, pose.model_to_world);
+}
+
+void OceanRenderer::write_sediment(double time_s, FrameSlot& slot) const {
+  auto* header = reinterpret_cast<gpu::SedimentHeader*>(slot.sediment.mapped());
+  auto* puffs = reinterpret_cast<gpu::SedimentPuffGpu*>(header + 1);
+  if (sediment_.empty())
+    *header = {};
+  else
+    sediment_.write(time_s, header, puffs);
+  slot.sediment.flush();
 }
 
 void OceanRenderer::resize(VkExtent2D extent) {

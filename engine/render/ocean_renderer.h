@@ -30,6 +30,7 @@
 #include "render/samplers.h"
 #include "render/scene_objects.h"
 #include "render/surface_fields.h"
+#include "render/vehicle_sediment.h"
 #include "render/water_luts.h"
 #include "scene/scene.h"
 #include "vk/buffer.h"
@@ -115,6 +116,8 @@ class OceanRenderer {
   void resize(VkExtent2D extent);
   // Brings the floating objects to time_s and moves their meshes there.
   void place_floating_objects(double time_s);
+  // The sediment clouds at time_s into the slot's buffer (none without stirrers).
+  void write_sediment(double time_s, FrameSlot& slot) const;
   // The renderer's own colour and depth (and readback) for record(extent) and render().
   struct OwnTargets;
   const OwnTargets& own_targets(VkExtent2D extent);
@@ -139,6 +142,7 @@ class OceanRenderer {
   std::unique_ptr<ParticlesPass> particles_;
   std::unique_ptr<CameraMedium> camera_medium_;
   std::unique_ptr<FloatingObjects> floating_;
+  VehicleSediment sediment_;
   VkExtent2D extent_{};  // of the passes' targets
   std::unique_ptr<OwnTargets> own_;
   std::array<FrameSlot, kSlots> slots_;

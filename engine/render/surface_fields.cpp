@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "shared/sediment.h"
 #include "shared/surface.h"
 
 namespace lagoon::render {
@@ -27,6 +28,7 @@ std::vector<vk::SpecConstant> with_surface_field_specs(std::vector<vk::SpecConst
                                                        const SurfaceFields& fields) {
   own.push_back({LAGOON_SPEC_CASCADE_COUNT, fields.ocean.cascade_count()});
   own.push_back({LAGOON_SURFACE_SPEC_WAKES, fields.wakes.active() ? 1u : 0u});
+  own.push_back({LAGOON_SURFACE_SPEC_SEDIMENT, fields.sediment ? 1u : 0u});
   return own;
 }
 

@@ -2,7 +2,8 @@
 // (displacement, normal and Jacobian terms, one array element per cascade, LAGOON_MAX_CASCADES, the last
 // repeated) and the wakes' dynamic layer (passes/wakes_pass.h). Shared by every pass that draws or follows
 // the surface (from above, from below, its AOVs, the waterline, the caustics), so none of them can leave the
-// wakes out.
+// wakes out. Also whether the water carries sediment clouds (the frame's sediment buffer,
+// render/vehicle_sediment.h), which the shaders that look through the water draw.
 #pragma once
 #include <vector>
 
@@ -16,12 +17,14 @@ namespace lagoon::render {
 struct SurfaceFields {
   const ocean::GpuOcean& ocean;
   const WakesPass& wakes;
+  bool sediment = false;  // some vehicle can stir the floor: common/sediment.glsl compiled in
 };
 
 std::vector<vk::Binding> surface_field_bindings(const SurfaceFields& fields, const Samplers& samplers);
 
 // `own` with the constants the shaders that sum the fields take: the cascade count
-// (LAGOON_SPEC_CASCADE_COUNT) and whether the wakes are compiled in (LAGOON_SURFACE_SPEC_WAKES).
+// (LAGOON_SPEC_CASCADE_COUNT), whether the wakes are compiled in (LAGOON_SURFACE_SPEC_WAKES) and the
+// sediment (LAGOON_SURFACE_SPEC_SEDIMENT; shaders without it ignore the constant).
 std::vector<vk::SpecConstant> with_surface_field_specs(std::vector<vk::SpecConstant> own,
                                                        const SurfaceFields& fields);
 

@@ -91,6 +91,8 @@ void read_scene(ObjectReader& r, Scene& s) {
           "Hulls that follow a path (boats at the surface, AUVs at a depth); docs/physics.md, Vehicles.");
   r.block("wakes", s.wakes, read_wakes,
           "The dynamic wave layer the vehicles' hulls make their wakes in (docs/physics.md, Wakes).");
+  r.block("sediment", s.sediment, read_sediment,
+          "Sediment the vehicles stir up near the floor, drawn as turbidity (docs/physics.md, Sediment).");
   r.array("lights", s.lights, 0, LAGOON_MAX_LIGHTS, read_light,
           "Point lights, in addition to the sun and sky.");
   r.block("underwater", s.underwater, read_underwater,

@@ -37,6 +37,7 @@ struct RenderEffects {
   bool reflection = true;  // planar reflection of what is above the water (else the sky alone)
   bool refraction = true;  // the floor and submerged objects seen through the water, coloured by the LUTs
   bool foam = true;
+  bool shore_foam = true;  // a band of foam where the water is too shallow for the waves (shores, hulls)
   bool caustics = true;    // the sun focused by the waves on the floor and submerged objects
   bool particles = true;   // suspended particles, seen by a camera under the water
   bool shafts = false;     // light shafts: the sun's focused beams in the water (costly on a CPU device)
@@ -146,6 +147,23 @@ struct Wakes {
   float foam_lifetime_s = 15.f;  // a foam trail fades to 5 % in this time
 };
 
+// Sediment stirred up from the floor by the vehicles (docs/physics.md, Sediment): Gaussian clouds that
+// drift, spread and settle, drawn as turbidity.
+struct Sediment {
+  bool enabled = true;                    // vehicles near the floor stir it up
+  float release_height_m = 1.5f;          // a hull's lowest point closer to the floor than this stirs it
+  float release_g_per_s = 10.f;           // at the floor, falling linearly to 0 at release_height_m
+  float rise_m = 0.8f;                    // height of a new cloud's centre above the floor
+  float radius_m = 0.5f;                  // a new cloud's standard deviation
+  float settling_mps = 0.01f;             // the particles' settling velocity
+  float diffusivity_m2_s = 0.005f;        // turbulent diffusivity that spreads the clouds
+  glm::vec2 current_mps{0.f, 0.f};        // drift (x, z)
+  float interval_s = 1.f;                 // one cloud per stirring vehicle per interval
+  float max_age_s = 600.f;                // older clouds are dropped
+  float attenuation_m2_per_g = 0.4f;      // mass-specific beam attenuation of the particles
+  glm::vec3 colour{0.55f, 0.47f, 0.36f};  // their albedo, linear RGB
+};
+
 struct PointLight {
   glm::vec3 position{0.f, 5.f, 0.f};
   glm::vec3 colour{1.f, 0.9f, 0.7f};  // linear RGB
@@ -161,6 +179,7 @@ struct Scene {
   std::vector<Object> objects;
   std::vector<Vehicle> vehicles;
   Wakes wakes;
+  Sediment sediment;
   std::vector<PointLight> lights;
   ocean::OceanParams ocean;
   optics::WaterParams water;  // water.table, seafloor.texture/file and objects[].file, when relative, are

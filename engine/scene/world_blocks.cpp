@@ -1,8 +1,11 @@
 #include "scene/world_blocks.h"
 
+#include <cmath>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include "shared/sediment.h"
 
 namespace lagoon::scene {
 namespace {
@@ -14,6 +17,12 @@ void read_effects(ObjectReader& r, RenderEffects& e) {
          "The floor and submerged objects seen through the surface, coloured by the water LUTs; false = "
          "the water's own colour only.");
   r.flag("foam", e.foam, "Whitecaps from ocean.foam; false hides them.");
+  r.flag(
+      "shore_foam", e.shore_foam,
+      "Foam where the floor or an object meets the surface (a shore, a hull, a buoy): waves break where "
+      "the water is shallower than 1.25 times their significant height (breaker index 0.8, docs/physics.md, "
+      "Shore foam), so the band widens with the waves and on gentle slopes. Needs refraction (the depth "
+      "under the surface comes from the refraction pass) and foam.");
   r.flag(
       "caustics", e.caustics,
       "The sun focused by the displaced surface onto the floor and submerged objects, from above and below "
@@ -181,6 +190,42 @@ void read_wakes(ObjectReader& r, Wakes& w) {
            "have left it anyway.");
   r.number("foam_lifetime_s", w.foam_lifetime_s, Bounds::above_up_to(0, 3600), "s",
            "The vehicles' foam trails fade to 5 % (e^-3) of their coverage in this time.");
+}
+
+void read_sediment(ObjectReader& r, Sediment& s) {
+  r.flag("enabled", s.enabled,
+         "Vehicles that pass near the floor stir up sediment; needs the slope floor (`seafloor.type` "
+         "\"slope\"), whose heights are known on the CPU.");
+  r.number("release_height_m", s.release_height_m, Bounds::between(0, 100), "m",
+           "A hull whose lowest point (or, submerged, its propeller wash there) comes closer to the floor "
+           "than this stirs it up; 0 = never.");
+  r.number("release_g_per_s", s.release_g_per_s, Bounds::between(0, 1e6), "g/s",
+           "Mass stirred up per second by a hull touching the floor, falling linearly to 0 at "
+           "release_height_m.");
+  r.number("rise_m", s.rise_m, Bounds::between(0, 100), "m",
+           "How high above the floor the wash throws a new cloud (its centre).");
+  r.number("radius_m", s.radius_m, Bounds::above_up_to(0, 100), "m",
+           "A new cloud's size: the standard deviation of its Gaussian.");
+  r.number("settling_mps", s.settling_mps, Bounds::between(0, 10), "m/s",
+           "The particles' settling velocity: Stokes' law gives ~0.01 m/s for fine sand (0.1 mm), ~0.001 "
+           "for silt (0.03 mm). The water clears once the clouds have sunk to the floor.");
+  r.number("diffusivity_m2_s", s.diffusivity_m2_s, Bounds::between(0, 100), "m²/s",
+           "Turbulent diffusivity K: a cloud's variance grows by 2 K per second.");
+  r.vec2("current_mps", s.current_mps, "m/s", "The water's drift (x, z) that carries the clouds.");
+  r.rule("current_mps", std::abs(s.current_mps.x) <= 20 && std::abs(s.current_mps.y) <= 20,
+         "each component within ±20 m/s", "tidal currents reach a few m/s; give the drift in m/s");
+  r.number("interval_s", s.interval_s, Bounds::between(0.05, 60), "s",
+           "A stirring vehicle releases one cloud per interval; shorter is smoother and costs more clouds "
+           "(the frame draws the " +
+               std::to_string(LAGOON_MAX_SEDIMENT_PUFFS) + " densest).");
+  r.number("max_age_s", s.max_age_s, Bounds::between(1, 86400), "s",
+           "Clouds older than this are dropped; at the defaults they have settled long before.");
+  r.number("attenuation_m2_per_g", s.attenuation_m2_per_g, Bounds::between(0, 100), "m²/g",
+           "Beam attenuation per gram of suspended sediment: 0.1-1 m²/g for mineral particles of a few "
+           "micrometres to tens (so 10 g/m³ at 0.4 m²/g is 4 per metre).");
+  r.vec3("colour", s.colour, "[r, g, b]", Bounds::between(0, 1), "",
+         "Albedo of the particles (linear RGB): the light a cloud scatters toward the camera is this times "
+         "the light at its depth.");
 }
 
 void read_object(ObjectReader& r, Object& o) {

@@ -30,14 +30,22 @@ layout(location = 0) out vec4 out_colour;
 #include "common/caustics.glsl"
 #include "common/underwater.glsl"
 #include "common/underwater_lamps.glsl"
+#include "common/sediment.glsl"
+#include "common/shore_foam.glsl"
 
 // The light leaving the water towards the viewer below the surface, in white units: eq. 22 with the floor
 // point C seen along the refracted ray, r and h measured along that ray (docs/optics.md), or the deep-water
 // colour where there is no floor within the LUT's depth. `lamps`: what the point lights under the water add
 // to it, in white units (not relative to the sun), the floor lit as if horizontal (no normals under water).
-vec3 water_radiance(vec3 n, vec3 v, out vec3 lamps) {
+// `seen_m`: how far along the refracted ray the light comes from (the floor, or the LUT's depth); `depth_m`:
+// the still water's depth there, to the floor or a submerged object (1e6 where none is seen).
+vec3 water_radiance(vec3 n, vec3 v, out vec3 lamps, out float seen_m, out float depth_m) {
   lamps = vec3(0.0);
+  depth_m = 1e6;
   vec3 deep = frame.water_deep.rgb;
+  vec3 t = refract(-v, n, 1.0 / frame.sun_dir.w);
+  float down = max(-t.y, 0.05);
+  seen_m = frame.lut.y / down;
   if (frame.lut.z < 0.5) return deep;
   vec2 screen_uv = gl_FragCoord.xy * frame.screen.zw;
   // Refraction offsets the lookup with the slope; keep it undistorted when the offset lands on something in
@@ -53,9 +61,9 @@ vec3 water_radiance(vec3 n, vec3 v, out vec3 lamps) {
   vec4 c = frame.inv_view_proj * vec4(uv.x * 2.0 - 1.0, 1.0 - uv.y * 2.0, depth, 1.0);
   vec3 floor_point = c.xyz / c.w;
   float h = max(v_world.y - floor_point.y, 0.0);
-  vec3 t = refract(-v, n, 1.0 / frame.sun_dir.w);
-  float down = max(-t.y, 0.05);
   float l = h / down;
+  seen_m = l;
+  depth_m = max(-floor_point.y, 0.0);  // below the mean level: breaking depends on the still-water depth
   float r = l * sqrt(max(1.0 - t.y * t.y, 0.0));
   vec2 lut_uv = vec2(sqrt(clamp(r / frame.lut.x, 0.0, 1.0)), sqrt(clamp(h / frame.lut.y, 0.0, 1.0)));
   vec4 t0 = texture(lut_t0, lut_uv);
@@ -91,7 +99,10 @@ void main() {
   float glint = (shininess + 2.0) / 8.0 * pow(max(dot(n, h), 0.0), shininess) *
                 fresnel_dielectric(dot(h, v), ior) * max(dot(n, l), 0.0);
   vec3 lamps;
-  vec3 below = water_radiance(n, v, lamps) * frame.lut.w + lamps;
+  float seen_m, depth_m;
+  vec3 below = water_radiance(n, v, lamps, seen_m, depth_m) * frame.lut.w + lamps;
+  foam = max(foam, shore_foam(depth_m));
+  below = sediment_veil(below, v_world, refract(-v, n, 1.0 / ior), seen_m, true);
   vec3 surface = fresnel * reflected + glint * frame.sun_irradiance.rgb + (1.0 - fresnel) * below;
   // Point lights: Blinn-Phong highlights on the water (seed 001), same lobe as the sun's.
   for (int i = 0; i < int(frame.lights.x); ++i) {

@@ -9,7 +9,8 @@
 // below asin(1/n), 48.6° for n = 1.333) the sky and sun come through, refracted and compressed, their radiance
 // raised by n² (radiance/n² is invariant across the boundary), and the objects above the water
 // (common/snell_window.glsl) in front of the sky; beyond it total internal reflection mirrors
-// the water below. Then the water between the surface and the camera (common/underwater.glsl).
+// the water below. Then the water between the surface and the camera (common/underwater.glsl) and the
+// sediment clouds in it (common/sediment.glsl).
 layout(std140, binding = LAGOON_SURFACE_BIND_FRAME) uniform Frame { FrameUniforms frame; };
 layout(binding = LAGOON_SURFACE_BIND_NORMAL_JACOBIAN) uniform sampler2DArray normal_jacobian[LAGOON_MAX_CASCADES];
 layout(binding = LAGOON_SURFACE_BIND_JACOBIAN_TERMS) uniform sampler2DArray jacobian_terms[LAGOON_MAX_CASCADES];
@@ -28,6 +29,7 @@ layout(location = 0) out vec4 out_colour;
 #include "common/caustics.glsl"
 #include "common/light_shafts.glsl"
 #include "common/snell_window.glsl"
+#include "common/sediment.glsl"
 
 vec3 mirrored_below(vec3 r) {
   float down = max(-r.y, 0.02);
@@ -75,5 +77,6 @@ void main() {
                       (underwater_added(d, 0.5 * (camera_depth + max(-v_world.y, 0.0)), -v.y) +
                        light_shafts(eye, -v, d, ivec2(gl_FragCoord.xy))) * frame.lut.w,
                   vec3(0.0));
+  surface = sediment_veil(surface, eye, -v, d, frame.water_volume.w > 0.5);
   out_colour = vec4(display_encode(frame, surface), 1.0);
 }

@@ -22,6 +22,7 @@ layout(std430, binding = LAGOON_SURFACE_BIND_LIGHTS) readonly buffer Lights { Po
 #include "common/caustics.glsl"
 #include "common/underwater_lamps.glsl"
 #include "common/light_shafts.glsl"
+#include "common/sediment.glsl"
 
 // Forward scattering: the light from a target that was scattered into the phase function's forward peak
 // arrives spread over a cone around the line of sight. Its share is the table's blur (optics/underwater.h);
@@ -80,6 +81,7 @@ void main() {
     if (kUnderwaterLamps)  // compiled out without lights (shared/surface.h)
       radiance += albedo.rgb * lamp_irradiance(hit, n) * (volume ? underwater_transmittance(d) : vec3(1.0));
   }
+  radiance = sediment_veil(radiance, eye, dir, d, volume);
   gl_FragDepth = hit_something ? depth : 1.0;
   radiance = max(radiance, vec3(0.0));  // shafts darken where the caustics do, never below black
   out_colour = vec4(display_encode(frame, radiance), 1.0);

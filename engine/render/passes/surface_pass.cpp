@@ -4,6 +4,7 @@
 
 #include "lagoon_shaders/shaders.h"
 #include "render/surface_fields.h"
+#include "shared/sediment.h"
 #include "shared/surface.h"
 #include "vk/rendering.h"
 
@@ -42,6 +43,7 @@ void SurfacePass::record(const FrameContext& frame, const Inputs& in, vk::Target
       vk::bind(LAGOON_SURFACE_BIND_LUT_T0, sampled(luts_.t0, samplers_.clamp)),
       vk::bind(LAGOON_SURFACE_BIND_LUT_T1, sampled(luts_.t1, samplers_.clamp)),
       vk::bind(LAGOON_SURFACE_BIND_LIGHTS, frame.slot.lights),
+      vk::bind(LAGOON_SURFACE_BIND_SEDIMENT, frame.slot.sediment),
       vk::bind(LAGOON_SURFACE_BIND_CAUSTICS, sampled(in.caustics, samplers_.clamp)),
       vk::bind(LAGOON_SURFACE_BIND_UW_TARGET, sampled(luts_.uw_target, samplers_.clamp)),
       vk::bind(LAGOON_SURFACE_BIND_UW_DOWN, sampled(luts_.uw_down, samplers_.clamp)),

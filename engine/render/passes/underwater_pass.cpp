@@ -2,6 +2,7 @@
 
 #include "lagoon_shaders/shaders.h"
 #include "render/surface_fields.h"
+#include "shared/sediment.h"
 #include "shared/surface.h"
 #include "vk/rendering.h"
 
@@ -14,15 +15,17 @@ UnderwaterPass::UnderwaterPass(vk::Context& ctx, const SurfaceFields& fields, co
     const std::vector<vk::SpecConstant> spec{{LAGOON_UNDERWATER_SPEC_SHAFTS, shafts}};
     // Every pixel, writing the depth of what it shows (the far plane where it shows only water).
     for (uint32_t lamps = 0; lamps < 2; ++lamps)
-      medium_[shafts][lamps] =
-          vk::GraphicsPipeline::create(ctx, {.vertex = &shaders::render_fullscreen_vert,
-                                             .fragment = &shaders::render_underwater_medium_frag,
-                                             .color_formats = {color_format},
-                                             .depth_format = depth_format,
-                                             .depth_test = true,
-                                             .depth_write = true,
-                                             .depth_compare = VK_COMPARE_OP_ALWAYS,
-                                             .spec = {spec[0], {LAGOON_SURFACE_SPEC_LAMPS, lamps}}});
+      medium_[shafts][lamps] = vk::GraphicsPipeline::create(
+          ctx, {.vertex = &shaders::render_fullscreen_vert,
+                .fragment = &shaders::render_underwater_medium_frag,
+                .color_formats = {color_format},
+                .depth_format = depth_format,
+                .depth_test = true,
+                .depth_write = true,
+                .depth_compare = VK_COMPARE_OP_ALWAYS,
+                .spec = {spec[0],
+                         {LAGOON_SURFACE_SPEC_LAMPS, lamps},
+                         {LAGOON_SURFACE_SPEC_SEDIMENT, fields.sediment ? 1u : 0u}}});
     // The surface mesh with either winding: from below its triangles face away from the camera.
     surface_[shafts] =
         vk::GraphicsPipeline::create(ctx, {.vertex = &shaders::render_ocean_surface_vert,
@@ -55,11 +58,13 @@ void UnderwaterPass::record(const FrameContext& frame, const Inputs& in, vk::Tar
       vk::bind(LAGOON_SURFACE_BIND_REFRACTION_DEPTH, sampled(in.refraction_depth, samplers_.nearest)));
   medium.push_back(vk::bind(LAGOON_SURFACE_BIND_CAUSTICS, sampled(in.caustics, samplers_.clamp)));
   medium.push_back(vk::bind(LAGOON_SURFACE_BIND_LIGHTS, frame.slot.lights));
+  medium.push_back(vk::bind(LAGOON_SURFACE_BIND_SEDIMENT, frame.slot.sediment));
   const size_t shafts = frame.scene.render.effects.shafts ? 1 : 0;
   vk::draw(frame.cmd, medium_[shafts][frame.light_count > 0 ? 1 : 0], medium, nullptr, 0, 3);
   std::vector<vk::Binding> surface = table_bindings(frame);
   surface.push_back(vk::bind(LAGOON_SURFACE_BIND_CAUSTICS, sampled(in.caustics, samplers_.clamp)));
   surface.push_back(vk::bind(LAGOON_SURFACE_BIND_WINDOW, sampled(in.window, samplers_.clamp)));
+  surface.push_back(vk::bind(LAGOON_SURFACE_BIND_SEDIMENT, frame.slot.sediment));
   for (vk::Binding& b : surface_field_bindings(fields_, samplers_)) surface.push_back(b);
   vk::draw_indexed(frame.cmd, surface_[shafts], surface, frame.slot.surface_indices.handle(),
                    frame.slot.surface_index_count);

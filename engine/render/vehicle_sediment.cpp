@@ -1,0 +1,77 @@
+#include "render/vehicle_sediment.h"
+
+#include <algorithm>
+#include <string>
+
+#include "gltf/gltf_loader.h"
+#include "physics/waypoint_path.h"
+#include "render/seafloor.h"
+
+namespace lagoon::render {
+namespace {
+
+std::vector<glm::dvec2> waypoints(const scene::VehiclePath& path) {
+  std::vector<glm::dvec2> out;
+  for (const glm::vec2& w : path.waypoints) out.emplace_back(w);
+  return out;
+}
+
+}  // namespace
+
+Result<VehicleSediment> VehicleSediment::create(const scene::Scene& scene) {
+  VehicleSediment out;
+  const scene::Sediment& s = scene.sediment;
+  if (!s.enabled || scene.vehicles.empty() || scene.seafloor.type != scene::SeafloorType::Slope) return out;
+  std::vector<physics::StirrerBottom> stirrers;
+  for (size_t v = 0; v < scene.vehicles.size(); ++v) {
+    const scene::Vehicle& vehicle = scene.vehicles[v];
+    auto model = gltf::load_gltf(vehicle.file);
+    if (!model) return make_error("vehicles[" + std::to_string(v) + "].file: " + model.error().message);
+    // The hull's lowest point below its origin; the origin at the mean level for a surface hull (its heave
+    // of a few decimetres is left out), at depth_m for a submerged one.
+    const double bottom = double(model->bounds_min.y) * double(vehicle.scale) - double(vehicle.depth_m);
+    physics::WaypointPath path(waypoints(vehicle.path), vehicle.path.loop, vehicle.path.speed_mps,
+                               vehicle.path.start_m);
+    stirrers.push_back([path, bottom](double t) {
+      const glm::dvec2 p = path.at(t).position;
+      return glm::dvec3(p.x, bottom, p.y);
+    });
+  }
+  const scene::Seafloor floor = scene.seafloor;
+  out.cloud_.emplace(
+      physics::SedimentParams{.release_height_m = s.release_height_m,
+                              .release_g_per_s = s.release_g_per_s,
+                              .rise_m = s.rise_m,
+                              .radius_m = s.radius_m,
+                              .settling_mps = s.settling_mps,
+                              .diffusivity_m2_s = s.diffusivity_m2_s,
+                              .current_mps = glm::dvec2(s.current_mps),
+                              .interval_s = s.interval_s,
+                              .max_age_s = s.max_age_s},
+      [floor](glm::dvec2 xz) { return double(slope_depth(floor, glm::vec2(xz))); }, std::move(stirrers));
+  out.attenuation_ = s.attenuation_m2_per_g;
+  out.colour_ = s.colour;
+  return out;
+}
+
+std::vector<physics::SedimentPuff> VehicleSediment::puffs(double time_s) const {
+  return cloud_ ? cloud_->puffs(time_s) : std::vector<physics::SedimentPuff>{};
+}
+
+uint32_t VehicleSediment::write(double time_s, gpu::SedimentHeader* header,
+                                gpu::SedimentPuffGpu* puffs) const {
+  std::vector<physics::SedimentPuff> all = this->puffs(time_s);
+  // The most mass in the water first; past the buffer's capacity the faintest clouds are left out.
+  const size_t kept = std::min<size_t>(all.size(), LAGOON_MAX_SEDIMENT_PUFFS);
+  std::partial_sort(all.begin(), all.begin() + long(kept), all.end(),
+                    [](const auto& a, const auto& b) { return a.suspended_g > b.suspended_g; });
+  for (size_t i = 0; i < kept; ++i) {
+    const physics::SedimentPuff& p = all[i];
+    puffs[i] = {.centre_sigma = glm::vec4(glm::vec3(p.centre), float(p.sigma)),
+                .strength = glm::vec4(float(p.mass_g * attenuation_), 0, 0, 0)};
+  }
+  header->colour = glm::vec4(colour_, float(kept));
+  return uint32_t(kept);
+}
+
+}  // namespace lagoon::render

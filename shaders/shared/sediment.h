@@ -1,0 +1,33 @@
+// Sediment stirred up from the floor (issue 14, docs/physics.md "Sediment"): the clouds the frame draws as
+// turbidity (compute/physics/sediment.h makes them; shaders/common/sediment.glsl draws them), in a storage
+// buffer the host writes each frame. The optics both sides evaluate is in shared/sediment_math.h.
+#ifndef LAGOON_SHARED_SEDIMENT_H
+#define LAGOON_SHARED_SEDIMENT_H
+#include "shared/interop.h"
+
+// Clouds the frame draws: each costs every water pixel a few exponentials, so the host keeps the densest.
+#define LAGOON_MAX_SEDIMENT_PUFFS 64
+// The buffer, in the surface shaders' set (shared/surface.h numbering).
+#define LAGOON_SURFACE_BIND_SEDIMENT 18
+// Specialisation constant of the shaders that include common/sediment.glsl: the clouds compiled in (1) or
+// not (nothing in the scene stirs the floor); lavapipe pays for a loop it skips.
+#define LAGOON_SURFACE_SPEC_SEDIMENT 5
+
+LAGOON_GPU_BEGIN
+// One cloud: an isotropic Gaussian of sediment (physics/sediment.h, SedimentPuff).
+struct SedimentPuffGpu {
+  vec4 centre_sigma;  // xyz world m, w = standard deviation m
+  vec4 strength;  // x = mass x mass-specific attenuation (m²): its optical depth integrated over a plane;
+                  // yzw unused
+};
+
+struct SedimentHeader {
+  vec4 colour;  // rgb = the particles' albedo (linear), w = number of puffs that follow
+};
+LAGOON_GPU_END
+
+#ifdef __cplusplus
+LAGOON_CHECK_SIZE(SedimentPuffGpu, 32);
+LAGOON_CHECK_SIZE(SedimentHeader, 16);
+#endif
+#endif

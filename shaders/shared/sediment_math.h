@@ -1,0 +1,49 @@
+// The optics of a sediment cloud, written once for the GPU (float; shaders/common/sediment.glsl) and the
+// CPU (double; compute/physics/sediment.cpp). No include guard: the includer defines sed_real, sed_real2,
+// sed_real3 and makes exp, sqrt, abs, max, dot visible (GLSL has them).
+//
+// A cloud is an isotropic Gaussian of mass m (g) and standard deviation σ whose particles attenuate light by
+// c* (m²/g) per gram: its attenuation coefficient at p is m c* N(p; centre, σ) with N the normal density.
+// Along a ray o + t d (|d| = 1), 0 <= t <= L, the optical depth is closed-form: the Gaussian restricted to
+// the line is a 1-D normal in t around the closest approach t*, scaled by the 2-D normal of the miss distance
+// r,
+//   τ = m c* / (2π σ²) · exp(-r² / 2σ²) · [Φ((L - t*)/σ) - Φ(-t*/σ)],
+// and the attenuation-weighted mean t (where along the ray the cloud's light comes from) is
+//   t̄ = t* + σ (φ(-t*/σ) - φ((L - t*)/σ)) / [Φ((L - t*)/σ) - Φ(-t*/σ)].
+
+// erf by Abramowitz & Stegun 7.1.26 (|error| <= 1.5e-7): GLSL has none.
+LAGOON_FN sed_real sed_erf(sed_real x) {
+  sed_real s = x < sed_real(0) ? sed_real(-1) : sed_real(1);
+  sed_real a = abs(x);
+  sed_real t = sed_real(1) / (sed_real(1) + sed_real(0.3275911) * a);
+  sed_real poly =
+      t * (sed_real(0.254829592) +
+           t * (sed_real(-0.284496736) +
+                t * (sed_real(1.421413741) + t * (sed_real(-1.453152027) + t * sed_real(1.061405429)))));
+  return s * (sed_real(1) - poly * exp(-a * a));
+}
+
+// The standard normal's distribution function and density.
+LAGOON_FN sed_real sed_cdf(sed_real x) {
+  return sed_real(0.5) + sed_real(0.5) * sed_erf(x * sed_real(0.7071067811865476));
+}
+LAGOON_FN sed_real sed_pdf(sed_real x) {
+  return sed_real(0.3989422804014327) * exp(sed_real(-0.5) * x * x);
+}
+
+// A cloud's optical depth along the ray and the ray's distance weighted by it (τ, τ t̄); (0, 0) for a ray
+// that passes more than 4.5 σ away (below e^-10 of the peak). `strength` = m c* (m²).
+LAGOON_FN sed_real2 sed_ray(sed_real3 origin, sed_real3 dir, sed_real len, sed_real3 centre, sed_real sigma,
+                            sed_real strength) {
+  sed_real3 to = centre - origin;
+  sed_real t_star = dot(to, dir);
+  sed_real miss2 = max(dot(to, to) - t_star * t_star, sed_real(0));
+  sed_real s2 = sigma * sigma;
+  if (miss2 > sed_real(20) * s2) return sed_real2(0);
+  sed_real a = -t_star / sigma, b = (len - t_star) / sigma;
+  sed_real share = max(sed_cdf(b) - sed_cdf(a), sed_real(0));
+  sed_real tau = strength / (sed_real(6.283185307179586) * s2) * exp(sed_real(-0.5) * miss2 / s2) * share;
+  sed_real moment = tau * t_star + strength / (sed_real(6.283185307179586) * s2) *
+                                       exp(sed_real(-0.5) * miss2 / s2) * sigma * (sed_pdf(a) - sed_pdf(b));
+  return sed_real2(tau, moment);
+}
