@@ -8,6 +8,7 @@
 
 #include "gltf/gltf_loader.h"
 #include "render/object_pose.h"
+#include "render/vehicle_path.h"
 
 namespace lagoon::render {
 namespace {
@@ -72,16 +73,6 @@ ocean::LocalHeightsOptions lattice_for(const physics::TriangleMesh& hull) {
   const int needed = int(std::ceil(4.0 * (radius / options.spacing_m + 1.0))) + 1;
   options.points_per_side = std::max(options.points_per_side, needed);
   return options;
-}
-
-std::vector<glm::dvec2> waypoints(const scene::VehiclePath& path) {
-  std::vector<glm::dvec2> out;
-  for (const glm::vec2& w : path.waypoints) out.emplace_back(w);
-  return out;
-}
-
-physics::WaypointPath vehicle_path(const scene::VehiclePath& path) {
-  return physics::WaypointPath(waypoints(path), path.loop, path.speed_mps, path.start_m);
 }
 
 }  // namespace

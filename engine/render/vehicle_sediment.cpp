@@ -4,19 +4,10 @@
 #include <string>
 
 #include "gltf/gltf_loader.h"
-#include "physics/waypoint_path.h"
 #include "render/seafloor.h"
+#include "render/vehicle_path.h"
 
 namespace lagoon::render {
-namespace {
-
-std::vector<glm::dvec2> waypoints(const scene::VehiclePath& path) {
-  std::vector<glm::dvec2> out;
-  for (const glm::vec2& w : path.waypoints) out.emplace_back(w);
-  return out;
-}
-
-}  // namespace
 
 Result<VehicleSediment> VehicleSediment::create(const scene::Scene& scene) {
   VehicleSediment out;
@@ -30,8 +21,7 @@ Result<VehicleSediment> VehicleSediment::create(const scene::Scene& scene) {
     // The hull's lowest point below its origin; the origin at the mean level for a surface hull (its heave
     // of a few decimetres is left out), at depth_m for a submerged one.
     const double bottom = double(model->bounds_min.y) * double(vehicle.scale) - double(vehicle.depth_m);
-    physics::WaypointPath path(waypoints(vehicle.path), vehicle.path.loop, vehicle.path.speed_mps,
-                               vehicle.path.start_m);
+    const physics::WaypointPath path = vehicle_path(vehicle.path);
     stirrers.push_back([path, bottom](double t) {
       const glm::dvec2 p = path.at(t).position;
       return glm::dvec3(p.x, bottom, p.y);
