@@ -4,14 +4,18 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
+#include <memory>
 #include <nlohmann/json.hpp>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "commands.h"
 #include "ocean/wave_query.h"
 #include "render/floating_objects.h"
+#include "render/wake_heights.h"
 #include "scene_args.h"
 
 namespace lagoon::cli {
@@ -117,6 +121,31 @@ int probe_object(const ParsedArgs& args, const scene::Scene& scene, double time)
   return kExitOk;
 }
 
+// The vehicles' wakes at time t around the points (render/wake_heights.h), as a frame at t computes them:
+// from wakes.history_s before. Null when the scene makes none or wakes.felt_by_bodies is false.
+Result<std::unique_ptr<render::WakeHeights>> probe_wakes(const scene::Scene& scene, double t,
+                                                         std::span<const glm::dvec2> points) {
+  if (!scene.wakes.felt_by_bodies || points.empty()) return std::unique_ptr<render::WakeHeights>();
+  auto hulls = render::VehicleWakes::create(scene);
+  if (!hulls) return hulls.error();
+  if (hulls->empty()) return std::unique_ptr<render::WakeHeights>();
+  glm::dvec2 centre(0.0);
+  for (const glm::dvec2& p : points) centre += p / double(points.size());
+  const long long first = hulls->first_step_for(t);
+  auto wakes = std::make_unique<render::WakeHeights>(std::move(*hulls), scene.wakes.bodies_resolution);
+  wakes->advance(t, centre, first);
+  return wakes;
+}
+
+// The sea's sample with the wakes added: their height, their slopes in the normal, their rate in the
+// vertical velocity (the layer moves the surface only vertically).
+void add_wake(ocean::WaveSample& s, const render::WakeHeights& wakes, glm::dvec2 p) {
+  const glm::dvec2 slope = glm::dvec2(-s.normal.x, -s.normal.z) / s.normal.y + wakes.slope(p);
+  s.height += wakes.height(p);
+  s.normal = glm::normalize(glm::dvec3(-slope.x, 1.0, -slope.y));
+  s.velocity.y += wakes.rate(p);
+}
+
 int run_probe(const ParsedArgs& args) {
   const auto time = parse_number(*args.get("time"));
   if (!time) {
@@ -168,13 +197,21 @@ int run_probe(const ParsedArgs& args) {
   auto scene = load_scene_from_args(args, "probe");
   if (!scene) return kExitFailure;
   ocean::WaveQuery query(scene->ocean);
-  const auto samples = query.sample(*time, points);
+  auto samples = query.sample(*time, points);
+  auto wakes = probe_wakes(*scene, *time, points);
+  if (!wakes) {
+    std::fprintf(stderr, "lagoon probe: %s\n", wakes.error().message.c_str());
+    return kExitFailure;
+  }
   for (size_t i = 0; i < samples.size(); ++i) {
-    const ocean::WaveSample& s = samples[i];
+    ocean::WaveSample& s = samples[i];
+    const double wake = *wakes ? (*wakes)->height(points[i]) : 0.0;
+    if (*wakes) add_wake(s, **wakes, points[i]);
     const nlohmann::json line{{"x", points[i].x},
                               {"z", points[i].y},
                               {"time_s", *time},
                               {"height_m", s.height},
+                              {"wake_height_m", wake},
                               {"normal", vec(s.normal)},
                               {"velocity_mps", vec(s.velocity)},
                               {"rest_position", {s.rest_position.x, s.rest_position.y}},
@@ -193,8 +230,9 @@ const Command& probe_command() {
           {.name = "probe",
            .summary =
                "Prints one JSON object per point: the wave height, normal and surface velocity at "
-               "(x, z) and time T (summed over all cascades, horizontal displacement inverted), and "
-               "the query's error bound. Or, with --object, one per frame: a floating object's or a "
+               "(x, z) and time T (summed over all cascades, horizontal displacement inverted, plus the "
+               "vehicles' wakes, also given alone as wake_height_m), and the query's error bound (of the "
+               "cascades' part). Or, with --object, one per frame: a floating object's or a "
                "vehicle's pose "
                "(model origin, orientation as a quaternion w, x, y, z), centre of mass and velocities, "
                "simulated from time 0. Computed on the CPU; needs no Vulkan device.",

@@ -97,6 +97,11 @@ Result<std::unique_ptr<FloatingObjects>> FloatingObjects::create(
     if (!hull) return make_error(hull.error().message + ", or run it submerged (depth_m > 0)");
     out->vehicle_hulls_.push_back(std::move(*hull));
   }
+  if (scene.wakes.felt_by_bodies && !(out->hulls_.empty() && out->vehicle_hulls_.empty())) {
+    auto wakes = VehicleWakes::create(scene);
+    if (!wakes) return wakes.error();
+    if (!wakes->empty()) out->wakes_ = std::make_unique<WakeHeights>(*wakes, scene.wakes.bodies_resolution);
+  }
   out->reset();
   return out;
 }
@@ -139,21 +144,43 @@ void FloatingObjects::advance(double time_s) {
   if (target < steps_) reset();
   for (; steps_ < target; ++steps_) {
     const double t = double(steps_) * kStepS;
+    if (wakes_) wakes_->advance(t, centre());
+    const WakeHeights* wakes = wakes_.get();
     for (Body& b : bodies_) {
       const glm::dvec3 at = b.body.state().position;
       b.heights->update(t, glm::dvec2(at.x, at.z));
       const ocean::LocalHeights& heights = *b.heights;
-      b.body.step(kStepS, [&heights](double x, double z) { return heights.height(x, z); });
+      b.body.step(kStepS, [&heights, wakes](double x, double z) {
+        return heights.height(x, z) + (wakes ? wakes->height({x, z}) : 0.0);
+      });
     }
-    for (Vehicle& v : vehicles_) {
+    for (size_t i = 0; i < vehicles_.size(); ++i) {
+      Vehicle& v = vehicles_[i];
       if (v.heights) {
         const glm::dvec3 at = v.motion.model_origin();
         v.heights->update(t, glm::dvec2(at.x, at.z));
       }
       const ocean::LocalHeights* heights = v.heights.get();
-      v.motion.step(t, kStepS, [heights](double x, double z) { return heights->height(x, z); });
+      v.motion.step(t, kStepS, [heights, wakes, i](double x, double z) {
+        return heights->height(x, z) + (wakes ? wakes->height({x, z}, i) : 0.0);
+      });
     }
   }
+}
+
+glm::dvec2 FloatingObjects::centre() const {
+  glm::dvec2 sum(0.0);
+  double count = 0;
+  for (const Body& b : bodies_) {
+    sum += glm::dvec2(b.body.state().position.x, b.body.state().position.z);
+    ++count;
+  }
+  for (const Vehicle& v : vehicles_)
+    if (v.heights) {
+      sum += glm::dvec2(v.motion.model_origin().x, v.motion.model_origin().z);
+      ++count;
+    }
+  return count > 0 ? sum / count : sum;
 }
 
 std::vector<FloatingObjects::Pose> FloatingObjects::poses() const {

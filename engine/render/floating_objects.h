@@ -1,8 +1,10 @@
 // What moves in the scene (docs/physics.md): the floating objects (objects[].floating), each a rigid body
 // (physics/floating_body.h) on the sea's heights around it (ocean/local_heights.h), and the vehicles
 // (vehicles[], physics/vehicle_motion.h), stepped together at a fixed 120 Hz from time 0, when they are at
-// rest where the scene puts them. advance() brings them to a frame's time, simulating again from 0 when
-// asked for an earlier one, so a frame at time t shows the same poses however it was reached.
+// rest where the scene puts them. With wakes.felt_by_bodies they ride the vehicles' wakes too
+// (render/wake_heights.h), a vehicle every wake but its own. advance() brings them to a frame's time,
+// simulating again from 0 when asked for an earlier one, so a frame at time t shows the same poses however it
+// was reached.
 #pragma once
 #include <memory>
 #include <vector>
@@ -14,6 +16,7 @@
 #include "ocean/local_heights.h"
 #include "physics/floating_body.h"
 #include "physics/vehicle_motion.h"
+#include "render/wake_heights.h"
 #include "scene/scene.h"
 
 namespace lagoon::render {
@@ -40,6 +43,8 @@ class FloatingObjects {
   const physics::FloatingBody* body(size_t object) const;
   // The motion of vehicles[vehicle].
   const physics::VehicleMotion& vehicle(size_t vehicle) const { return vehicles_.at(vehicle).motion; }
+  // The wakes the bodies ride (render/wake_heights.h), or nullptr.
+  const WakeHeights* wakes() const { return wakes_.get(); }
 
  private:
   struct Body {
@@ -57,6 +62,8 @@ class FloatingObjects {
                   std::vector<ocean::CascadeSpectrum> spectra)
       : scene_(scene), ocean_(std::move(ocean)), spectra_(std::move(spectra)) {}
   void reset();
+  // Where the bodies' wake layer is centred: the mean position of what floats.
+  glm::dvec2 centre() const;
 
   scene::Scene scene_;
   ocean::OceanParams ocean_;
@@ -66,7 +73,8 @@ class FloatingObjects {
   std::shared_ptr<ocean::WaveQuery> sea_;  // shared by every body's LocalHeights: one evaluation per knot
   std::vector<Body> bodies_;
   std::vector<Vehicle> vehicles_;
-  long long steps_ = 0;  // taken since time 0
+  std::unique_ptr<WakeHeights> wakes_;  // null when the bodies do not feel the wakes
+  long long steps_ = 0;                 // taken since time 0
 };
 
 }  // namespace lagoon::render

@@ -33,7 +33,7 @@ Result<VehicleWakes> VehicleWakes::create(const scene::Scene& scene) {
     const glm::dvec3 lo = glm::dvec3(model->bounds_min) * double(vehicle.scale);
     const glm::dvec3 hi = glm::dvec3(model->bounds_max) * double(vehicle.scale);
     const double reach = submerged ? hi.y - lo.y : std::max(-lo.y, 0.0);
-    wakes.hulls_.push_back({vehicle_path(vehicle.path),
+    wakes.hulls_.push_back({v, vehicle_path(vehicle.path),
                             glm::dvec2(std::max(hi.z - lo.z, 1e-3) / 4, std::max(hi.x - lo.x, 1e-3) / 4),
                             reach * double(vehicle.wake_strength), submerged ? double(vehicle.depth_m) : 0.0,
                             submerged ? 0.0 : double(vehicle.foam_per_s)});

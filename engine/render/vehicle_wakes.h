@@ -21,6 +21,8 @@ class VehicleWakes {
   bool empty() const { return hulls_.empty(); }
   // The hulls on the water at time t (from their paths; their heave does not matter here).
   std::vector<ocean::WakeSource> sources(double t) const;
+  // The vehicle (index into the scene's vehicles) whose hull is sources(t)[source].
+  size_t vehicle_of(size_t source) const { return hulls_.at(source).vehicle; }
   const ocean::DynamicLayerParams& params() const { return params_; }
 
   // Where the window lies for `camera`: where it looks, the camera inside (its centre 0.35 of the window's
@@ -35,6 +37,7 @@ class VehicleWakes {
 
  private:
   struct Hull {
+    size_t vehicle;  // in the scene's vehicles
     physics::WaypointPath path;
     glm::dvec2 sigma;   // along, across
     double depression;  // m

@@ -137,14 +137,16 @@ struct Vehicle {
 // The dynamic wave layer (wakes; docs/physics.md, Wakes): linear waves on a square grid around the camera,
 // forced by the vehicles' hulls and added to the ocean.
 struct Wakes {
-  bool enabled = true;           // runs when some vehicle makes a wake
-  uint32_t resolution = 512;     // cells per side
-  float cell_size_m = 0.25f;     // so the window is resolution x cell_size_m wide
-  float damping_per_s = 0.02f;   // of every wave
-  float border_m = 16.f;         // width of the absorbing border at the window's edges
-  float step_s = 0.1f;           // the layer's time step
-  float history_s = 30.f;        // a frame's layer starts this long before it (or at 0)
-  float foam_lifetime_s = 15.f;  // a foam trail fades to 5 % in this time
+  bool enabled = true;               // runs when some vehicle makes a wake
+  uint32_t resolution = 512;         // cells per side
+  float cell_size_m = 0.25f;         // so the window is resolution x cell_size_m wide
+  float damping_per_s = 0.02f;       // of every wave
+  float border_m = 16.f;             // width of the absorbing border at the window's edges
+  float step_s = 0.1f;               // the layer's time step
+  float history_s = 30.f;            // a frame's layer starts this long before it (or at 0)
+  float foam_lifetime_s = 15.f;      // a foam trail fades to 5 % in this time
+  bool felt_by_bodies = true;        // floating bodies and surface vehicles ride the wakes
+  uint32_t bodies_resolution = 128;  // cells per side of the bodies' CPU layer (same window width)
 };
 
 // Sediment stirred up from the floor by the vehicles (docs/physics.md, Sediment): Gaussian clouds that

@@ -190,6 +190,17 @@ void read_wakes(ObjectReader& r, Wakes& w) {
            "have left it anyway.");
   r.number("foam_lifetime_s", w.foam_lifetime_s, Bounds::above_up_to(0, 3600), "s",
            "The vehicles' foam trails fade to 5 % (e^-3) of their coverage in this time.");
+  r.flag("felt_by_bodies", w.felt_by_bodies,
+         "Floating objects and surface vehicles ride the wakes (a vehicle every wake but its own), and "
+         "`lagoon probe --at` includes them; the layer then also runs on the CPU, around the bodies.");
+  r.power_of_two(
+      "bodies_resolution", w.bodies_resolution, 16, 1024, "cells",
+      "Cells per side of the bodies' layer, over the same window width as the picture's: coarser "
+      "cells leave out the shortest wake waves, which a hull averages out; its cost on the CPU grows "
+      "with the square.");
+  r.rule("bodies_resolution", w.bodies_resolution <= w.resolution, "<= resolution",
+         "got " + std::to_string(w.bodies_resolution) + " for a picture layer of " +
+             std::to_string(w.resolution) + " cells; the bodies' layer is at most as fine as the picture's");
 }
 
 void read_sediment(ObjectReader& r, Sediment& s) {

@@ -227,6 +227,25 @@ TEST(OceanCli, ProbeObjectPrintsAVehiclesPose) {
       << "a surface vehicle rides the water: " << r.output;
 }
 
+// Behind the harbour's boat the probe's heights include its wake (wakes.felt_by_bodies): the height is the
+// sea's plus wake_height_m, and the normal tilts with the wake's slopes.
+TEST(OceanCli, ProbeAtAPointIncludesTheWakes) {
+  const std::string harbour = std::string(LAGOON_SOURCE_DIR) + "/scenes/harbour.json";
+  const std::string args = " --time 12.5 --at 8,26";
+  auto with = lagoon("probe --scene " + harbour + args);
+  auto without = lagoon("probe --scene " + harbour + args + " --set wakes.felt_by_bodies=false");
+  ASSERT_EQ(with.exit_code, 0) << with.output;
+  ASSERT_EQ(without.exit_code, 0) << without.output;
+  const auto a = nlohmann::json::parse(with.output), b = nlohmann::json::parse(without.output);
+  const double wake = a["wake_height_m"].get<double>();
+  EXPECT_GT(std::abs(wake), 0.05) << "the boat's wake reaches the buoy by then: " << with.output;
+  EXPECT_EQ(b["wake_height_m"].get<double>(), 0.0);
+  EXPECT_NEAR(a["height_m"].get<double>(), b["height_m"].get<double>() + wake, 1e-9);
+  EXPECT_GT(std::abs(a["normal"][0].get<double>() - b["normal"][0].get<double>()) +
+                std::abs(a["normal"][2].get<double>() - b["normal"][2].get<double>()),
+            1e-3);
+}
+
 TEST(OceanCli, AVehicleWithoutAHullFailsNamingTheField) {
   const std::string harbour = std::string(LAGOON_SOURCE_DIR) + "/scenes/harbour.json";
   const std::string out = testing::TempDir() + "never.png";

@@ -1,0 +1,71 @@
+// The wakes under the hulls (issue 14, docs/physics.md "Wakes under the hulls"): the dynamic wave layer on
+// the CPU (ocean/dynamic_layer.h), stepped with the bodies, so a buoy rocks when a boat passes and a probe's
+// heights include the wakes. The picture's layer follows the camera; this one follows the bodies, over the
+// same window width with coarser cells (wakes.physics_resolution), so it holds the same waves without the
+// shortest ones, which a hull of several metres averages out anyway.
+//
+// One layer per wake-making vehicle: the layer is linear, so the sea's wakes are the sum of the layers, and a
+// vehicle's hull can be given every wake but its own (its own depression is the water it displaces, which its
+// buoyancy already counts). Between the layer's steps the heights are Hermite-interpolated from the height
+// and its rate at both ends, so the forces on a body do not jump at every step.
+#pragma once
+#include <complex>
+#include <cstddef>
+#include <glm/vec2.hpp>
+#include <limits>
+#include <memory>
+#include <vector>
+
+#include "ocean/dynamic_layer.h"
+#include "render/vehicle_wakes.h"
+
+namespace lagoon::render {
+
+class WakeHeights {
+ public:
+  static constexpr size_t kNoVehicle = std::numeric_limits<size_t>::max();
+
+  // Empty (no layers) when `wakes` is; `resolution` cells per side over the wakes' window width.
+  WakeHeights(VehicleWakes wakes, uint32_t resolution);
+
+  bool empty() const { return layers_.empty(); }
+  // Brings the layers to time t, their window centred on `centre` (world x, z). The layers step from
+  // `first_step` (the state at rest then); an earlier time than the last runs them again from there.
+  void advance(double t, glm::dvec2 centre, long long first_step = 0);
+
+  // At the last advance's time: the wakes' height at (x, z), leaving out vehicles[skip_vehicle]'s own; its
+  // slopes (dh/dx, dh/dz) and its rate dh/dt. Zero outside the window.
+  double height(glm::dvec2 p, size_t skip_vehicle = kNoVehicle) const;
+  glm::dvec2 slope(glm::dvec2 p) const;
+  double rate(glm::dvec2 p) const;
+
+  const ocean::DynamicLayerParams& params() const { return params_; }
+  long long steps_done() const { return steps_done_; }
+
+ private:
+  struct Layer {
+    size_t vehicle;
+    std::unique_ptr<ocean::DynamicLayerCpu> layer;
+    std::vector<std::complex<double>> before;  // (h, dh/dt) at step steps_done_ - 1, per storage index
+  };
+  // The sum of the layers but vehicles[skip]'s at the last advance's time, in window order (cell (i, j) of
+  // the window at i + n j), so a lookup is a few loads: the bodies ask for thousands of points a step.
+  struct View {
+    size_t skip;
+    std::vector<double> height, rate;
+  };
+  void restart(long long first_step);
+  void step_all(glm::dvec2 centre);
+  const View& view(size_t skip) const;
+  double lookup(const std::vector<double>& field, glm::dvec2 p) const;
+
+  VehicleWakes wakes_;
+  ocean::DynamicLayerParams params_;
+  std::vector<Layer> layers_;
+  std::vector<View> views_;    // skipping none, then each layer's vehicle
+  glm::ivec2 origin_{0};       // the window's first cell
+  long long steps_done_ = -1;  // the layers' state is at this step (the step before is in Layer::before)
+  long long first_step_ = 0;
+};
+
+}  // namespace lagoon::render
