@@ -16,6 +16,7 @@
 #include "camera_controller.h"
 #include "demo_options.h"
 #include "exit_codes.h"
+#include "helm.h"
 #include "imgui_layer.h"
 #include "ocean/wave_query.h"
 #include "optics/lut.h"
@@ -67,6 +68,11 @@ class Demo {
   void handle_input(float dt);
   void handle_keys(GLFWwindow* w, bool ctrl);
   CameraInput camera_input(GLFWwindow* w, bool ctrl) const;
+  HelmInput helm_input(GLFWwindow* w) const;
+  void next_helm();
+  void steer(double from_s, double dt);
+  void draw_helm_status() const;
+  void print_helm() const;
   void draw_ui();
   void draw_help();
   void draw_toolbar();
@@ -79,6 +85,7 @@ class Demo {
   void rebuild_after_edits();
   void apply_script(long long frame);
   void resize_window(const std::string& assignment, long long frame);
+  bool script_helm(const std::string& assignment, long long frame);
   void follow_camera_edit(const scene::Camera& before);
   void reset_to_file();
   void save_scene_to(const std::string& path);
@@ -99,6 +106,10 @@ class Demo {
   std::optional<CameraController> camera_;
   ParameterPanel panel_;
   KeyEdges keys_;
+  Helm helm_;
+  HelmInput helm_input_;                    // the arrow keys this frame
+  std::optional<HelmInput> scripted_helm_;  // a --script's helm.throttle / helm.rudder, held until changed
+  std::string vehicles_key_;                // the vehicles the renderer's tracks were made for
 
   // The loop's state.
   std::array<bool, render::OceanRenderer::kSlots> slot_used_{};  // a slot's timings are readable

@@ -80,6 +80,7 @@ void Demo::print_summary() const {
   std::printf("lagoon-demo: %lld frames at %ux%u on %s; median frame time %.1f ms\n", frame_,
               swapchain_->extent().width, swapchain_->extent().height, ctx_->device_info().name.c_str(),
               times[times.size() / 2]);
+  print_helm();
 }
 
 int run_demo(DemoOptions options) {

@@ -74,6 +74,7 @@ void Demo::update_ui(float dt) {
 
 // The scene at this frame's time: exactly 1/fps per frame in scripted runs, the wall clock otherwise.
 scene::Scene Demo::advance_time(float dt) {
+  const double from = time_s_;
   if (options_.frames) {
     time_s_ = t0_ + double(frame_) / options_.fps;
   } else if (!paused_) {
@@ -83,6 +84,7 @@ scene::Scene Demo::advance_time(float dt) {
   }
   step_once_ = false;
   time_s_ = std::min(time_s_, 86400.0);
+  steer(from, std::max(time_s_ - from, 0.0));
   scene::Scene frame_scene = scene_;
   frame_scene.time_s = float(time_s_);
   return frame_scene;

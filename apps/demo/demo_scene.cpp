@@ -13,7 +13,7 @@ namespace {
 std::string heavy_key(const scene::Scene& s) {
   const nlohmann::ordered_json j = scene::scene_to_json(s, {});
   nlohmann::ordered_json key;
-  for (const char* block : {"ocean", "water", "seafloor", "objects"})
+  for (const char* block : {"ocean", "water", "seafloor", "objects", "vehicles", "wakes", "sediment"})
     if (j.contains(block)) key[block] = j[block];
   key["sun_elevation_deg"] = s.sun.elevation_deg;  // the LUTs depend on the sun's height
   return safe_dump(key);
@@ -31,13 +31,20 @@ Result<void> Demo::rebuild_renderer() {
   if (renderer_ && key == renderer_key_) return {};
   if (key == failed_key_) return {};  // already reported; wait for another change
   if (ctx_) ctx_->wait_idle();
-  auto renderer = render::OceanRenderer::create(*ctx_, scene_);
+  // The vehicles keep their tracks (and what the helm ordered) unless the vehicles themselves changed.
+  const std::string vehicles =
+      safe_dump(scene::scene_to_json(scene_, {}).value("vehicles", nlohmann::ordered_json()));
+  const bool keep_tracks = renderer_ && vehicles == vehicles_key_;
+  auto renderer = render::OceanRenderer::create(*ctx_, scene_,
+                                                keep_tracks ? renderer_->tracks() : render::VehicleTracks{});
   if (!renderer) {
     failed_key_ = key;
     return make_error(renderer.error().message);
   }
   renderer_ = std::move(*renderer);
   renderer_key_ = key;
+  if (!keep_tracks) helm_.release();
+  vehicles_key_ = vehicles;
   failed_key_.clear();
   query_ = std::make_unique<ocean::WaveQuery>(scene_.ocean);
   probe_.reset();
@@ -64,6 +71,7 @@ void Demo::apply_script(long long frame) {
       resize_window(step.assignment, frame);
       continue;
     }
+    if (script_helm(step.assignment, frame)) continue;  // not a scene field either: the arrow keys
     const scene::Camera before = scene_.camera;
     if (auto r = edit_scene(scene_, step.assignment); !r) {
       message("script, frame " + std::to_string(frame) + ": " + step.assignment + ": " + r.error().message);

@@ -24,6 +24,8 @@ constexpr const char* kHelp =
     "P             pause / run time\n"
     "N             one step of 1/30 s while paused\n"
     "V             vsync on / off\n"
+    "H             take the helm of the next vehicle (after the last: let go)\n"
+    "Arrows        at the helm: Up / Down speed, Left / Right rudder\n"
     "F12           screenshot (PNG in the working folder)\n"
     "Ctrl+S        save the scene (path in the panel)\n"
     "Ctrl+R        reset to the scene file\n"
@@ -51,6 +53,7 @@ void Demo::handle_input(float dt) {
   const bool ctrl = glfwGetKey(w, GLFW_KEY_LEFT_CONTROL) == GLFW_PRESS ||
                     glfwGetKey(w, GLFW_KEY_RIGHT_CONTROL) == GLFW_PRESS;
   if (!ImGui::GetIO().WantCaptureKeyboard) handle_keys(w, ctrl);
+  helm_input_ = ImGui::GetIO().WantCaptureKeyboard ? HelmInput{} : helm_input(w);
   camera_->update(camera_input(w, ctrl), dt);
   camera_->apply(scene_.camera);
 }
@@ -69,6 +72,7 @@ void Demo::handle_keys(GLFWwindow* w, bool ctrl) {
     vsync_ = !vsync_;
     swapchain_dirty_ = true;
   }
+  if (keys_.pressed(w, GLFW_KEY_H)) next_helm();
   if (keys_.pressed(w, GLFW_KEY_F12)) screenshot_request_ = timestamped("lagoon-", ".png");
   if (keys_.pressed(w, GLFW_KEY_S) && ctrl) save_scene_to(save_path_);
   if (keys_.pressed(w, GLFW_KEY_R) && ctrl) {
@@ -94,6 +98,14 @@ CameraInput Demo::camera_input(GLFWwindow* w, bool ctrl) const {
     input.scroll = io.MouseWheel;
   }
   return input;
+}
+
+// The arrow keys, for the vehicle at the helm.
+HelmInput Demo::helm_input(GLFWwindow* w) const {
+  auto axis = [&](int plus, int minus) {
+    return float(glfwGetKey(w, plus) == GLFW_PRESS) - float(glfwGetKey(w, minus) == GLFW_PRESS);
+  };
+  return {axis(GLFW_KEY_UP, GLFW_KEY_DOWN), axis(GLFW_KEY_RIGHT, GLFW_KEY_LEFT)};
 }
 
 void Demo::draw_ui() {
@@ -140,6 +152,7 @@ void Demo::draw_toolbar() {
   if (ImGui::RadioButton("orbit", &mode, 1)) camera_->set_mode(CameraController::Mode::Orbit);
   ImGui::SameLine();
   ImGui::Text("speed %.1f m/s  F1: keys", camera_->speed_mps());
+  draw_helm_status();
   if (!status_.empty()) ImGui::TextWrapped("%s", status_.c_str());
 }
 

@@ -18,17 +18,18 @@ glm::dquat heading_twist(const glm::dquat& q) {
   return glm::dquat(q.w / n, 0, q.y / n, 0);
 }
 
-VehicleMotion::VehicleMotion(WaypointPath path, FloatingBody hull)
-    : path_(std::move(path)), hull_(std::move(hull)) {
+VehicleMotion::VehicleMotion(std::shared_ptr<const VehicleTrack> track, FloatingBody hull)
+    : route_(std::move(track)), hull_(std::move(hull)) {
   reset();
 }
 
-VehicleMotion::VehicleMotion(WaypointPath path, double depth_m) : path_(std::move(path)), depth_m_(depth_m) {
+VehicleMotion::VehicleMotion(std::shared_ptr<const VehicleTrack> track, double depth_m)
+    : route_(std::move(track)), depth_m_(depth_m) {
   reset();
 }
 
 void VehicleMotion::reset() {
-  track_ = path_.at(0.0);
+  track_ = route_->at(0.0);
   if (!hull_) return;
   hull_->place(glm::dvec3(track_.position.x, 0.0, track_.position.y), yaw(track_.heading));
   hull_->settle_vertically(0.0);
@@ -48,7 +49,7 @@ void VehicleMotion::hold_on(const TrackPoint& track) {
 }
 
 void VehicleMotion::step(double t, double dt, const WaterHeight& water) {
-  track_ = path_.at(t + dt);
+  track_ = route_->at(t + dt);
   if (!hull_) return;
   // The path sets the horizontal motion and the heading; the water only what is left: the step sees the
   // hull at rest in those, so its damping acts on heave, pitch and roll alone.

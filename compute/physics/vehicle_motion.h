@@ -1,13 +1,16 @@
-// How a vehicle moves (vehicles[], issue 14): along its path (physics/waypoint_path.h) at its speed,
-// heading where the path goes. At the surface its hull is a floating body (physics/floating_body.h) whose
-// horizontal position and heading are held on the path while the water sets its heave, pitch and roll;
-// submerged it runs level at its depth. Deterministic, stepped at a fixed rate like the floating bodies.
+// How a vehicle moves (vehicles[], issue 14): along its track (physics/vehicle_track.h: its path at its
+// speed, heading where the path goes, or where the helm orders it). At the surface its hull is a floating
+// body (physics/floating_body.h) whose horizontal position and heading are held on the path while the water
+// sets its heave, pitch and roll; submerged it runs level at its depth. Deterministic, stepped at a fixed
+// rate like the floating bodies.
 #pragma once
 #include <glm/gtc/quaternion.hpp>
 #include <optional>
 
+#include <memory>
 #include "physics/floating_body.h"
-#include "physics/waypoint_path.h"
+
+#include "physics/vehicle_track.h"
 
 namespace lagoon::physics {
 
@@ -17,10 +20,14 @@ glm::dquat heading_twist(const glm::dquat& q);
 
 class VehicleMotion {
  public:
-  // At the surface: `hull` rides the water, held on `path`.
-  VehicleMotion(WaypointPath path, FloatingBody hull);
-  // Submerged: the model's origin at `depth_m` below the mean level, level, on `path`.
-  VehicleMotion(WaypointPath path, double depth_m);
+  // At the surface: `hull` rides the water, held on `track` (shared with the vehicle's wake and sediment).
+  VehicleMotion(std::shared_ptr<const VehicleTrack> track, FloatingBody hull);
+  // Submerged: the model's origin at `depth_m` below the mean level, level, on `track`.
+  VehicleMotion(std::shared_ptr<const VehicleTrack> track, double depth_m);
+  VehicleMotion(WaypointPath path, FloatingBody hull)
+      : VehicleMotion(std::make_shared<const VehicleTrack>(std::move(path)), std::move(hull)) {}
+  VehicleMotion(WaypointPath path, double depth_m)
+      : VehicleMotion(std::make_shared<const VehicleTrack>(std::move(path)), depth_m) {}
 
   // To time 0: on the path's start, at rest at its still-water draught (surface) or at its depth.
   void reset();
@@ -34,13 +41,13 @@ class VehicleMotion {
   bool submerged() const { return !hull_; }
   // The hull's body (surface vehicles), or nullptr.
   const FloatingBody* hull() const { return hull_ ? &*hull_ : nullptr; }
-  const WaypointPath& path() const { return path_; }
+  const VehicleTrack& track() const { return *route_; }
 
  private:
   // Moves the hull onto the path's point and heading, keeping its height and tilt.
   void hold_on(const TrackPoint& track);
 
-  WaypointPath path_;
+  std::shared_ptr<const VehicleTrack> route_;
   std::optional<FloatingBody> hull_;
   double depth_m_ = 0;
   TrackPoint track_;  // where the path puts the vehicle now

@@ -8,7 +8,7 @@
 
 #include "gltf/gltf_loader.h"
 #include "render/object_pose.h"
-#include "render/vehicle_path.h"
+#include "render/vehicle_tracks.h"
 
 namespace lagoon::render {
 namespace {
@@ -79,8 +79,9 @@ ocean::LocalHeightsOptions lattice_for(const physics::TriangleMesh& hull) {
 
 Result<std::unique_ptr<FloatingObjects>> FloatingObjects::create(
     const scene::Scene& scene, const ocean::OceanParams& ocean,
-    const std::vector<ocean::CascadeSpectrum>& spectra) {
+    const std::vector<ocean::CascadeSpectrum>& spectra, VehicleTracks tracks) {
   std::unique_ptr<FloatingObjects> out(new FloatingObjects(scene, ocean, spectra));
+  out->tracks_ = tracks_or_fresh(scene, std::move(tracks));
   for (size_t o = 0; o < scene.objects.size(); ++o) {
     const scene::Object& object = scene.objects[o];
     if (!object.floating.enabled) continue;
@@ -98,7 +99,7 @@ Result<std::unique_ptr<FloatingObjects>> FloatingObjects::create(
     out->vehicle_hulls_.push_back(std::move(*hull));
   }
   if (scene.wakes.felt_by_bodies && !(out->hulls_.empty() && out->vehicle_hulls_.empty())) {
-    auto wakes = VehicleWakes::create(scene);
+    auto wakes = VehicleWakes::create(scene, out->tracks_);
     if (!wakes) return wakes.error();
     if (!wakes->empty()) out->wakes_ = std::make_unique<WakeHeights>(*wakes, scene.wakes.bodies_resolution);
   }
@@ -124,16 +125,16 @@ void FloatingObjects::reset() {
   }
   vehicles_.clear();
   size_t vh = 0;
-  for (const scene::Vehicle& vehicle : scene_.vehicles) {
+  for (size_t v = 0; v < scene_.vehicles.size(); ++v) {
+    const scene::Vehicle& vehicle = scene_.vehicles[v];
     if (vehicle.depth_m > 0) {
-      vehicles_.push_back({double(vehicle.scale),
-                           physics::VehicleMotion(vehicle_path(vehicle.path), double(vehicle.depth_m)),
-                           nullptr});
+      vehicles_.push_back(
+          {double(vehicle.scale), physics::VehicleMotion(tracks_[v], double(vehicle.depth_m)), nullptr});
       continue;
     }
     const physics::TriangleMesh& hull = vehicle_hulls_[vh++];
     vehicles_.push_back({double(vehicle.scale),
-                         physics::VehicleMotion(vehicle_path(vehicle.path), make_body(hull, vehicle.body)),
+                         physics::VehicleMotion(tracks_[v], make_body(hull, vehicle.body)),
                          std::make_unique<ocean::LocalHeights>(sea_, lattice_for(hull))});
   }
   steps_ = 0;

@@ -16,6 +16,7 @@
 #include "ocean/local_heights.h"
 #include "physics/floating_body.h"
 #include "physics/vehicle_motion.h"
+#include "render/vehicle_tracks.h"
 #include "render/wake_heights.h"
 #include "scene/scene.h"
 
@@ -27,9 +28,11 @@ class FloatingObjects {
 
   // Loads the hull of every floating object and surface vehicle (its glTF mesh, scaled). Fails naming the
   // field when a hull is not a closed surface with a positive volume.
+  // The vehicles follow `tracks` (one per scene vehicle; fresh ones on the scene's paths when not given).
   static Result<std::unique_ptr<FloatingObjects>> create(const scene::Scene& scene,
                                                          const ocean::OceanParams& ocean,
-                                                         const std::vector<ocean::CascadeSpectrum>& spectra);
+                                                         const std::vector<ocean::CascadeSpectrum>& spectra,
+                                                         VehicleTracks tracks = {});
 
   bool empty() const { return bodies_.empty() && vehicles_.empty(); }
   void advance(double time_s);
@@ -73,6 +76,7 @@ class FloatingObjects {
   std::shared_ptr<ocean::WaveQuery> sea_;  // shared by every body's LocalHeights: one evaluation per knot
   std::vector<Body> bodies_;
   std::vector<Vehicle> vehicles_;
+  VehicleTracks tracks_;
   std::unique_ptr<WakeHeights> wakes_;  // null when the bodies do not feel the wakes
   long long steps_ = 0;                 // taken since time 0
 };

@@ -35,8 +35,10 @@ OceanRenderer::OceanRenderer(vk::Context& ctx) : ctx_(ctx), samplers_(Samplers::
 
 OceanRenderer::~OceanRenderer() = default;
 
-Result<std::unique_ptr<OceanRenderer>> OceanRenderer::create(vk::Context& ctx, const scene::Scene& scene) {
+Result<std::unique_ptr<OceanRenderer>> OceanRenderer::create(vk::Context& ctx, const scene::Scene& scene,
+                                                             VehicleTracks tracks) {
   std::unique_ptr<OceanRenderer> renderer(new OceanRenderer(ctx));
+  renderer->tracks_ = tracks_or_fresh(scene, std::move(tracks));
   if (auto r = renderer->init(scene); !r) return r.error();
   return renderer;
 }
@@ -52,13 +54,13 @@ Result<void> OceanRenderer::init(const scene::Scene& scene) {
   auto objects = SceneObjects::load(ctx_, scene, samplers_, kColorFormat, kHdrFormat, kDepthFormat);
   if (!objects) return objects.error();
   objects_ = std::move(*objects);
-  auto floating = FloatingObjects::create(scene, ocean().params(), ocean().spectra());
+  auto floating = FloatingObjects::create(scene, ocean().params(), ocean().spectra(), tracks_);
   if (!floating) return floating.error();
   floating_ = std::move(*floating);
-  auto wakes = WakesPass::create(ctx_, scene);
+  auto wakes = WakesPass::create(ctx_, scene, tracks_);
   if (!wakes) return wakes.error();
   wakes_ = std::move(*wakes);
-  auto sediment = VehicleSediment::create(scene);
+  auto sediment = VehicleSediment::create(scene, tracks_);
   if (!sediment) return sediment.error();
   sediment_ = std::move(*sediment);
   fields_.emplace(SurfaceFields{ocean(), *wakes_, !sediment_.empty()});

@@ -61,8 +61,10 @@ class OceanRenderer {
   static constexpr uint32_t kSlots = 2;
 
   // Fails with a message naming the scene field when its ocean parameters are invalid or a file it names
-  // (model, floor texture, water table) cannot be used. Vulkan failures throw (VK_CHECK).
-  static Result<std::unique_ptr<OceanRenderer>> create(vk::Context& ctx, const scene::Scene& scene);
+  // (model, floor texture, water table) cannot be used. Vulkan failures throw (VK_CHECK). The vehicles follow
+  // `tracks` (one per scene vehicle, e.g. the previous renderer's, steered; fresh ones when not given).
+  static Result<std::unique_ptr<OceanRenderer>> create(vk::Context& ctx, const scene::Scene& scene,
+                                                       VehicleTracks tracks = {});
   ~OceanRenderer();
 
   // Renders `scene` (same ocean and water as at construction) at scene.render size and time scene.time_s,
@@ -95,6 +97,9 @@ class OceanRenderer {
 
   // The ocean the frames are drawn from (e.g. for a field check after render()).
   const ocean::GpuOcean& ocean() const { return ocean_step_->ocean(); }
+  // The vehicles' tracks, shared by their bodies, wakes and sediment: an order given to one (the demo's helm)
+  // moves all three from its time on.
+  const VehicleTracks& tracks() const { return tracks_; }
   // The wakes (e.g. for a check of their layer after render()).
   const WakesPass& wakes() const { return *wakes_; }
   // The caustics of the last frame (e.g. for a check of their energy after render()).
@@ -141,6 +146,7 @@ class OceanRenderer {
   std::unique_ptr<WaterlinePass> waterline_;
   std::unique_ptr<ParticlesPass> particles_;
   std::unique_ptr<CameraMedium> camera_medium_;
+  VehicleTracks tracks_;
   std::unique_ptr<FloatingObjects> floating_;
   VehicleSediment sediment_;
   VkExtent2D extent_{};  // of the passes' targets

@@ -5,14 +5,15 @@
 
 #include "gltf/gltf_loader.h"
 #include "render/seafloor.h"
-#include "render/vehicle_path.h"
+#include "render/vehicle_tracks.h"
 
 namespace lagoon::render {
 
-Result<VehicleSediment> VehicleSediment::create(const scene::Scene& scene) {
+Result<VehicleSediment> VehicleSediment::create(const scene::Scene& scene, VehicleTracks tracks) {
   VehicleSediment out;
   const scene::Sediment& s = scene.sediment;
   if (!s.enabled || scene.vehicles.empty() || scene.seafloor.type != scene::SeafloorType::Slope) return out;
+  tracks = tracks_or_fresh(scene, std::move(tracks));
   std::vector<physics::StirrerBottom> stirrers;
   for (size_t v = 0; v < scene.vehicles.size(); ++v) {
     const scene::Vehicle& vehicle = scene.vehicles[v];
@@ -21,9 +22,9 @@ Result<VehicleSediment> VehicleSediment::create(const scene::Scene& scene) {
     // The hull's lowest point below its origin; the origin at the mean level for a surface hull (its heave
     // of a few decimetres is left out), at depth_m for a submerged one.
     const double bottom = double(model->bounds_min.y) * double(vehicle.scale) - double(vehicle.depth_m);
-    const physics::WaypointPath path = vehicle_path(vehicle.path);
-    stirrers.push_back([path, bottom](double t) {
-      const glm::dvec2 p = path.at(t).position;
+    std::shared_ptr<const physics::VehicleTrack> track = tracks[v];
+    stirrers.push_back([track, bottom](double t) {
+      const glm::dvec2 p = track->at(t).position;
       return glm::dvec3(p.x, bottom, p.y);
     });
   }

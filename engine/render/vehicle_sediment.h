@@ -8,6 +8,7 @@
 
 #include "core/result.h"
 #include "physics/sediment.h"
+#include "render/vehicle_tracks.h"
 #include "scene/scene.h"
 #include "shared/sediment.h"
 
@@ -18,7 +19,8 @@ class VehicleSediment {
   // Fails naming the field when a vehicle's model cannot be read (its lowest point comes from its bounds).
   // Empty when sediment.enabled is false, there are no vehicles, or the floor's heights are not known on the
   // CPU (only the procedural slope floor's are).
-  static Result<VehicleSediment> create(const scene::Scene& scene);
+  // The stirrers follow `tracks` (one per scene vehicle; fresh ones on the scene's paths when not given).
+  static Result<VehicleSediment> create(const scene::Scene& scene, VehicleTracks tracks = {});
 
   bool empty() const { return !cloud_; }
   std::vector<physics::SedimentPuff> puffs(double time_s) const;

@@ -6,11 +6,11 @@
 #include <string>
 
 #include "gltf/gltf_loader.h"
-#include "render/vehicle_path.h"
+#include "render/vehicle_tracks.h"
 
 namespace lagoon::render {
 
-Result<VehicleWakes> VehicleWakes::create(const scene::Scene& scene) {
+Result<VehicleWakes> VehicleWakes::create(const scene::Scene& scene, VehicleTracks tracks) {
   VehicleWakes wakes;
   const scene::Wakes& w = scene.wakes;
   wakes.params_ = ocean::DynamicLayerParams{.n = w.resolution,
@@ -22,6 +22,7 @@ Result<VehicleWakes> VehicleWakes::create(const scene::Scene& scene) {
   wakes.step_s_ = double(w.step_s);
   wakes.history_steps_ = (long long)std::ceil(double(w.history_s) / wakes.step_s_);
   if (!w.enabled) return wakes;
+  tracks = tracks_or_fresh(scene, std::move(tracks));
   for (size_t v = 0; v < scene.vehicles.size(); ++v) {
     const scene::Vehicle& vehicle = scene.vehicles[v];
     const bool submerged = vehicle.depth_m > 0;
@@ -33,7 +34,7 @@ Result<VehicleWakes> VehicleWakes::create(const scene::Scene& scene) {
     const glm::dvec3 lo = glm::dvec3(model->bounds_min) * double(vehicle.scale);
     const glm::dvec3 hi = glm::dvec3(model->bounds_max) * double(vehicle.scale);
     const double reach = submerged ? hi.y - lo.y : std::max(-lo.y, 0.0);
-    wakes.hulls_.push_back({v, vehicle_path(vehicle.path),
+    wakes.hulls_.push_back({v, tracks[v],
                             glm::dvec2(std::max(hi.z - lo.z, 1e-3) / 4, std::max(hi.x - lo.x, 1e-3) / 4),
                             reach * double(vehicle.wake_strength), submerged ? double(vehicle.depth_m) : 0.0,
                             submerged ? 0.0 : double(vehicle.foam_per_s)});
@@ -44,7 +45,7 @@ Result<VehicleWakes> VehicleWakes::create(const scene::Scene& scene) {
 std::vector<ocean::WakeSource> VehicleWakes::sources(double t) const {
   std::vector<ocean::WakeSource> out;
   for (const Hull& h : hulls_) {
-    const physics::TrackPoint p = h.path.at(t);
+    const physics::TrackPoint p = h.track->at(t);
     out.push_back({.centre = p.position,
                    .velocity = p.velocity,
                    .heading = p.heading,

@@ -7,7 +7,7 @@
 
 #include "core/result.h"
 #include "ocean/dynamic_layer.h"
-#include "physics/waypoint_path.h"
+#include "render/vehicle_tracks.h"
 #include "scene/scene.h"
 
 namespace lagoon::render {
@@ -15,11 +15,12 @@ namespace lagoon::render {
 class VehicleWakes {
  public:
   // Fails naming the field when a vehicle's model cannot be read (a footprint comes from its bounds).
-  // Empty when wakes.enabled is false or no vehicle makes a wake or a trail.
-  static Result<VehicleWakes> create(const scene::Scene& scene);
+  // Empty when wakes.enabled is false or no vehicle makes a wake or a trail. The hulls follow `tracks` (one
+  // per scene vehicle; fresh ones on the scene's paths when not given).
+  static Result<VehicleWakes> create(const scene::Scene& scene, VehicleTracks tracks = {});
 
   bool empty() const { return hulls_.empty(); }
-  // The hulls on the water at time t (from their paths; their heave does not matter here).
+  // The hulls on the water at time t (from their tracks; their heave does not matter here).
   std::vector<ocean::WakeSource> sources(double t) const;
   // The vehicle (index into the scene's vehicles) whose hull is sources(t)[source].
   size_t vehicle_of(size_t source) const { return hulls_.at(source).vehicle; }
@@ -38,7 +39,7 @@ class VehicleWakes {
  private:
   struct Hull {
     size_t vehicle;  // in the scene's vehicles
-    physics::WaypointPath path;
+    std::shared_ptr<const physics::VehicleTrack> track;
     glm::dvec2 sigma;   // along, across
     double depression;  // m
     double depth;       // m, of a submerged vehicle

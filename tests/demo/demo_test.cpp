@@ -3,8 +3,11 @@
 // scripted edits (valid and invalid, light and heavy) every frame end cleanly, and bad input fails clearly.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 
 #include "io/png.h"
 #include "support/image_compare.h"
@@ -153,6 +156,42 @@ TEST_F(Demo, ResizingTheWindowRecreatesTheSwapchain) {
   EXPECT_EQ(shot.width, 300u);
   EXPECT_EQ(shot.height, 200u);
   EXPECT_NE(d.output.find("window.size=7x7: expected"), std::string::npos) << d.output;
+}
+
+// At the helm (the arrow keys, here a script's helm.* lines): the harbour's boat at 6 m/s with full starboard
+// rudder runs the helm's turning circle (15 m) from where its path had it. Its heading falls by v/R per
+// second, and the chord from the start is 2R sin(Δh/2). A misspelt vehicle is reported, not fatal.
+TEST_F(Demo, TheArrowKeysSteerAVehicleAtTheHelm) {
+  const std::string harbour = std::string(LAGOON_SOURCE_DIR) + "/scenes/harbour.json";
+  {
+    std::ofstream script(out("helm.txt"));
+    script << "0 helm=boat\n0 helm.rudder=1\n1 helm=dinghy\n";
+  }
+  auto d =
+      demo("--scene " + shell_quote(harbour) + " --width 160 --height 90 --frames 31 --fps 10 --script " +
+           shell_quote(out("helm.txt")) + " --hide-ui --exit");
+  ASSERT_EQ(d.exit_code, 0) << d.output;
+  EXPECT_NE(d.output.find("no vehicle is named \"dinghy\""), std::string::npos) << d.output;
+  const auto at = d.output.find("at the helm of boat at t = ");
+  ASSERT_NE(at, std::string::npos) << d.output;
+  double t = 0, x = 0, z = 0, heading = 0, speed = 0;
+  ASSERT_EQ(std::sscanf(d.output.c_str() + at,
+                        "at the helm of boat at t = %lf s: x = %lf m, z = %lf m, heading %lf deg, %lf m/s",
+                        &t, &x, &z, &heading, &speed),
+            5)
+      << d.output;
+  EXPECT_NEAR(t, 9.0, 1e-6);  // the scene's 6 s, then 30 frames of 0.1 s
+  // Where the path had the boat when the helm was taken (its velocity gives the heading).
+  auto p = lagoon("probe --scene " + shell_quote(harbour) + " --object boat --time 6");
+  ASSERT_EQ(p.exit_code, 0) << p.output;
+  const auto start = nlohmann::json::parse(p.output);
+  const double x0 = start["origin"][0], z0 = start["origin"][2];
+  const double h0 =
+      std::atan2(start["velocity_mps"][0].get<double>(), start["velocity_mps"][2].get<double>());
+  const double radius = 15.0, turned = 6.0 / radius * 3.0;  // rad, over 3 s
+  EXPECT_NEAR(speed, 6.0, 1e-3);
+  EXPECT_NEAR(std::remainder(heading * M_PI / 180 - (h0 - turned), 2 * M_PI), 0.0, 1e-3) << d.output;
+  EXPECT_NEAR(std::hypot(x - x0, z - z0), 2 * radius * std::sin(turned / 2), 1e-3) << d.output;
 }
 
 TEST_F(Demo, BadInputFailsWithAClearMessage) {

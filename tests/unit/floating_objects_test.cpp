@@ -10,6 +10,9 @@
 #include <fstream>
 
 #include "ocean/wave_query.h"
+#include "render/vehicle_sediment.h"
+#include "render/vehicle_tracks.h"
+#include "render/vehicle_wakes.h"
 #include "support/shipped_scene.h"
 #include "support/temp_dir.h"
 
@@ -57,6 +60,42 @@ TEST(FloatingObjects, TheBuoyRidesTheScenesSea) {
   EXPECT_GT(correlation, 0.8);
   EXPECT_NEAR(mh - mw, 0.295, 0.03);
   EXPECT_GT(std::sqrt(sxx / heave.size()), 0.01);
+}
+
+// The demo's helm orders a vehicle's track; its body, its wake and the sediment it stirs all follow the
+// order, because they share the track (render/vehicle_tracks.h).
+TEST(FloatingObjects, ASteeredVehiclesBodyWakeAndSedimentFollowItsTrack) {
+  const scene::Scene s = shipped_scene("harbour", {"sediment.current_mps=[0,0]"});
+  render::VehicleTracks tracks = render::vehicle_tracks(s);
+  ASSERT_EQ(tracks.size(), 2u);  // the boat, the AUV
+  tracks[0]->order(2.0, {8.0, -0.3});
+  tracks[1]->order(2.0, {1.5, 0.4});
+  auto floating = render::FloatingObjects::create(s, s.ocean, ocean::make_cascade_spectra(s.ocean), tracks);
+  auto wakes = render::VehicleWakes::create(s, tracks);
+  auto sediment = render::VehicleSediment::create(s, tracks);
+  ASSERT_TRUE(floating && wakes && sediment);
+  ASSERT_FALSE(sediment->empty());
+  const double t = 9.0;
+  (*floating)->advance(t);
+  for (size_t v = 0; v < 2; ++v) {
+    const glm::dvec3 origin = (*floating)->vehicle(v).model_origin();
+    const glm::dvec2 on_track = tracks[v]->at(t).position;
+    EXPECT_NEAR(glm::distance(glm::dvec2(origin.x, origin.z), on_track), 0.0, 1e-6) << "vehicle " << v;
+  }
+  const auto sources = wakes->sources(t);
+  ASSERT_EQ(sources.size(), 2u);
+  for (size_t i = 0; i < sources.size(); ++i)
+    EXPECT_NEAR(glm::distance(sources[i].centre, tracks[wakes->vehicle_of(i)]->at(t).position), 0.0, 1e-12);
+  // The AUV's clouds lie where its track had it when each was released (no current, so they only sink).
+  int steered = 0;
+  for (const physics::SedimentPuff& p : sediment->puffs(t)) {
+    const glm::dvec2 at_release = tracks[1]->at(t - p.age_s).position;
+    EXPECT_NEAR(glm::distance(glm::dvec2(p.centre.x, p.centre.z), at_release), 0.0, 1e-6);
+    steered += t - p.age_s > 2.5;
+  }
+  EXPECT_GT(steered, 3) << "clouds released after the order";
+  // And the fresh path is somewhere else by then.
+  EXPECT_GT(glm::distance(render::vehicle_tracks(s)[1]->at(t).position, tracks[1]->at(t).position), 1.0);
 }
 
 TEST(FloatingObjects, AnEarlierTimeIsSimulatedAgainFromZero) {

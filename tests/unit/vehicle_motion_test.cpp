@@ -103,7 +103,7 @@ TEST(VehicleMotion, SurfaceVehicleRidesAtItsDraughtOnThePathAndHeading) {
   for (int k = 0; k < 120 * 60; ++k) {  // a minute: more than a lap, through all four turns
     const double t = k * dt;
     motion.step(t, dt, calm);
-    const physics::TrackPoint track = motion.path().at(t + dt);
+    const physics::TrackPoint track = motion.track().at(t + dt);
     const glm::dvec3 origin = motion.model_origin();
     ASSERT_NEAR(origin.x, track.position.x, 1e-9) << "t = " << t;
     ASSERT_NEAR(origin.z, track.position.y, 1e-9) << "t = " << t;
@@ -131,7 +131,7 @@ TEST(VehicleMotion, SubmergedVehicleRunsLevelAtItsDepth) {
   for (int k = 0; k < 600; ++k) {
     const double t = k / 120.0;
     motion.step(t, 1.0 / 120.0, unused);
-    const physics::TrackPoint track = motion.path().at(t + 1.0 / 120.0);
+    const physics::TrackPoint track = motion.track().at(t + 1.0 / 120.0);
     ASSERT_NEAR(glm::distance(motion.model_origin(), glm::dvec3(track.position.x, -6.0, track.position.y)),
                 0.0, 1e-12);
     ASSERT_LT(angle_between(motion.orientation(), yaw(track.heading)), 1e-6);

@@ -22,8 +22,9 @@ namespace lagoon::render {
 
 class WakesPass {
  public:
-  // Fails naming the field when a vehicle's model cannot be read.
-  static Result<std::unique_ptr<WakesPass>> create(vk::Context& ctx, const scene::Scene& scene);
+  // Fails naming the field when a vehicle's model cannot be read. The hulls follow `tracks`.
+  static Result<std::unique_ptr<WakesPass>> create(vk::Context& ctx, const scene::Scene& scene,
+                                                   VehicleTracks tracks = {});
 
   bool active() const { return layer_ != nullptr; }
   // (h, dh/dx, dh/dz, foam trails) of the layer (ocean/gpu/dynamic_layer_gpu.h), or a 1 x 1 zero image.

@@ -1,0 +1,104 @@
+// A vehicle's track under the helm (physics/vehicle_track.h): on its path until an order, then the ordered
+// speed and rate of turn, checked against a fine Runge-Kutta integration of dp/dt = v (sin h, cos h),
+// dh/dt = w; continuous at each order, and the same past after a replay from an earlier time.
+#include "physics/vehicle_track.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+#include <numbers>
+
+namespace lagoon::test {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+double wrap(double a) {
+  return a - 2 * kPi * std::round(a / (2 * kPi));
+}
+
+physics::WaypointPath square_loop() {
+  return physics::WaypointPath({{0, 0}, {40, 0}, {40, 40}, {0, 40}}, true, 4.0, 0.0);
+}
+
+// (x, z, heading) after `duration` at speed v and yaw rate w, by RK4 in 1 ms steps.
+glm::dvec3 integrate(glm::dvec3 s, double v, double w, double duration) {
+  auto f = [v, w](glm::dvec3 y) { return glm::dvec3(v * std::sin(y.z), v * std::cos(y.z), w); };
+  const int n = int(std::round(duration / 1e-3));
+  const double h = duration / n;
+  for (int i = 0; i < n; ++i) {
+    const glm::dvec3 k1 = f(s), k2 = f(s + 0.5 * h * k1), k3 = f(s + 0.5 * h * k2), k4 = f(s + h * k3);
+    s += h / 6 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+  }
+  return s;
+}
+
+TEST(VehicleTrack, OnItsPathUntilOrderedThenTheOrderedArcs) {
+  const physics::WaypointPath path = square_loop();
+  physics::VehicleTrack track(path);
+  EXPECT_FALSE(track.steered());
+  for (double t : {0.0, 3.3, 17.0}) {
+    EXPECT_EQ(track.at(t).position, path.at(t).position);
+    EXPECT_EQ(track.at(t).heading, path.at(t).heading);
+  }
+  // At 5 s: a turn to port at 5 m/s, 0.3 rad/s; at 12 s straight on at 2 m/s; at 15 s a starboard turn.
+  track.order(5.0, {5.0, 0.3});
+  track.order(12.0, {2.0, 0.0});
+  track.order(15.0, {3.0, -0.5});
+  EXPECT_EQ(track.legs(), 3u);
+  const physics::TrackPoint start = path.at(5.0);
+  glm::dvec3 s(start.position.x, start.position.y, start.heading);
+  s = integrate(s, 5.0, 0.3, 7.0);
+  const physics::TrackPoint at12 = track.at(12.0);
+  EXPECT_NEAR(glm::distance(at12.position, glm::dvec2(s.x, s.y)), 0.0, 1e-6);
+  EXPECT_NEAR(wrap(at12.heading - s.z), 0.0, 1e-9);
+  s = integrate(s, 2.0, 0.0, 3.0);
+  s = integrate(s, 3.0, -0.5, 6.5);
+  const physics::TrackPoint at215 = track.at(21.5);
+  EXPECT_NEAR(glm::distance(at215.position, glm::dvec2(s.x, s.y)), 0.0, 1e-6);
+  EXPECT_NEAR(wrap(at215.heading - s.z), 0.0, 1e-9);
+  EXPECT_NEAR(glm::length(at215.velocity), 3.0, 1e-12);
+  EXPECT_NEAR(at215.yaw_rate, -0.5, 1e-12);
+  // Its velocity is the derivative of its position between orders, and it does not jump at them (its speed
+  // may: an order is obeyed at once).
+  const double e = 1e-5;
+  for (double t : {8.0, 13.0, 20.0}) {
+    const glm::dvec2 rate = (track.at(t + e).position - track.at(t - e).position) / (2 * e);
+    EXPECT_NEAR(glm::distance(rate, track.at(t).velocity), 0.0, 1e-4) << "t = " << t;
+  }
+  for (double t : {5.0, 12.0, 15.0})
+    EXPECT_NEAR(glm::distance(track.at(t + e).position, track.at(t - e).position), 0.0, 1e-4) << "t = " << t;
+}
+
+TEST(VehicleTrack, AnOrderForAnEarlierTimeReplaysFromThere) {
+  physics::VehicleTrack a(square_loop()), b(square_loop());
+  a.order(5.0, {5.0, 0.3});
+  a.order(9.0, {1.0, -0.2});
+  const glm::dvec2 before = a.at(7.0).position;
+  a.order(8.0, {5.0, 0.0});  // drops the order at 9 s
+  EXPECT_EQ(a.legs(), 2u);
+  b.order(5.0, {5.0, 0.3});
+  b.order(8.0, {5.0, 0.0});
+  EXPECT_EQ(a.at(7.0).position, before) << "the past before the new order is kept";
+  for (double t : {8.0, 9.5, 30.0}) EXPECT_EQ(a.at(t).position, b.at(t).position);
+}
+
+TEST(VehicleTrack, AFullCircleComesBackToItsStart) {
+  // 2π / w seconds of a constant turn: back where it started, heading as it started (radius v / w).
+  physics::VehicleTrack track(physics::WaypointPath({{3, 4}, {3, 50}}, false, 2.0, 0.0));
+  track.order(1.0, {6.0, -0.4});
+  const physics::TrackPoint start = track.at(1.0);
+  const physics::TrackPoint end = track.at(1.0 + 2 * kPi / 0.4);
+  EXPECT_NEAR(glm::distance(start.position, end.position), 0.0, 1e-9);
+  EXPECT_NEAR(wrap(start.heading - end.heading), 0.0, 1e-9);
+  // Half way round it is a diameter, 2 v / w, away; turning to starboard from heading +z (-0.4 rad/s) it
+  // went towards -x.
+  const physics::TrackPoint half = track.at(1.0 + kPi / 0.4);
+  EXPECT_NEAR(glm::distance(start.position, half.position), 2 * 6.0 / 0.4, 1e-9);
+  EXPECT_LT(half.position.x, start.position.x - 29.0);
+}
+
+}  // namespace
+}  // namespace lagoon::test
