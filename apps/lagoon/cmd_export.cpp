@@ -1,7 +1,8 @@
 // lagoon export: the GPU ocean's fields for a run of frames, as .npy arrays plus meta.json; with vehicles,
-// the wakes' dynamic layer and foam trails too.
+// the wakes' dynamic layer and foam trails too; with floating objects or vehicles, their poses per frame.
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -13,9 +14,11 @@
 #include "io/atomic_file.h"
 #include "io/disk_space.h"
 #include "io/npy_stream.h"
+#include "moving_pose.h"
 #include "ocean/gpu/dynamic_layer_gpu.h"
 #include "ocean/gpu/gpu_ocean.h"
 #include "ocean/initial_spectrum.h"
+#include "render/floating_objects.h"
 #include "render/vehicle_wakes.h"
 #include "scene_args.h"
 #include "staged_output.h"
@@ -111,8 +114,14 @@ std::string cascade_prefix(uint32_t c) {
 }
 
 // What the export will put on disk: the arrays exactly, meta.json generously (it lists every frame's time).
-uint64_t export_bytes(const ocean::OceanParams& params, const render::VehicleWakes& wakes, size_t frames) {
+uint64_t export_bytes(const scene::Scene& scene, const render::VehicleWakes& wakes, size_t frames) {
+  const ocean::OceanParams& params = scene.ocean;
+  // meta.json: its fixed part, a time per frame, and a pose of each floating object and vehicle per frame
+  // (about 800 characters as dump(2) writes one, names aside).
   uint64_t bytes = 16384 + 32 * uint64_t(frames);
+  for (const MovingTarget& target : moving_targets(scene))
+    bytes += uint64_t(frames) * (1024 + (target.vehicle ? scene.vehicles[target.index].name.size()
+                                                        : scene.objects[target.index].name.size()));
   if (!wakes.empty()) bytes += 2 * io::npy_file_bytes(scalar_shape(frames, wakes.params().n)).value();
   for (const ocean::CascadeParams& c : params.cascades)
     for (const auto& shape : {vector_shape(frames, c.resolution), vector_shape(frames, c.resolution),
@@ -315,6 +324,15 @@ int export_fields(vk::Context& ctx, const scene::Scene& scene, const render::Veh
     if (!w) return export_failure(w.error().message);
     wake.emplace(std::move(*w));
   }
+  // What floats and the vehicles, simulated on the CPU from time 0 (as in a render of each frame).
+  const std::vector<MovingTarget> targets = moving_targets(scene);
+  std::unique_ptr<render::FloatingObjects> moving;
+  if (!targets.empty()) {
+    auto m = render::FloatingObjects::create(scene, scene.ocean, gpu.spectra());
+    if (!m) return export_failure(m.error().message);
+    moving = std::move(*m);
+  }
+  nlohmann::json poses = nlohmann::json::array();
   CascadeArrays scratch;
   std::vector<double> times;
   for (long long f = 0; f < o.frames; ++f) {
@@ -332,6 +350,12 @@ int export_fields(vk::Context& ctx, const scene::Scene& scene, const render::Veh
         return export_failure(r.error().message);
     if (wake)
       if (auto r = append_wakes(ctx, wakes, *wake, t); !r) return export_failure(r.error().message);
+    if (moving) {
+      moving->advance(t);
+      nlohmann::json frame = nlohmann::json::array();
+      for (const MovingTarget& target : targets) frame.push_back(moving_pose(scene, *moving, target, t));
+      poses.push_back(std::move(frame));
+    }
     if (o.frames > 1) std::fprintf(stderr, "\rlagoon export: frame %lld/%lld", f + 1, o.frames);
   }
   if (o.frames > 1) std::fprintf(stderr, "\n");
@@ -339,6 +363,14 @@ int export_fields(vk::Context& ctx, const scene::Scene& scene, const render::Veh
 
   nlohmann::json meta = meta_json(scene, gpu, times);
   if (wake) meta["wakes"] = wakes_json(wakes, wake->layer->window());
+  if (moving)
+    meta["poses"] = {
+        {"layout",
+         "poses[frame][k]: the k-th floating object (objects[] with floating.enabled) or vehicle, "
+         "objects first, in scene order, at times_s[frame], as lagoon probe --object prints it: "
+         "origin = where the model's origin is (world, m, y up), orientation_wxyz = the model's "
+         "rotation as a unit quaternion, velocities of the centre of mass (m/s, rad/s)"},
+        {"frames", std::move(poses)}};
   if (auto r = commit_export(*staged, *streams, wake ? &*wake : nullptr, meta.dump(2) + "\n"); !r)
     return export_failure(r.error().message);
   std::printf("wrote %s: %lld frame(s), %u cascade(s), on %s\n", out.c_str(), o.frames, gpu.cascade_count(),
@@ -357,7 +389,7 @@ int run_export(const ParsedArgs& args) {
     return export_failure("--out " + out.string() + " exists and is not a folder");
   auto wakes = render::VehicleWakes::create(*scene);
   if (!wakes) return export_failure(wakes.error().message);
-  if (auto space = check_space(out, export_bytes(scene->ocean, *wakes, size_t(options->frames))); !space)
+  if (auto space = check_space(out, export_bytes(*scene, *wakes, size_t(options->frames))); !space)
     return export_failure(space.error().message);
   auto ctx = open_context();
   if (!ctx) return kExitFailure;
@@ -375,7 +407,8 @@ const Command& export_command() {
                "cascade's displacement, normal, Jacobian and foam as float32 .npy arrays, with "
                "meta.json describing times, parameters, layout and each cascade's wavenumber band. With "
                "vehicles (and wakes.enabled), also the wakes' dynamic layer: wakes_height.npy and "
-               "wakes_foam.npy over its window (meta.json's \"wakes\").",
+               "wakes_foam.npy over its window (meta.json's \"wakes\"); with floating objects or vehicles, "
+               "their pose and velocities at every frame (meta.json's \"poses\").",
            .options = {scene_option(),
                        {"out", "DIR",
                         "output folder (created; existing files of the same names are replaced)", true},

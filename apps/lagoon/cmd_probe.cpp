@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "moving_pose.h"
 #include "ocean/wave_query.h"
 #include "render/floating_objects.h"
 #include "render/wake_heights.h"
@@ -38,19 +39,13 @@ nlohmann::json vec(glm::dvec3 v) {
   return {v.x, v.y, v.z};
 }
 
-// What --object names: a floating object (objects[index]) or a vehicle (vehicles[index]).
-struct Target {
-  bool vehicle = false;
-  size_t index = 0;
-};
-
 // The floating object or vehicle called `name`; prints why there is none.
-std::optional<Target> find_target(const scene::Scene& scene, const std::string& name) {
+std::optional<MovingTarget> find_target(const scene::Scene& scene, const std::string& name) {
   std::string names;
   const auto list = [&names](const std::string& n) { names += (names.empty() ? "\"" : ", \"") + n + "\""; };
   for (size_t o = 0; o < scene.objects.size(); ++o) {
     if (scene.objects[o].name == name) {
-      if (scene.objects[o].floating.enabled) return Target{false, o};
+      if (scene.objects[o].floating.enabled) return MovingTarget{false, o};
       std::fprintf(stderr,
                    "lagoon probe: objects[%zu] \"%s\" does not float; set objects[%zu].floating.enabled to "
                    "true (docs/physics.md) to probe its motion\n",
@@ -60,42 +55,12 @@ std::optional<Target> find_target(const scene::Scene& scene, const std::string& 
     list(scene.objects[o].name);
   }
   for (size_t v = 0; v < scene.vehicles.size(); ++v) {
-    if (scene.vehicles[v].name == name) return Target{true, v};
+    if (scene.vehicles[v].name == name) return MovingTarget{true, v};
     list(scene.vehicles[v].name);
   }
   std::fprintf(stderr, "lagoon probe: no object or vehicle is named \"%s\"; the scene's: %s\n", name.c_str(),
                names.empty() ? "none" : names.c_str());
   return std::nullopt;
-}
-
-// One line of --object: the target's pose and velocities at time t.
-nlohmann::json pose_line(const scene::Scene& scene, const render::FloatingObjects& moving, Target target,
-                         double t) {
-  glm::dvec3 origin, centre, velocity, angular;
-  glm::dquat q;
-  if (target.vehicle) {
-    const physics::VehicleMotion& motion = moving.vehicle(target.index);
-    origin = motion.model_origin();
-    q = motion.orientation();
-    centre = motion.hull() ? motion.hull()->state().position : origin;
-    velocity = motion.velocity();
-    angular = motion.angular_velocity();
-  } else {
-    const physics::FloatingBody& body = *moving.body(target.index);
-    origin = body.model_origin();
-    q = body.state().orientation;
-    centre = body.state().position;
-    velocity = body.state().velocity;
-    angular = body.state().angular_velocity;
-  }
-  return {{target.vehicle ? "vehicle" : "object",
-           target.vehicle ? scene.vehicles[target.index].name : scene.objects[target.index].name},
-          {"time_s", t},
-          {"origin", vec(origin)},
-          {"orientation_wxyz", {q.w, q.x, q.y, q.z}},
-          {"centre_of_mass", vec(centre)},
-          {"velocity_mps", vec(velocity)},
-          {"angular_velocity_radps", vec(angular)}};
 }
 
 // --object: the body's pose and velocities at `frames` times from `time`, 1/fps apart.
@@ -116,7 +81,7 @@ int probe_object(const ParsedArgs& args, const scene::Scene& scene, double time)
   for (long long f = 0; f < *frames; ++f) {
     const double t = time + double(f) / *fps;
     (*moving)->advance(t);
-    std::printf("%s\n", pose_line(scene, **moving, *target, t).dump().c_str());
+    std::printf("%s\n", moving_pose(scene, **moving, *target, t).dump().c_str());
   }
   return kExitOk;
 }

@@ -1,12 +1,14 @@
 // lagoon export with vehicles: the wakes' layer and foam trails (wakes_height.npy, wakes_foam.npy) over the
 // window meta.json names, against the CPU reference layer (compute/ocean/dynamic_layer.h, double precision)
-// run here on the same hulls (render/vehicle_wakes.h) and window.
+// run here on the same hulls (render/vehicle_wakes.h) and window; and the poses of what moves, per frame, as
+// lagoon probe --object prints them.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "io/npy.h"
 #include "ocean/dynamic_layer.h"
@@ -70,9 +72,35 @@ TEST(ExportWakes, TheLayerAndItsFoamMatchTheCpuReference) {
     EXPECT_GT(foam_total, 10.0) << "no trail in the window at frame " << frame;
     EXPECT_LT(foam_error, 1e-4) << "frame " << frame;
   }
+
+  // The floating objects' and vehicles' poses at each frame, as lagoon probe --object gives them.
+  ASSERT_TRUE(meta.contains("poses")) << meta.dump(2);
+  const nlohmann::json& poses = meta["poses"]["frames"];
+  ASSERT_EQ(poses.size(), 2u);
+  const char* names[] = {"buoy", "moored boat", "boat", "auv"};
+  for (size_t k = 0; k < 4; ++k) {
+    const bool vehicle = k >= 2;
+    std::string probe = shell_quote(LAGOON_BINARY) + " probe --scene " + harbour + " --object " +
+                        shell_quote(names[k]) + " --time 5 --frames 2 --fps 2";
+    for (const std::string& o : overrides) probe += " --set " + shell_quote(o);
+    auto p = run_process(probe);
+    ASSERT_EQ(p.exit_code, 0) << p.output;
+    std::istringstream lines(p.output);
+    std::string line;
+    for (size_t frame = 0; frame < 2 && std::getline(lines, line); ++frame) {
+      const nlohmann::json expected = nlohmann::json::parse(line), got = poses[frame][k];
+      EXPECT_EQ(got[vehicle ? "vehicle" : "object"], names[k]);
+      EXPECT_DOUBLE_EQ(got["time_s"].get<double>(), 5.0 + 0.5 * double(frame));
+      for (const char* field : {"origin", "orientation_wxyz", "velocity_mps"})
+        for (size_t i = 0; i < expected[field].size(); ++i)
+          EXPECT_NEAR(got[field][i].get<double>(), expected[field][i].get<double>(), 1e-9)
+              << names[k] << " " << field << " at frame " << frame;
+    }
+  }
+  EXPECT_NEAR(poses[1][3]["origin"][1].get<double>(), -4.4, 1e-6) << "the AUV at its depth";
 }
 
-TEST(ExportWakes, ASceneWithoutVehiclesWritesNoWakes) {
+TEST(ExportWakes, ASceneWithoutVehiclesWritesNoWakesAndNoPoses) {
   TempDir dir;
   auto r = run_process(shell_quote(LAGOON_BINARY) + " export --scene " + std::string(LAGOON_SOURCE_DIR) +
                        "/scenes/default.json --out " + shell_quote((dir / "fields").string()) +
@@ -80,7 +108,9 @@ TEST(ExportWakes, ASceneWithoutVehiclesWritesNoWakes) {
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_FALSE(fs::exists(dir / "fields" / "wakes_height.npy"));
   std::ifstream meta_file(dir / "fields" / "meta.json");
-  EXPECT_FALSE(nlohmann::json::parse(meta_file).contains("wakes"));
+  const nlohmann::json meta = nlohmann::json::parse(meta_file);
+  EXPECT_FALSE(meta.contains("wakes"));
+  EXPECT_FALSE(meta.contains("poses"));
 }
 
 }  // namespace

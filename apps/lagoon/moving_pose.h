@@ -1,0 +1,27 @@
+// The pose and velocities of what moves in a scene (a floating object or a vehicle) as JSON: one format for
+// `lagoon probe --object` and the "poses" of `lagoon export`'s meta.json.
+#pragma once
+#include <cstddef>
+#include <nlohmann/json.hpp>
+#include <vector>
+
+#include "render/floating_objects.h"
+#include "scene/scene.h"
+
+namespace lagoon::cli {
+
+// A floating object (objects[index]) or a vehicle (vehicles[index]).
+struct MovingTarget {
+  bool vehicle = false;
+  size_t index = 0;
+};
+
+// Every floating object, then every vehicle, in scene order.
+std::vector<MovingTarget> moving_targets(const scene::Scene& scene);
+
+// {"object"|"vehicle": name, "time_s", "origin", "orientation_wxyz", "centre_of_mass", "velocity_mps",
+//  "angular_velocity_radps"} at the time `moving` was advanced to.
+nlohmann::json moving_pose(const scene::Scene& scene, const render::FloatingObjects& moving,
+                           MovingTarget target, double time_s);
+
+}  // namespace lagoon::cli
