@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "bench_bodies.h"
+#include "bench_report.h"
 #include "commands.h"
 #include "fftw_ocean_step.h"
 #include "gpu_session.h"
@@ -24,85 +26,6 @@
 
 namespace lagoon::cli {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-struct Spread {
-  double median = 0, min = 0, max = 0;
-};
-
-// The median of an even count is the mean of the middle two (with 2 rounds, not simply the larger one).
-Spread spread(std::vector<double> v) {
-  if (v.empty()) return {};
-  std::sort(v.begin(), v.end());
-  const size_t mid = v.size() / 2;
-  const double median = v.size() % 2 ? v[mid] : 0.5 * (v[mid - 1] + v[mid]);
-  return {median, v.front(), v.back()};
-}
-
-double median(std::vector<double> v) {
-  return spread(std::move(v)).median;
-}
-
-// One result in Google Benchmark's shape: real_time is the median over the rounds; min_time and max_time
-// show the spread; `measure` says which clock: "gpu timestamps" (device time of the recorded commands) or
-// "wall" (host time around submit and wait, what a user waits for).
-nlohmann::json result_entry(const std::string& name, const std::vector<double>& ms, const char* measure) {
-  const Spread s = spread(ms);
-  return {{"name", name},      {"run_type", "iteration"}, {"iterations", ms.size()}, {"real_time", s.median},
-          {"min_time", s.min}, {"max_time", s.max},       {"time_unit", "ms"},       {"measure", measure}};
-}
-
-// The report's "context": what the figures were measured on, so reports from two machines can be told
-// apart (and a lavapipe figure is never mistaken for a GPU's).
-nlohmann::json report_context(const vk::Context& ctx, int rounds) {
-  const vk::DeviceInfo& info = ctx.device_info();
-  return {{"device", info.name},
-          {"device_type", info.type},
-          {"driver_name", info.driver_name},
-          {"driver_info", info.driver_info},
-          {"driver_version", info.driver_version},
-          {"vulkan_api_version", vk::api_version_string(info.api_version)},
-          {"rounds", rounds}};
-}
-
-template <typename F>
-double time_ms(F&& f) {
-  const auto t0 = Clock::now();
-  f();
-  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-}
-
-// --rounds, or `fallback`; nullopt (after printing why) when the value is not a whole number in [1, 1000].
-std::optional<int> rounds_option(const ParsedArgs& args, int fallback) {
-  const auto rounds = integer_option(args, "rounds", fallback, 1, 1000);
-  if (!rounds) {
-    std::fprintf(stderr, "lagoon bench: %s\n", rounds.error().message.c_str());
-    return std::nullopt;
-  }
-  return int(*rounds);
-}
-
-// Writes the --json report atomically (no half-written file); false, with the reason on stderr, on failure.
-bool write_report(const std::string& path, const nlohmann::json& doc) {
-  const std::string text = doc.dump(2) + "\n";
-  if (auto written = io::write_file_atomic(path, std::as_bytes(std::span(text.data(), text.size())));
-      !written) {
-    std::fprintf(stderr, "lagoon bench: %s\n", written.error().message.c_str());
-    return false;
-  }
-  return true;
-}
-
-// Prints one row of the table and adds it to the report's "benchmarks"; a ratio of 0 is left out.
-void report_row(nlohmann::json& results, const std::string& name, const std::vector<double>& ms,
-                const char* measure, double ratio) {
-  std::printf("%-44s %12.3f %12s\n", name.c_str(), median(ms),
-              ratio > 0 ? (std::to_string(ratio).substr(0, 6) + "x").c_str() : "");
-  nlohmann::json entry = result_entry(name, ms, measure);
-  if (ratio > 0) entry["ratio_gpu_over_cpu"] = ratio;
-  results.push_back(entry);
-}
 
 // `count` cascades of N x N, with patches of 1000, 100 and 10 m.
 ocean::OceanParams bench_params(uint32_t n, uint32_t count) {
@@ -315,26 +238,29 @@ int run_bench_render(const ParsedArgs& args, int rounds) {
   return validation_status(*ctx);
 }
 
-// Options that only bench render reads; bench compute refuses them rather than silently ignoring them.
-std::optional<std::string> render_only_option(const ParsedArgs& args) {
+// Options that only bench render (and bench bodies: --scene, --set) reads; the others refuse them rather
+// than silently ignoring them.
+std::optional<std::string> render_only_option(const ParsedArgs& args, const std::string& what) {
   for (const char* name : {"scene", "set", "width", "height"})
-    if (args.has(name)) return std::string(name);
+    if (args.has(name) && !(what == "bodies" && (std::string(name) == "scene" || std::string(name) == "set")))
+      return std::string(name);
   return std::nullopt;
 }
 
 int run_bench(const ParsedArgs& args) {
   const std::string what = args.get("what").value_or("");
-  if (what == "compute" || what == "render" || what == "wakes") {
-    if (const auto option = render_only_option(args); what != "render" && option) {
+  if (what == "compute" || what == "render" || what == "wakes" || what == "bodies") {
+    if (const auto option = render_only_option(args, what); what != "render" && option) {
       std::fprintf(stderr, "lagoon bench: --%s applies to 'bench render' only\n", option->c_str());
       return kExitUsage;
     }
     const auto rounds = rounds_option(args, what == "render" ? 10 : 15);
     if (!rounds) return kExitUsage;
     if (what == "wakes") return run_bench_wakes(args, *rounds);
+    if (what == "bodies") return run_bench_bodies(args, *rounds);
     return what == "compute" ? run_bench_compute(args, *rounds) : run_bench_render(args, *rounds);
   }
-  std::fprintf(stderr, "lagoon bench: unknown benchmark '%s'; available: compute, render, wakes\n",
+  std::fprintf(stderr, "lagoon bench: unknown benchmark '%s'; available: compute, render, wakes, bodies\n",
                what.c_str());
   return kExitUsage;
 }
@@ -343,32 +269,39 @@ int run_bench(const ParsedArgs& args) {
 
 const Command& bench_command() {
   static const Command command{
-      .spec = {.name = "bench",
-               .summary =
-                   "Measures performance side by side in one run. 'compute': the GPU ocean step on the "
-                   "chosen device (wall time and GPU timestamps) against the same step on the CPU with FFTW "
-                   "(1 and 2 threads), for N = 128, 256, 512 and 1 or 3 cascades; ratio = GPU wall time / "
-                   "CPU time. 'render': each pass of a scene's frame (GPU timestamps) and the whole frame "
-                   "(wall time, with readback). 'wakes': one step of the dynamic wave layer with two hulls "
-                   "(N = 256, 512, 1024) on the device against its CPU reference in double precision.",
-               .options = {{"what", "compute|render|wakes", "which benchmark: compute, render or wakes",
-                            true},
-                           {"scene", "FILE", "render: the scene (default scenes/default.json)"},
-                           set_option(),
-                           {"width", "W", "render: frame width in pixels, 16 to 8192 (default 1280)"},
-                           {"height", "H", "render: frame height in pixels, 16 to 8192 (default 720)"},
-                           {"json", "FILE",
-                            "also write the results as Google Benchmark-style JSON: a \"context\" object "
-                            "(device, type, driver, driver version, Vulkan API version, rounds) and "
-                            "\"benchmarks\" (median real_time, min_time, max_time in ms; measure = \"gpu "
-                            "timestamps\" or \"wall\")"},
-                           {"rounds", "R",
-                            "measured rounds per configuration (default 15 compute and wakes, 10 render)"}},
-               .positional = {"what"},
-               .details = "Timings are medians after a warm-up (lavapipe compiles shaders at their first "
-                          "dispatch). The machine's noise makes single numbers unreliable; compare ratios.\n"
-                          "examples:\n  lagoon bench compute --rounds 5 --json out/compute.json\n"
-                          "  lagoon bench render --scene scenes/open-ocean.json --width 640 --height 360\n"},
+      .spec =
+          {.name = "bench",
+           .summary =
+               "Measures performance side by side in one run. 'compute': the GPU ocean step on the "
+               "chosen device (wall time and GPU timestamps) against the same step on the CPU with FFTW "
+               "(1 and 2 threads), for N = 128, 256, 512 and 1 or 3 cascades; ratio = GPU wall time / "
+               "CPU time. 'render': each pass of a scene's frame (GPU timestamps) and the whole frame "
+               "(wall time, with readback). 'wakes': one step of the dynamic wave layer with two hulls "
+               "(N = 256, 512, 1024) on the device against its CPU reference in double precision. 'bodies': "
+               "the floating objects' and vehicles' physics of a scene per 60 Hz frame on the CPU (mean "
+               "and worst frame of each second), with and without the wakes felt.",
+           .options = {{"what", "compute|render|wakes|bodies",
+                        "which benchmark: compute, render, wakes or bodies", true},
+                       {"scene", "FILE",
+                        "render: the scene (default scenes/default.json); bodies: the scene (default "
+                        "scenes/harbour.json)"},
+                       set_option(),
+                       {"width", "W", "render: frame width in pixels, 16 to 8192 (default 1280)"},
+                       {"height", "H", "render: frame height in pixels, 16 to 8192 (default 720)"},
+                       {"json", "FILE",
+                        "also write the results as Google Benchmark-style JSON: a \"context\" object "
+                        "(device, type, driver, driver version, Vulkan API version, rounds) and "
+                        "\"benchmarks\" (median real_time, min_time, max_time in ms; measure = \"gpu "
+                        "timestamps\" or \"wall\")"},
+                       {"rounds", "R",
+                        "measured rounds per configuration (default 15 compute, wakes and bodies, 10 render; "
+                        "a round of bodies is 60 frames)"}},
+           .positional = {"what"},
+           .details = "Timings are medians after a warm-up (lavapipe compiles shaders at their first "
+                      "dispatch). The machine's noise makes single numbers unreliable; compare ratios.\n"
+                      "examples:\n  lagoon bench compute --rounds 5 --json out/compute.json\n"
+                      "  lagoon bench render --scene scenes/open-ocean.json --width 640 --height 360\n"
+                      "  lagoon bench bodies --scene scenes/harbour.json --rounds 5\n"},
       .run = run_bench};
   return command;
 }

@@ -1,5 +1,5 @@
-// lagoon bench: usage errors, and the render benchmark's report (figures are not asserted: speed is
-// measured, never tested).
+// lagoon bench: usage errors, and the render, compute and bodies benchmarks' reports (figures are not
+// asserted: speed is measured, never tested).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -110,6 +110,33 @@ TEST(BenchCli, ComputeReportsWallAndGpuTimeOfTheStep) {
     EXPECT_LE(by_name[device]["real_time"].get<double>(), by_name[wall]["real_time"].get<double>()) << config;
     EXPECT_GT(by_name[device]["real_time"].get<double>(), 0.0) << config;
   }
+}
+
+// bench bodies: the harbour's bodies per 60 Hz frame with and without the wakes felt; a scene with nothing
+// that floats is refused with a hint.
+TEST(BenchCli, BodiesReportsTheFrameCostWithAndWithoutWakes) {
+  TempDir dir;
+  const std::string json = (dir / "bodies.json").string();
+  const std::string harbour = std::string(LAGOON_SOURCE_DIR) + "/scenes/harbour.json";
+  auto r = lagoon("bench bodies --scene " + harbour + " --rounds 1 --json " + json);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::ifstream file(json);
+  const auto doc = nlohmann::json::parse(file);
+  std::map<std::string, nlohmann::json> by_name;
+  for (const auto& b : doc["benchmarks"]) by_name[b["name"]] = b;
+  for (const char* name : {"bodies/frame_mean/as_scene", "bodies/frame_worst/as_scene",
+                           "bodies/frame_mean/without_wakes", "bodies/frame_worst/without_wakes"}) {
+    ASSERT_TRUE(by_name.count(name)) << name << "\n" << r.output;
+    expect_spread(by_name[name], 1, "wall");
+  }
+  EXPECT_LE(by_name["bodies/frame_mean/as_scene"]["real_time"].get<double>(),
+            by_name["bodies/frame_worst/as_scene"]["real_time"].get<double>());
+  auto none =
+      lagoon("bench bodies --scene " + std::string(LAGOON_SOURCE_DIR) + "/scenes/default.json --rounds 1");
+  EXPECT_EQ(none.exit_code, 1) << none.output;
+  EXPECT_NE(none.output.find("has no floating object or vehicle; try scenes/harbour.json"), std::string::npos)
+      << none.output;
+  EXPECT_EQ(lagoon("bench bodies --width 64").exit_code, 2);
 }
 
 }  // namespace

@@ -1,0 +1,89 @@
+#include "bench_bodies.h"
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "bench_report.h"
+#include "exit_codes.h"
+#include "ocean/initial_spectrum.h"
+#include "render/floating_objects.h"
+#include "scene_args.h"
+
+namespace lagoon::cli {
+namespace {
+
+constexpr int kFramesPerRound = 60;  // one second of a 60 Hz display
+
+// Per round: the mean and the worst frame time over a second of 60 Hz frames (the sea's knots and the wake
+// layer's steps fall on some frames only, so the mean is the figure a frame budget compares with).
+struct BodyTimes {
+  std::vector<double> mean, worst;
+};
+
+BodyTimes time_bodies(render::FloatingObjects& moving, double t0, int rounds) {
+  BodyTimes times;
+  moving.advance(t0);  // the history up to t0, not measured
+  double t = t0;
+  for (int r = 0; r < rounds; ++r) {
+    double sum = 0, worst = 0;
+    for (int f = 0; f < kFramesPerRound; ++f) {
+      t += 1.0 / kFramesPerRound;
+      const double ms = time_ms([&] { moving.advance(t); });
+      sum += ms;
+      worst = std::max(worst, ms);
+    }
+    times.mean.push_back(sum / kFramesPerRound);
+    times.worst.push_back(worst);
+  }
+  return times;
+}
+
+}  // namespace
+
+int run_bench_bodies(const ParsedArgs& args, int rounds) {
+  ParsedArgs scene_args = args;
+  if (!args.has("scene")) scene_args.add("scene", "scenes/harbour.json");
+  auto scene = load_scene_from_args(scene_args, "bench");
+  if (!scene) return kExitFailure;
+  const auto spectra = ocean::make_cascade_spectra(scene->ocean);
+  std::printf(
+      "CPU, 60 Hz frames, %d rounds of %d frames from t = %g s; per frame: median over rounds of the "
+      "round's mean (and of its worst frame)\n",
+      rounds, kFramesPerRound, double(scene->time_s));
+  std::printf("%-44s %12s\n", "Benchmark", "Time (ms)");
+  nlohmann::json results = nlohmann::json::array();
+  struct Config {
+    const char* name;
+    bool wakes;
+  };
+  for (const Config c : {Config{"as_scene", scene->wakes.felt_by_bodies}, Config{"without_wakes", false}}) {
+    if (c.wakes != scene->wakes.felt_by_bodies && c.wakes) continue;
+    if (std::string(c.name) == "without_wakes" && !scene->wakes.felt_by_bodies) continue;  // the same run
+    scene::Scene s = *scene;
+    s.wakes.felt_by_bodies = c.wakes;
+    auto moving = render::FloatingObjects::create(s, s.ocean, spectra);
+    if (!moving) {
+      std::fprintf(stderr, "lagoon bench: %s\n", moving.error().message.c_str());
+      return kExitFailure;
+    }
+    if ((*moving)->empty()) {
+      std::fprintf(stderr,
+                   "lagoon bench bodies: %s has no floating object or vehicle; try scenes/harbour.json\n",
+                   s.source.string().c_str());
+      return kExitFailure;
+    }
+    const BodyTimes times = time_bodies(**moving, double(s.time_s), rounds);
+    report_row(results, std::string("bodies/frame_mean/") + c.name, times.mean, "wall", 0);
+    report_row(results, std::string("bodies/frame_worst/") + c.name, times.worst, "wall", 0);
+  }
+  if (auto path = args.get("json")) {
+    const nlohmann::json doc{{"context", {{"device", "CPU"}, {"rounds", rounds}, {"scene", scene->source}}},
+                             {"benchmarks", results}};
+    if (!write_report(*path, doc)) return kExitFailure;
+    std::printf("wrote %s\n", path->c_str());
+  }
+  return kExitOk;
+}
+
+}  // namespace lagoon::cli
