@@ -21,6 +21,13 @@ struct LocalHeightsOptions {
   double knot_interval_s = 0.2;  // between WaveQuery evaluations
 };
 
+// The shortest waves a lattice resolves are 4 spacings long (2 m by default); a WaveQuery for the lattice can
+// leave shorter ones out (WaveQueryOptions::max_wavenumber): sampled on the lattice they would only alias,
+// and evaluating the rest is several times cheaper.
+inline double lattice_wavenumber(const LocalHeightsOptions& o) {
+  return 2 * 3.14159265358979323846 / (4 * o.spacing_m);
+}
+
 class LocalHeights {
  public:
   LocalHeights(const OceanParams& params, std::vector<CascadeSpectrum> spectra, LocalHeightsOptions options);

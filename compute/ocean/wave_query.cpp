@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 #include <numbers>
 
+#include "ocean/band_limit.h"
 #include "ocean/catmull_rom.h"
 #include "ocean/spectral_fields.h"
 
@@ -72,10 +73,21 @@ struct WaveQuery::Grid {
 WaveQuery::WaveQuery(const OceanParams& params, unsigned threads) : WaveQuery(params, {}, threads) {}
 
 WaveQuery::WaveQuery(const OceanParams& params, std::vector<CascadeSpectrum> spectra, unsigned threads)
-    : params_(params), spectra_(std::move(spectra)), threads_(threads) {
+    : WaveQuery(params, std::move(spectra), WaveQueryOptions{.threads = threads}) {}
+
+WaveQuery::WaveQuery(const OceanParams& params, std::vector<CascadeSpectrum> spectra,
+                     WaveQueryOptions options)
+    : params_(params), spectra_(std::move(spectra)), options_(options) {
   if (spectra_.empty())
     for (uint32_t c = 0; c < params.cascades.size(); ++c)
       spectra_.push_back(make_cascade_spectrum(params, c));
+  if (std::isfinite(options_.max_wavenumber)) {
+    std::vector<CascadeSpectrum> kept;
+    for (const CascadeSpectrum& s : spectra_)
+      if (CascadeSpectrum cut = band_limited(s, options_.max_wavenumber); cut.resolution > 0)
+        kept.push_back(std::move(cut));
+    spectra_ = std::move(kept);
+  }
   // Interpolation bounds: every mode's largest amplitude |h0(k)| + |h0(-k)| times the 2-D error of its
   // exponential (tensor product: E(θx) + Λ·E(θz)), tabulated over θ to keep construction fast.
   constexpr int kTable = 512;
@@ -103,8 +115,10 @@ WaveQuery::WaveQuery(const OceanParams& params, std::vector<CascadeSpectrum> spe
         const double k = std::hypot(kx, kz);
         variance_h += a2 * e * e;
         variance_d += a2 * e * e * (kx * kx + kz * kz) / (k * k) / 2;  // per horizontal component, on average
-        worst_case_height_ +=
-            (std::abs(std::complex<double>(s.h0[i])) + std::abs(std::complex<double>(s.h0[mirrored]))) * e;
+        const double amplitude =
+            std::abs(std::complex<double>(s.h0[i])) + std::abs(std::complex<double>(s.h0[mirrored]));
+        worst_case_height_ += amplitude * e;
+        slope_bound_ += amplitude * k;
       }
   }
   bound_height_ = 5 * std::sqrt(variance_h);
@@ -115,16 +129,23 @@ WaveQuery::~WaveQuery() = default;
 
 void WaveQuery::evaluate(double time_s) {
   if (evaluated_ && time_s == time_s_) return;
-  const InverseFft2d fft = cpu_inverse_fft(threads_);
+  const InverseFft2d fft = cpu_inverse_fft(options_.threads);
   grids_.clear();
   max_slope_ = 0;
+  const int fields = options_.heights_only ? kDz + 1 : kFieldCount;  // Dx, height, Dz come first
   for (const CascadeSpectrum& s : spectra_) {
     auto grid = std::make_unique<Grid>();
     grid->n = s.resolution;
     grid->texel_m = s.patch_size_m / s.resolution;
-    auto values = evaluate_fields(s, time_s, kFields, fft);
-    for (int f = 0; f < kFieldCount; ++f) grid->fields[f] = std::move(values[f]);
+    auto values = evaluate_fields(s, time_s, std::span(kFields, size_t(fields)), fft);
+    for (int f = 0; f < fields; ++f) grid->fields[f] = std::move(values[f]);
     grids_.push_back(std::move(grid));
+  }
+  time_s_ = time_s;
+  evaluated_ = true;
+  if (options_.heights_only) {
+    max_slope_ = slope_bound_;
+    return;
   }
   // Largest slope of the summed surface, bounded by the sum of each cascade's largest slope.
   for (const auto& g : grids_) {
@@ -133,8 +154,6 @@ void WaveQuery::evaluate(double time_s) {
       m = std::max(m, std::hypot(g->fields[kSlopeX][i], g->fields[kSlopeZ][i]));
     max_slope_ += m;
   }
-  time_s_ = time_s;
-  evaluated_ = true;
 }
 
 glm::dvec2 WaveQuery::displacement(glm::dvec2 p) const {
@@ -158,14 +177,19 @@ std::vector<WaveSample> WaveQuery::sample(double time_s, std::span<const glm::dv
       p = next;
     }
     double f[kFieldCount] = {};
-    for (const auto& g : grids_) g->sample(p, 0, kFieldCount, f);
     WaveSample& s = out[i];
     s.rest_position = p;
+    s.error_bound_m = bound;
+    s.converged = converged;
+    if (options_.heights_only) {
+      for (const auto& g : grids_) g->sample(p, kHeight, 1, &f[kHeight]);
+      s.height = f[kHeight];
+      continue;
+    }
+    for (const auto& g : grids_) g->sample(p, 0, kFieldCount, f);
     s.height = f[kHeight];
     s.normal = glm::normalize(glm::dvec3(-f[kSlopeX], 1.0, -f[kSlopeZ]));
     s.velocity = {params_.choppiness * f[kVx], f[kVy], params_.choppiness * f[kVz]};
-    s.error_bound_m = bound;
-    s.converged = converged;
   }
   return out;
 }

@@ -17,6 +17,7 @@
 #pragma once
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <limits>
 #include <memory>
 #include <span>
 #include <vector>
@@ -42,10 +43,21 @@ struct WaveSample {
 inline constexpr double kWaveQueryMaxCoordinateM = 4294967296.0;
 inline constexpr double kWaveQueryMaxTimeS = 4294967296.0;
 
+struct WaveQueryOptions {
+  unsigned threads = 2;
+  // Waves with |k| >= this are left out (ocean/band_limit.h): the answers, and their bound, are for the sea
+  // without them, evaluated on grids that only need to hold the rest (the bodies' buoyancy: issue 14).
+  double max_wavenumber = std::numeric_limits<double>::infinity();
+  // The height and rest position only (normal and velocity keep their defaults): half the fields to evaluate.
+  // The bound's slope term then uses the spectrum's largest possible slope, Σ|a_k| k, not the grid's.
+  bool heights_only = false;
+};
+
 class WaveQuery {
  public:
   explicit WaveQuery(const OceanParams& params, unsigned threads = 2);
   WaveQuery(const OceanParams& params, std::vector<CascadeSpectrum> spectra, unsigned threads = 2);
+  WaveQuery(const OceanParams& params, std::vector<CascadeSpectrum> spectra, WaveQueryOptions options);
   ~WaveQuery();
 
   // Samples every point at `time_s`. The fields for a new time are evaluated first (cached for the next
@@ -65,8 +77,9 @@ class WaveQuery {
 
   OceanParams params_;
   std::vector<CascadeSpectrum> spectra_;
-  unsigned threads_;
+  WaveQueryOptions options_;
   std::vector<std::unique_ptr<Grid>> grids_;
+  double slope_bound_ = 0;  // Σ |a_k| |k| over every mode: no slope of the surface exceeds it
   double time_s_ = 0;
   bool evaluated_ = false;
   double max_slope_ = 0;

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <glm/geometric.hpp>
+#include <vector>
 
 namespace lagoon::physics {
 namespace {
@@ -31,12 +32,15 @@ Wrench hydrostatic_wrench(std::span<const glm::dvec3> vertices, std::span<const 
                           const WaterHeight& water, glm::dvec3 about, double density, double gravity) {
   Wrench out;
   const double rho_g = density * gravity;
+  // The water's height once per vertex (a closed mesh has about half as many vertices as triangles, and
+  // each is a corner of about six): the lookup is the step's dearest part.
+  std::vector<double> depth(vertices.size());
+  for (size_t v = 0; v < vertices.size(); ++v) depth[v] = water(vertices[v].x, vertices[v].z) - vertices[v].y;
   for (size_t t = 0; t + 2 < indices.size(); t += 3) {
     std::array<Point, 3> corner;
     int under = 0;
     for (int k = 0; k < 3; ++k) {
-      const glm::dvec3 p = vertices[indices[t + k]];
-      corner[k] = {p, water(p.x, p.z) - p.y};
+      corner[k] = {vertices[indices[t + k]], depth[indices[t + k]]};
       under += corner[k].depth > 0 ? 1 : 0;
     }
     if (under == 0) continue;

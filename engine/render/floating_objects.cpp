@@ -110,7 +110,10 @@ Result<std::unique_ptr<FloatingObjects>> FloatingObjects::create(
 void FloatingObjects::reset() {
   bodies_.clear();
   if (!sea_ && !(hulls_.empty() && vehicle_hulls_.empty()))
-    sea_ = std::make_shared<ocean::WaveQuery>(ocean_, spectra_);
+    sea_ = std::make_shared<ocean::WaveQuery>(
+        ocean_, spectra_,
+        ocean::WaveQueryOptions{.max_wavenumber = ocean::lattice_wavenumber(ocean::LocalHeightsOptions{}),
+                                .heights_only = true});
   size_t h = 0;
   for (size_t o = 0; o < scene_.objects.size(); ++o) {
     const scene::Object& object = scene_.objects[o];
