@@ -12,6 +12,10 @@ const char* to_string(SpectrumType type) {
       return "jonswap";
     case SpectrumType::Tma:
       return "tma";
+    case SpectrumType::JonswapEq15:
+      return "jonswap-eq15";
+    case SpectrumType::PhillipsEq18:
+      return "phillips-eq18";
   }
   return "?";
 }
@@ -29,8 +33,8 @@ const char* to_string(Spreading spreading) {
 }
 
 bool from_string(const std::string& name, SpectrumType& out) {
-  for (SpectrumType t :
-       {SpectrumType::Phillips, SpectrumType::PiersonMoskowitz, SpectrumType::Jonswap, SpectrumType::Tma})
+  for (SpectrumType t : {SpectrumType::Phillips, SpectrumType::PiersonMoskowitz, SpectrumType::Jonswap,
+                         SpectrumType::Tma, SpectrumType::JonswapEq15, SpectrumType::PhillipsEq18})
     if (name == to_string(t)) return out = t, true;
   return false;
 }

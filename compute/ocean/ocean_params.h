@@ -9,7 +9,10 @@ namespace lagoon::ocean {
 
 inline constexpr double kGravity = 9.81;  // m/s²
 
-enum class SpectrumType { Phillips, PiersonMoskowitz, Jonswap, Tma };
+// JonswapEq15 and PhillipsEq18 are the comparison document's own forms (seed 001, eqs. 14-15 and 17-18):
+// JONSWAP on Pierson-Moskowitz's fully developed peak, and Tessendorf's Phillips spectrum in wavenumbers
+// with its own amplitude and directional factor |cos φ|^p.
+enum class SpectrumType { Phillips, PiersonMoskowitz, Jonswap, Tma, JonswapEq15, PhillipsEq18 };
 enum class Spreading { Cos2, Cos2s, DonelanBanner };
 
 struct SpectrumParams {
@@ -21,6 +24,10 @@ struct SpectrumParams {
   Spreading spreading = Spreading::Cos2s;
   double swell = 0.0;                // Horvath's swell ξ in [0, 1]: elongates crests of long waves
   double small_wave_cutoff_m = 0.0;  // Phillips' damping length l (exp(-k²l²)); 0 = none
+  // phillips-eq18 only: P(k) = amplitude · exp(-1/(kL)²) / k⁴ · |cos φ|^directional_exponent, a density in k
+  // (m⁴, so amplitude is dimensionless); the default gives the ω⁻⁵ tail of the other spectra at p = 2.
+  double amplitude = 0.0081 / (2 * 3.14159265358979323846);
+  double directional_exponent = 2.0;
 };
 
 struct CascadeParams {
@@ -46,7 +53,8 @@ struct OceanParams {
   FoamParams foam;
 };
 
-const char* to_string(SpectrumType type);    // "phillips", "pm", "jonswap", "tma"
+const char* to_string(
+    SpectrumType type);  // "phillips", "pm", "jonswap", "tma", "jonswap-eq15", "phillips-eq18"
 const char* to_string(Spreading spreading);  // "cos2", "cos2s", "donelan-banner"
 // Inverse of to_string; false when the name is unknown.
 bool from_string(const std::string& name, SpectrumType& out);

@@ -23,8 +23,17 @@ double spectrum_alpha(const SpectrumParams& s) {
     case SpectrumType::Jonswap:
     case SpectrumType::Tma:
       return jonswap_alpha(s.wind_speed_mps, fetch_m(s));
+    case SpectrumType::JonswapEq15:
+      return kPiersonMoskowitzAlpha;  // eq. 14's 0.0081
+    case SpectrumType::PhillipsEq18:
+      return 0.0;  // its own amplitude
   }
   return 0.0;
+}
+
+// Eq. 18's omnidirectional density in k, ∫ P dφ · k (m³).
+double phillips_eq18_omnidirectional(double k, const SpectrumParams& s) {
+  return phillips_eq18(k, 1.0, s) * cos_power_integral(s.directional_exponent) * k;
 }
 
 // S(ω) with α and ω_p already known.
@@ -39,6 +48,12 @@ double evaluate(const SpectrumParams& s, double alpha, double peak, double depth
       return jonswap(omega, alpha, peak, s.gamma);
     case SpectrumType::Tma:
       return jonswap(omega, alpha, peak, s.gamma) * kitaigorodskii(omega * std::sqrt(depth_m / kG));
+    case SpectrumType::JonswapEq15:
+      return jonswap(omega, alpha, peak, 3.3);  // eq. 15's ln(3.3): γ fixed at 3.3
+    case SpectrumType::PhillipsEq18: {
+      const double k = omega * omega / kG;  // deep water: the form is given in k, S(ω) only for plots
+      return phillips_eq18_omnidirectional(k, s) * 2.0 * omega / kG;
+    }
   }
   return 0.0;
 }
@@ -86,6 +101,18 @@ double phillips(double omega, double wind_speed_mps, double small_wave_cutoff_m)
          std::exp(-kl_small * kl_small);
 }
 
+double phillips_eq18(double k, double cos_phi, const SpectrumParams& s) {
+  if (!(k > 0.0)) return 0.0;
+  const double big_l = s.wind_speed_mps * s.wind_speed_mps / kG;
+  const double kl = k * big_l;
+  return s.amplitude * std::exp(-1.0 / (kl * kl)) / (k * k * k * k) *
+         std::pow(std::abs(cos_phi), s.directional_exponent);
+}
+
+double cos_power_integral(double p) {
+  return 2.0 * std::sqrt(kPi) * std::tgamma(0.5 * (p + 1.0)) / std::tgamma(0.5 * p + 1.0);
+}
+
 double peak_omega(const SpectrumParams& s) {
   switch (s.type) {
     case SpectrumType::Phillips:
@@ -95,6 +122,10 @@ double peak_omega(const SpectrumParams& s) {
     case SpectrumType::Jonswap:
     case SpectrumType::Tma:
       return jonswap_peak_omega(s.wind_speed_mps, fetch_m(s));
+    case SpectrumType::JonswapEq15:
+      return pierson_moskowitz_peak_omega(s.wind_speed_mps);  // eq. 14's f_m = 0.13 g / U10
+    case SpectrumType::PhillipsEq18:  // the maximum of k⁻³ exp(-1/(kL)²): k = sqrt(2/3) / L
+      return std::sqrt(kG * std::sqrt(2.0 / 3.0) * kG / (s.wind_speed_mps * s.wind_speed_mps));
   }
   return 1.0;
 }
@@ -121,12 +152,15 @@ double DirectionalSpectrum::frequency(double omega) const {
 
 double DirectionalSpectrum::omnidirectional(double k) const {
   if (!(k > 0.0)) return 0.0;
+  if (spectrum_.type == SpectrumType::PhillipsEq18) return phillips_eq18_omnidirectional(k, spectrum_);
   return frequency(omega(dispersion_, k)) * domega_dk(dispersion_, k);
 }
 
 double DirectionalSpectrum::operator()(double kx, double kz) const {
   const double k = std::hypot(kx, kz);
   if (!(k > 0.0)) return 0.0;
+  if (spectrum_.type == SpectrumType::PhillipsEq18)  // given in k with its own directional factor
+    return phillips_eq18(k, (kx * wind_x_ + kz * wind_z_) / k, spectrum_);
   const double w = omega(dispersion_, k);
   const double s = frequency(w);
   if (s == 0.0) return 0.0;

@@ -30,6 +30,12 @@ double jonswap_peak_omega(double wind_speed_mps, double fetch_m);
 // l = small_wave_cutoff_m. In wavenumbers this is Tessendorf's α/(2k⁴) · exp(-1/(kL)²) per unit D(θ).
 double phillips(double omega, double wind_speed_mps, double small_wave_cutoff_m);
 
+// Seed 001 eq. 18 (Tessendorf's Phillips spectrum) as a density in wavenumber: A exp(-1/(kL)²) / k⁴ ·
+// |cos φ|^p, L = U²/g, φ the angle from the wind; and its integral over direction, ∫|cos φ|^p dφ =
+// 2√π Γ((p+1)/2) / Γ(p/2+1) (π at p = 2).
+double phillips_eq18(double k, double cos_phi, const SpectrumParams& spectrum);
+double cos_power_integral(double p);
+
 // The spectral peak ω_p (rad/s) that also scales the spreading: PM and JONSWAP/TMA as above, Phillips'
 // undamped maximum (4/5)^(1/4) g/U.
 double peak_omega(const SpectrumParams& spectrum);

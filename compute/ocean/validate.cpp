@@ -110,7 +110,8 @@ Result<void> validate(const OceanParams& p) {
 
   const SpectrumParams& s = p.spectrum;
   if (std::string_view(to_string(s.type)) == "?")
-    problems.add("spectrum.type", "unknown spectrum; use phillips, pm, jonswap or tma");
+    problems.add("spectrum.type",
+                 "unknown spectrum; use phillips, pm, jonswap, tma, jonswap-eq15 or phillips-eq18");
   if (std::string_view(to_string(s.spreading)) == "?")
     problems.add("spectrum.spreading", "unknown spreading; use cos2, cos2s or donelan-banner");
   problems.positive("spectrum.wind_speed_mps", s.wind_speed_mps, "m/s at 10 m height");
@@ -120,6 +121,10 @@ Result<void> validate(const OceanParams& p) {
   problems.positive("spectrum.fetch_km", s.fetch_km, "km of open water upwind");
   problems.range("spectrum.gamma", s.gamma, 1.0, 20.0, "JONSWAP peak enhancement, 3.3 is typical");
   problems.range("spectrum.swell", s.swell, 0.0, 1.0, "");
+  if (!(s.amplitude > 0.0) || !(s.amplitude <= 1.0))
+    problems.add("spectrum.amplitude", num(s.amplitude) + " must be in (0, 1] (phillips-eq18's A)");
+  problems.range("spectrum.directional_exponent", s.directional_exponent, 0.0, 64.0,
+                 "phillips-eq18's p in |cos φ|^p, 2 in the document");
   if (!(s.small_wave_cutoff_m >= 0.0) || !std::isfinite(s.small_wave_cutoff_m))
     problems.add("spectrum.small_wave_cutoff_m",
                  num(s.small_wave_cutoff_m) + " must be >= 0 (metres; 0 = none)");

@@ -20,7 +20,7 @@ void read_spectrum(ObjectReader& r, ocean::SpectrumParams& s) {
   using ocean::SpectrumType;
   r.choice("type", s.type,
            named({SpectrumType::Jonswap, SpectrumType::PiersonMoskowitz, SpectrumType::Phillips,
-                  SpectrumType::Tma}),
+                  SpectrumType::Tma, SpectrumType::JonswapEq15, SpectrumType::PhillipsEq18}),
            "Wave spectrum: how wave energy is spread over wavelengths (see Ocean below).");
   r.number("wind_speed_mps", s.wind_speed_mps, Bounds::above_up_to(0, 60), "m/s",
            "Wind speed 10 m above the surface (U10); sets the wave height and the peak wavelength.");
@@ -40,6 +40,12 @@ void read_spectrum(ObjectReader& r, ocean::SpectrumParams& s) {
   r.number("small_wave_cutoff_m", s.small_wave_cutoff_m, Bounds::between(0, 10), "m",
            "Damping length l: the spectrum is multiplied by exp(-k²l²), removing waves much shorter than l; "
            "0 = none (phillips).");
+  r.number("amplitude", s.amplitude, Bounds::above_up_to(0, 1), "",
+           "A of phillips-eq18, P(k) = A exp(-1/(kL)^2) / k^4 |cos phi|^p (seed 001 eq. 18), as a density in "
+           "k: Hs = 4 L sqrt(A C_p / 2), L = U^2/g, C_p the integral of |cos phi|^p (pi at p = 2).");
+  r.number("directional_exponent", s.directional_exponent, Bounds::between(0, 64), "",
+           "p of phillips-eq18's |cos phi|^p: higher = crests more parallel to each other; 2 in the "
+           "document.");
 }
 
 void read_cascade(ObjectReader& r, ocean::CascadeParams& c) {

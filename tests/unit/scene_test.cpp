@@ -203,8 +203,8 @@ TEST(SceneOcean, ReadsEveryField) {
 }
 
 TEST(SceneOcean, EveryEnumNameIsAccepted) {
-  for (SpectrumType type :
-       {SpectrumType::Phillips, SpectrumType::PiersonMoskowitz, SpectrumType::Jonswap, SpectrumType::Tma}) {
+  for (SpectrumType type : {SpectrumType::Phillips, SpectrumType::PiersonMoskowitz, SpectrumType::Jonswap,
+                            SpectrumType::Tma, SpectrumType::JonswapEq15, SpectrumType::PhillipsEq18}) {
     const json document = {{"ocean", {{"spectrum", {{"type", ocean::to_string(type)}}}}}};
     Result<Scene> scene = parse_scene(document, kSource);
     ASSERT_TRUE(scene.ok()) << scene.error().message;
@@ -231,7 +231,7 @@ TEST(SceneOcean, BadEnumNameSuggestsClosest) {
   EXPECT_TRUE(Contains(message,
                        "scenes/x.json: ocean.spectrum.type: string \"jonswop\" is not one of the "
                        "allowed names; did you mean 'jonswap'? allowed: \"jonswap\", \"pm\", "
-                       "\"phillips\", \"tma\" (default \"jonswap\")"));
+                       "\"phillips\", \"tma\", \"jonswap-eq15\", \"phillips-eq18\" (default \"jonswap\")"));
   EXPECT_TRUE(Contains(ParseError(R"({"ocean": {"spectrum": {"type": "PM"}}})"), "did you mean 'pm'?"));
   message = ParseError(R"({"ocean": {"spectrum": {"spreading": "donelan_banner"}}})");
   EXPECT_TRUE(Contains(message, "ocean.spectrum.spreading: string \"donelan_banner\" is not one of"));
