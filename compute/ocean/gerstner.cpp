@@ -1,0 +1,112 @@
+#include "ocean/gerstner.h"
+
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <numbers>
+
+#include "ocean/dispersion.h"
+
+namespace lagoon::ocean {
+
+double gerstner_omega(GerstnerDispersion law, double k, double depth_m) {
+  switch (law) {
+    case GerstnerDispersion::Deep:
+      return omega_deep(k);
+    case GerstnerDispersion::FiniteDepth:
+      return omega_finite_depth(k, depth_m);
+    case GerstnerDispersion::Capillary:
+      return omega_capillary(k);
+  }
+  return 0.0;
+}
+
+GerstnerSurface::GerstnerSurface(GerstnerParams params) : params_(std::move(params)) {
+  double sum = 0;
+  for (const GerstnerWave& w : params_.waves) {
+    const double k = 2 * std::numbers::pi / w.wavelength_m, a = w.direction_deg * std::numbers::pi / 180;
+    k_.push_back(k * glm::dvec2(std::sin(a), std::cos(a)));
+    omega_.push_back(
+        quantise_omega(gerstner_omega(params_.dispersion, k, params_.depth_m), params_.loop_period_s));
+    q_.push_back(w.steepness);
+    sum += w.steepness * k * w.amplitude_m;
+  }
+  if (params_.limit_steepness && sum > 1)
+    for (double& q : q_) q /= sum;
+}
+
+double GerstnerSurface::steepness_sum() const {
+  double sum = 0;
+  for (size_t i = 0; i < k_.size(); ++i) sum += q_[i] * glm::length(k_[i]) * params_.waves[i].amplitude_m;
+  return sum;
+}
+
+GerstnerPoint GerstnerSurface::at_rest(glm::dvec2 x0, double t) const {
+  glm::dvec2 shift(0.0);
+  double y = 0, vy = 0;
+  glm::dvec2 vxz(0.0);
+  // ∂(x, z)/∂(x0, z0) = I - Σ Q A |k| d dᵀ cos θ; ∂y/∂x0 = -Σ A k sin θ.
+  double jxx = 1, jxz = 0, jzz = 1;
+  glm::dvec2 dy(0.0);
+  for (size_t i = 0; i < k_.size(); ++i) {
+    const GerstnerWave& w = params_.waves[i];
+    const double k = glm::length(k_[i]);
+    const glm::dvec2 d = k_[i] / k;
+    const double theta = glm::dot(k_[i], x0) - omega_[i] * t + w.phase_rad;
+    const double s = std::sin(theta), c = std::cos(theta), qa = q_[i] * w.amplitude_m;
+    shift -= qa * d * s;
+    y += w.amplitude_m * c;
+    vxz += qa * d * c * omega_[i];        // d/dt of -Q A d sin θ, dθ/dt = -ω
+    vy += w.amplitude_m * s * omega_[i];  // d/dt of A cos θ
+    jxx -= qa * k * d.x * d.x * c;
+    jxz -= qa * k * d.x * d.y * c;
+    jzz -= qa * k * d.y * d.y * c;
+    dy -= w.amplitude_m * k_[i] * s;
+  }
+  GerstnerPoint p;
+  p.position = {x0.x + shift.x, y, x0.y + shift.y};
+  p.velocity = {vxz.x, vy, vxz.y};
+  p.jacobian = jxx * jzz - jxz * jxz;
+  // Tangents along x0 and z0: (jxx, dy.x, jxz) and (jxz, dy.y, jzz); the normal is their cross product, up.
+  const glm::dvec3 tx(jxx, dy.x, jxz), tz(jxz, dy.y, jzz);
+  const glm::dvec3 n = glm::cross(tz, tx);
+  p.normal = glm::length(n) > 0 ? glm::normalize(n.y < 0 ? -n : n) : glm::dvec3(0, 1, 0);
+  return p;
+}
+
+WaveSample GerstnerSurface::sample(double t, double x, double z) const {
+  const glm::dvec2 q(x, z);
+  glm::dvec2 p = q;
+  bool converged = false;
+  for (int iteration = 0; iteration < 64 && !converged; ++iteration) {
+    const GerstnerPoint at = at_rest(p, t);
+    const glm::dvec2 miss = glm::dvec2(at.position.x, at.position.z) - q;
+    converged = glm::length(miss) < 1e-10;
+    if (converged) break;
+    // Newton on the horizontal map; where it is nearly singular (a sharp crest) a fixed-point step instead.
+    double jxx = 1, jxz = 0, jzz = 1;
+    for (size_t i = 0; i < k_.size(); ++i) {
+      const double k = glm::length(k_[i]);
+      const glm::dvec2 d = k_[i] / k;
+      const double c = std::cos(glm::dot(k_[i], p) - omega_[i] * t + params_.waves[i].phase_rad);
+      const double qa = q_[i] * params_.waves[i].amplitude_m;
+      jxx -= qa * k * d.x * d.x * c;
+      jxz -= qa * k * d.x * d.y * c;
+      jzz -= qa * k * d.y * d.y * c;
+    }
+    const double det = jxx * jzz - jxz * jxz;
+    if (det > 1e-3)
+      p -= glm::dvec2(jzz * miss.x - jxz * miss.y, -jxz * miss.x + jxx * miss.y) / det;
+    else
+      p -= miss;
+  }
+  const GerstnerPoint at = at_rest(p, t);
+  WaveSample s;
+  s.height = at.position.y;
+  s.normal = at.normal;
+  s.velocity = at.velocity;
+  s.rest_position = p;
+  s.converged = converged;
+  return s;
+}
+
+}  // namespace lagoon::ocean

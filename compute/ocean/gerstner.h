@@ -1,0 +1,75 @@
+// Gerstner waves (issue 15; seed 001 §1.2.1, eqs. 6-11): every surface point moves on a circle (an ellipse in
+// finite depth is not modelled: the document's eq. 6 form), so crests sharpen and troughs flatten. This is
+// the model's CPU side in double precision, the reference for its GPU pass and the query (height, normal and
+// velocity at a point) that bodies and probes use. Plain C++.
+//
+// Eq. 11, with Q_i the steepness of wave i (Q = 1 is eq. 6 as written):
+//   x = x0 - Σ Q_i (k_i/|k_i|) A_i sin θ_i,   y = Σ A_i cos θ_i,   θ_i = k_i·x0 - ω_i t + φ_i.
+// The horizontal map folds over (the crest loops) once Σ Q_i |k_i| A_i > 1; the model scales every Q_i down
+// to keep the sum at most 1 unless told not to.
+#pragma once
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <vector>
+
+#include "ocean/wave_query.h"
+
+namespace lagoon::ocean {
+
+enum class GerstnerDispersion {
+  Deep,         // ω = sqrt(g k): eq. 7
+  FiniteDepth,  // ω = sqrt(g k tanh(k D)): eq. 8
+  Capillary,    // ω = sqrt(g k (1 + k² L²)): eq. 9, L = sqrt(σ/(ρg)) the capillary length
+};
+
+struct GerstnerWave {
+  double amplitude_m = 0.5;
+  double wavelength_m = 20;
+  double direction_deg = 0;  // the direction it travels, clockwise from +z toward +x (as the wind)
+  double phase_rad = 0;      // φ
+  double steepness = 1;      // Q: 0 = a sum of sines, 1 = the document's circles
+};
+
+struct GerstnerParams {
+  std::vector<GerstnerWave> waves;
+  GerstnerDispersion dispersion = GerstnerDispersion::Deep;
+  double depth_m = 1000;        // D of eq. 8
+  double loop_period_s = 0;     // > 0: eq. 10, every ω a multiple of 2π/T (the surface repeats with T)
+  bool limit_steepness = true;  // scale the Q_i so that Σ Q k A <= 1 (no loops)
+};
+
+// One rest point x0 at time t: where it has moved and the surface's local frame there.
+struct GerstnerPoint {
+  glm::dvec3 position{0.0};  // (x, y, z) of the point that rests at (x0, 0, z0)
+  glm::dvec3 normal{0, 1, 0};
+  glm::dvec3 velocity{0.0};  // m/s
+  double jacobian = 1;       // of the horizontal map x0 -> x: < 0 where the surface loops
+};
+
+class GerstnerSurface {
+ public:
+  explicit GerstnerSurface(GerstnerParams params);
+
+  size_t size() const { return k_.size(); }
+  double omega(size_t wave) const { return omega_[wave]; }
+  glm::dvec2 wavevector(size_t wave) const { return k_[wave]; }
+  double steepness(size_t wave) const { return q_[wave]; }  // after the limit
+  // Σ Q_i |k_i| A_i: at most 1 with the limit on.
+  double steepness_sum() const;
+
+  // Eq. 11 at the rest point x0.
+  GerstnerPoint at_rest(glm::dvec2 x0, double time_s) const;
+  // The surface above (x, z): the rest point that moves there (Newton on the horizontal map), then its
+  // height, normal and velocity. converged is false where the map has folded.
+  WaveSample sample(double time_s, double x, double z) const;
+
+ private:
+  GerstnerParams params_;
+  std::vector<glm::dvec2> k_;
+  std::vector<double> omega_, q_;
+};
+
+// ω(k) of the chosen law, before quantisation.
+double gerstner_omega(GerstnerDispersion law, double k, double depth_m);
+
+}  // namespace lagoon::ocean
