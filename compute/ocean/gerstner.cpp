@@ -110,3 +110,76 @@ WaveSample GerstnerSurface::sample(double t, double x, double z) const {
 }
 
 }  // namespace lagoon::ocean
+
+namespace lagoon::ocean {
+
+std::vector<GerstnerWave> lattice_gerstner_waves(const OceanParams& params, std::vector<int>* cascade_of) {
+  const std::vector<CascadeBand> bands = cascade_bands(params);
+  std::vector<GerstnerWave> out;
+  if (cascade_of) cascade_of->clear();
+  for (const GerstnerWaveSpec& w : params.gerstner.waves) {
+    const double a = w.direction_deg * std::numbers::pi / 180;
+    const glm::dvec2 k = 2 * std::numbers::pi / w.wavelength_m * glm::dvec2(std::sin(a), std::cos(a));
+    int cascade = -1;
+    glm::dvec2 snapped = k;
+    for (size_t c = 0; c < params.cascades.size() && cascade < 0; ++c) {
+      const double dk = 2 * std::numbers::pi / params.cascades[c].patch_size_m;
+      const glm::dvec2 on_lattice = glm::round(k / dk) * dk;
+      const double length = glm::length(on_lattice);
+      if (length >= bands[c].k_min && length < bands[c].k_max && length > 0) {
+        cascade = int(c);
+        snapped = on_lattice;
+      }
+    }
+    const double length = glm::length(snapped);
+    out.push_back({.amplitude_m = w.amplitude_m,
+                   .wavelength_m = 2 * std::numbers::pi / length,
+                   .direction_deg = std::atan2(snapped.x, snapped.y) * 180 / std::numbers::pi,
+                   .phase_rad = w.phase_deg * std::numbers::pi / 180,
+                   .steepness = params.choppiness});
+    if (cascade_of) cascade_of->push_back(cascade);
+  }
+  return out;
+}
+
+GerstnerParams gerstner_params(const OceanParams& params) {
+  return {.waves = lattice_gerstner_waves(params),
+          .dispersion = params.gerstner.dispersion,
+          .depth_m = params.depth_m,
+          .loop_period_s = params.loop_period_s,
+          .limit_steepness = false};  // validate() refuses loops; the cascades cannot scale Q per wave
+}
+
+CascadeSpectrum gerstner_cascade_spectrum(const OceanParams& params, uint32_t cascade) {
+  CascadeSpectrum out;
+  if (cascade >= params.cascades.size()) return out;
+  const CascadeParams& c = params.cascades[cascade];
+  const uint32_t n = c.resolution;
+  out.resolution = n;
+  out.patch_size_m = c.patch_size_m;
+  out.band = cascade_bands(params)[cascade];
+  out.h0.assign(size_t(n) * n, {0.f, 0.f});
+  out.omega.assign(size_t(n) * n, 0.f);
+  std::vector<int> cascade_of;
+  const std::vector<GerstnerWave> waves = lattice_gerstner_waves(params, &cascade_of);
+  const double dk = 2 * std::numbers::pi / c.patch_size_m;
+  const auto index = [n](long mx, long mz) {
+    return size_t((mz % long(n) + long(n)) % long(n)) * n + size_t((mx % long(n) + long(n)) % long(n));
+  };
+  for (size_t i = 0; i < waves.size(); ++i) {
+    if (cascade_of[i] != int(cascade)) continue;
+    const GerstnerWave& w = waves[i];
+    const double a = w.direction_deg * std::numbers::pi / 180, k = 2 * std::numbers::pi / w.wavelength_m;
+    const long mx = std::lround(k * std::sin(a) / dk), mz = std::lround(k * std::cos(a) / dk);
+    // h̃(k, t) = h0(k) e^{-iωt} + conj(h0(-k)) e^{iωt}: with h0(k) = A/2 e^{iφ} and h0(-k) = 0 the height is
+    // A cos(k·x - ωt + φ), eq. 11's y.
+    out.h0[index(mx, mz)] += std::complex<float>(std::polar(0.5 * w.amplitude_m, w.phase_rad));
+    const float omega = float(
+        quantise_omega(gerstner_omega(params.gerstner.dispersion, k, params.depth_m), params.loop_period_s));
+    out.omega[index(mx, mz)] = omega;
+    out.omega[index(-mx, -mz)] = omega;
+  }
+  return out;
+}
+
+}  // namespace lagoon::ocean

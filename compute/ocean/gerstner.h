@@ -16,12 +16,6 @@
 
 namespace lagoon::ocean {
 
-enum class GerstnerDispersion {
-  Deep,         // ω = sqrt(g k): eq. 7
-  FiniteDepth,  // ω = sqrt(g k tanh(k D)): eq. 8
-  Capillary,    // ω = sqrt(g k (1 + k² L²)): eq. 9, L = sqrt(σ/(ρg)) the capillary length
-};
-
 struct GerstnerWave {
   double amplitude_m = 0.5;
   double wavelength_m = 20;
@@ -69,7 +63,18 @@ class GerstnerSurface {
   std::vector<double> omega_, q_;
 };
 
-// ω(k) of the chosen law, before quantisation.
+// ω(k) of the chosen law, before quantisation: sqrt(g k) (eq. 7), sqrt(g k tanh(k D)) (eq. 8), or
+// sqrt(g k (1 + k² L²)) (eq. 9, L = sqrt(σ/(ρg)) the capillary length).
 double gerstner_omega(GerstnerDispersion law, double k, double depth_m);
+
+// The scene's Gerstner waves (params.gerstner) as the cascades hold them: each wave vector moved to the
+// nearest one of the lattice 2π m / L of the cascade whose band holds it, so the sum tiles; steepness =
+// params.choppiness. cascade_of[i] is the cascade of wave i, or -1 when no band holds it.
+std::vector<GerstnerWave> lattice_gerstner_waves(const OceanParams& params,
+                                                 std::vector<int>* cascade_of = nullptr);
+// The cascade's spectrum holding those waves: h0(k) = A/2 e^{iφ}, ω(k) = ω(-k) of the law, quantised.
+CascadeSpectrum gerstner_cascade_spectrum(const OceanParams& params, uint32_t cascade);
+// The CPU model of the same waves (choppiness as Q, the params' depth and loop period).
+GerstnerParams gerstner_params(const OceanParams& params);
 
 }  // namespace lagoon::ocean

@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "ocean/dispersion.h"
+#include "ocean/gerstner.h"
 #include "ocean/random.h"
 #include "ocean/spectrum.h"
 
@@ -71,6 +72,7 @@ CascadeSpectrum make_cascade_spectrum(const OceanParams& params, uint32_t cascad
   if (cascade >= params.cascades.size()) return out;
   const CascadeParams& c = params.cascades[cascade];
   if (c.resolution == 0 || !(c.patch_size_m > 0.0) || !std::isfinite(c.patch_size_m)) return out;
+  if (params.model == SurfaceModel::Gerstner) return gerstner_cascade_spectrum(params, cascade);
   out.resolution = c.resolution;
   out.patch_size_m = c.patch_size_m;
   out.band = cascade_bands(params)[cascade];

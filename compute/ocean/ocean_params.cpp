@@ -32,6 +32,51 @@ const char* to_string(Spreading spreading) {
   return "?";
 }
 
+std::vector<GerstnerWaveSpec> default_gerstner_waves() {
+  std::vector<GerstnerWaveSpec> waves(3);
+  waves[0] = {0.5, 40, 0, 0};
+  waves[1] = {0.25, 17, 25, 70};
+  waves[2] = {0.12, 8, -30, 200};
+  return waves;
+}
+
+GerstnerSet::GerstnerSet() : waves(default_gerstner_waves()) {}
+
+const char* to_string(SurfaceModel model) {
+  switch (model) {
+    case SurfaceModel::Fft:
+      return "fft";
+    case SurfaceModel::Gerstner:
+      return "gerstner";
+  }
+  return "?";
+}
+
+const char* to_string(GerstnerDispersion law) {
+  switch (law) {
+    case GerstnerDispersion::Deep:
+      return "deep";
+    case GerstnerDispersion::FiniteDepth:
+      return "finite-depth";
+    case GerstnerDispersion::Capillary:
+      return "capillary";
+  }
+  return "?";
+}
+
+bool from_string(const std::string& name, SurfaceModel& out) {
+  for (SurfaceModel m : {SurfaceModel::Fft, SurfaceModel::Gerstner})
+    if (name == to_string(m)) return out = m, true;
+  return false;
+}
+
+bool from_string(const std::string& name, GerstnerDispersion& out) {
+  for (GerstnerDispersion d :
+       {GerstnerDispersion::Deep, GerstnerDispersion::FiniteDepth, GerstnerDispersion::Capillary})
+    if (name == to_string(d)) return out = d, true;
+  return false;
+}
+
 bool from_string(const std::string& name, SpectrumType& out) {
   for (SpectrumType t : {SpectrumType::Phillips, SpectrumType::PiersonMoskowitz, SpectrumType::Jonswap,
                          SpectrumType::Tma, SpectrumType::JonswapEq15, SpectrumType::PhillipsEq18})

@@ -30,6 +30,29 @@ struct SpectrumParams {
   double directional_exponent = 2.0;
 };
 
+// Which surface model makes the sea (issue 15, docs/models.md): the FFT ocean's random spectrum, or an
+// explicit set of Gerstner waves evaluated through the same cascades.
+enum class SurfaceModel { Fft, Gerstner };
+
+// Gerstner waves' dispersion (seed 001): eq. 7 deep water, eq. 8 finite depth, eq. 9 capillary.
+enum class GerstnerDispersion { Deep, FiniteDepth, Capillary };
+
+struct GerstnerWaveSpec {
+  double amplitude_m = 0.5;
+  double wavelength_m = 20;
+  double direction_deg = 0;  // travels toward, clockwise from +z toward +x
+  double phase_deg = 0;
+};
+
+// Three waves of a moderate swell (Σ k A = 0.37): what a scene switched to model gerstner starts with.
+std::vector<GerstnerWaveSpec> default_gerstner_waves();
+
+struct GerstnerSet {
+  GerstnerSet();  // out of line: GCC 12 warns wrongly about an inlined vector default here
+  std::vector<GerstnerWaveSpec> waves;
+  GerstnerDispersion dispersion = GerstnerDispersion::Deep;
+};
+
 struct CascadeParams {
   double patch_size_m = 1000.0;  // side of the square tile this cascade repeats over
   uint32_t resolution = 256;     // N: samples per side, a power of two in [64, 1024]
@@ -48,6 +71,8 @@ struct OceanParams {
   double depth_m = 1000.0;     // water depth for finite-depth dispersion and TMA; > 0
   double choppiness = 1.0;     // λ: horizontal displacement scale, 0 = none
   double loop_period_s = 0.0;  // > 0 quantises ω so every field repeats with this period; 0 = no loop
+  SurfaceModel model = SurfaceModel::Fft;
+  GerstnerSet gerstner;  // model gerstner: the waves (choppiness is every wave's steepness Q)
   SpectrumParams spectrum;
   std::vector<CascadeParams> cascades{{1000.0, 256}, {100.0, 256}, {10.0, 256}};
   FoamParams foam;
@@ -55,9 +80,13 @@ struct OceanParams {
 
 const char* to_string(
     SpectrumType type);  // "phillips", "pm", "jonswap", "tma", "jonswap-eq15", "phillips-eq18"
-const char* to_string(Spreading spreading);  // "cos2", "cos2s", "donelan-banner"
+const char* to_string(Spreading spreading);     // "cos2", "cos2s", "donelan-banner"
+const char* to_string(SurfaceModel model);      // "fft", "gerstner"
+const char* to_string(GerstnerDispersion law);  // "deep", "finite-depth", "capillary"
 // Inverse of to_string; false when the name is unknown.
 bool from_string(const std::string& name, SpectrumType& out);
 bool from_string(const std::string& name, Spreading& out);
+bool from_string(const std::string& name, SurfaceModel& out);
+bool from_string(const std::string& name, GerstnerDispersion& out);
 
 }  // namespace lagoon::ocean

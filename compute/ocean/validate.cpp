@@ -5,6 +5,10 @@
 #include <sstream>
 #include <string>
 #include <string_view>
+#include <vector>
+
+#include "ocean/gerstner.h"
+#include "ocean/initial_spectrum.h"
 
 namespace lagoon::ocean {
 namespace {
@@ -99,6 +103,45 @@ void check_cascades(const OceanParams& p, Problems& problems) {
   }
 }
 
+// Model gerstner: every wave finite and held by some cascade's band, and no loops (Σ λ k A <= 1).
+void check_gerstner(const OceanParams& p, Problems& problems) {
+  if (p.gerstner.waves.empty())
+    problems.add("gerstner.waves", "is empty; model gerstner needs at least one wave");
+  double sum = 0;
+  bool finite = true;
+  for (size_t i = 0; i < p.gerstner.waves.size(); ++i) {
+    const GerstnerWaveSpec& w = p.gerstner.waves[i];
+    const std::string at = "gerstner.waves[" + std::to_string(i) + "].";
+    if (!(w.amplitude_m >= 0) || !std::isfinite(w.amplitude_m)) {
+      problems.add(at + "amplitude_m", num(w.amplitude_m) + " must be >= 0 (metres)");
+      finite = false;
+    }
+    if (!(w.wavelength_m > 0) || !std::isfinite(w.wavelength_m)) {
+      problems.add(at + "wavelength_m", num(w.wavelength_m) + " must be > 0 (metres)");
+      finite = false;
+    }
+    if (!std::isfinite(w.direction_deg) || !std::isfinite(w.phase_deg)) {
+      problems.add(at + "direction_deg", "direction and phase must be finite angles in degrees");
+      finite = false;
+    }
+    if (finite) sum += 2 * std::numbers::pi / w.wavelength_m * w.amplitude_m;
+  }
+  if (!finite) return;
+  std::vector<int> cascade_of;
+  lattice_gerstner_waves(p, &cascade_of);
+  const double shortest = 2 * std::numbers::pi / cascade_bands(p).back().k_max;
+  for (size_t i = 0; i < cascade_of.size(); ++i)
+    if (cascade_of[i] < 0)
+      problems.add("gerstner.waves[" + std::to_string(i) + "].wavelength_m",
+                   num(p.gerstner.waves[i].wavelength_m) + " m is held by no cascade: they hold waves from " +
+                       num(p.cascades.front().patch_size_m) + " m (the first patch) down to " +
+                       num(shortest) + " m (4 texels of the last); change the wavelength or the cascades");
+  if (p.choppiness * sum > 1 + 1e-12)
+    problems.add("choppiness", num(p.choppiness) + " loops the crests of these Gerstner waves: Σ Q k A = " +
+                                   num(p.choppiness * sum) + " > 1 (Q = choppiness); use at most " +
+                                   num(1 / sum) + " or lower the amplitudes");
+}
+
 }  // namespace
 
 Result<void> validate(const OceanParams& p) {
@@ -136,6 +179,7 @@ Result<void> validate(const OceanParams& p) {
     problems.add("foam.decay_per_s", num(p.foam.decay_per_s) + " must be >= 0 (1/s)");
 
   check_cascades(p, problems);
+  if (p.model == SurfaceModel::Gerstner && problems.result()) check_gerstner(p, problems);
   return problems.result();
 }
 

@@ -48,6 +48,27 @@ void read_spectrum(ObjectReader& r, ocean::SpectrumParams& s) {
            "document.");
 }
 
+void read_gerstner_wave(ObjectReader& r, ocean::GerstnerWaveSpec& w) {
+  r.number("amplitude_m", w.amplitude_m, Bounds::between(0, 100), "m",
+           "Amplitude A: the crest's height above the mean level.");
+  r.number("wavelength_m", w.wavelength_m, Bounds::above_up_to(0, 100000), "m",
+           "Wavelength 2 pi / k; moved to the nearest wave the cascades tile with (docs/models.md).");
+  r.number("direction_deg", w.direction_deg, Bounds::between(-360, 360), "deg",
+           "Direction it travels toward, clockwise from +z (north) toward +x (east).");
+  r.number("phase_deg", w.phase_deg, Bounds::between(-360, 360), "deg", "Phase phi of eq. 11.");
+}
+
+void read_gerstner(ObjectReader& r, ocean::GerstnerSet& g) {
+  r.array("waves", g.waves, 1, 64, read_gerstner_wave,
+          "The waves of eq. 11 (seed 001); choppiness is every wave's steepness Q, and Q k A summed over "
+          "the waves may not exceed 1 (no loops).");
+  using ocean::GerstnerDispersion;
+  r.choice("dispersion", g.dispersion,
+           named({GerstnerDispersion::Deep, GerstnerDispersion::FiniteDepth, GerstnerDispersion::Capillary}),
+           "How fast each wave travels: deep = sqrt(g k) (eq. 7), finite-depth = sqrt(g k tanh(k depth_m)) "
+           "(eq. 8), capillary = sqrt(g k (1 + k^2 L^2)), L the capillary length (eq. 9).");
+}
+
 void read_cascade(ObjectReader& r, ocean::CascadeParams& c) {
   r.number("patch_size_m", c.patch_size_m, Bounds::above_up_to(0, 100000), "m",
            "Side of the square tile this cascade's waves repeat over.");
@@ -79,6 +100,11 @@ void read_ocean(ObjectReader& r, ocean::OceanParams& o) {
   r.number("loop_period_s", o.loop_period_s, Bounds::between(0, 3600), "s",
            "If > 0, wave frequencies are rounded so the whole sea repeats exactly with this period (seamless "
            "loops); 0 = no loop.");
+  using ocean::SurfaceModel;
+  r.choice("model", o.model, named({SurfaceModel::Fft, SurfaceModel::Gerstner}),
+           "Surface model: fft = waves from the spectrum; gerstner = the waves listed in gerstner, through "
+           "the same cascades (docs/models.md).");
+  r.block("gerstner", o.gerstner, read_gerstner, "Model gerstner: its waves and dispersion.");
   r.block("spectrum", o.spectrum, read_spectrum, "Wind and wave spectrum.");
   r.array("cascades", o.cascades, 1, 4, read_cascade,
           "FFT tiles from the largest patch to the smallest; each renders a band of wavelengths (see Ocean "

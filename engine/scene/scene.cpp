@@ -212,7 +212,8 @@ Result<Scene> parse_scene(const nlohmann::json& document, const std::string& sou
 }
 
 std::vector<FieldInfo> scene_fields() {
-  return scene_fields(Scene{});
+  const Scene defaults;
+  return scene_fields(defaults);
 }
 
 std::vector<FieldInfo> scene_fields(const Scene& scene) {

@@ -8,6 +8,7 @@
 
 #include "io/npy.h"
 #include "ocean/cpu_step.h"
+#include "ocean/gerstner.h"
 #include "scene/scene.h"
 #include "support/direct_sum.h"
 #include "support/fftw_reference.h"
@@ -244,6 +245,52 @@ TEST(OceanCli, ProbeAtAPointIncludesTheWakes) {
   EXPECT_GT(std::abs(a["normal"][0].get<double>() - b["normal"][0].get<double>()) +
                 std::abs(a["normal"][2].get<double>() - b["normal"][2].get<double>()),
             1e-3);
+}
+
+// Model gerstner through the tools: lagoon probe answers eq. 11 within its bound, and lagoon export's
+// cascades sum to eq. 11's displacement at the texels' rest points (ocean/gerstner.h, docs/models.md).
+TEST(OceanCli, ModelGerstnerThroughProbeAndExport) {
+  const std::vector<std::string> sets{
+      "ocean.model=gerstner", "ocean.choppiness=0.9",
+      R"(ocean.cascades=[{"patch_size_m":200,"resolution":64},{"patch_size_m":20,"resolution":64}])",
+      R"(ocean.gerstner.waves=[{"amplitude_m":0.6,"wavelength_m":37,"direction_deg":20,"phase_deg":30},)"
+      R"({"amplitude_m":0.05,"wavelength_m":2.3,"direction_deg":75}])"};
+  std::string set_args;
+  for (const std::string& s : sets) set_args += " --set " + shell_quote(s);
+  auto scene = scene::load_scene(kScene, sets);
+  ASSERT_TRUE(scene) << scene.error().message;
+  const ocean::GerstnerSurface cpu(ocean::gerstner_params(scene->ocean));
+
+  auto r = lagoon("probe --scene " + kScene + " --time 2.5 --at 3,4 --at -17.5,8.25" + set_args);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::istringstream lines(r.output);
+  std::string line;
+  int count = 0;
+  while (std::getline(lines, line)) {
+    const auto j = nlohmann::json::parse(line);
+    const ocean::WaveSample exact = cpu.sample(2.5, j["x"].get<double>(), j["z"].get<double>());
+    EXPECT_LE(std::abs(j["height_m"].get<double>() - exact.height), j["error_bound_m"].get<double>()) << line;
+    ++count;
+  }
+  EXPECT_EQ(count, 2);
+
+  TempDir dir;
+  r = lagoon("export --scene " + kScene + " --out " + shell_quote((dir / "g").string()) + " --t0 1.5" +
+             set_args);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  auto big = io::read_npy(dir / "g" / "cascade0_displacement.npy");
+  auto small = io::read_npy(dir / "g" / "cascade1_displacement.npy");
+  ASSERT_TRUE(big && small);
+  double worst = 0;
+  for (int j = 0; j < 64; j += 7)
+    for (int i = 0; i < 64; i += 5) {  // texel (i, j) of 200 m rests at 3.125 (i, j): texel 10 (i, j) of 20 m
+      const size_t a = (size_t(j) * 64 + i) * 3, b = (size_t((10 * j) % 64) * 64 + (10 * i) % 64) * 3;
+      const glm::dvec2 x0 = 3.125 * glm::dvec2(i, j);
+      const glm::dvec3 d = cpu.at_rest(x0, 1.5).position - glm::dvec3(x0.x, 0, x0.y);
+      for (int c = 0; c < 3; ++c)
+        worst = std::max(worst, std::abs(big->data[a + c] + small->data[b + c] - d[c]));
+    }
+  EXPECT_LT(worst, 1e-4);
 }
 
 TEST(OceanCli, AVehicleWithoutAHullFailsNamingTheField) {

@@ -187,5 +187,29 @@ TEST(Gerstner, NormalAndVelocityAreTheSurfacesDerivatives) {
   }
 }
 
+// Model gerstner through the cascades: WaveQuery (the FFT ocean's CPU query, unchanged) answers eq. 11 of the
+// lattice waves within its own error bound.
+TEST(Gerstner, WaveQueryOfModelGerstnerAnswersEquationEleven) {
+  ocean::OceanParams p;
+  p.model = ocean::SurfaceModel::Gerstner;
+  p.choppiness = 0.9;
+  p.cascades = {{200, 128}, {20, 128}};
+  p.gerstner.waves = {{0.6, 37, 20, 30}, {0.2, 9.3, -40, 100}, {0.03, 1.7, 75, 10}};
+  ocean::WaveQuery query(p);
+  const GerstnerSurface cpu(ocean::gerstner_params(p));
+  double worst = 0, bound = 0;
+  for (int i = 0; i < 40; ++i) {
+    const double x = -50 + 2.71 * i, z = 13 - 1.93 * i, t = 0.37 * i;
+    const ocean::WaveSample a = query.sample(t, x, z), b = cpu.sample(t, x, z);
+    ASSERT_TRUE(b.converged);
+    worst = std::max(worst, std::abs(a.height - b.height));
+    bound = a.error_bound_m;
+  }
+  RecordProperty("worst_height_error_m", std::to_string(worst));
+  RecordProperty("bound_m", std::to_string(bound));
+  EXPECT_LE(worst, bound);
+  EXPECT_LT(worst, 0.01);
+}
+
 }  // namespace
 }  // namespace lagoon::test
