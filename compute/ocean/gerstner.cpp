@@ -5,6 +5,8 @@
 #include <numbers>
 
 #include "ocean/dispersion.h"
+#include "ocean/spectrum.h"
+#include "ocean/spreading.h"
 
 namespace lagoon::ocean {
 
@@ -113,11 +115,43 @@ WaveSample GerstnerSurface::sample(double t, double x, double z) const {
 
 namespace lagoon::ocean {
 
+std::vector<GerstnerWaveSpec> gerstner_wave_specs(const OceanParams& params) {
+  const uint32_t n = params.gerstner.spectrum_waves;
+  if (n == 0) return params.gerstner.waves;
+  const SpectrumParams& spectrum = params.spectrum;
+  const double peak = peak_omega(spectrum), lo = 0.6 * peak, hi = 4.0 * peak;
+  const double ratio = std::pow(hi / lo, 1.0 / n);
+  const SpreadingModel spread = spreading_for(spectrum);
+  const double wind = spectrum.wind_direction_deg;
+  constexpr int kAngles = 720;
+  std::vector<GerstnerWaveSpec> out;
+  for (uint32_t i = 0; i < n; ++i) {
+    const double w0 = lo * std::pow(ratio, i), w1 = w0 * ratio, w = std::sqrt(w0 * w1);
+    // θ from D(ω, θ): the inverse of its cumulative sum at the i-th golden-ratio quantile.
+    std::vector<double> cumulative(kAngles + 1, 0.0);
+    for (int a = 0; a < kAngles; ++a) {
+      const double theta = -std::numbers::pi + (a + 0.5) * 2 * std::numbers::pi / kAngles;
+      cumulative[a + 1] = cumulative[a] + spreading(spread, w, theta);
+    }
+    const double u = std::fmod(0.5 + i * 0.6180339887498949, 1.0) * cumulative.back();
+    int a = 0;
+    while (a < kAngles - 1 && cumulative[a + 1] < u) ++a;
+    const double theta = -180.0 + (a + 0.5) * 360.0 / kAngles;
+    const double phase =
+        360.0 * std::fmod((params.seed + 1) * 0.7548776662466927 + i * 0.5698402909980532, 1.0);
+    out.push_back({.amplitude_m = std::sqrt(2 * frequency_spectrum(spectrum, params.depth_m, w) * (w1 - w0)),
+                   .wavelength_m = 2 * std::numbers::pi / (w * w / kGravity),  // deep water k = ω²/g
+                   .direction_deg = wind + theta,
+                   .phase_deg = phase});
+  }
+  return out;
+}
+
 std::vector<GerstnerWave> lattice_gerstner_waves(const OceanParams& params, std::vector<int>* cascade_of) {
   const std::vector<CascadeBand> bands = cascade_bands(params);
   std::vector<GerstnerWave> out;
   if (cascade_of) cascade_of->clear();
-  for (const GerstnerWaveSpec& w : params.gerstner.waves) {
+  for (const GerstnerWaveSpec& w : gerstner_wave_specs(params)) {
     const double a = w.direction_deg * std::numbers::pi / 180;
     const glm::dvec2 k = 2 * std::numbers::pi / w.wavelength_m * glm::dvec2(std::sin(a), std::cos(a));
     int cascade = -1;

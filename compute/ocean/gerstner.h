@@ -67,7 +67,13 @@ class GerstnerSurface {
 // sqrt(g k (1 + k² L²)) (eq. 9, L = sqrt(σ/(ρg)) the capillary length).
 double gerstner_omega(GerstnerDispersion law, double k, double depth_m);
 
-// The scene's Gerstner waves (params.gerstner) as the cascades hold them: each wave vector moved to the
+// The waves model gerstner uses: params.gerstner.waves, or with spectrum_waves = N, N waves sampled from the
+// scene's spectrum with deterministic amplitudes (seed 001 eq. 13, h0 = the spectrum's amplitude, no random
+// factor): frequencies on a geometric grid from 0.6 to 4 ω_p, each carrying A = sqrt(2 S(ω) Δω); a direction
+// from the spreading D(ω, θ) at a golden-ratio quasi-random quantile; phases from the seed.
+std::vector<GerstnerWaveSpec> gerstner_wave_specs(const OceanParams& params);
+
+// The scene's Gerstner waves (gerstner_wave_specs) as the cascades hold them: each wave vector moved to the
 // nearest one of the lattice 2π m / L of the cascade whose band holds it, so the sum tiles; steepness =
 // params.choppiness. cascade_of[i] is the cascade of wave i, or -1 when no band holds it.
 std::vector<GerstnerWave> lattice_gerstner_waves(const OceanParams& params,

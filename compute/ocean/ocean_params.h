@@ -51,6 +51,8 @@ struct GerstnerSet {
   GerstnerSet();  // out of line: GCC 12 warns wrongly about an inlined vector default here
   std::vector<GerstnerWaveSpec> waves;
   GerstnerDispersion dispersion = GerstnerDispersion::Deep;
+  // > 0: this many waves sampled from `spectrum` (deterministic amplitudes, seed 001 eq. 13) replace `waves`.
+  uint32_t spectrum_waves = 0;
 };
 
 struct CascadeParams {

@@ -105,23 +105,28 @@ void check_cascades(const OceanParams& p, Problems& problems) {
 
 // Model gerstner: every wave finite and held by some cascade's band, and no loops (Σ λ k A <= 1).
 void check_gerstner(const OceanParams& p, Problems& problems) {
-  if (p.gerstner.waves.empty())
-    problems.add("gerstner.waves", "is empty; model gerstner needs at least one wave");
+  const std::vector<GerstnerWaveSpec> waves = gerstner_wave_specs(p);
+  const bool sampled = p.gerstner.spectrum_waves > 0;
+  // Where a wave's fix goes: the wave the file lists, or the sampling setting.
+  const auto field = [sampled](size_t i, const char* name) {
+    return sampled ? "gerstner.spectrum_waves (sampled wave " + std::to_string(i) + ", " + name + ")"
+                   : "gerstner.waves[" + std::to_string(i) + "]." + name;
+  };
+  if (waves.empty()) problems.add("gerstner.waves", "is empty; model gerstner needs at least one wave");
   double sum = 0;
   bool finite = true;
-  for (size_t i = 0; i < p.gerstner.waves.size(); ++i) {
-    const GerstnerWaveSpec& w = p.gerstner.waves[i];
-    const std::string at = "gerstner.waves[" + std::to_string(i) + "].";
+  for (size_t i = 0; i < waves.size(); ++i) {
+    const GerstnerWaveSpec& w = waves[i];
     if (!(w.amplitude_m >= 0) || !std::isfinite(w.amplitude_m)) {
-      problems.add(at + "amplitude_m", num(w.amplitude_m) + " must be >= 0 (metres)");
+      problems.add(field(i, "amplitude_m"), num(w.amplitude_m) + " must be >= 0 (metres)");
       finite = false;
     }
     if (!(w.wavelength_m > 0) || !std::isfinite(w.wavelength_m)) {
-      problems.add(at + "wavelength_m", num(w.wavelength_m) + " must be > 0 (metres)");
+      problems.add(field(i, "wavelength_m"), num(w.wavelength_m) + " must be > 0 (metres)");
       finite = false;
     }
     if (!std::isfinite(w.direction_deg) || !std::isfinite(w.phase_deg)) {
-      problems.add(at + "direction_deg", "direction and phase must be finite angles in degrees");
+      problems.add(field(i, "direction_deg"), "direction and phase must be finite angles in degrees");
       finite = false;
     }
     if (finite) sum += 2 * std::numbers::pi / w.wavelength_m * w.amplitude_m;
@@ -132,8 +137,8 @@ void check_gerstner(const OceanParams& p, Problems& problems) {
   const double shortest = 2 * std::numbers::pi / cascade_bands(p).back().k_max;
   for (size_t i = 0; i < cascade_of.size(); ++i)
     if (cascade_of[i] < 0)
-      problems.add("gerstner.waves[" + std::to_string(i) + "].wavelength_m",
-                   num(p.gerstner.waves[i].wavelength_m) + " m is held by no cascade: they hold waves from " +
+      problems.add(field(i, "wavelength_m"),
+                   num(waves[i].wavelength_m) + " m is held by no cascade: they hold waves from " +
                        num(p.cascades.front().patch_size_m) + " m (the first patch) down to " +
                        num(shortest) + " m (4 texels of the last); change the wavelength or the cascades");
   if (p.choppiness * sum > 1 + 1e-12)

@@ -62,6 +62,11 @@ void read_gerstner(ObjectReader& r, ocean::GerstnerSet& g) {
   r.array("waves", g.waves, 1, 64, read_gerstner_wave,
           "The waves of eq. 11 (seed 001); choppiness is every wave's steepness Q, and Q k A summed over "
           "the waves may not exceed 1 (no loops).");
+  r.integer(
+      "spectrum_waves", g.spectrum_waves, Bounds::between(0, 64), "",
+      "If > 0, this many waves sampled from ocean.spectrum replace waves: frequencies from 0.6 to 4 times "
+      "the peak, amplitudes sqrt(2 S(omega) d omega) without a random factor (seed 001 eq. 13), "
+      "directions from the spreading.");
   using ocean::GerstnerDispersion;
   r.choice("dispersion", g.dispersion,
            named({GerstnerDispersion::Deep, GerstnerDispersion::FiniteDepth, GerstnerDispersion::Capillary}),

@@ -211,5 +211,44 @@ TEST(Gerstner, WaveQueryOfModelGerstnerAnswersEquationEleven) {
   EXPECT_LT(worst, 0.01);
 }
 
+// Waves sampled from the spectrum (eq. 13's deterministic amplitudes): their variance Σ A²/2 is the
+// spectrum's integral over the sampled band, PM written out here and integrated by Simpson (3 % allowed), and
+// their energy-weighted direction is the wind's.
+TEST(Gerstner, WavesSampledFromTheSpectrumCarryItsEnergy) {
+  ocean::OceanParams p;
+  p.model = ocean::SurfaceModel::Gerstner;
+  p.spectrum.type = ocean::SpectrumType::PiersonMoskowitz;
+  p.spectrum.wind_speed_mps = 9;
+  p.spectrum.wind_direction_deg = 40;
+  p.gerstner.spectrum_waves = 32;
+  const auto waves = ocean::gerstner_wave_specs(p);
+  ASSERT_EQ(waves.size(), 32u);
+  double variance = 0;
+  glm::dvec2 heading(0.0);
+  for (const auto& w : waves) {
+    variance += 0.5 * w.amplitude_m * w.amplitude_m;
+    const double a = w.direction_deg * kPi / 180;
+    heading += w.amplitude_m * w.amplitude_m * glm::dvec2(std::sin(a), std::cos(a));
+  }
+  const double wp = 2 * kPi * 0.13 * g / 9, lo = 0.6 * wp, hi = 4 * wp;
+  const auto pm = [wp](double w) {
+    return 0.0081 * g * g / std::pow(w, 5) * std::exp(-1.25 * std::pow(wp / w, 4));
+  };
+  double band = 0;
+  const int n = 20000;
+  for (int i = 0; i <= n; ++i) {
+    const double w = lo + (hi - lo) * i / n;
+    band += (i == 0 || i == n ? 1 : (i % 2 ? 4 : 2)) * pm(w);
+  }
+  band *= (hi - lo) / n / 3;
+  const double hs = 4 * std::sqrt(variance), hs_band = 4 * std::sqrt(band), hs_all = 4 * std::sqrt(0.0081 * g * g / (5 * std::pow(wp, 4)));
+  RecordProperty("hs_sampled_m", std::to_string(hs));
+  RecordProperty("hs_of_band_m", std::to_string(hs_band));
+  RecordProperty("hs_of_spectrum_m", std::to_string(hs_all));  // PM: m0 = α g² / (5 ω_p⁴)
+  EXPECT_NEAR(hs, hs_band, 0.03 * hs_band);
+  EXPECT_NEAR(std::atan2(heading.x, heading.y) * 180 / kPi, 40.0, 5.0);
+  EXPECT_EQ(ocean::gerstner_wave_specs(p)[7].phase_deg, waves[7].phase_deg) << "deterministic";
+}
+
 }  // namespace
 }  // namespace lagoon::test
