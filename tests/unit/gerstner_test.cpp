@@ -241,7 +241,8 @@ TEST(Gerstner, WavesSampledFromTheSpectrumCarryItsEnergy) {
     band += (i == 0 || i == n ? 1 : (i % 2 ? 4 : 2)) * pm(w);
   }
   band *= (hi - lo) / n / 3;
-  const double hs = 4 * std::sqrt(variance), hs_band = 4 * std::sqrt(band), hs_all = 4 * std::sqrt(0.0081 * g * g / (5 * std::pow(wp, 4)));
+  const double hs = 4 * std::sqrt(variance), hs_band = 4 * std::sqrt(band),
+               hs_all = 4 * std::sqrt(0.0081 * g * g / (5 * std::pow(wp, 4)));
   RecordProperty("hs_sampled_m", std::to_string(hs));
   RecordProperty("hs_of_band_m", std::to_string(hs_band));
   RecordProperty("hs_of_spectrum_m", std::to_string(hs_all));  // PM: m0 = α g² / (5 ω_p⁴)
