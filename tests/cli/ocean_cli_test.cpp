@@ -32,6 +32,14 @@ ProcessResult lagoon(const std::string& args) {
   return run_process(shell_quote(LAGOON_BINARY) + " " + args);
 }
 
+// One JSON object per line, as lagoon probe prints them.
+std::vector<nlohmann::json> json_lines(const std::string& output) {
+  std::istringstream lines(output);
+  std::vector<nlohmann::json> out;
+  for (std::string line; std::getline(lines, line);) out.push_back(nlohmann::json::parse(line));
+  return out;
+}
+
 TEST(OceanCli, ExportWritesTheGpuFieldsInTheDocumentedLayout) {
   TempDir dir;
   const fs::path out = dir / "fields";
@@ -263,16 +271,12 @@ TEST(OceanCli, ModelGerstnerThroughProbeAndExport) {
 
   auto r = lagoon("probe --scene " + kScene + " --time 2.5 --at 3,4 --at -17.5,8.25" + set_args);
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  std::istringstream lines(r.output);
-  std::string line;
-  int count = 0;
-  while (std::getline(lines, line)) {
-    const auto j = nlohmann::json::parse(line);
+  const std::vector<nlohmann::json> points = json_lines(r.output);
+  EXPECT_EQ(points.size(), 2u);
+  for (const nlohmann::json& j : points) {
     const ocean::WaveSample exact = cpu.sample(2.5, j["x"].get<double>(), j["z"].get<double>());
-    EXPECT_LE(std::abs(j["height_m"].get<double>() - exact.height), j["error_bound_m"].get<double>()) << line;
-    ++count;
+    EXPECT_LE(std::abs(j["height_m"].get<double>() - exact.height), j["error_bound_m"].get<double>()) << j;
   }
-  EXPECT_EQ(count, 2);
 
   TempDir dir;
   r = lagoon("export --scene " + kScene + " --out " + shell_quote((dir / "g").string()) + " --t0 1.5" +
