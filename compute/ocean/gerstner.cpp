@@ -4,6 +4,7 @@
 #include <glm/geometric.hpp>
 #include <numbers>
 
+#include "ocean/cascade_lattice.h"
 #include "ocean/dispersion.h"
 #include "ocean/spectrum.h"
 #include "ocean/spreading.h"
@@ -148,30 +149,16 @@ std::vector<GerstnerWaveSpec> gerstner_wave_specs(const OceanParams& params) {
 }
 
 std::vector<GerstnerWave> lattice_gerstner_waves(const OceanParams& params, std::vector<int>* cascade_of) {
-  const std::vector<CascadeBand> bands = cascade_bands(params);
   std::vector<GerstnerWave> out;
   if (cascade_of) cascade_of->clear();
   for (const GerstnerWaveSpec& w : gerstner_wave_specs(params)) {
-    const double a = w.direction_deg * std::numbers::pi / 180;
-    const glm::dvec2 k = 2 * std::numbers::pi / w.wavelength_m * glm::dvec2(std::sin(a), std::cos(a));
-    int cascade = -1;
-    glm::dvec2 snapped = k;
-    for (size_t c = 0; c < params.cascades.size() && cascade < 0; ++c) {
-      const double dk = 2 * std::numbers::pi / params.cascades[c].patch_size_m;
-      const glm::dvec2 on_lattice = glm::round(k / dk) * dk;
-      const double length = glm::length(on_lattice);
-      if (length >= bands[c].k_min && length < bands[c].k_max && length > 0) {
-        cascade = int(c);
-        snapped = on_lattice;
-      }
-    }
-    const double length = glm::length(snapped);
+    const LatticeWave l = snap_to_cascades(params, wave_vector(w.wavelength_m, w.direction_deg));
     out.push_back({.amplitude_m = w.amplitude_m,
-                   .wavelength_m = 2 * std::numbers::pi / length,
-                   .direction_deg = std::atan2(snapped.x, snapped.y) * 180 / std::numbers::pi,
+                   .wavelength_m = 2 * std::numbers::pi / glm::length(l.k),
+                   .direction_deg = std::atan2(l.k.x, l.k.y) * 180 / std::numbers::pi,
                    .phase_rad = w.phase_deg * std::numbers::pi / 180,
                    .steepness = params.choppiness});
-    if (cascade_of) cascade_of->push_back(cascade);
+    if (cascade_of) cascade_of->push_back(l.cascade);
   }
   return out;
 }
@@ -197,21 +184,18 @@ CascadeSpectrum gerstner_cascade_spectrum(const OceanParams& params, uint32_t ca
   std::vector<int> cascade_of;
   const std::vector<GerstnerWave> waves = lattice_gerstner_waves(params, &cascade_of);
   const double dk = 2 * std::numbers::pi / c.patch_size_m;
-  const auto index = [n](long mx, long mz) {
-    return size_t((mz % long(n) + long(n)) % long(n)) * n + size_t((mx % long(n) + long(n)) % long(n));
-  };
   for (size_t i = 0; i < waves.size(); ++i) {
     if (cascade_of[i] != int(cascade)) continue;
     const GerstnerWave& w = waves[i];
-    const double a = w.direction_deg * std::numbers::pi / 180, k = 2 * std::numbers::pi / w.wavelength_m;
-    const long mx = std::lround(k * std::sin(a) / dk), mz = std::lround(k * std::cos(a) / dk);
+    const glm::dvec2 k = wave_vector(w.wavelength_m, w.direction_deg);
+    const long mx = std::lround(k.x / dk), mz = std::lround(k.y / dk);
     // h̃(k, t) = h0(k) e^{-iωt} + conj(h0(-k)) e^{iωt}: with h0(k) = A/2 e^{iφ} and h0(-k) = 0 the height is
     // A cos(k·x - ωt + φ), eq. 11's y.
-    out.h0[index(mx, mz)] += std::complex<float>(std::polar(0.5 * w.amplitude_m, w.phase_rad));
-    const float omega = float(
-        quantise_omega(gerstner_omega(params.gerstner.dispersion, k, params.depth_m), params.loop_period_s));
-    out.omega[index(mx, mz)] = omega;
-    out.omega[index(-mx, -mz)] = omega;
+    out.h0[mode_index(n, mx, mz)] += std::complex<float>(std::polar(0.5 * w.amplitude_m, w.phase_rad));
+    const float omega = float(quantise_omega(
+        gerstner_omega(params.gerstner.dispersion, glm::length(k), params.depth_m), params.loop_period_s));
+    out.omega[mode_index(n, mx, mz)] = omega;
+    out.omega[mode_index(n, -mx, -mz)] = omega;
   }
   return out;
 }
