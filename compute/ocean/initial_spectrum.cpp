@@ -10,6 +10,7 @@
 #include "ocean/dispersion.h"
 #include "ocean/gerstner.h"
 #include "ocean/random.h"
+#include "ocean/sines.h"
 #include "ocean/spectrum.h"
 
 namespace lagoon::ocean {
@@ -73,6 +74,7 @@ CascadeSpectrum make_cascade_spectrum(const OceanParams& params, uint32_t cascad
   const CascadeParams& c = params.cascades[cascade];
   if (c.resolution == 0 || !(c.patch_size_m > 0.0) || !std::isfinite(c.patch_size_m)) return out;
   if (params.model == SurfaceModel::Gerstner) return gerstner_cascade_spectrum(params, cascade);
+  if (params.model == SurfaceModel::Sines) return sines_cascade_spectrum(params, cascade);
   out.resolution = c.resolution;
   out.patch_size_m = c.patch_size_m;
   out.band = cascade_bands(params)[cascade];

@@ -42,12 +42,20 @@ std::vector<GerstnerWaveSpec> default_gerstner_waves() {
 
 GerstnerSet::GerstnerSet() : waves(default_gerstner_waves()) {}
 
+SinesSet::SinesSet() : waves(3) {
+  waves[0] = {0.6, 30, 0, 2};
+  waves[1] = {0.3, 13, 40, 3};
+  waves[2] = {0.15, 7, -25, 1};
+}
+
 const char* to_string(SurfaceModel model) {
   switch (model) {
     case SurfaceModel::Fft:
       return "fft";
     case SurfaceModel::Gerstner:
       return "gerstner";
+    case SurfaceModel::Sines:
+      return "sines";
   }
   return "?";
 }
@@ -65,7 +73,7 @@ const char* to_string(GerstnerDispersion law) {
 }
 
 bool from_string(const std::string& name, SurfaceModel& out) {
-  for (SurfaceModel m : {SurfaceModel::Fft, SurfaceModel::Gerstner})
+  for (SurfaceModel m : {SurfaceModel::Fft, SurfaceModel::Gerstner, SurfaceModel::Sines})
     if (name == to_string(m)) return out = m, true;
   return false;
 }

@@ -32,7 +32,7 @@ struct SpectrumParams {
 
 // Which surface model makes the sea (issue 15, docs/models.md): the FFT ocean's random spectrum, or an
 // explicit set of Gerstner waves evaluated through the same cascades.
-enum class SurfaceModel { Fft, Gerstner };
+enum class SurfaceModel { Fft, Gerstner, Sines };
 
 // Gerstner waves' dispersion (seed 001): eq. 7 deep water, eq. 8 finite depth, eq. 9 capillary.
 enum class GerstnerDispersion { Deep, FiniteDepth, Capillary };
@@ -55,6 +55,20 @@ struct GerstnerSet {
   uint32_t spectrum_waves = 0;
 };
 
+// A wave of the sum of sines (seed 001 eqs. 1-3): A ((1 + sin S)/2)^steepness, S = k (x·dir) - ω t.
+struct SineWaveSpec {
+  double amplitude_m = 0.6;
+  double wavelength_m = 30;
+  double direction_deg = 0;  // travels toward, clockwise from +z toward +x
+  uint32_t steepness = 2;    // the exponent of eq. 2: 1 = a plain sine, higher = sharper crests
+};
+
+struct SinesSet {
+  SinesSet();  // out of line, as GerstnerSet
+  std::vector<SineWaveSpec> waves;
+  GerstnerDispersion dispersion = GerstnerDispersion::Deep;  // the phase speed ω/k of each wave
+};
+
 struct CascadeParams {
   double patch_size_m = 1000.0;  // side of the square tile this cascade repeats over
   uint32_t resolution = 256;     // N: samples per side, a power of two in [64, 1024]
@@ -75,6 +89,7 @@ struct OceanParams {
   double loop_period_s = 0.0;  // > 0 quantises ω so every field repeats with this period; 0 = no loop
   SurfaceModel model = SurfaceModel::Fft;
   GerstnerSet gerstner;  // model gerstner: the waves (choppiness is every wave's steepness Q)
+  SinesSet sines;        // model sines
   SpectrumParams spectrum;
   std::vector<CascadeParams> cascades{{1000.0, 256}, {100.0, 256}, {10.0, 256}};
   FoamParams foam;
@@ -83,7 +98,7 @@ struct OceanParams {
 const char* to_string(
     SpectrumType type);  // "phillips", "pm", "jonswap", "tma", "jonswap-eq15", "phillips-eq18"
 const char* to_string(Spreading spreading);     // "cos2", "cos2s", "donelan-banner"
-const char* to_string(SurfaceModel model);      // "fft", "gerstner"
+const char* to_string(SurfaceModel model);      // "fft", "gerstner", "sines"
 const char* to_string(GerstnerDispersion law);  // "deep", "finite-depth", "capillary"
 // Inverse of to_string; false when the name is unknown.
 bool from_string(const std::string& name, SpectrumType& out);

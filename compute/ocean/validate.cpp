@@ -9,6 +9,7 @@
 
 #include "ocean/gerstner.h"
 #include "ocean/initial_spectrum.h"
+#include "ocean/sines.h"
 
 namespace lagoon::ocean {
 namespace {
@@ -147,6 +148,40 @@ void check_gerstner(const OceanParams& p, Problems& problems) {
                                    num(1 / sum) + " or lower the amplitudes");
 }
 
+// Model sines: points move only vertically, and every wave with all its harmonics in one cascade's band.
+void check_sines(const OceanParams& p, Problems& problems) {
+  if (p.choppiness != 0)
+    problems.add("choppiness", num(p.choppiness) +
+                                   " must be 0 for model sines: eqs. 1-3 move the surface only "
+                                   "up and down (use model gerstner for moving crests)");
+  if (p.sines.waves.empty()) problems.add("sines.waves", "is empty; model sines needs at least one wave");
+  for (size_t i = 0; i < p.sines.waves.size(); ++i) {
+    const SineWaveSpec& w = p.sines.waves[i];
+    const std::string at = "sines.waves[" + std::to_string(i) + "].";
+    if (!(w.wavelength_m > 0) || !std::isfinite(w.wavelength_m) || !(w.amplitude_m >= 0) ||
+        !std::isfinite(w.amplitude_m) || !std::isfinite(w.direction_deg) || w.steepness < 1 ||
+        w.steepness > 8) {
+      problems.add(at + "wavelength_m",
+                   "needs wavelength_m > 0, amplitude_m >= 0, a finite direction and "
+                   "steepness 1 to 8");
+      return;
+    }
+  }
+  const std::vector<SineLattice> lattice = sines_lattice(p);
+  const double shortest = 2 * std::numbers::pi / cascade_bands(p).back().k_max;
+  for (size_t i = 0; i < lattice.size(); ++i)
+    if (!lattice[i].harmonics_held)
+      problems.add("sines.waves[" + std::to_string(i) + "].wavelength_m",
+                   num(p.sines.waves[i].wavelength_m) + " m with steepness " +
+                       std::to_string(p.sines.waves[i].steepness) +
+                       ": no cascade holds the wave and its harmonics down to wavelength / steepness, 4 "
+                       "texels each, on "
+                       "a patch at least a wavelength wide (the patches are " +
+                       num(p.cascades.back().patch_size_m) + " to " + num(p.cascades.front().patch_size_m) +
+                       " m; the finest grid's shortest wave is " + num(shortest) +
+                       " m); lengthen the wave or lower its steepness");
+}
+
 }  // namespace
 
 Result<void> validate(const OceanParams& p) {
@@ -185,6 +220,7 @@ Result<void> validate(const OceanParams& p) {
 
   check_cascades(p, problems);
   if (p.model == SurfaceModel::Gerstner && problems.result()) check_gerstner(p, problems);
+  if (p.model == SurfaceModel::Sines && problems.result()) check_sines(p, problems);
   return problems.result();
 }
 

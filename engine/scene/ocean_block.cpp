@@ -74,6 +74,27 @@ void read_gerstner(ObjectReader& r, ocean::GerstnerSet& g) {
            "(eq. 8), capillary = sqrt(g k (1 + k^2 L^2)), L the capillary length (eq. 9).");
 }
 
+void read_sine_wave(ObjectReader& r, ocean::SineWaveSpec& w) {
+  r.number("amplitude_m", w.amplitude_m, Bounds::between(0, 100), "m", "Amplitude A of eq. 2.");
+  r.number("wavelength_m", w.wavelength_m, Bounds::above_up_to(0, 100000), "m",
+           "Wavelength 2 pi / freq; moved to the nearest wave the cascades tile with (docs/models.md).");
+  r.number("direction_deg", w.direction_deg, Bounds::between(-360, 360), "deg",
+           "Direction it travels toward, clockwise from +z (north) toward +x (east).");
+  r.integer("steepness", w.steepness, Bounds::between(1, 8), "",
+            "Exponent of eq. 2: 1 = a plain sine; higher gives sharper crests and flatter troughs (whole "
+            "numbers, so the wave is exactly `steepness` harmonics).");
+}
+
+void read_sines(ObjectReader& r, ocean::SinesSet& s) {
+  r.array(
+      "waves", s.waves, 1, 64, read_sine_wave,
+      "The waves of eqs. 1-3 (seed 001); their sum less its mean level is the surface (needs choppiness 0).");
+  using ocean::GerstnerDispersion;
+  r.choice("dispersion", s.dispersion,
+           named({GerstnerDispersion::Deep, GerstnerDispersion::FiniteDepth, GerstnerDispersion::Capillary}),
+           "The phase speed of each wave, as gerstner.dispersion.");
+}
+
 void read_cascade(ObjectReader& r, ocean::CascadeParams& c) {
   r.number("patch_size_m", c.patch_size_m, Bounds::above_up_to(0, 100000), "m",
            "Side of the square tile this cascade's waves repeat over.");
@@ -106,10 +127,12 @@ void read_ocean(ObjectReader& r, ocean::OceanParams& o) {
            "If > 0, wave frequencies are rounded so the whole sea repeats exactly with this period (seamless "
            "loops); 0 = no loop.");
   using ocean::SurfaceModel;
-  r.choice("model", o.model, named({SurfaceModel::Fft, SurfaceModel::Gerstner}),
-           "Surface model: fft = waves from the spectrum; gerstner = the waves listed in gerstner, through "
-           "the same cascades (docs/models.md).");
+  r.choice(
+      "model", o.model, named({SurfaceModel::Fft, SurfaceModel::Gerstner, SurfaceModel::Sines}),
+      "Surface model: fft = waves from the spectrum; gerstner = the waves listed in gerstner; sines = the "
+      "sum of sines in sines (needs choppiness 0); all through the same cascades (docs/models.md).");
   r.block("gerstner", o.gerstner, read_gerstner, "Model gerstner: its waves and dispersion.");
+  r.block("sines", o.sines, read_sines, "Model sines: its waves and dispersion.");
   r.block("spectrum", o.spectrum, read_spectrum, "Wind and wave spectrum.");
   r.array("cascades", o.cascades, 1, 4, read_cascade,
           "FFT tiles from the largest patch to the smallest; each renders a band of wavelengths (see Ocean "

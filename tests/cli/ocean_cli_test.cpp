@@ -9,6 +9,7 @@
 #include "io/npy.h"
 #include "ocean/cpu_step.h"
 #include "ocean/gerstner.h"
+#include "ocean/sines.h"
 #include "scene/scene.h"
 #include "support/direct_sum.h"
 #include "support/fftw_reference.h"
@@ -295,6 +296,28 @@ TEST(OceanCli, ModelGerstnerThroughProbeAndExport) {
         worst = std::max(worst, std::abs(big->data[a + c] + small->data[b + c] - d[c]));
     }
   EXPECT_LT(worst, 1e-4);
+}
+
+// Model sines through lagoon probe: eqs. 2-3's direct sum within the query's bound; with the default
+// choppiness the scene is refused with the fix.
+TEST(OceanCli, ModelSinesThroughProbe) {
+  const std::vector<std::string> sets{"ocean.model=sines", "ocean.choppiness=0"};
+  auto scene = scene::load_scene(kScene, sets);
+  ASSERT_TRUE(scene) << scene.error().message;
+  auto r = lagoon("probe --scene " + kScene +
+                  " --time 4.5 --at 3,4 --at -17.5,8.25 --set ocean.model=sines "
+                  "--set ocean.choppiness=0");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::vector<nlohmann::json> points = json_lines(r.output);
+  EXPECT_EQ(points.size(), 2u);
+  for (const nlohmann::json& j : points)
+    EXPECT_LE(std::abs(j["height_m"].get<double>() -
+                       ocean::sines_height(scene->ocean, 4.5, j["x"].get<double>(), j["z"].get<double>())),
+              j["error_bound_m"].get<double>())
+        << j;
+  r = lagoon("probe --scene " + kScene + " --time 1 --at 0,0 --set ocean.model=sines");
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("ocean.choppiness: 0.8 must be 0 for model sines"), std::string::npos) << r.output;
 }
 
 TEST(OceanCli, AVehicleWithoutAHullFailsNamingTheField) {
