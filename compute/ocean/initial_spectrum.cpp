@@ -9,6 +9,7 @@
 
 #include "ocean/dispersion.h"
 #include "ocean/gerstner.h"
+#include "ocean/perlin.h"
 #include "ocean/random.h"
 #include "ocean/sines.h"
 #include "ocean/spectrum.h"
@@ -75,6 +76,7 @@ CascadeSpectrum make_cascade_spectrum(const OceanParams& params, uint32_t cascad
   if (c.resolution == 0 || !(c.patch_size_m > 0.0) || !std::isfinite(c.patch_size_m)) return out;
   if (params.model == SurfaceModel::Gerstner) return gerstner_cascade_spectrum(params, cascade);
   if (params.model == SurfaceModel::Sines) return sines_cascade_spectrum(params, cascade);
+  if (params.model == SurfaceModel::Perlin) return perlin_cascade_spectrum(params, cascade);
   out.resolution = c.resolution;
   out.patch_size_m = c.patch_size_m;
   out.band = cascade_bands(params)[cascade];

@@ -56,6 +56,8 @@ const char* to_string(SurfaceModel model) {
       return "gerstner";
     case SurfaceModel::Sines:
       return "sines";
+    case SurfaceModel::Perlin:
+      return "perlin";
   }
   return "?";
 }
@@ -73,7 +75,8 @@ const char* to_string(GerstnerDispersion law) {
 }
 
 bool from_string(const std::string& name, SurfaceModel& out) {
-  for (SurfaceModel m : {SurfaceModel::Fft, SurfaceModel::Gerstner, SurfaceModel::Sines})
+  for (SurfaceModel m :
+       {SurfaceModel::Fft, SurfaceModel::Gerstner, SurfaceModel::Sines, SurfaceModel::Perlin})
     if (name == to_string(m)) return out = m, true;
   return false;
 }

@@ -32,7 +32,7 @@ struct SpectrumParams {
 
 // Which surface model makes the sea (issue 15, docs/models.md): the FFT ocean's random spectrum, or an
 // explicit set of Gerstner waves evaluated through the same cascades.
-enum class SurfaceModel { Fft, Gerstner, Sines };
+enum class SurfaceModel { Fft, Gerstner, Sines, Perlin };
 
 // Gerstner waves' dispersion (seed 001): eq. 7 deep water, eq. 8 finite depth, eq. 9 capillary.
 enum class GerstnerDispersion { Deep, FiniteDepth, Capillary };
@@ -69,6 +69,15 @@ struct SinesSet {
   GerstnerDispersion dispersion = GerstnerDispersion::Deep;  // the phase speed ω/k of each wave
 };
 
+// Perlin's gradient noise (seed 001 §1.1.1), octaves summed on the first cascade's patch (tileable).
+struct PerlinParams {
+  double amplitude_m = 0.6;  // of the first octave's noise (gradient noise peaks near ±0.7 of it)
+  uint32_t cells = 16;       // lattice cells of the first octave across the first cascade's patch
+  uint32_t octaves = 4;
+  double persistence = 0.5;  // amplitude ratio between octaves
+  uint32_t lacunarity = 2;   // frequency ratio between octaves (a whole number, so every octave tiles)
+};
+
 struct CascadeParams {
   double patch_size_m = 1000.0;  // side of the square tile this cascade repeats over
   uint32_t resolution = 256;     // N: samples per side, a power of two in [64, 1024]
@@ -90,6 +99,7 @@ struct OceanParams {
   SurfaceModel model = SurfaceModel::Fft;
   GerstnerSet gerstner;  // model gerstner: the waves (choppiness is every wave's steepness Q)
   SinesSet sines;        // model sines
+  PerlinParams perlin;   // model perlin
   SpectrumParams spectrum;
   std::vector<CascadeParams> cascades{{1000.0, 256}, {100.0, 256}, {10.0, 256}};
   FoamParams foam;
@@ -98,7 +108,7 @@ struct OceanParams {
 const char* to_string(
     SpectrumType type);  // "phillips", "pm", "jonswap", "tma", "jonswap-eq15", "phillips-eq18"
 const char* to_string(Spreading spreading);     // "cos2", "cos2s", "donelan-banner"
-const char* to_string(SurfaceModel model);      // "fft", "gerstner", "sines"
+const char* to_string(SurfaceModel model);      // "fft", "gerstner", "sines", "perlin", "perlin"
 const char* to_string(GerstnerDispersion law);  // "deep", "finite-depth", "capillary"
 // Inverse of to_string; false when the name is unknown.
 bool from_string(const std::string& name, SpectrumType& out);

@@ -182,6 +182,25 @@ void check_sines(const OceanParams& p, Problems& problems) {
                        " m); lengthen the wave or lower its steepness");
 }
 
+// Model perlin: the last octave's cells must keep 2 grid samples each on the first cascade.
+void check_perlin(const OceanParams& p, Problems& problems) {
+  const PerlinParams& n = p.perlin;
+  problems.range("perlin.amplitude_m", n.amplitude_m, 0.0, 100.0, "metres");
+  problems.range("perlin.persistence", n.persistence, 0.0, 1.0, "amplitude ratio between octaves");
+  if (n.cells < 1 || n.octaves < 1 || n.lacunarity < 2) {
+    problems.add("perlin.cells", "cells, octaves >= 1 and lacunarity >= 2 are needed");
+    return;
+  }
+  const double last = double(n.cells) * std::pow(double(n.lacunarity), double(n.octaves - 1));
+  const uint32_t samples = p.cascades.front().resolution;
+  if (last * 2 > samples)
+    problems.add("perlin.octaves",
+                 std::to_string(n.octaves) + " octaves reach " + num(last) +
+                     " cells across the first cascade, more than its " + std::to_string(samples) +
+                     " samples can draw (2 per cell); use fewer octaves or cells, or a finer "
+                     "first cascade");
+}
+
 }  // namespace
 
 Result<void> validate(const OceanParams& p) {
@@ -221,6 +240,7 @@ Result<void> validate(const OceanParams& p) {
   check_cascades(p, problems);
   if (p.model == SurfaceModel::Gerstner && problems.result()) check_gerstner(p, problems);
   if (p.model == SurfaceModel::Sines && problems.result()) check_sines(p, problems);
+  if (p.model == SurfaceModel::Perlin && problems.result()) check_perlin(p, problems);
   return problems.result();
 }
 

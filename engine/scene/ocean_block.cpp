@@ -95,6 +95,19 @@ void read_sines(ObjectReader& r, ocean::SinesSet& s) {
            "The phase speed of each wave, as gerstner.dispersion.");
 }
 
+void read_perlin(ObjectReader& r, ocean::PerlinParams& p) {
+  r.number("amplitude_m", p.amplitude_m, Bounds::between(0, 100), "m",
+           "Amplitude of the first octave's noise.");
+  r.integer(
+      "cells", p.cells, Bounds::between(1, 512), "",
+      "Noise lattice cells of the first octave across the first cascade's patch (a whole number: it tiles).");
+  r.integer("octaves", p.octaves, Bounds::between(1, 12), "", "Octaves summed, each finer by lacunarity.");
+  r.number("persistence", p.persistence, Bounds::between(0, 1), "",
+           "Amplitude ratio between one octave and the next.");
+  r.integer("lacunarity", p.lacunarity, Bounds::between(2, 8), "",
+            "Frequency ratio between one octave and the next (a whole number, so every octave tiles).");
+}
+
 void read_cascade(ObjectReader& r, ocean::CascadeParams& c) {
   r.number("patch_size_m", c.patch_size_m, Bounds::above_up_to(0, 100000), "m",
            "Side of the square tile this cascade's waves repeat over.");
@@ -128,11 +141,14 @@ void read_ocean(ObjectReader& r, ocean::OceanParams& o) {
            "loops); 0 = no loop.");
   using ocean::SurfaceModel;
   r.choice(
-      "model", o.model, named({SurfaceModel::Fft, SurfaceModel::Gerstner, SurfaceModel::Sines}),
+      "model", o.model,
+      named({SurfaceModel::Fft, SurfaceModel::Gerstner, SurfaceModel::Sines, SurfaceModel::Perlin}),
       "Surface model: fft = waves from the spectrum; gerstner = the waves listed in gerstner; sines = the "
-      "sum of sines in sines (needs choppiness 0); all through the same cascades (docs/models.md).");
+      "sum of sines in sines (needs choppiness 0); perlin = octaves of gradient noise; all through the same "
+      "cascades (docs/models.md).");
   r.block("gerstner", o.gerstner, read_gerstner, "Model gerstner: its waves and dispersion.");
   r.block("sines", o.sines, read_sines, "Model sines: its waves and dispersion.");
+  r.block("perlin", o.perlin, read_perlin, "Model perlin: its noise octaves.");
   r.block("spectrum", o.spectrum, read_spectrum, "Wind and wave spectrum.");
   r.array("cascades", o.cascades, 1, 4, read_cascade,
           "FFT tiles from the largest patch to the smallest; each renders a band of wavelengths (see Ocean "
