@@ -9,6 +9,7 @@
 #include "io/npy.h"
 #include "ocean/cpu_step.h"
 #include "ocean/gerstner.h"
+#include "ocean/perlin.h"
 #include "ocean/sines.h"
 #include "scene/scene.h"
 #include "support/direct_sum.h"
@@ -318,6 +319,29 @@ TEST(OceanCli, ModelSinesThroughProbe) {
   r = lagoon("probe --scene " + kScene + " --time 1 --at 0,0 --set ocean.model=sines");
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("ocean.choppiness: 0.8 must be 0 for model sines"), std::string::npos) << r.output;
+}
+
+// Model perlin through lagoon probe: at t = 0 at the first cascade's grid points, the noise less its grid
+// mean.
+TEST(OceanCli, ModelPerlinThroughProbe) {
+  const std::vector<std::string> sets{"ocean.model=perlin", "ocean.choppiness=0", "ocean.perlin.octaves=2",
+                                      R"(ocean.cascades=[{"patch_size_m":128,"resolution":64}])"};
+  auto scene = scene::load_scene(kScene, sets);
+  ASSERT_TRUE(scene) << scene.error().message;
+  double mean = 0;
+  for (int j = 0; j < 64; ++j)
+    for (int i = 0; i < 64; ++i) mean += ocean::perlin_height(scene->ocean, 2.0 * i, 2.0 * j) / (64 * 64);
+  std::string command = "probe --scene " + kScene + " --time 0 --at 6,10 --at 40,2";
+  for (const std::string& s : sets) command += " --set " + shell_quote(s);
+  auto r = lagoon(command);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::vector<nlohmann::json> points = json_lines(r.output);
+  ASSERT_EQ(points.size(), 2u);
+  for (const nlohmann::json& j :
+       points)  // grid points (2 m apart), where the cascade holds the noise's samples
+    EXPECT_NEAR(j["height_m"].get<double>(),
+                ocean::perlin_height(scene->ocean, j["x"].get<double>(), j["z"].get<double>()) - mean, 1e-6)
+        << j;
 }
 
 TEST(OceanCli, AVehicleWithoutAHullFailsNamingTheField) {
