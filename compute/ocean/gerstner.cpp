@@ -172,15 +172,10 @@ GerstnerParams gerstner_params(const OceanParams& params) {
 }
 
 CascadeSpectrum gerstner_cascade_spectrum(const OceanParams& params, uint32_t cascade) {
-  CascadeSpectrum out;
-  if (cascade >= params.cascades.size()) return out;
+  CascadeSpectrum out = empty_cascade_spectrum(params, cascade);
+  if (out.resolution == 0) return out;
   const CascadeParams& c = params.cascades[cascade];
   const uint32_t n = c.resolution;
-  out.resolution = n;
-  out.patch_size_m = c.patch_size_m;
-  out.band = cascade_bands(params)[cascade];
-  out.h0.assign(size_t(n) * n, {0.f, 0.f});
-  out.omega.assign(size_t(n) * n, 0.f);
   std::vector<int> cascade_of;
   const std::vector<GerstnerWave> waves = lattice_gerstner_waves(params, &cascade_of);
   const double dk = 2 * std::numbers::pi / c.patch_size_m;

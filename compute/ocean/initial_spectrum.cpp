@@ -69,20 +69,27 @@ std::vector<CascadeSpectrum> make_cascade_spectra(const OceanParams& params) {
   return out;
 }
 
-CascadeSpectrum make_cascade_spectrum(const OceanParams& params, uint32_t cascade) {
+CascadeSpectrum empty_cascade_spectrum(const OceanParams& params, uint32_t cascade) {
   CascadeSpectrum out;
   if (cascade >= params.cascades.size()) return out;
   const CascadeParams& c = params.cascades[cascade];
   if (c.resolution == 0 || !(c.patch_size_m > 0.0) || !std::isfinite(c.patch_size_m)) return out;
-  if (params.model == SurfaceModel::Gerstner) return gerstner_cascade_spectrum(params, cascade);
-  if (params.model == SurfaceModel::Sines) return sines_cascade_spectrum(params, cascade);
-  if (params.model == SurfaceModel::Perlin) return perlin_cascade_spectrum(params, cascade);
   out.resolution = c.resolution;
   out.patch_size_m = c.patch_size_m;
   out.band = cascade_bands(params)[cascade];
   const size_t count = static_cast<size_t>(c.resolution) * c.resolution;
   out.h0.assign(count, {0.0f, 0.0f});
   out.omega.assign(count, 0.0f);
+  return out;
+}
+
+CascadeSpectrum make_cascade_spectrum(const OceanParams& params, uint32_t cascade) {
+  CascadeSpectrum out = empty_cascade_spectrum(params, cascade);
+  if (out.resolution == 0) return out;
+  if (params.model == SurfaceModel::Gerstner) return gerstner_cascade_spectrum(params, cascade);
+  if (params.model == SurfaceModel::Sines) return sines_cascade_spectrum(params, cascade);
+  if (params.model == SurfaceModel::Perlin) return perlin_cascade_spectrum(params, cascade);
+  const CascadeParams& c = params.cascades[cascade];
 
   const DirectionalSpectrum spectrum(params);
   const DispersionModel dispersion = dispersion_for(params);

@@ -35,6 +35,9 @@ struct CascadeSpectrum {
 // of range or the cascade has no size (run validate() first). Deterministic: bit-identical for equal params
 // whatever the thread count. Takes a few ms per 256² cascade (rows are spread over up to 8 threads).
 CascadeSpectrum make_cascade_spectrum(const OceanParams& params, uint32_t cascade);
+// The cascade's size and band with h0 and ω all zero, for a model to fill; resolution 0 when the index is out
+// of range or the cascade has no size.
+CascadeSpectrum empty_cascade_spectrum(const OceanParams& params, uint32_t cascade);
 // Every cascade's, in order.
 std::vector<CascadeSpectrum> make_cascade_spectra(const OceanParams& params);
 

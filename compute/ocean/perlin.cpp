@@ -67,16 +67,10 @@ double perlin_height(const OceanParams& params, double x, double z) {
 }
 
 CascadeSpectrum perlin_cascade_spectrum(const OceanParams& params, uint32_t cascade) {
-  CascadeSpectrum out;
-  if (cascade >= params.cascades.size()) return out;
-  const uint32_t n = params.cascades[cascade].resolution;
-  const double patch = params.cascades[cascade].patch_size_m;
-  out.resolution = n;
-  out.patch_size_m = patch;
-  out.band = cascade_bands(params)[cascade];
-  out.h0.assign(size_t(n) * n, {0.f, 0.f});
-  out.omega.assign(size_t(n) * n, 0.f);
-  if (cascade != 0) return out;  // the noise lives on the first patch
+  CascadeSpectrum out = empty_cascade_spectrum(params, cascade);
+  if (out.resolution == 0 || cascade != 0) return out;  // the noise lives on the first patch
+  const uint32_t n = out.resolution;
+  const double patch = out.patch_size_m;
   std::vector<std::complex<double>> field(size_t(n) * n);
   for (uint32_t j = 0; j < n; ++j)
     for (uint32_t i = 0; i < n; ++i)

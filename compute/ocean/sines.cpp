@@ -49,14 +49,9 @@ std::vector<SineLattice> sines_lattice(const OceanParams& params) {
 }
 
 CascadeSpectrum sines_cascade_spectrum(const OceanParams& params, uint32_t cascade) {
-  CascadeSpectrum out;
-  if (cascade >= params.cascades.size()) return out;
-  const uint32_t n = params.cascades[cascade].resolution;
-  out.resolution = n;
-  out.patch_size_m = params.cascades[cascade].patch_size_m;
-  out.band = cascade_bands(params)[cascade];
-  out.h0.assign(size_t(n) * n, {0.f, 0.f});
-  out.omega.assign(size_t(n) * n, 0.f);
+  CascadeSpectrum out = empty_cascade_spectrum(params, cascade);
+  if (out.resolution == 0) return out;
+  const uint32_t n = out.resolution;
   const std::vector<SineLattice> lattice = sines_lattice(params);
   for (size_t i = 0; i < lattice.size(); ++i) {
     const SineLattice& l = lattice[i];
