@@ -118,7 +118,10 @@ namespace lagoon::ocean {
 
 std::vector<GerstnerWaveSpec> gerstner_wave_specs(const OceanParams& params) {
   const uint32_t n = params.gerstner.spectrum_waves;
-  if (n == 0) return params.gerstner.waves;
+  return n == 0 ? params.gerstner.waves : spectrum_wave_specs(params, n);
+}
+
+std::vector<GerstnerWaveSpec> spectrum_wave_specs(const OceanParams& params, uint32_t n) {
   const SpectrumParams& spectrum = params.spectrum;
   const double peak = peak_omega(spectrum), lo = 0.6 * peak, hi = 4.0 * peak;
   const double ratio = std::pow(hi / lo, 1.0 / n);

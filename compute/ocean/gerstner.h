@@ -72,6 +72,8 @@ double gerstner_omega(GerstnerDispersion law, double k, double depth_m);
 // factor): frequencies on a geometric grid from 0.6 to 4 ω_p, each carrying A = sqrt(2 S(ω) Δω); a direction
 // from the spreading D(ω, θ) at a golden-ratio quasi-random quantile; phases from the seed.
 std::vector<GerstnerWaveSpec> gerstner_wave_specs(const OceanParams& params);
+// The sampling itself: n waves of the scene's spectrum (also the sines' spectrum_waves).
+std::vector<GerstnerWaveSpec> spectrum_wave_specs(const OceanParams& params, uint32_t n);
 
 // The scene's Gerstner waves (gerstner_wave_specs) as the cascades hold them: each wave vector moved to the
 // nearest one of the lattice 2π m / L of the cascade whose band holds it, so the sum tiles; steepness =

@@ -43,9 +43,9 @@ std::vector<GerstnerWaveSpec> default_gerstner_waves() {
 GerstnerSet::GerstnerSet() : waves(default_gerstner_waves()) {}
 
 SinesSet::SinesSet() : waves(3) {
-  waves[0] = {0.6, 30, 0, 2};
-  waves[1] = {0.3, 13, 40, 3};
-  waves[2] = {0.15, 7, -25, 1};
+  waves[0] = {0.6, 30, 0, 2, 0};
+  waves[1] = {0.3, 13, 40, 3, 0};
+  waves[2] = {0.15, 7, -25, 1, 0};
 }
 
 const char* to_string(SurfaceModel model) {

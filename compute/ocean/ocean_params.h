@@ -61,12 +61,16 @@ struct SineWaveSpec {
   double wavelength_m = 30;
   double direction_deg = 0;  // travels toward, clockwise from +z toward +x
   uint32_t steepness = 2;    // the exponent of eq. 2: 1 = a plain sine, higher = sharper crests
+  double phase_deg = 0;      // added to S (not in eq. 1; sampled waves must not all crest at the origin)
 };
 
 struct SinesSet {
   SinesSet();  // out of line, as GerstnerSet
   std::vector<SineWaveSpec> waves;
   GerstnerDispersion dispersion = GerstnerDispersion::Deep;  // the phase speed ω/k of each wave
+  // > 0: this many plain sines (steepness 1) sampled from `spectrum` as gerstner.spectrum_waves replace
+  // waves.
+  uint32_t spectrum_waves = 0;
 };
 
 // Perlin's gradient noise (seed 001 §1.1.1), octaves summed on the first cascade's patch (tileable).

@@ -22,12 +22,21 @@ std::vector<std::complex<double>> sine_power_coefficients(uint32_t p) {
   return c;
 }
 
+std::vector<SineWaveSpec> sines_wave_specs(const OceanParams& params) {
+  const uint32_t n = params.sines.spectrum_waves;
+  if (n == 0) return params.sines.waves;
+  std::vector<SineWaveSpec> out;
+  for (const GerstnerWaveSpec& w : spectrum_wave_specs(params, n))
+    out.push_back({2 * w.amplitude_m, w.wavelength_m, w.direction_deg, 1, w.phase_deg});
+  return out;
+}
+
 std::vector<SineLattice> sines_lattice(const OceanParams& params) {
   // Not the FFT's bands (they only share the random spectrum out between cascades): the largest patch, so the
   // wave moves least on its lattice, whose grid still gives the highest harmonic 4 texels per wavelength.
   const std::vector<CascadeBand> bands = cascade_bands(params);
   std::vector<SineLattice> out;
-  for (const SineWaveSpec& w : params.sines.waves) {
+  for (const SineWaveSpec& w : sines_wave_specs(params)) {
     const glm::dvec2 k = wave_vector(w.wavelength_m, w.direction_deg);
     SineLattice l;
     l.wave.k = k;
@@ -53,16 +62,18 @@ CascadeSpectrum sines_cascade_spectrum(const OceanParams& params, uint32_t casca
   if (out.resolution == 0) return out;
   const uint32_t n = out.resolution;
   const std::vector<SineLattice> lattice = sines_lattice(params);
+  const std::vector<SineWaveSpec> waves = sines_wave_specs(params);
   for (size_t i = 0; i < lattice.size(); ++i) {
     const SineLattice& l = lattice[i];
     if (l.wave.cascade != int(cascade) || !l.harmonics_held) continue;
-    const SineWaveSpec& w = params.sines.waves[i];
+    const SineWaveSpec& w = waves[i];
     const std::vector<std::complex<double>> c = sine_power_coefficients(w.steepness);
+    const double phase = w.phase_deg * std::numbers::pi / 180;
     // h̃(K, t) = h0(K) e^{-iΩt} + conj(h0(-K)) e^{iΩt}: h0(m k) = A c_m gives A c_m e^{i m (k·x - ωt)}, and
     // its conjugate at -m k the term c_{-m}; together A (g(S) - c_0) with S = k·x - ω t.
     for (uint32_t m = 1; m <= w.steepness; ++m) {
       const long mx = long(m) * l.wave.mode.x, mz = long(m) * l.wave.mode.y;
-      out.h0[mode_index(n, mx, mz)] += std::complex<float>(w.amplitude_m * c[m]);
+      out.h0[mode_index(n, mx, mz)] += std::complex<float>(w.amplitude_m * c[m] * std::polar(1.0, m * phase));
       out.omega[mode_index(n, mx, mz)] = float(m * l.omega);
       out.omega[mode_index(n, -mx, -mz)] = float(m * l.omega);
     }
@@ -72,10 +83,12 @@ CascadeSpectrum sines_cascade_spectrum(const OceanParams& params, uint32_t casca
 
 double sines_height(const OceanParams& params, double t, double x, double z) {
   const std::vector<SineLattice> lattice = sines_lattice(params);
+  const std::vector<SineWaveSpec> waves = sines_wave_specs(params);
   double h = 0;
   for (size_t i = 0; i < lattice.size(); ++i) {
-    const SineWaveSpec& w = params.sines.waves[i];
-    const double s = glm::dot(lattice[i].wave.k, glm::dvec2(x, z)) - lattice[i].omega * t;
+    const SineWaveSpec& w = waves[i];
+    const double s = glm::dot(lattice[i].wave.k, glm::dvec2(x, z)) - lattice[i].omega * t +
+                     w.phase_deg * std::numbers::pi / 180;
     double mean = 1;  // C(2p, p) / 4^p
     for (uint32_t j = 1; j <= w.steepness; ++j) mean *= double(w.steepness + j) / double(j) / 4.0;
     h += w.amplitude_m * (std::pow(0.5 * (1 + std::sin(s)), double(w.steepness)) - mean);

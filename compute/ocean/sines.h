@@ -16,6 +16,11 @@ namespace lagoon::ocean {
 // c_m, m = 0..p, of ((1 + sin S)/2)^p = Σ_{m=-p..p} c_m e^{i m S} (c_{-m} = conj(c_m)); c_0 = C(2p, p) / 4^p.
 std::vector<std::complex<double>> sine_power_coefficients(uint32_t p);
 
+// The waves model sines uses: sines.waves, or with spectrum_waves = N, N plain sines (steepness 1) carrying
+// the spectrum's energy (ocean/gerstner.h's sampling; A = twice the sampled amplitude, since eq. 2's
+// A (1 + sin S)/2 swings by A/2).
+std::vector<SineWaveSpec> sines_wave_specs(const OceanParams& params);
+
 // Each wave on the lattice of the largest patch whose grid holds all its harmonics (4 texels per wavelength);
 // harmonics_held is false when no cascade does.
 struct SineLattice {

@@ -154,16 +154,17 @@ void check_sines(const OceanParams& p, Problems& problems) {
     problems.add("choppiness", num(p.choppiness) +
                                    " must be 0 for model sines: eqs. 1-3 move the surface only "
                                    "up and down (use model gerstner for moving crests)");
-  if (p.sines.waves.empty()) problems.add("sines.waves", "is empty; model sines needs at least one wave");
-  for (size_t i = 0; i < p.sines.waves.size(); ++i) {
-    const SineWaveSpec& w = p.sines.waves[i];
+  const std::vector<SineWaveSpec> waves = sines_wave_specs(p);
+  if (waves.empty()) problems.add("sines.waves", "is empty; model sines needs at least one wave");
+  for (size_t i = 0; i < waves.size(); ++i) {
+    const SineWaveSpec& w = waves[i];
     const std::string at = "sines.waves[" + std::to_string(i) + "].";
     if (!(w.wavelength_m > 0) || !std::isfinite(w.wavelength_m) || !(w.amplitude_m >= 0) ||
-        !std::isfinite(w.amplitude_m) || !std::isfinite(w.direction_deg) || w.steepness < 1 ||
-        w.steepness > 8) {
+        !std::isfinite(w.amplitude_m) || !std::isfinite(w.direction_deg) || !std::isfinite(w.phase_deg) ||
+        w.steepness < 1 || w.steepness > 8) {
       problems.add(at + "wavelength_m",
                    "needs wavelength_m > 0, amplitude_m >= 0, a finite direction and "
-                   "steepness 1 to 8");
+                   "phase, and steepness 1 to 8");
       return;
     }
   }
@@ -172,8 +173,7 @@ void check_sines(const OceanParams& p, Problems& problems) {
   for (size_t i = 0; i < lattice.size(); ++i)
     if (!lattice[i].harmonics_held)
       problems.add("sines.waves[" + std::to_string(i) + "].wavelength_m",
-                   num(p.sines.waves[i].wavelength_m) + " m with steepness " +
-                       std::to_string(p.sines.waves[i].steepness) +
+                   num(waves[i].wavelength_m) + " m with steepness " + std::to_string(waves[i].steepness) +
                        ": no cascade holds the wave and its harmonics down to wavelength / steepness, 4 "
                        "texels each, on "
                        "a patch at least a wavelength wide (the patches are " +

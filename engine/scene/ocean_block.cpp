@@ -83,12 +83,17 @@ void read_sine_wave(ObjectReader& r, ocean::SineWaveSpec& w) {
   r.integer("steepness", w.steepness, Bounds::between(1, 8), "",
             "Exponent of eq. 2: 1 = a plain sine; higher gives sharper crests and flatter troughs (whole "
             "numbers, so the wave is exactly `steepness` harmonics).");
+  r.number("phase_deg", w.phase_deg, Bounds::between(-360, 360), "deg",
+           "Added to S (not in eq. 1): waves that all start at phase 0 crest together at the origin.");
 }
 
 void read_sines(ObjectReader& r, ocean::SinesSet& s) {
   r.array(
       "waves", s.waves, 1, 64, read_sine_wave,
       "The waves of eqs. 1-3 (seed 001); their sum less its mean level is the surface (needs choppiness 0).");
+  r.integer("spectrum_waves", s.spectrum_waves, Bounds::between(0, 64), "",
+            "If > 0, this many plain sines (steepness 1) sampled from ocean.spectrum replace waves, as "
+            "gerstner.spectrum_waves samples them.");
   using ocean::GerstnerDispersion;
   r.choice("dispersion", s.dispersion,
            named({GerstnerDispersion::Deep, GerstnerDispersion::FiniteDepth, GerstnerDispersion::Capillary}),

@@ -18,7 +18,7 @@ TEST_F(SinesGpu, TheCascadesHoldTheSumOfSinesAtEveryTexel) {
   params.model = ocean::SurfaceModel::Sines;
   params.choppiness = 0;
   params.cascades = {{200, 128}, {20, 128}};
-  params.sines.waves = {{0.6, 37, 20, 3}, {0.2, 9.3, -40, 1}, {0.05, 1.9, 75, 2}};
+  params.sines.waves = {{0.6, 37, 20, 3, 0}, {0.2, 9.3, -40, 1, 50}, {0.05, 1.9, 75, 2, -120}};
   const auto lattice = ocean::sines_lattice(params);
   ASSERT_EQ(lattice.size(), 3u);
   EXPECT_EQ(lattice[0].wave.cascade, 0);
