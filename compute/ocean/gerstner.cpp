@@ -177,21 +177,18 @@ GerstnerParams gerstner_params(const OceanParams& params) {
 CascadeSpectrum gerstner_cascade_spectrum(const OceanParams& params, uint32_t cascade) {
   CascadeSpectrum out = empty_cascade_spectrum(params, cascade);
   if (out.resolution == 0) return out;
-  const CascadeParams& c = params.cascades[cascade];
-  const uint32_t n = c.resolution;
-  std::vector<int> cascade_of;
-  const std::vector<GerstnerWave> waves = lattice_gerstner_waves(params, &cascade_of);
-  const double dk = 2 * std::numbers::pi / c.patch_size_m;
-  for (size_t i = 0; i < waves.size(); ++i) {
-    if (cascade_of[i] != int(cascade)) continue;
-    const GerstnerWave& w = waves[i];
-    const glm::dvec2 k = wave_vector(w.wavelength_m, w.direction_deg);
-    const long mx = std::lround(k.x / dk), mz = std::lround(k.y / dk);
+  const uint32_t n = out.resolution;
+  for (const GerstnerWaveSpec& w : gerstner_wave_specs(params)) {
+    // The lattice mode itself, as lattice_gerstner_waves places the wave (not re-derived from its length).
+    const LatticeWave l = snap_to_cascades(params, wave_vector(w.wavelength_m, w.direction_deg));
+    if (l.cascade != int(cascade)) continue;
+    const long mx = l.mode.x, mz = l.mode.y;
     // h̃(k, t) = h0(k) e^{-iωt} + conj(h0(-k)) e^{iωt}: with h0(k) = A/2 e^{iφ} and h0(-k) = 0 the height is
     // A cos(k·x - ωt + φ), eq. 11's y.
-    out.h0[mode_index(n, mx, mz)] += std::complex<float>(std::polar(0.5 * w.amplitude_m, w.phase_rad));
+    out.h0[mode_index(n, mx, mz)] +=
+        std::complex<float>(std::polar(0.5 * w.amplitude_m, w.phase_deg * std::numbers::pi / 180));
     const float omega = float(quantise_omega(
-        gerstner_omega(params.gerstner.dispersion, glm::length(k), params.depth_m), params.loop_period_s));
+        gerstner_omega(params.gerstner.dispersion, glm::length(l.k), params.depth_m), params.loop_period_s));
     out.omega[mode_index(n, mx, mz)] = omega;
     out.omega[mode_index(n, -mx, -mz)] = omega;
   }

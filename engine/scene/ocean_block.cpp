@@ -2,6 +2,7 @@
 
 #include <initializer_list>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -48,6 +49,14 @@ void read_spectrum(ObjectReader& r, ocean::SpectrumParams& s) {
            "document.");
 }
 
+// The dispersion law of an explicit-wave model (eqs. 7-9), as gerstner and sines both choose it.
+void dispersion_choice(ObjectReader& r, ocean::GerstnerDispersion& value, std::string_view doc) {
+  using ocean::GerstnerDispersion;
+  r.choice("dispersion", value,
+           named({GerstnerDispersion::Deep, GerstnerDispersion::FiniteDepth, GerstnerDispersion::Capillary}),
+           doc);
+}
+
 void read_gerstner_wave(ObjectReader& r, ocean::GerstnerWaveSpec& w) {
   r.number("amplitude_m", w.amplitude_m, Bounds::between(0, 100), "m",
            "Amplitude A: the crest's height above the mean level.");
@@ -67,11 +76,10 @@ void read_gerstner(ObjectReader& r, ocean::GerstnerSet& g) {
       "If > 0, this many waves sampled from ocean.spectrum replace waves: frequencies from 0.6 to 4 times "
       "the peak, amplitudes sqrt(2 S(omega) d omega) without a random factor (seed 001 eq. 13), "
       "directions from the spreading.");
-  using ocean::GerstnerDispersion;
-  r.choice("dispersion", g.dispersion,
-           named({GerstnerDispersion::Deep, GerstnerDispersion::FiniteDepth, GerstnerDispersion::Capillary}),
-           "How fast each wave travels: deep = sqrt(g k) (eq. 7), finite-depth = sqrt(g k tanh(k depth_m)) "
-           "(eq. 8), capillary = sqrt(g k (1 + k^2 L^2)), L the capillary length (eq. 9).");
+  dispersion_choice(
+      r, g.dispersion,
+      "How fast each wave travels: deep = sqrt(g k) (eq. 7), finite-depth = sqrt(g k tanh(k depth_m)) "
+      "(eq. 8), capillary = sqrt(g k (1 + k^2 L^2)), L the capillary length (eq. 9).");
 }
 
 void read_sine_wave(ObjectReader& r, ocean::SineWaveSpec& w) {
@@ -94,10 +102,7 @@ void read_sines(ObjectReader& r, ocean::SinesSet& s) {
   r.integer("spectrum_waves", s.spectrum_waves, Bounds::between(0, 64), "",
             "If > 0, this many plain sines (steepness 1) sampled from ocean.spectrum replace waves, as "
             "gerstner.spectrum_waves samples them.");
-  using ocean::GerstnerDispersion;
-  r.choice("dispersion", s.dispersion,
-           named({GerstnerDispersion::Deep, GerstnerDispersion::FiniteDepth, GerstnerDispersion::Capillary}),
-           "The phase speed of each wave, as gerstner.dispersion.");
+  dispersion_choice(r, s.dispersion, "The phase speed of each wave, as gerstner.dispersion.");
 }
 
 void read_perlin(ObjectReader& r, ocean::PerlinParams& p) {
