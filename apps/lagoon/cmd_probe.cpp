@@ -14,6 +14,7 @@
 
 #include "commands.h"
 #include "moving_pose.h"
+#include "ocean/springs.h"
 #include "ocean/wave_query.h"
 #include "render/floating_objects.h"
 #include "render/wake_heights.h"
@@ -161,6 +162,17 @@ int run_probe(const ParsedArgs& args) {
   }
   auto scene = load_scene_from_args(args, "probe");
   if (!scene) return kExitFailure;
+  if (scene->ocean.model == ocean::SurfaceModel::Springs &&
+      ocean::springs_steps_for(scene->ocean.springs, *time) > ocean::kSpringsMaxCatchUpSteps) {
+    std::fprintf(
+        stderr,
+        "lagoon probe: --time %s needs %llu steps of the springs grid from rest, more than %llu; give "
+        "a time below %.0f s or a longer ocean.springs.step_s\n",
+        args.get("time")->c_str(), (unsigned long long)ocean::springs_steps_for(scene->ocean.springs, *time),
+        (unsigned long long)ocean::kSpringsMaxCatchUpSteps,
+        double(ocean::kSpringsMaxCatchUpSteps) * scene->ocean.springs.step_s);
+    return kExitUsage;
+  }
   ocean::WaveQuery query(scene->ocean);
   auto samples = query.sample(*time, points);
   auto wakes = probe_wakes(*scene, *time, points);

@@ -89,6 +89,7 @@ CascadeSpectrum make_cascade_spectrum(const OceanParams& params, uint32_t cascad
   if (params.model == SurfaceModel::Gerstner) return gerstner_cascade_spectrum(params, cascade);
   if (params.model == SurfaceModel::Sines) return sines_cascade_spectrum(params, cascade);
   if (params.model == SurfaceModel::Perlin) return perlin_cascade_spectrum(params, cascade);
+  if (params.model == SurfaceModel::Springs) return out;  // stepped in space, not in the spectrum (springs.h)
   const CascadeParams& c = params.cascades[cascade];
 
   const DirectionalSpectrum spectrum(params);

@@ -48,6 +48,13 @@ SinesSet::SinesSet() : waves(3) {
   waves[2] = {0.15, 7, -25, 1, 0};
 }
 
+// Three drops at different places and times: rings that meet, so a scene switched to springs shows waves.
+SpringsParams::SpringsParams() : drops(3) {
+  drops[0] = {0, 0, 0, 10, 1.5};
+  drops[1] = {-60, 40, 8, 8, 1.0};
+  drops[2] = {50, -45, 16, 12, 2.0};
+}
+
 const char* to_string(SurfaceModel model) {
   switch (model) {
     case SurfaceModel::Fft:
@@ -58,6 +65,8 @@ const char* to_string(SurfaceModel model) {
       return "sines";
     case SurfaceModel::Perlin:
       return "perlin";
+    case SurfaceModel::Springs:
+      return "springs";
   }
   return "?";
 }
@@ -75,8 +84,8 @@ const char* to_string(GerstnerDispersion law) {
 }
 
 bool from_string(const std::string& name, SurfaceModel& out) {
-  for (SurfaceModel m :
-       {SurfaceModel::Fft, SurfaceModel::Gerstner, SurfaceModel::Sines, SurfaceModel::Perlin})
+  for (SurfaceModel m : {SurfaceModel::Fft, SurfaceModel::Gerstner, SurfaceModel::Sines, SurfaceModel::Perlin,
+                         SurfaceModel::Springs})
     if (name == to_string(m)) return out = m, true;
   return false;
 }

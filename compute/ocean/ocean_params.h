@@ -32,7 +32,7 @@ struct SpectrumParams {
 
 // Which surface model makes the sea (issue 15, docs/models.md): the FFT ocean's random spectrum, or an
 // explicit set of Gerstner waves evaluated through the same cascades.
-enum class SurfaceModel { Fft, Gerstner, Sines, Perlin };
+enum class SurfaceModel { Fft, Gerstner, Sines, Perlin, Springs };
 
 // Gerstner waves' dispersion (seed 001): eq. 7 deep water, eq. 8 finite depth, eq. 9 capillary.
 enum class GerstnerDispersion { Deep, FiniteDepth, Capillary };
@@ -82,6 +82,44 @@ struct PerlinParams {
   uint32_t lacunarity = 2;   // frequency ratio between octaves (a whole number, so every octave tiles)
 };
 
+// Model springs (seed 001 §1.1.3, eqs. 4-5): a drop, a push on the water. It gives the nodes under a Gaussian
+// of `radius_m` a downward velocity `speed_mps` at its centre, within the step that holds `time_s`.
+struct SpringDrop {
+  double x_m = 0, z_m = 0;
+  double time_s = 0;
+  double radius_m = 3;
+  double speed_mps = 1;
+};
+
+// A wind gust: a downward pressure (force per node, N, at its centre) on a Gaussian patch of `radius_m` that
+// starts at (x_m, z_m) and moves toward `direction_deg` at `speed_mps` from `time_s` for `duration_s`.
+struct SpringGust {
+  double x_m = 0, z_m = 0;
+  double time_s = 0;
+  double duration_s = 4;
+  double radius_m = 6;
+  double force_n = 2;
+  double direction_deg = 0;
+  double speed_mps = 2;
+};
+
+struct SpringsParams {
+  SpringsParams();  // out of line, as GerstnerSet
+  // Table 1 of seed 001: node mass m, spring stiffness c, damping γ, step Δt (read as kg, N/m, kg/s, s).
+  double mass_kg = 4.0;
+  double stiffness_n_per_m = 7.0;
+  double damping_kg_per_s = 0.05;
+  double step_s = 0.4;
+  // Eq. 4's rest length L as a fraction of the node spacing: 0 = linear springs (the ring speed is
+  // sqrt(c/m) cells per second); toward 1 the springs are slack at rest and the waves nonlinear.
+  double rest_length = 0.0;
+  std::vector<SpringDrop> drops;
+  std::vector<SpringGust> gusts;
+  // The driven boundary: the nodes of the column x = 0 held at amplitude · sin(2π t / period); 0 = off.
+  double boundary_amplitude_m = 0.0;
+  double boundary_period_s = 8.0;
+};
+
 struct CascadeParams {
   double patch_size_m = 1000.0;  // side of the square tile this cascade repeats over
   uint32_t resolution = 256;     // N: samples per side, a power of two in [64, 1024]
@@ -101,9 +139,10 @@ struct OceanParams {
   double choppiness = 1.0;     // λ: horizontal displacement scale, 0 = none
   double loop_period_s = 0.0;  // > 0 quantises ω so every field repeats with this period; 0 = no loop
   SurfaceModel model = SurfaceModel::Fft;
-  GerstnerSet gerstner;  // model gerstner: the waves (choppiness is every wave's steepness Q)
-  SinesSet sines;        // model sines
-  PerlinParams perlin;   // model perlin
+  GerstnerSet gerstner;   // model gerstner: the waves (choppiness is every wave's steepness Q)
+  SinesSet sines;         // model sines
+  PerlinParams perlin;    // model perlin
+  SpringsParams springs;  // model springs
   SpectrumParams spectrum;
   std::vector<CascadeParams> cascades{{1000.0, 256}, {100.0, 256}, {10.0, 256}};
   FoamParams foam;
@@ -112,7 +151,7 @@ struct OceanParams {
 const char* to_string(
     SpectrumType type);  // "phillips", "pm", "jonswap", "tma", "jonswap-eq15", "phillips-eq18"
 const char* to_string(Spreading spreading);     // "cos2", "cos2s", "donelan-banner"
-const char* to_string(SurfaceModel model);      // "fft", "gerstner", "sines", "perlin", "perlin"
+const char* to_string(SurfaceModel model);      // "fft", "gerstner", "sines", "perlin", "springs"
 const char* to_string(GerstnerDispersion law);  // "deep", "finite-depth", "capillary"
 // Inverse of to_string; false when the name is unknown.
 bool from_string(const std::string& name, SpectrumType& out);

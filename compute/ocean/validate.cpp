@@ -1,6 +1,7 @@
 #include "ocean/validate.h"
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <sstream>
 #include <string>
@@ -10,6 +11,7 @@
 #include "ocean/gerstner.h"
 #include "ocean/initial_spectrum.h"
 #include "ocean/sines.h"
+#include "ocean/springs.h"
 
 namespace lagoon::ocean {
 namespace {
@@ -201,6 +203,40 @@ void check_perlin(const OceanParams& p, Problems& problems) {
                      "first cascade");
 }
 
+// Model springs: positive constants, a step within the stability limit, excitations that fit the GPU's list.
+void check_springs(const OceanParams& p, Problems& problems) {
+  const SpringsParams& s = p.springs;
+  problems.positive("springs.mass_kg", s.mass_kg, "kg per node (4 in Table 1)");
+  problems.positive("springs.stiffness_n_per_m", s.stiffness_n_per_m, "N/m per spring (7 in Table 1)");
+  problems.range("springs.damping_kg_per_s", s.damping_kg_per_s, 0.0, 1e6, "kg/s (0.05 in Table 1)");
+  problems.positive("springs.step_s", s.step_s, "seconds per step (0.4 in Table 1)");
+  problems.range("springs.rest_length", s.rest_length, 0.0, 0.99, "eq. 4's L as a fraction of the spacing");
+  problems.range("springs.boundary_amplitude_m", s.boundary_amplitude_m, 0.0, 100.0, "metres; 0 = off");
+  problems.positive("springs.boundary_period_s", s.boundary_period_s, "seconds");
+  if (!problems.result()) return;
+  const double limit = springs_stability_limit_s(s);
+  if (s.step_s > limit)
+    problems.add("springs.step_s", num(s.step_s) + " s is above the grid's stability limit " + num(limit) +
+                                       " s = 2 / sqrt(8 c / m): the stiffest wave would grow without bound; "
+                                       "use a smaller step, a heavier mass or softer springs");
+  if (s.drops.size() + s.gusts.size() > LAGOON_SPRINGS_MAX_EXCITATIONS)
+    problems.add("springs.drops", std::to_string(s.drops.size() + s.gusts.size()) +
+                                      " drops and gusts; at most " +
+                                      std::to_string(LAGOON_SPRINGS_MAX_EXCITATIONS) + " together");
+  const double last = double(std::numeric_limits<uint32_t>::max() - 1) * s.step_s;
+  for (size_t i = 0; i < s.drops.size(); ++i) {
+    const std::string at = "springs.drops[" + std::to_string(i) + "]";
+    problems.positive(at + ".radius_m", s.drops[i].radius_m, "metres");
+    problems.range(at + ".time_s", s.drops[i].time_s, 0.0, last, "seconds");
+  }
+  for (size_t i = 0; i < s.gusts.size(); ++i) {
+    const std::string at = "springs.gusts[" + std::to_string(i) + "]";
+    problems.positive(at + ".radius_m", s.gusts[i].radius_m, "metres");
+    problems.range(at + ".time_s", s.gusts[i].time_s, 0.0, last, "seconds");
+    problems.range(at + ".duration_s", s.gusts[i].duration_s, 0.0, last, "seconds");
+  }
+}
+
 }  // namespace
 
 Result<void> validate(const OceanParams& p) {
@@ -241,6 +277,7 @@ Result<void> validate(const OceanParams& p) {
   if (p.model == SurfaceModel::Gerstner && problems.result()) check_gerstner(p, problems);
   if (p.model == SurfaceModel::Sines && problems.result()) check_sines(p, problems);
   if (p.model == SurfaceModel::Perlin && problems.result()) check_perlin(p, problems);
+  if (p.model == SurfaceModel::Springs && problems.result()) check_springs(p, problems);
   return problems.result();
 }
 

@@ -78,6 +78,10 @@ WaveQuery::WaveQuery(const OceanParams& params, std::vector<CascadeSpectrum> spe
 WaveQuery::WaveQuery(const OceanParams& params, std::vector<CascadeSpectrum> spectra,
                      WaveQueryOptions options)
     : params_(params), spectra_(std::move(spectra)), options_(options) {
+  if (params.model == SurfaceModel::Springs) {
+    springs_ = std::make_unique<SpringGrid>(params);
+    return;
+  }
   if (spectra_.empty())
     for (uint32_t c = 0; c < params.cascades.size(); ++c)
       spectra_.push_back(make_cascade_spectrum(params, c));
@@ -127,8 +131,37 @@ WaveQuery::WaveQuery(const OceanParams& params, std::vector<CascadeSpectrum> spe
 
 WaveQuery::~WaveQuery() = default;
 
+// The grid's heights and vertical velocities at the nodes, and their central-difference slopes (as the GPU's
+// springs_assemble.comp takes them); no horizontal motion.
+void WaveQuery::evaluate_springs(double time_s) {
+  const std::vector<glm::dvec2> surface = springs_->surface_at(time_s);
+  auto grid = std::make_unique<Grid>();
+  const uint32_t n = springs_->resolution();
+  grid->n = n;
+  grid->texel_m = springs_->spacing_m();
+  for (auto& f : grid->fields) f.assign(size_t{n} * n, 0.0);
+  auto h = [&](uint32_t i, uint32_t j) { return surface[size_t(j % n) * n + i % n].x; };
+  max_slope_ = 0;
+  for (uint32_t j = 0; j < n; ++j)
+    for (uint32_t i = 0; i < n; ++i) {
+      const size_t at = size_t{j} * n + i;
+      grid->fields[kHeight][at] = surface[at].x;
+      grid->fields[kVy][at] = surface[at].y;
+      grid->fields[kSlopeX][at] = (h(i + 1, j) - h(i + n - 1, j)) / (2 * grid->texel_m);
+      grid->fields[kSlopeZ][at] = (h(i, j + 1) - h(i, j + n - 1)) / (2 * grid->texel_m);
+    }
+  grids_.clear();
+  grids_.push_back(std::move(grid));
+}
+
 void WaveQuery::evaluate(double time_s) {
   if (evaluated_ && time_s == time_s_) return;
+  if (springs_) {
+    evaluate_springs(time_s);
+    time_s_ = time_s;
+    evaluated_ = true;
+    return;
+  }
   const InverseFft2d fft = cpu_inverse_fft(options_.threads);
   grids_.clear();
   max_slope_ = 0;

@@ -6,6 +6,9 @@
 // periodic Catmull-Rom lookups. The horizontal displacement is inverted by fixed-point iteration: the
 // answer describes the surface point that the waves move to above (x, z), not the one that rests there.
 //
+// Model springs has no spectrum: its grid (ocean/springs.h) is stepped to the time asked and sampled the same
+// way. Its nodes are the model, so the bound is 0; between them the answer is the Catmull-Rom interpolant.
+//
 // Error bound (WaveSample::error_bound_m) on the height against the exact band-limited sum:
 //   B_h + G · 2λB_D. B_h and B_D bound the interpolation error of the height and of the horizontal
 //   displacement: each mode contributes its amplitude times E(k), the largest interpolation error of a
@@ -24,6 +27,7 @@
 
 #include "ocean/initial_spectrum.h"
 #include "ocean/ocean_params.h"
+#include "ocean/springs.h"
 
 namespace lagoon::ocean {
 
@@ -75,7 +79,10 @@ class WaveQuery {
   void evaluate(double time_s);
   glm::dvec2 displacement(glm::dvec2 p) const;
 
+  void evaluate_springs(double time_s);
+
   OceanParams params_;
+  std::unique_ptr<SpringGrid> springs_;  // model springs: the grid itself, stepped to each time asked
   std::vector<CascadeSpectrum> spectra_;
   WaveQueryOptions options_;
   std::vector<std::unique_ptr<Grid>> grids_;

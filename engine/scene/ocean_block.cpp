@@ -118,6 +118,53 @@ void read_perlin(ObjectReader& r, ocean::PerlinParams& p) {
             "Frequency ratio between one octave and the next (a whole number, so every octave tiles).");
 }
 
+void read_spring_drop(ObjectReader& r, ocean::SpringDrop& d) {
+  r.number("x_m", d.x_m, Bounds::between(-1e6, 1e6), "m", "Where it falls: x (east).");
+  r.number("z_m", d.z_m, Bounds::between(-1e6, 1e6), "m", "Where it falls: z (north).");
+  r.number("time_s", d.time_s, Bounds::between(0, 1e6), "s",
+           "When it falls (within the step that holds it).");
+  r.number("radius_m", d.radius_m, Bounds::above_up_to(0, 1e4), "m",
+           "Standard deviation of the Gaussian patch it pushes down; a few node spacings or more.");
+  r.number("speed_mps", d.speed_mps, Bounds::between(-100, 100), "m/s",
+           "Downward speed it gives the node at its centre (negative lifts).");
+}
+
+void read_spring_gust(ObjectReader& r, ocean::SpringGust& g) {
+  r.number("x_m", g.x_m, Bounds::between(-1e6, 1e6), "m", "Where it starts: x (east).");
+  r.number("z_m", g.z_m, Bounds::between(-1e6, 1e6), "m", "Where it starts: z (north).");
+  r.number("time_s", g.time_s, Bounds::between(0, 1e6), "s", "When it starts.");
+  r.number("duration_s", g.duration_s, Bounds::between(0, 1e6), "s", "How long it blows.");
+  r.number("radius_m", g.radius_m, Bounds::above_up_to(0, 1e4), "m",
+           "Standard deviation of the Gaussian patch it presses on.");
+  r.number("force_n", g.force_n, Bounds::between(-1e4, 1e4), "N",
+           "Downward force on the node at its centre.");
+  r.number("direction_deg", g.direction_deg, Bounds::between(-360, 360), "deg",
+           "Direction it moves toward, clockwise from +z (north) toward +x (east).");
+  r.number("speed_mps", g.speed_mps, Bounds::between(0, 100), "m/s", "How fast the patch moves.");
+}
+
+void read_springs(ObjectReader& r, ocean::SpringsParams& s) {
+  r.number("mass_kg", s.mass_kg, Bounds::above_up_to(0, 1e6), "kg",
+           "Mass m of a node (eq. 5; 4 in Table 1).");
+  r.number(
+      "stiffness_n_per_m", s.stiffness_n_per_m, Bounds::above_up_to(0, 1e6), "N/m",
+      "Stiffness c of a spring (eq. 4; 7 in Table 1). Waves travel at sqrt(c/m) node spacings per second.");
+  r.number("damping_kg_per_s", s.damping_kg_per_s, Bounds::between(0, 1e6), "kg/s",
+           "Damping gamma (eq. 5; 0.05 in Table 1): the energy decays as exp(-gamma t / m).");
+  r.number("step_s", s.step_s, Bounds::above_up_to(0, 100), "s",
+           "Time step dt (eq. 5; 0.4 in Table 1); must stay below 2 / sqrt(8 c / m), 0.535 s for Table 1.");
+  r.number("rest_length", s.rest_length, Bounds::between(0, 0.99), "",
+           "Rest length L of eq. 4 as a fraction of the node spacing: 0 = linear springs; larger values make "
+           "the springs slack at rest (slower, nonlinear waves).");
+  r.array("drops", s.drops, 0, 64, read_spring_drop,
+          "Drops: a push down on the water at a place and time. Drops and gusts together: at most 64.");
+  r.array("gusts", s.gusts, 0, 64, read_spring_gust, "Wind gusts: a moving patch of pressure for a while.");
+  r.number("boundary_amplitude_m", s.boundary_amplitude_m, Bounds::between(0, 100), "m",
+           "Driven boundary: the nodes of the column x = 0 move as amplitude sin(2 pi t / period); 0 = off.");
+  r.number("boundary_period_s", s.boundary_period_s, Bounds::above_up_to(0, 3600), "s",
+           "Period of the driven boundary.");
+}
+
 void read_cascade(ObjectReader& r, ocean::CascadeParams& c) {
   r.number("patch_size_m", c.patch_size_m, Bounds::above_up_to(0, 100000), "m",
            "Side of the square tile this cascade's waves repeat over.");
@@ -152,13 +199,17 @@ void read_ocean(ObjectReader& r, ocean::OceanParams& o) {
   using ocean::SurfaceModel;
   r.choice(
       "model", o.model,
-      named({SurfaceModel::Fft, SurfaceModel::Gerstner, SurfaceModel::Sines, SurfaceModel::Perlin}),
+      named({SurfaceModel::Fft, SurfaceModel::Gerstner, SurfaceModel::Sines, SurfaceModel::Perlin,
+             SurfaceModel::Springs}),
       "Surface model: fft = waves from the spectrum; gerstner = the waves listed in gerstner; sines = the "
-      "sum of sines in sines (needs choppiness 0); perlin = octaves of gradient noise; all through the same "
-      "cascades (docs/models.md).");
+      "sum of sines in sines (needs choppiness 0); perlin = octaves of gradient noise; springs = a grid of "
+      "masses on springs on the first cascade, excited by drops, gusts or a driven boundary; all through the "
+      "same cascades (docs/models.md).");
   r.block("gerstner", o.gerstner, read_gerstner, "Model gerstner: its waves and dispersion.");
   r.block("sines", o.sines, read_sines, "Model sines: its waves and dispersion.");
   r.block("perlin", o.perlin, read_perlin, "Model perlin: its noise octaves.");
+  r.block("springs", o.springs, read_springs,
+          "Model springs: Table 1's constants and what excites the grid.");
   r.block("spectrum", o.spectrum, read_spectrum, "Wind and wave spectrum.");
   r.array("cascades", o.cascades, 1, 4, read_cascade,
           "FFT tiles from the largest patch to the smallest; each renders a band of wavelengths (see Ocean "

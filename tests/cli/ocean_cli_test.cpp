@@ -11,6 +11,7 @@
 #include "ocean/gerstner.h"
 #include "ocean/perlin.h"
 #include "ocean/sines.h"
+#include "ocean/springs.h"
 #include "scene/scene.h"
 #include "support/direct_sum.h"
 #include "support/fftw_reference.h"
@@ -342,6 +343,49 @@ TEST(OceanCli, ModelPerlinThroughProbe) {
     EXPECT_NEAR(j["height_m"].get<double>(),
                 ocean::perlin_height(scene->ocean, j["x"].get<double>(), j["z"].get<double>()) - mean, 1e-6)
         << j;
+}
+
+// Model springs through lagoon probe and export: at nodes, probe answers the CPU grid (ocean/springs.h) and
+// the exported heights are the GPU's, which match it; foam runs; a time the grid cannot reach is refused.
+TEST(OceanCli, ModelSpringsThroughProbeAndExport) {
+  const std::vector<std::string> sets{
+      "ocean.model=springs", R"(ocean.cascades=[{"patch_size_m":128,"resolution":64}])",
+      R"(ocean.springs.drops=[{"x_m":30,"z_m":40,"time_s":0,"radius_m":6,"speed_mps":2}])",
+      "ocean.springs.boundary_amplitude_m=0.2"};
+  std::string set_args;
+  for (const std::string& s : sets) set_args += " --set " + shell_quote(s);
+  auto scene = scene::load_scene(kScene, sets);
+  ASSERT_TRUE(scene) << scene.error().message;
+  ocean::SpringGrid grid(scene->ocean);
+  const std::vector<glm::dvec2> at = grid.surface_at(9.0);
+
+  auto r = lagoon("probe --scene " + kScene + " --time 9 --at 40,40 --at 50,30 --at 4,60" + set_args);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::vector<nlohmann::json> points = json_lines(r.output);
+  ASSERT_EQ(points.size(), 3u);
+  for (const nlohmann::json& j : points) {  // nodes 2 m apart
+    const size_t node = size_t(j["z"].get<double>() / 2) * 64 + size_t(j["x"].get<double>() / 2);
+    EXPECT_NEAR(j["height_m"].get<double>(), at[node].x, 1e-9) << j;
+    EXPECT_NEAR(j["velocity_mps"][1].get<double>(), at[node].y, 1e-9) << j;
+  }
+  EXPECT_GT(std::abs(points[0]["height_m"].get<double>()), 0.01) << "the drop's ring should have arrived";
+
+  TempDir dir;
+  r = lagoon("export --scene " + kScene + " --out " + shell_quote((dir / "s").string()) + " --t0 9" +
+             set_args);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  auto heights = io::read_npy(dir / "s" / "cascade0_displacement.npy");
+  ASSERT_TRUE(heights);
+  double diff = 0, norm = 0;
+  for (size_t i = 0; i < at.size(); ++i) {
+    diff += std::pow(heights->data[i * 3 + 1] - at[i].x, 2);
+    norm += at[i].x * at[i].x;
+  }
+  EXPECT_LT(std::sqrt(diff / norm), 1e-5);
+
+  r = lagoon("probe --scene " + kScene + " --time 1e6 --at 0,0" + set_args);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("steps of the springs grid"), std::string::npos) << r.output;
 }
 
 TEST(OceanCli, AVehicleWithoutAHullFailsNamingTheField) {

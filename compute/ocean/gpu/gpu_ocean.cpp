@@ -85,10 +85,16 @@ void GpuOcean::Group::create_images(vk::Context& ctx) {
   d.debug_name = "ocean jacobian terms";
   d.format = VK_FORMAT_R16G16B16A16_SFLOAT;
   jacobian_terms = vk::Image::create(ctx, d);
+  // Cleared: model springs writes only the first cascade, and the others must read as still water.
   ctx.submit_and_wait([&](VkCommandBuffer cmd) {
-    for (const vk::Image* image : images())
-      vk::image_barrier(cmd, image->handle(), image->all_subresources(), VK_IMAGE_LAYOUT_UNDEFINED,
-                        VK_IMAGE_LAYOUT_GENERAL, vk::access::kNone, vk::access::kComputeReadWrite);
+    const VkClearColorValue zero{};
+    for (const vk::Image* image : images()) {
+      const VkImageSubresourceRange range = image->all_subresources();
+      vk::image_barrier(cmd, image->handle(), range, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
+                        vk::access::kNone, vk::access::kTransferWrite);
+      vkCmdClearColorImage(cmd, image->handle(), VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &range);
+    }
+    vk::memory_barrier(cmd, vk::access::kTransferWrite, vk::access::kComputeReadWrite);
   });
 }
 
@@ -141,9 +147,10 @@ void GpuOcean::build(std::vector<CascadeSpectrum> spectra) {
     if (count > LAGOON_MAX_CASCADES)
       vk::throw_usage_error("GpuOcean: more cascades than LAGOON_MAX_CASCADES");
     g->upload_spectra(ctx_, spectra_);
-    g->fft = make_ocean_fft_path(ctx_, variant_, g->n, count);
+    if (params_.model != SurfaceModel::Springs) g->fft = make_ocean_fft_path(ctx_, variant_, g->n, count);
     g->create_images(ctx_);
   }
+  springs_ = params_.model == SurfaceModel::Springs ? std::make_unique<SpringsGpu>(ctx_, params_) : nullptr;
 }
 
 void GpuOcean::record_step(VkCommandBuffer cmd, double time_s, double dt_s, vk::GpuTimer* timer, Mips mips) {
@@ -170,8 +177,16 @@ void GpuOcean::record_step(VkCommandBuffer cmd, double time_s, double dt_s, vk::
     for (const vk::Image* image : g->images())
       vk::image_barrier(cmd, image->handle(), image->all_subresources(), VK_IMAGE_LAYOUT_GENERAL,
                         VK_IMAGE_LAYOUT_GENERAL, readers, vk::access::kComputeReadWrite);
-    g->fft->record(cmd, {&g->spectrum, &g->omega, &g->displacement, &g->normal_jacobian, &g->jacobian_terms},
-                   push, timer);
+    if (springs_) {
+      if (g.get() == groups_[cascade_slots_[0].first].get())
+        springs_->record(
+            cmd, time_s, dt_s, reset_foam_,
+            {&g->displacement, &g->normal_jacobian, &g->jacobian_terms, cascade_slots_[0].second}, timer);
+    } else {
+      g->fft->record(cmd,
+                     {&g->spectrum, &g->omega, &g->displacement, &g->normal_jacobian, &g->jacobian_terms},
+                     push, timer);
+    }
     if (mips == Mips::Rebuild) {
       vk::GpuScope scope(timer, cmd, "ocean mips " + std::to_string(n));
       // Level by level, each from the one above; the three textures in one dispatch per level.

@@ -1,14 +1,16 @@
-// The FFT ocean's per-frame GPU work. Once per parameter change the CPU computes h0(k) and ω(k)
-// (initial_spectrum.h) and uploads them; every step records, per group of cascades sharing a resolution,
-// evolve -> inverse FFT of 4 packed fields -> assembly (ocean_fft_path.h: two variants, one per device kind)
-// writing per cascade (one array layer each) displacement (λDx, h, λDz, foam) and (normal, Jacobian)
-// textures, then their mip chains. Records only; the caller submits.
+// The FFT ocean's per-frame GPU work (model springs: its grid's step instead, springs_gpu.h). Once per
+// parameter change the CPU computes h0(k) and ω(k) (initial_spectrum.h) and uploads them; every step records,
+// per group of cascades sharing a resolution, evolve -> inverse FFT of 4 packed fields -> assembly
+// (ocean_fft_path.h: two variants, one per device kind) writing per cascade (one array layer each)
+// displacement (λDx, h, λDz, foam) and (normal, Jacobian) textures, then their mip chains. Records only; the
+// caller submits.
 #pragma once
 #include <memory>
 #include <vector>
 
 #include "core/result.h"
 #include "ocean/gpu/ocean_fft_path.h"
+#include "ocean/gpu/springs_gpu.h"
 #include "ocean/initial_spectrum.h"
 #include "ocean/ocean_params.h"
 #include "vk/context.h"
@@ -80,7 +82,8 @@ class GpuOcean {
   std::vector<std::unique_ptr<Group>> groups_;
   std::vector<std::pair<uint32_t, uint32_t>> cascade_slots_;  // cascade -> (group, layer)
   bool reset_foam_ = true;
-  vk::ComputePipeline mips_;  // shaders/ocean/mips.comp: a mip level of a group's three textures
+  vk::ComputePipeline mips_;             // shaders/ocean/mips.comp: a mip level of a group's three textures
+  std::unique_ptr<SpringsGpu> springs_;  // model springs: writes the first cascade in place of the FFT
 };
 
 }  // namespace lagoon::ocean
