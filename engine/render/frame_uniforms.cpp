@@ -90,7 +90,10 @@ gpu::FrameUniforms frame_uniforms(const FrameInputs& in) {
       .water_volume = glm::vec4(in.luts.scattering_550, in.luts.phase_g_550, 0.0f,
                                 scene.render.effects.underwater ? 1.0f : 0.0f),
       .underwater_top = glm::vec4(in.luts.underwater_top, 0.0f),
-      .wakes = in.wakes_window};
+      .wakes = in.wakes_window,
+      .classic_ambient = glm::vec4(scene.render.classic.ambient, 0.0f),
+      .classic_diffuse = glm::vec4(scene.render.classic.diffuse, scene.render.classic.shininess),
+      .classic_specular = glm::vec4(scene.render.classic.specular, 0.0f)};
   for (uint32_t c = 0; c < drawn; ++c) {
     const ocean::CascadeTextures tex = in.ocean.cascade(c);
     f.cascade_patch[c] = float(tex.patch_size_m);

@@ -61,7 +61,21 @@ struct Underwater {
 // Scene brightness to display (render.tone_map).
 enum class ToneMap { Belyaev, Clamp };  // seed 000's eq. 18; exposure and clamp only
 
+// How the water surface is shaded: the physical optics, or seed 001 §2.1's Blinn-Phong per pixel, per vertex
+// (Gouraud) or per triangle (flat), for comparing surface models as the document draws them.
+enum class Shading { Physical, BlinnPhong, Gouraud, Flat };  // "physical", "blinn-phong", "gouraud", "flat"
+
+// The water's Blinn-Phong material in the classic shading modes (reflectances, linear RGB).
+struct ClassicMaterial {
+  glm::vec3 ambient{0.08f, 0.2f, 0.25f};  // of the sky's light
+  glm::vec3 diffuse{0.02f, 0.12f, 0.18f};
+  glm::vec3 specular{0.6f, 0.6f, 0.6f};
+  float shininess = 96.f;
+};
+
 struct RenderSettings {
+  Shading shading = Shading::Physical;
+  ClassicMaterial classic;
   uint32_t width = 1280;
   uint32_t height = 720;
   float exposure = 1.f;

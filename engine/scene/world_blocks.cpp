@@ -263,7 +263,30 @@ void read_light(ObjectReader& r, PointLight& l) {
            "Beyond this distance the light has no effect (bounds its cost).");
 }
 
+void read_classic(ObjectReader& r, ClassicMaterial& m) {
+  r.vec3("ambient", m.ambient, "[r, g, b]", Bounds::between(0, 10), "",
+         "Ambient reflectance: the part of the sky's light the water returns regardless of direction.");
+  r.vec3("diffuse", m.diffuse, "[r, g, b]", Bounds::between(0, 10), "",
+         "Diffuse reflectance: times the light's irradiance (n . l).");
+  r.vec3("specular", m.specular, "[r, g, b]", Bounds::between(0, 10), "",
+         "Specular reflectance of the highlight, (n . h)^shininess with h half-way between the light and the "
+         "viewer.");
+  r.number("shininess", m.shininess, Bounds::between(1, 10000), "",
+           "Exponent of the highlight: higher = smaller, sharper highlights.");
+}
+
 void read_render(ObjectReader& r, RenderSettings& s) {
+  r.choice(
+      "shading", s.shading,
+      std::vector<std::pair<std::string, Shading>>{{"physical", Shading::Physical},
+                                                   {"blinn-phong", Shading::BlinnPhong},
+                                                   {"gouraud", Shading::Gouraud},
+                                                   {"flat", Shading::Flat}},
+      "How the water is shaded: \"physical\" = Fresnel reflection and refraction with the optics LUTs; "
+      "the classic modes of seed 001 section 2.1 light it with Blinn-Phong (render.classic) from the sun, "
+      "the point lights and the sky: \"blinn-phong\" per pixel, \"gouraud\" per vertex, \"flat\" per "
+      "triangle (docs/models.md).");
+  r.block("classic", s.classic, read_classic, "The water's material in the classic shading modes.");
   r.integer("width", s.width, Bounds::between(16, 8192), "px", "Output image width.");
   r.integer("height", s.height, Bounds::between(16, 8192), "px", "Output image height.");
   r.number("exposure", s.exposure, Bounds::between(0.01, 100), "",

@@ -3,39 +3,8 @@
 #include "shared/frame.h"
 #include "shared/surface.h"
 
-// The surface mesh is a geometry clipmap (shared/clipmap.h): nested rings on world-fixed lattices whose
-// spacing doubles per ring, so triangles keep about the same size on screen, vertices do not swim as the
-// camera moves, and morphing at each ring's edge avoids cracks and popping. Each vertex is displaced by
-// the sum of the cascades' displacement (λDx, h, λDz), sampled at a mip matching the mesh spacing so waves
-// shorter than the spacing fade instead of aliasing.
-layout(std140, binding = LAGOON_SURFACE_BIND_FRAME) uniform Frame { FrameUniforms frame; };
-layout(binding = LAGOON_SURFACE_BIND_DISPLACEMENT) uniform sampler2DArray displacement[LAGOON_MAX_CASCADES];
-#include "common/cascade_uv.glsl"
-#include "common/wake_fields.glsl"
-
-layout(location = 0) out vec3 v_world;
-layout(location = 1) out vec2 v_rest;
-
-vec3 clipmap_displacement(vec2 rest, float spacing) {
-  // Constant indices into the sampler array (a loop index would be dynamic descriptor indexing). A cascade
-  // whose patch is no larger than the spacing would be read at its 1x1 mip, the patch's mean displacement,
-  // which is zero (no k = 0 mode): such lookups are skipped (a third of them on a far-reaching clipmap).
-  vec3 d = vec3(0.0);
-  const int count = kCascadeCount;  // compiled out beyond it (shared/limits.h)
-#define LAGOON_CASCADE(c)                                                                                  \
-  if (count > c && spacing < frame.cascade_patch[c]) {                                                     \
-    float lod = max(0.0, log2(spacing / frame.cascade_texel[c]));                                          \
-    d += textureLod(displacement[c], cascade_uvw(rest, c), lod).xyz;                                      \
-  }
-  LAGOON_CASCADE(0)
-  LAGOON_CASCADE(1)
-  LAGOON_CASCADE(2)
-  LAGOON_CASCADE(3)
-  d.y += wake_at(rest).x;  // the wakes, at the rest position (their own motion is vertical)
-  return d;
-}
-
-#include "shared/clipmap_morph.h"
+// The water surface's vertices (common/surface_vertex.glsl).
+#include "common/surface_vertex.glsl"
 
 void main() {
   ClipmapVertex v = clipmap_indexed_vertex(gl_VertexIndex, frame.camera_pos.xz, frame.grid, frame.clipmap);

@@ -48,6 +48,10 @@ struct FrameUniforms {
                         // unused
   vec4 wakes;           // the wakes' window (common/wake_fields.glsl): xy = world xz of its corner, z = its
                         // width m, w = its cell size m
+  // render.shading's classic modes (common/classic_light.glsl): the water's Blinn-Phong material.
+  vec4 classic_ambient;   // rgb = ambient reflectance (of the sky's light), w unused
+  vec4 classic_diffuse;   // rgb = diffuse reflectance, w = shininess (the exponent of the highlight)
+  vec4 classic_specular;  // rgb = specular reflectance, w unused
 };
 
 // One point light of the scene's "lights" block (storage buffer, std430).
@@ -58,7 +62,7 @@ struct PointLightGpu {
 LAGOON_GPU_END
 
 #ifdef __cplusplus
-LAGOON_CHECK_SIZE(FrameUniforms, 544);
+LAGOON_CHECK_SIZE(FrameUniforms, 592);
 LAGOON_CHECK_SIZE(PointLightGpu, 32);
 LAGOON_CHECK_OFFSET(FrameUniforms, camera_pos, 128);
 LAGOON_CHECK_OFFSET(FrameUniforms, water_deep, 208);

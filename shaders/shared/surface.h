@@ -38,5 +38,8 @@
 // Specialisation constant of the shaders that include common/wake_fields.glsl: the wakes compiled in (1) or
 // not (no vehicle makes one). Ids 0-2 above, 3 is LAGOON_SPEC_CASCADE_COUNT (shared/limits.h).
 #define LAGOON_SURFACE_SPEC_WAKES 4
+// Specialisation constant of render/ocean_surface_classic.frag: the seed 001 shading it draws,
+// 1 = blinn-phong (per pixel), 2 = gouraud (lit per vertex), 3 = flat (one normal per triangle).
+#define LAGOON_SURFACE_SPEC_SHADING 6
 
 #endif

@@ -18,6 +18,7 @@ SurfacePass::SurfacePass(vk::Context& ctx, const SurfaceFields& fields, const Sc
       objects_(objects),
       luts_(luts),
       samplers_(samplers),
+      color_format_(color_format),
       depth_format_(depth_format) {
   // Writes display-referred colour: each shader tone-maps its own output (common/tonemap.glsl), so there is
   // no HDR frame and no full-screen post pass.
@@ -35,29 +36,52 @@ SurfacePass::SurfacePass(vk::Context& ctx, const SurfaceFields& fields, const Sc
 
 void SurfacePass::record(const FrameContext& frame, const Inputs& in, vk::Target color,
                          vk::Target depth) const {
-  std::vector<vk::Binding> bindings{
-      vk::bind(LAGOON_SURFACE_BIND_REFLECTION, sampled(in.reflection, samplers_.clamp)),
-      vk::bind(LAGOON_SURFACE_BIND_FRAME, frame.uniforms()),
-      vk::bind(LAGOON_SURFACE_BIND_REFRACTION_ALBEDO, sampled(in.refraction_albedo, samplers_.clamp)),
-      vk::bind(LAGOON_SURFACE_BIND_REFRACTION_DEPTH, sampled(in.refraction_depth, samplers_.nearest)),
-      vk::bind(LAGOON_SURFACE_BIND_LUT_T0, sampled(luts_.t0, samplers_.clamp)),
-      vk::bind(LAGOON_SURFACE_BIND_LUT_T1, sampled(luts_.t1, samplers_.clamp)),
-      vk::bind(LAGOON_SURFACE_BIND_LIGHTS, frame.slot.lights),
-      vk::bind(LAGOON_SURFACE_BIND_SEDIMENT, frame.slot.sediment),
-      vk::bind(LAGOON_SURFACE_BIND_CAUSTICS, sampled(in.caustics, samplers_.clamp)),
-      vk::bind(LAGOON_SURFACE_BIND_UW_TARGET, sampled(luts_.uw_target, samplers_.clamp)),
-      vk::bind(LAGOON_SURFACE_BIND_UW_DOWN, sampled(luts_.uw_down, samplers_.clamp)),
-      vk::bind(LAGOON_SURFACE_BIND_UW_UP, sampled(luts_.uw_up, samplers_.clamp))};
-  for (vk::Binding& b : surface_field_bindings(fields_, samplers_)) bindings.push_back(b);
+  const scene::Shading shading = frame.scene.render.shading;
+  std::vector<vk::Binding> bindings = surface_field_bindings(fields_, samplers_);
+  bindings.push_back(vk::bind(LAGOON_SURFACE_BIND_FRAME, frame.uniforms()));
+  bindings.push_back(vk::bind(LAGOON_SURFACE_BIND_LIGHTS, frame.slot.lights));
+  if (shading == scene::Shading::Physical)
+    for (const vk::Binding& b :
+         {vk::bind(LAGOON_SURFACE_BIND_REFLECTION, sampled(in.reflection, samplers_.clamp)),
+          vk::bind(LAGOON_SURFACE_BIND_REFRACTION_ALBEDO, sampled(in.refraction_albedo, samplers_.clamp)),
+          vk::bind(LAGOON_SURFACE_BIND_REFRACTION_DEPTH, sampled(in.refraction_depth, samplers_.nearest)),
+          vk::bind(LAGOON_SURFACE_BIND_LUT_T0, sampled(luts_.t0, samplers_.clamp)),
+          vk::bind(LAGOON_SURFACE_BIND_LUT_T1, sampled(luts_.t1, samplers_.clamp)),
+          vk::bind(LAGOON_SURFACE_BIND_SEDIMENT, frame.slot.sediment),
+          vk::bind(LAGOON_SURFACE_BIND_CAUSTICS, sampled(in.caustics, samplers_.clamp)),
+          vk::bind(LAGOON_SURFACE_BIND_UW_TARGET, sampled(luts_.uw_target, samplers_.clamp)),
+          vk::bind(LAGOON_SURFACE_BIND_UW_DOWN, sampled(luts_.uw_down, samplers_.clamp)),
+          vk::bind(LAGOON_SURFACE_BIND_UW_UP, sampled(luts_.uw_up, samplers_.clamp))})
+      bindings.push_back(b);
   // Its own render pass, so the timestamps bracket real work on tilers such as lavapipe.
   vk::GpuScope scope(frame.timer(), frame.cmd, "surface");
   vk::begin_rendering(frame.cmd, frame.extent,
                       {{.view = color.view, .clear = std::array{0.f, 0.f, 0.f, 1.f}}},
                       vk::DepthTarget{.view = depth.view, .clear = 1.0f});
   objects_.draw(frame, gpu::MeshMode::Lit);  // above-water parts, lit; the surface depth-tests against them
-  vk::draw_indexed(frame.cmd, surface_[(frame.light_count > 0 ? 1u : 0u) | (frame.caustics ? 2u : 0u)],
-                   bindings, frame.slot.surface_indices.handle(), frame.slot.surface_index_count);
+  const vk::GraphicsPipeline& pipeline =
+      shading == scene::Shading::Physical
+          ? surface_[(frame.light_count > 0 ? 1u : 0u) | (frame.caustics ? 2u : 0u)]
+          : classic(shading);
+  vk::draw_indexed(frame.cmd, pipeline, bindings, frame.slot.surface_indices.handle(),
+                   frame.slot.surface_index_count);
   vk::end_rendering(frame.cmd);
+}
+
+// Built on first use: most scenes never ask for the classic modes.
+const vk::GraphicsPipeline& SurfacePass::classic(scene::Shading shading) const {
+  const uint32_t mode = uint32_t(shading);  // 1 blinn-phong, 2 gouraud, 3 flat (shared/surface.h)
+  vk::GraphicsPipeline& p = classic_[mode - 1];
+  if (p.pipeline() == VK_NULL_HANDLE)
+    p = vk::GraphicsPipeline::create(
+        ctx_, {.vertex = &shaders::render_ocean_surface_classic_vert,
+               .fragment = &shaders::render_ocean_surface_classic_frag,
+               .color_formats = {color_format_},
+               .depth_format = depth_format_,
+               .depth_test = true,
+               .depth_write = true,
+               .spec = with_surface_field_specs({{LAGOON_SURFACE_SPEC_SHADING, mode}}, fields_)});
+  return p;
 }
 
 void SurfacePass::record_aov(const FrameContext& frame, vk::Target normal_foam, vk::Target world,

@@ -1,7 +1,8 @@
 // The water surface: the above-water parts of objects, then the clipmap mesh displaced by the cascades,
 // shaded with Fresnel between the reflection and the refracted light through the colour LUTs (eq. 22), foam
 // and glints, tone-mapped into the displayed frame (shaders/render/ocean_surface.*). Also draws the
-// surface's ground-truth AOVs (ocean_surface_aov.frag).
+// surface's ground-truth AOVs (ocean_surface_aov.frag). render.shading's classic modes replace the shading
+// with seed 001's Blinn-Phong (ocean_surface_classic.*).
 #pragma once
 #include <array>
 #include <vector>
@@ -43,11 +44,15 @@ class SurfacePass {
   const SceneObjects& objects_;
   const WaterLuts& luts_;
   const Samplers& samplers_;
-  VkFormat depth_format_;
+  VkFormat color_format_, depth_format_;
   // Variants with the lamps' light under the water (bit 0, LAGOON_SURFACE_SPEC_LAMPS) and the caustics
   // (bit 1, LAGOON_SURFACE_SPEC_CAUSTICS) compiled in or out.
   std::array<vk::GraphicsPipeline, 4> surface_;
   vk::GraphicsPipeline aov_;  // created on first use
+  // render.shading's classic modes (ocean_surface_classic.*): blinn-phong, gouraud, flat, created on first
+  // use.
+  const vk::GraphicsPipeline& classic(scene::Shading shading) const;
+  mutable std::array<vk::GraphicsPipeline, 3> classic_;
 };
 
 }  // namespace lagoon::render
