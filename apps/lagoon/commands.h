@@ -20,6 +20,7 @@ const Command& export_command();
 const Command& probe_command();
 const Command& lut_command();
 const Command& compare_images_command();
+const Command& compare_command();
 const Command& soak_command();
 
 }  // namespace lagoon::cli

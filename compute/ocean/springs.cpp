@@ -48,6 +48,13 @@ double springs_stability_limit_s(const SpringsParams& p) {
   return 2.0 / std::sqrt(8.0 * p.stiffness_n_per_m / p.mass_kg);
 }
 
+double springs_omega(const SpringsParams& p, double spacing_m, double kx, double kz) {
+  const double sx = std::sin(kx * spacing_m / 2), sz = std::sin(kz * spacing_m / 2);
+  const double omega =
+      std::sqrt(4 * p.stiffness_n_per_m * (1 - p.rest_length) / p.mass_kg * (sx * sx + sz * sz));
+  return 2 / p.step_s * std::asin(std::min(1.0, p.step_s * omega / 2));
+}
+
 uint64_t springs_steps_for(const SpringsParams& p, double time_s) {
   return uint64_t(std::floor(std::max(time_s, 0.0) / p.step_s)) + 1;
 }

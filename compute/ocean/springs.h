@@ -25,6 +25,11 @@ inline constexpr uint64_t kSpringsMaxCatchUpSteps = 131072;
 // stiffest mode (the checkerboard) has ω_max² = 8 c / m. Table 1 gives 0.535 s; its Δt = 0.4 s is 75 % of it.
 double springs_stability_limit_s(const SpringsParams& p);
 
+// The small-wave frequency (rad/s) of the mode k on the grid: the lattice's sqrt((4 c'/m)(sin²(kx h/2) +
+// sin²(kz h/2))), c' = c (1 - L/h), as semi-implicit Euler turns it, (2/Δt) asin(Δt ω/2); the Nyquist
+// limit where the step cannot follow.
+double springs_omega(const SpringsParams& p, double spacing_m, double kx, double kz);
+
 // Steps to take from rest for the surface at `time_s` (>= 0).
 uint64_t springs_steps_for(const SpringsParams& p, double time_s);
 

@@ -217,7 +217,7 @@ CascadeTextures GpuOcean::cascade(uint32_t index) const {
   return {&g.displacement, &g.normal_jacobian, &g.jacobian_terms, layer, g.n, spectra_[index].patch_size_m};
 }
 
-CascadeReadback GpuOcean::read_cascade(uint32_t index) {
+CascadeReadback GpuOcean::read_cascade(uint32_t index) const {
   const CascadeTextures t = cascade(index);
   const vk::Access writer{VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT};
   CascadeReadback out;

@@ -69,7 +69,7 @@ class GpuOcean {
   uint32_t cascade_count() const { return uint32_t(params_.cascades.size()); }
 
   // Reads back mip 0 of one cascade (submits and waits; for tests, export and probes).
-  CascadeReadback read_cascade(uint32_t index);
+  CascadeReadback read_cascade(uint32_t index) const;
 
  private:
   struct Group;

@@ -1,0 +1,24 @@
+// Labels drawn into 8-bit images (contact sheets, plots): stb_easy_font's quads (Debian's libstb-dev)
+// filled pixel by pixel, scaled by a whole number. Plain ASCII; other bytes draw nothing.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <string_view>
+
+#include "io/png.h"
+
+namespace lagoon::io {
+
+using Rgb8 = std::array<uint8_t, 3>;
+
+// Fills the rectangle [x, x + w) x [y, y + h), clipped to the image.
+void fill_rect(Image8& image, int x, int y, int w, int h, Rgb8 colour);
+
+// Draws `text` with its top-left corner at (x, y), each font pixel `scale` image pixels wide; '\n' starts a
+// new line. Returns the drawn width in pixels.
+int draw_text(Image8& image, int x, int y, std::string_view text, Rgb8 colour, int scale = 1);
+
+// The width and height `text` would take.
+std::array<int, 2> text_size(std::string_view text, int scale = 1);
+
+}  // namespace lagoon::io
