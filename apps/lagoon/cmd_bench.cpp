@@ -15,6 +15,7 @@
 #include "fftw_ocean_step.h"
 #include "gpu_session.h"
 #include "io/atomic_file.h"
+#include "model_comparison.h"
 #include "ocean/dynamic_layer.h"
 #include "ocean/gpu/dynamic_layer_gpu.h"
 #include "ocean/gpu/gpu_ocean.h"
@@ -68,6 +69,30 @@ ComputeTimes time_ocean_step(vk::Context& ctx, const ocean::OceanParams& params,
   return times;
 }
 
+// Every surface model's step at 3 x 256² (issue 15's budget: none costs more than fft), in the same run and
+// order as the rows above; the ratio column is the model's time over fft's.
+bool bench_models(vk::Context& ctx, int rounds, nlohmann::json& results) {
+  ocean::OceanParams params = bench_params(256, 3);
+  double fft_ms = 0;
+  for (ocean::SurfaceModel m :
+       {ocean::SurfaceModel::Fft, ocean::SurfaceModel::Gerstner, ocean::SurfaceModel::Sines,
+        ocean::SurfaceModel::Perlin, ocean::SurfaceModel::Springs}) {
+    params.model = m;
+    params.choppiness = m == ocean::SurfaceModel::Sines ? 0.0 : 1.0;  // sines moves points only vertically
+    if (auto valid = ocean::validate(params); !valid) {
+      std::fprintf(stderr, "lagoon bench: model %s: %s\n", ocean::to_string(m),
+                   valid.error().message.c_str());
+      return false;
+    }
+    const StepTime t = time_model_step(ctx, params, rounds);
+    if (m == ocean::SurfaceModel::Fft) fft_ms = t.device_ms;
+    const std::vector<double>& times = t.device_rounds.empty() ? t.wall_rounds : t.device_rounds;
+    report_row(results, std::string("model_step/") + ocean::to_string(m) + "/N=256/cascades=3", times,
+               t.device_rounds.empty() ? "wall" : "gpu timestamps", fft_ms > 0 ? t.device_ms / fft_ms : 0);
+  }
+  return true;
+}
+
 int run_bench_compute(const ParsedArgs& args, int rounds) {
   auto ctx = open_context();
   if (!ctx) return kExitFailure;
@@ -94,6 +119,7 @@ int run_bench_compute(const ParsedArgs& args, int rounds) {
       report_row(results, "ocean_step/fftw_2threads" + config, times.fftw2, "wall", median(times.ratio2));
     }
   }
+  if (!bench_models(*ctx, rounds, results)) return kExitFailure;
   if (auto path = args.get("json")) {
     const nlohmann::json doc{{"context", report_context(*ctx, rounds)}, {"benchmarks", results}};
     if (!write_report(*path, doc)) return kExitFailure;
