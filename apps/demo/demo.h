@@ -70,6 +70,11 @@ class Demo {
   CameraInput camera_input(GLFWwindow* w, bool ctrl) const;
   HelmInput helm_input(GLFWwindow* w) const;
   void next_helm();
+  // The surface models (demo_models.cpp): M, the toolbar's buttons and a script's "model=NAME|next".
+  void select_model(ocean::SurfaceModel model);
+  void next_model();
+  void draw_model_selector();
+  bool script_model(const std::string& assignment, long long frame);
   void steer(double from_s, double dt);
   void draw_helm_status() const;
   void print_helm() const;
@@ -110,6 +115,7 @@ class Demo {
   HelmInput helm_input_;                    // the arrow keys this frame
   std::optional<HelmInput> scripted_helm_;  // a --script's helm.throttle / helm.rudder, held until changed
   std::string vehicles_key_;                // the vehicles the renderer's tracks were made for
+  double choppiness_before_sines_ = -1;     // restored when the model leaves sines (which needs 0)
 
   // The loop's state.
   std::array<bool, render::OceanRenderer::kSlots> slot_used_{};  // a slot's timings are readable

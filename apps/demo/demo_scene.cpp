@@ -71,7 +71,8 @@ void Demo::apply_script(long long frame) {
       resize_window(step.assignment, frame);
       continue;
     }
-    if (script_helm(step.assignment, frame)) continue;  // not a scene field either: the arrow keys
+    if (script_helm(step.assignment, frame)) continue;   // not a scene field either: the arrow keys
+    if (script_model(step.assignment, frame)) continue;  // nor this: the model selector
     const scene::Camera before = scene_.camera;
     if (auto r = edit_scene(scene_, step.assignment); !r) {
       message("script, frame " + std::to_string(frame) + ": " + step.assignment + ": " + r.error().message);

@@ -25,6 +25,7 @@ constexpr const char* kHelp =
     "N             one step of 1/30 s while paused\n"
     "V             vsync on / off\n"
     "H             take the helm of the next vehicle (after the last: let go)\n"
+    "M             next surface model (fft, gerstner, sines, perlin, springs)\n"
     "Arrows        at the helm: Up / Down speed, Left / Right rudder\n"
     "F12           screenshot (PNG in the working folder)\n"
     "Ctrl+S        save the scene (path in the panel)\n"
@@ -73,6 +74,7 @@ void Demo::handle_keys(GLFWwindow* w, bool ctrl) {
     swapchain_dirty_ = true;
   }
   if (keys_.pressed(w, GLFW_KEY_H)) next_helm();
+  if (keys_.pressed(w, GLFW_KEY_M)) next_model();
   if (keys_.pressed(w, GLFW_KEY_F12)) screenshot_request_ = timestamped("lagoon-", ".png");
   if (keys_.pressed(w, GLFW_KEY_S) && ctrl) save_scene_to(save_path_);
   if (keys_.pressed(w, GLFW_KEY_R) && ctrl) {
@@ -152,6 +154,7 @@ void Demo::draw_toolbar() {
   if (ImGui::RadioButton("orbit", &mode, 1)) camera_->set_mode(CameraController::Mode::Orbit);
   ImGui::SameLine();
   ImGui::Text("speed %.1f m/s  F1: keys", camera_->speed_mps());
+  draw_model_selector();
   draw_helm_status();
   if (!status_.empty()) ImGui::TextWrapped("%s", status_.c_str());
 }

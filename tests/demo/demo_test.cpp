@@ -194,6 +194,24 @@ TEST_F(Demo, TheArrowKeysSteerAVehicleAtTheHelm) {
   EXPECT_NEAR(std::hypot(x - x0, z - z0), 2 * radius * std::sin(turned / 2), 1e-3) << d.output;
 }
 
+// The model selector (M, the toolbar's buttons; here a script's model= lines) switches the surface model
+// live: the renderer rebuilds for every model without a failure (sines runs only because the selector gives
+// it the choppiness 0 it needs), and an unknown name is reported, not fatal.
+TEST_F(Demo, TheModelSelectorSwitchesModelsLive) {
+  {
+    std::ofstream script(out("models.txt"));
+    script << "0 model=gerstner\n2 model=next\n4 model=next\n6 model=next\n8 model=next\n9 model=waves\n";
+  }
+  auto d = demo("--scene " + shell_quote(kScene) + " --width 160 --height 90 --frames 12 --script " +
+                shell_quote(out("models.txt")) + " --exit");
+  ASSERT_EQ(d.exit_code, 0) << d.output;
+  for (const char* m : {"gerstner", "sines", "perlin", "springs", "fft"})
+    EXPECT_NE(d.output.find(std::string("model ") + m + " (M: next model)"), std::string::npos)
+        << m << d.output;
+  EXPECT_NE(d.output.find("model=waves: no such model"), std::string::npos) << d.output;
+  EXPECT_EQ(d.output.find("must be"), std::string::npos) << "a model failed to build:\n" << d.output;
+}
+
 TEST_F(Demo, BadInputFailsWithAClearMessage) {
   auto no_frames = demo("--exit");
   EXPECT_EQ(no_frames.exit_code, 2) << no_frames.output;
