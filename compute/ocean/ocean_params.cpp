@@ -50,9 +50,9 @@ SinesSet::SinesSet() : waves(3) {
 
 // Three drops at different places and times: rings that meet, so a scene switched to springs shows waves.
 SpringsParams::SpringsParams() : drops(3) {
-  drops[0] = {0, 0, 0, 10, 1.5};
-  drops[1] = {-60, 40, 8, 8, 1.0};
-  drops[2] = {50, -45, 16, 12, 2.0};
+  drops[0] = {10, 60, 0, 6, 0.4};
+  drops[1] = {-40, 90, 5, 5, 0.3};
+  drops[2] = {50, 40, 10, 8, 0.5};
 }
 
 const char* to_string(SurfaceModel model) {
