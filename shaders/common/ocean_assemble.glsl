@@ -18,7 +18,10 @@ void ocean_assemble(ivec3 texel, vec2 f0, vec2 f1, vec2 f2, vec2 f3) {
   float foam = max(previous * decay, clamp(p.foam_threshold - jacobian, 0.0, 1.0));
   imageStore(displacement, texel, vec4(lambda * f0.x, h, lambda * f1.x, foam));
   imageStore(normal_jacobian, texel, vec4(normalize(vec3(-sx, 1.0, -sz)), jacobian));
-  imageStore(jacobian_terms, texel, vec4(jxx - 1.0, jzz - 1.0, jxz, foam));
+  // Terms below half precision's smallest normal (6.1e-5) are flushed to 0: stored as subnormal halves they
+  // take a slow conversion path on CPU devices (lavapipe), and below 1e-4 they decide no foam.
+  vec4 terms = vec4(jxx - 1.0, jzz - 1.0, jxz, foam);
+  imageStore(jacobian_terms, texel, mix(terms, vec4(0.0), lessThan(abs(terms), vec4(6.2e-5))));
 }
 
 #endif
