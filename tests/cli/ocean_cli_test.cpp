@@ -1,6 +1,8 @@
 // End-to-end: lagoon export and probe, their files and errors, and bad ocean parameters on every command.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -387,6 +389,54 @@ TEST(OceanCli, ModelSpringsThroughProbeAndExport) {
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("steps of the springs grid"), std::string::npos) << r.output;
 }
+
+// Foam runs with every model (issue 15): two exported frames 0.5 s apart follow the foam law at every texel
+// of every cascade, new foam = clamp(threshold - J, 0, 1) from the exported J, kept at exp(-decay dt) of the
+// last.
+class ModelFoam : public testing::TestWithParam<const char*> {};
+
+TEST_P(ModelFoam, FollowsTheFoamLawThroughExport) {
+  TempDir dir;
+  const std::string model = GetParam();
+  std::string sets =
+      " --set ocean.model=" + model + " --set ocean.foam.threshold=1.05 --set ocean.foam.decay_per_s=0.5" +
+      " --set " +
+      shell_quote(
+          R"(ocean.cascades=[{"patch_size_m":200,"resolution":64},{"patch_size_m":23,"resolution":64}])");
+  if (model == "sines") sets += " --set ocean.choppiness=0";
+  if (model == "perlin") sets += " --set ocean.perlin.octaves=2";
+  auto r = lagoon("export --scene " + kScene + " --out " + shell_quote((dir / "f").string()) +
+                  " --frames 2 --dt 0.5 --t0 3" + sets);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const double kept = std::exp(-0.5 * 0.5);
+  double worst = 0, largest = 0;
+  // Springs draws on the first cascade alone; the second holds still water (J = 1, normal up) and no foam.
+  for (const char* prefix : {"cascade0", "cascade1"}) {
+    if (model == "springs" && std::string(prefix) == "cascade1") {
+      auto jac = io::read_npy(dir / "f" / "cascade1_jacobian.npy");
+      auto normal = io::read_npy(dir / "f" / "cascade1_normal.npy");
+      ASSERT_TRUE(jac && normal);
+      EXPECT_EQ(*std::min_element(jac->data.begin(), jac->data.end()), 1.0f);
+      EXPECT_EQ(normal->data[1], 1.0f);
+      continue;
+    }
+    auto foam = io::read_npy(dir / "f" / (std::string(prefix) + "_foam.npy"));
+    auto jac = io::read_npy(dir / "f" / (std::string(prefix) + "_jacobian.npy"));
+    ASSERT_TRUE(foam && jac);
+    const size_t texels = 64 * 64;
+    for (size_t i = 0; i < texels; ++i) {
+      const double first = std::clamp(1.05 - jac->data[i], 0.0, 1.0);
+      const double second =
+          std::max(first * kept, std::clamp(1.05 - double(jac->data[texels + i]), 0.0, 1.0));
+      worst = std::max({worst, std::abs(foam->data[i] - first), std::abs(foam->data[texels + i] - second)});
+      largest = std::max(largest, double(foam->data[texels + i]));
+    }
+  }
+  EXPECT_LT(worst, 1e-5) << model;
+  EXPECT_GT(largest, 0.04) << model << ": no foam at all";
+}
+
+INSTANTIATE_TEST_SUITE_P(Models, ModelFoam, testing::Values("fft", "gerstner", "sines", "perlin", "springs"));
 
 TEST(OceanCli, AVehicleWithoutAHullFailsNamingTheField) {
   const std::string harbour = std::string(LAGOON_SOURCE_DIR) + "/scenes/harbour.json";

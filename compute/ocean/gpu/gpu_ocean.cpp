@@ -85,14 +85,16 @@ void GpuOcean::Group::create_images(vk::Context& ctx) {
   d.debug_name = "ocean jacobian terms";
   d.format = VK_FORMAT_R16G16B16A16_SFLOAT;
   jacobian_terms = vk::Image::create(ctx, d);
-  // Cleared: model springs writes only the first cascade, and the others must read as still water.
+  // Cleared to still water (no displacement, normal up, J = 1, no foam): model springs writes only the first
+  // cascade, and the others must read as a flat sea.
   ctx.submit_and_wait([&](VkCommandBuffer cmd) {
-    const VkClearColorValue zero{};
+    const VkClearColorValue zero{}, up{.float32 = {0.0f, 1.0f, 0.0f, 1.0f}};
     for (const vk::Image* image : images()) {
       const VkImageSubresourceRange range = image->all_subresources();
       vk::image_barrier(cmd, image->handle(), range, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
                         vk::access::kNone, vk::access::kTransferWrite);
-      vkCmdClearColorImage(cmd, image->handle(), VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &range);
+      vkCmdClearColorImage(cmd, image->handle(), VK_IMAGE_LAYOUT_GENERAL,
+                           image == &normal_jacobian ? &up : &zero, 1, &range);
     }
     vk::memory_barrier(cmd, vk::access::kTransferWrite, vk::access::kComputeReadWrite);
   });
