@@ -43,4 +43,56 @@ double spectrum_mean_square_slope(const OceanParams& params, double k_from, doub
   return sum * step;
 }
 
+SlopeMoments slope_moments(const CascadeSpectrum& s) {
+  const uint32_t n = s.resolution;
+  const double dk = 2.0 * std::numbers::pi / s.patch_size_m;
+  SlopeMoments m;
+  for (uint32_t iz = 0; iz < n; ++iz) {
+    const double kz = dk * (iz < n / 2 ? double(iz) : double(iz) - n);
+    for (uint32_t ix = 0; ix < n; ++ix) {
+      const double kx = dk * (ix < n / 2 ? double(ix) : double(ix) - n);
+      const double a = 2.0 * std::norm(std::complex<double>(s.h0[size_t{iz} * n + ix]));
+      m.xx += kx * kx * a;
+      m.zz += kz * kz * a;
+      m.xz += kx * kz * a;
+    }
+  }
+  return m;
+}
+
+SlopeMoments spectrum_slope_moments(const OceanParams& params, double k_from, double k_to) {
+  SlopeMoments m;
+  if (!(k_to > k_from) || k_from <= 0) return m;
+  const DirectionalSpectrum spectrum(params);
+  // Ψ is a density in (kx, kz): ∫∫ k_i k_j Ψ k dk dθ, trapezoid in ln k (one more k) and uniform in θ.
+  constexpr int kSteps = 512, kAngles = 128;
+  const double a = std::log(k_from), b = std::log(k_to), step = (b - a) / kSteps;
+  const double dtheta = 2 * std::numbers::pi / kAngles;
+  for (int i = 0; i <= kSteps; ++i) {
+    const double k = std::exp(a + i * step), end = (i == 0 || i == kSteps) ? 0.5 : 1.0;
+    for (int j = 0; j < kAngles; ++j) {
+      const double theta = dtheta * j, kx = k * std::cos(theta), kz = k * std::sin(theta);
+      const double w = end * spectrum(kx, kz) * k * k * step * dtheta;
+      m.xx += kx * kx * w;
+      m.zz += kz * kz * w;
+      m.xz += kx * kz * w;
+    }
+  }
+  return m;
+}
+
+SlopeMoments sea_slope_moments(const OceanParams& params) {
+  SlopeMoments m;
+  for (uint32_t c = 0; c < params.cascades.size(); ++c) {
+    const SlopeMoments one = slope_moments(make_cascade_spectrum(params, c));
+    m.xx += one.xx, m.zz += one.zz, m.xz += one.xz;
+  }
+  if (params.model == SurfaceModel::Fft) {
+    const SlopeMoments rest =
+        spectrum_slope_moments(params, cascade_bands(params).back().k_max, kCapillaryCutoffK);
+    m.xx += rest.xx, m.zz += rest.zz, m.xz += rest.xz;
+  }
+  return m;
+}
+
 }  // namespace lagoon::ocean

@@ -20,6 +20,19 @@ double height_variance(const CascadeSpectrum& spectrum);
 // waves no cascade carries. 0 when k_to <= k_from.
 double spectrum_mean_square_slope(const OceanParams& params, double k_from, double k_to);
 
+// E[s sᵀ] of the slopes s = (∂h/∂x, ∂h/∂z): the roughness the water colour's surface coefficients average
+// over (optics/rough_surface.h, seed 000 eq. 10). xx + zz is the mean square slope.
+struct SlopeMoments {
+  double xx = 0, zz = 0, xz = 0;
+};
+// The cascade's, averaged over time, from its sampled amplitudes (as mean_square_slope).
+SlopeMoments slope_moments(const CascadeSpectrum& spectrum);
+// The continuous directional spectrum's over k_from <= |k| < k_to (no sampling).
+SlopeMoments spectrum_slope_moments(const OceanParams& params, double k_from, double k_to);
+// The whole sea's: every cascade's, plus the spectrum's from the last cascade's band to 1 cm for the FFT
+// ocean (the waves the glint also counts; the other models have no waves beyond their cascades).
+SlopeMoments sea_slope_moments(const OceanParams& params);
+
 // Shortest wave the glint model counts, 1 cm (k = 2π/0.01): below it capillary damping dominates and the
 // gravity-wave spectra used here no longer hold (Cox & Munk's glitter slopes end about here).
 inline constexpr double kCapillaryCutoffK = 628.3;
