@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "demo.h"
+#include "render/water_luts.h"
 
 namespace lagoon::demo {
 namespace {
@@ -48,7 +49,7 @@ Result<void> Demo::rebuild_renderer() {
   failed_key_.clear();
   query_ = std::make_unique<ocean::WaveQuery>(scene_.ocean);
   probe_.reset();
-  if (auto inputs = optics::lut_inputs(scene_.water, scene_.sun.elevation_deg)) {
+  if (auto inputs = render::scene_lut_inputs(scene_)) {
     if (auto lut = optics::build_water_lut(*inputs)) lut_ = std::move(*lut);
   }
   return {};

@@ -16,6 +16,7 @@
 #include "optics/colour.h"
 #include "optics/lut.h"
 #include "optics/surface.h"
+#include "render/water_luts.h"
 #include "scene_args.h"
 #include "staged_output.h"
 
@@ -206,7 +207,7 @@ int run_lut(const ParsedArgs& args) {
   }
   auto scene = load_scene_from_args(args, "lut", *overrides);
   if (!scene) return kExitFailure;
-  auto inputs = optics::lut_inputs(scene->water, scene->sun.elevation_deg);
+  auto inputs = render::scene_lut_inputs(*scene);
   if (!inputs) {
     std::fprintf(stderr, "lagoon lut: %s\n", inputs.error().message.c_str());
     return kExitFailure;

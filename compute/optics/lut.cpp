@@ -56,14 +56,15 @@ double phase_x1_at(const LutInputs& in, int i) {
 Result<FourFlowSolution> solve_wavelength(const LutInputs& in, int i, double depth_m) {
   const double sun_zenith = (90.0 - std::max(in.sky.sun_elevation_deg, 0.0)) * kDegToRad;
   const SimilarScattering scaled = similarity_scaled(in.water.scattering_per_m[i], phase_x1_at(in, i));
-  const FourFlowInput input{.absorption_per_m = in.water.absorption_per_m[i],
-                            .scattering_per_m = scaled.scattering_per_m,
-                            .phase_x1 = scaled.phase_x1,
-                            .depth_m = depth_m,
-                            .surface = surface_coefficients(in.params.ior, sun_zenith),
-                            .bottom = lambertian_bottom(in.params.bottom_albedo),
-                            .e_sun = in.sky.sun[i],
-                            .e_sky = in.sky.sky[i]};
+  const FourFlowInput input{
+      .absorption_per_m = in.water.absorption_per_m[i],
+      .scattering_per_m = scaled.scattering_per_m,
+      .phase_x1 = scaled.phase_x1,
+      .depth_m = depth_m,
+      .surface = in.surface ? *in.surface : surface_coefficients(in.params.ior, sun_zenith),
+      .bottom = lambertian_bottom(in.params.bottom_albedo),
+      .e_sun = in.sky.sun[i],
+      .e_sky = in.sky.sky[i]};
   return solve_four_flow(input);
 }
 
@@ -118,7 +119,8 @@ Entry entry(const ColumnFlows& c, const Spectrum& white, double r_m, double h_m,
 
 }  // namespace
 
-Result<LutInputs> lut_inputs(const WaterParams& params, double sun_elevation_deg, const SkyParams& sky) {
+Result<LutInputs> lut_inputs(const WaterParams& params, double sun_elevation_deg, const SkyParams& sky,
+                             const SlopeCovariance& slopes) {
   LutInputs in;
   in.params = params;
   auto water = params.type == "custom" ? load_water_table(params.table) : water_type(params.type);
@@ -127,6 +129,9 @@ Result<LutInputs> lut_inputs(const WaterParams& params, double sun_elevation_deg
   // The LUTs are ratios to the light above the water. With the sun at or below the horizon the clear-sky
   // model has no light at all, so the colours of a low (2°) sun are used; the renderer supplies darkness.
   in.sky = clear_sky(std::max(sun_elevation_deg, kMinSunElevationDeg), sky);
+  if (slopes.mean_square() > 0)
+    in.surface = wavy_surface_coefficients(
+        params.ior, (90.0 - std::max(in.sky.sun_elevation_deg, 0.0)) * kDegToRad, slopes);
   return in;
 }
 

@@ -7,11 +7,13 @@
 // the radiance it gives such a surface, and tone-maps the whole frame once.
 #pragma once
 #include <glm/vec3.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/result.h"
 #include "optics/four_flow.h"
+#include "optics/rough_surface.h"
 #include "optics/sky.h"
 #include "optics/spectrum.h"
 #include "optics/water_params.h"
@@ -32,6 +34,9 @@ struct LutInputs {
   WaterIops water;
   WaterParams params;
   SkyIrradiance sky;
+  // The surface's coefficients when it is wavy (eq. 10, rough_surface.h); empty = the flat surface's at the
+  // sky's sun.
+  std::optional<SurfaceCoefficients> surface;
 };
 
 // The seed's four-flow coefficients (S = σ(1 − X1/2)/ε, S2 = σ(1 − X1)/(2ε)) turn negative for strongly
@@ -50,7 +55,9 @@ double phase_x1_at(const LutInputs& inputs, int i);
 Result<FourFlowSolution> solve_wavelength(const LutInputs& inputs, int i, double depth_m);
 Spectrum downwelling_white(const SkyIrradiance& sky);
 
-Result<LutInputs> lut_inputs(const WaterParams& params, double sun_elevation_deg, const SkyParams& sky = {});
+// `slopes`: the sea's slope covariance, for eq. 10's wavy surface (zero: the flat surface).
+Result<LutInputs> lut_inputs(const WaterParams& params, double sun_elevation_deg, const SkyParams& sky = {},
+                             const SlopeCovariance& slopes = {});
 
 Result<WaterLut> build_water_lut(const LutInputs& inputs);
 

@@ -2,6 +2,7 @@
 
 #include <vector>
 
+#include "ocean/slope_statistics.h"
 #include "optics/lut.h"
 #include "optics/underwater.h"
 #include "render/passes/caustics_pass.h"
@@ -57,8 +58,13 @@ Result<void> upload_underwater(vk::Context& ctx, const optics::LutInputs& inputs
 
 }  // namespace
 
+Result<optics::LutInputs> scene_lut_inputs(const scene::Scene& scene) {
+  const ocean::SlopeMoments m = ocean::sea_slope_moments(scene.ocean);
+  return optics::lut_inputs(scene.water, scene.sun.elevation_deg, {}, {.xx = m.xx, .zz = m.zz, .xz = m.xz});
+}
+
 Result<WaterLuts> upload_water_luts(vk::Context& ctx, const scene::Scene& scene) {
-  auto inputs = optics::lut_inputs(scene.water, scene.sun.elevation_deg);
+  auto inputs = scene_lut_inputs(scene);
   if (!inputs) return inputs.error();
   auto lut = optics::build_water_lut(*inputs);
   if (!lut) return lut.error();
