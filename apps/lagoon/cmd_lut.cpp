@@ -45,6 +45,21 @@ io::Image8 preview(const optics::WaterLut& lut, const std::vector<float>& data, 
   return image;
 }
 
+// The surface coefficients the tables were built with: the wavy sea's (eq. 10) or the flat surface's.
+nlohmann::json surface_json(const optics::LutInputs& in) {
+  const double zenith = (90.0 - std::max(in.sky.sun_elevation_deg, 0.0)) * 3.14159265358979323846 / 180;
+  const optics::SurfaceCoefficients c =
+      in.surface ? *in.surface : optics::surface_coefficients(in.params.ior, zenith);
+  return {{"wavy", in.surface.has_value()},
+          {"r_dd", c.r_dd},
+          {"t_dd", c.t_dd},
+          {"r_ff", c.r_ff},
+          {"t_ff", c.t_ff},
+          {"rw_dd", c.rw_dd},
+          {"rw_ff", c.rw_ff},
+          {"tw_ff", c.tw_ff}};
+}
+
 nlohmann::json params_json(const optics::LutInputs& in) {
   const optics::WaterParams& w = in.params;
   return {{"water_type", w.type},
@@ -54,7 +69,8 @@ nlohmann::json params_json(const optics::LutInputs& in) {
           {"phase_x1", w.phase_x1},
           {"lut_gamma", w.lut_gamma},
           {"ior", w.ior},
-          {"sun_elevation_deg", in.sky.sun_elevation_deg}};
+          {"sun_elevation_deg", in.sky.sun_elevation_deg},
+          {"surface", surface_json(in)}};
 }
 
 std::optional<std::pair<double, double>> parse_pair(const std::string& text) {

@@ -56,6 +56,27 @@ TEST(LutCli, WritesTablesMetadataAndPreviews) {
   }
 }
 
+// Eq. 10 through the CLI: the tables are built for the scene's sea. Stronger wind, steeper slopes: more upwelling
+// light escapes through tilted facets (rw_ff falls from the flat 0.4746) and less sky is reflected at the sun's
+// angle; the coefficients written in lut.json follow the wind, and the tables with them.
+TEST(LutCli, TheSurfaceFollowsTheWind) {
+  TempDir dir;
+  auto surface = [&](const std::string& name, double wind) {
+    const fs::path out = dir / name;
+    auto r = lagoon("lut --water jerlov-IA --out " + out.string() +
+                    " --sun-elevation 10 --set water.lut_size=16 --set ocean.spectrum.wind_speed_mps=" +
+                    std::to_string(wind));
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    std::ifstream in(out / "lut.json");
+    return nlohmann::json::parse(in)["parameters"]["surface"];
+  };
+  const nlohmann::json calm = surface("calm", 1), gale = surface("gale", 25);
+  EXPECT_TRUE(calm["wavy"].get<bool>());
+  EXPECT_NEAR(calm["rw_ff"].get<double>(), 0.4746, 0.002);  // a 1 m/s sea is nearly a mirror
+  EXPECT_LT(gale["rw_ff"].get<double>(), calm["rw_ff"].get<double>() - 0.005);
+  EXPECT_LT(gale["r_dd"].get<double>(), calm["r_dd"].get<double>() - 0.01);  // the sun at 80° from zenith
+}
+
 TEST(LutCli, ExplainPrintsEveryQuantityPerWavelength) {
   auto r = lagoon("lut --water jerlov-II --explain 4,2.5");
   ASSERT_EQ(r.exit_code, 0) << r.output;
