@@ -11,6 +11,7 @@
 
 #include "bench_bodies.h"
 #include "bench_report.h"
+#include "bench_water_share.h"
 #include "commands.h"
 #include "fftw_ocean_step.h"
 #include "gpu_session.h"
@@ -252,9 +253,19 @@ int run_bench_render(const ParsedArgs& args, int rounds) {
   std::printf("device: %s (%s); scene %s at %lldx%lld; %d frames after 2 warm-up frames, medians\n",
               ctx->device_info().name.c_str(), ctx->device_info().type.c_str(), scene->source.c_str(),
               size->width, size->height, rounds);
-  const nlohmann::json results = report_render(time_frames(**renderer, *scene, rounds));
+  nlohmann::json results = report_render(time_frames(**renderer, *scene, rounds));
+  WaterShare water;
+  try {
+    water = bench_water_share(*ctx, *scene, rounds);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "lagoon bench: %s\n", e.what());
+    return kExitFailure;
+  }
+  for (const nlohmann::json& row : water.rows) results.push_back(row);
   if (auto path = args.get("json")) {
     nlohmann::json context = report_context(*ctx, rounds);
+    context["water_colour_share_of_frame"] = water.share;
+    context["water_colour_per_frame_ms"] = water.per_frame_ms;
     context["scene"] = scene->source;
     context["width"] = size->width;
     context["height"] = size->height;

@@ -2,6 +2,8 @@
 // asserted: speed is measured, never tested).
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <algorithm>
 #include <fstream>
 #include <map>
@@ -80,11 +82,16 @@ TEST(BenchCli, RenderReportsEveryPassAndTheFrameAtTheGivenSize) {
   std::vector<std::string> names;
   for (const auto& b : doc["benchmarks"]) {
     names.push_back(b["name"]);
-    const bool frame = b["name"] == "render/frame";
-    expect_spread(b, 3, frame ? "wall" : "gpu timestamps");
+    const std::string name = b["name"];
+    const bool wall = name == "render/frame" || name.rfind("render/water_colour/", 0) == 0;
+    expect_spread(b, 3, wall ? "wall" : "gpu timestamps");
   }
+  // The water colour's share: the physical frame against the same frame shaded blinn-phong (issue 16).
+  ASSERT_TRUE(doc["context"]["water_colour_share_of_frame"].is_number()) << doc["context"];
+  EXPECT_LT(std::abs(doc["context"]["water_colour_share_of_frame"].get<double>()), 1.0);
   for (const char* expected : {"render/pass/refraction", "render/pass/reflection", "render/pass/sky",
-                               "render/pass/surface", "render/frame"})
+                               "render/pass/surface", "render/frame", "render/water_colour/frame_physical",
+                               "render/water_colour/frame_blinn_phong", "render/water_colour/lut_build"})
     EXPECT_NE(std::find(names.begin(), names.end(), expected), names.end()) << expected << "\n" << r.output;
 }
 
