@@ -56,9 +56,9 @@ TEST(LutCli, WritesTablesMetadataAndPreviews) {
   }
 }
 
-// Eq. 10 through the CLI: the tables are built for the scene's sea. Stronger wind, steeper slopes: more upwelling
-// light escapes through tilted facets (rw_ff falls from the flat 0.4746) and less sky is reflected at the sun's
-// angle; the coefficients written in lut.json follow the wind, and the tables with them.
+// Eq. 10 through the CLI: the tables are built for the scene's sea. Stronger wind, steeper slopes: more
+// upwelling light escapes through tilted facets (rw_ff falls from the flat 0.4746) and less sky is reflected
+// at the sun's angle; the coefficients written in lut.json follow the wind, and the tables with them.
 TEST(LutCli, TheSurfaceFollowsTheWind) {
   TempDir dir;
   auto surface = [&](const std::string& name, double wind) {
