@@ -25,6 +25,9 @@
 //      (1 − R̃_ff A3) u + L (A3 − R̃_ff) w = T_df E_sun + T_ff E_sky + R̃_df gh D + R̃_ff M0 − P0
 //      L (A3 − R̂_ff) u + (1 − R̂_ff A3) w = R̂_df g0 D + R̂_ff Ph − Mh
 //    (The seed's eq. 9 does not follow from its eqs. 5 and 7: it swaps A2/A3/A4 and the D0 scaling.)
+// 6. A diffuse path-length factor D (FourFlowInput::diffuse_path_factor) scales the diffuse rows' own terms:
+//    F' = D M F + (forcing as above). D M has the same eigenvectors (A3 unchanged) and eigenvalues ∓Dλ0, so
+//    every λ0 above that is a decay rate (Δ, q's 1 + λ0, the free modes, L) becomes Λ = Dλ0; p stays a.
 //    With x = 1 − R A3, y = A3 − R: x² − y² = (1 − A3²)(1 − R²) >= 0, so ρ = y/x is in [−1, 1] and the
 //    scaled determinant 1 − L² ρ1 ρ2 vanishes only for a lossless cavity (τ0 = 0, R = 1 at both ends).
 #include "optics/four_flow.h"
@@ -65,6 +68,9 @@ Result<void> validate(const FourFlowInput& in) {
                  "bottom coefficients must be in [0, 1]"),
            check(std::isfinite(in.e_sun) && in.e_sun >= 0, "e_sun must be finite and >= 0"),
            check(std::isfinite(in.e_sky) && in.e_sky >= 0, "e_sky must be finite and >= 0"),
+           check(std::isfinite(in.diffuse_path_factor) && in.diffuse_path_factor >= 1 &&
+                     in.diffuse_path_factor <= 4,
+                 "diffuse_path_factor (D) must be in [1, 4]"),
        }) {
     if (!r) return r;
   }
@@ -88,11 +94,11 @@ struct FreeModes {
 };
 
 // Step 5's 2x2 system for the free modes, row-normalised: u + L ρ1 w = r1/x1, L ρ2 u + w = r2/x2, with
-// L = e^{−λ0τ0}. `r_*_ff` are the diffuse reflectances seen from the water at each end, `rhs_*` the right
+// L = e^{−Λτ0}. `r_*_ff` are the diffuse reflectances seen from the water at each end, `rhs_*` the right
 // sides r1, r2. Its determinant is formed from non-negative terms where cancellation could lose it.
-Result<FreeModes> solve_free_modes(double a3, double lambda0, double tau0, double r_top_ff, double rhs_top,
+Result<FreeModes> solve_free_modes(double a3, double decay, double tau0, double r_top_ff, double rhs_top,
                                    double r_bottom_ff, double rhs_bottom) {
-  const double l = std::exp(-lambda0 * tau0);
+  const double l = std::exp(-decay * tau0);
   const double x_top = 1.0 - r_top_ff * a3, x_bottom = 1.0 - r_bottom_ff * a3;
   const double rho_top = (a3 - r_top_ff) / x_top, rho_bottom = (a3 - r_bottom_ff) / x_bottom;
   double det;
@@ -102,7 +108,7 @@ Result<FreeModes> solve_free_modes(double a3, double lambda0, double tau0, doubl
     // 1 − L² ρ1ρ2 = (1 − L²) + L² [(1 − |ρ1|) + |ρ1| (1 − |ρ2|)]: a sum of non-negative terms.
     const double m_top = one_minus_abs_rho(a3, r_top_ff, x_top);
     const double m_bottom = one_minus_abs_rho(a3, r_bottom_ff, x_bottom);
-    det = -std::expm1(-2.0 * lambda0 * tau0) + l * l * (m_top + std::fabs(rho_top) * m_bottom);
+    det = -std::expm1(-2.0 * decay * tau0) + l * l * (m_top + std::fabs(rho_top) * m_bottom);
   }
   if (!(det > 0))
     return make_error("four-flow model: lossless cavity (depth 0 between mirrors), no solution");
@@ -121,10 +127,11 @@ double FourFlowSolution::non_negative(double flow) const {
 }
 
 double FourFlowSolution::decay_difference(double t) const {
-  // e^{−λ0 t} t (1 − e^{−δt})/(δt), δ = 1 − λ0 >= 0: expm1 keeps it exact as δ → 0.
-  const double x = one_minus_lambda0_ * t;
+  // e^{−min(1, Λ) t} t (1 − e^{−|δ|t})/(|δ|t), δ = 1 − Λ: expm1 keeps it exact as δ → 0, and the slower of
+  // the two exponentials is factored out so nothing overflows when Λ > 1 (D > 1).
+  const double x = std::fabs(one_minus_decay_) * t;
   const double ratio = x > 0.0 ? -std::expm1(-x) / x : 1.0;
-  return std::exp(-lambda0 * t) * t * ratio;
+  return std::exp(-std::min(1.0, lambda_diffuse) * t) * t * ratio;
 }
 
 double FourFlowSolution::g_plus(double tau) const {
@@ -139,14 +146,14 @@ double FourFlowSolution::f_plus(double tau) const {
   const double t = clamp_tau(tau), up = tau0 - t;
   return non_negative(g0_ * (p_ * decay_difference(t) + q_ * a3 * std::exp(-t)) +
                       gh_ * (p_ * a3 * decay_difference(up) + q_ * std::exp(-up)) +
-                      u_ * std::exp(-lambda0 * t) + w_ * a3 * std::exp(-lambda0 * up));
+                      u_ * std::exp(-lambda_diffuse * t) + w_ * a3 * std::exp(-lambda_diffuse * up));
 }
 
 double FourFlowSolution::f_minus(double tau) const {
   const double t = clamp_tau(tau), up = tau0 - t;
   return non_negative(g0_ * (p_ * a3 * decay_difference(t) + q_ * std::exp(-t)) +
                       gh_ * (p_ * decay_difference(up) + q_ * a3 * std::exp(-up)) +
-                      u_ * a3 * std::exp(-lambda0 * t) + w_ * std::exp(-lambda0 * up));
+                      u_ * a3 * std::exp(-lambda_diffuse * t) + w_ * std::exp(-lambda_diffuse * up));
 }
 
 Result<FourFlowSolution> solve_four_flow(const FourFlowInput& in) {
@@ -167,13 +174,17 @@ Result<FourFlowSolution> solve_four_flow(const FourFlowInput& in) {
   const double k2s = (chi + sigma * (2.0 - x1)) / eps;
   const double ks = f.s >= 0 ? f.k + f.s : k2s - f.s;
   f.lambda0 = std::sqrt(f.k * k2s);
-  f.one_minus_lambda0_ =
-      sp * (f.k * x1 + sp) / (1.0 + f.lambda0);  // (1 − λ0²)/(1 + λ0), 1 − λ0² = σ'(kX1 + σ')
+  f.diffuse_path = in.diffuse_path_factor;
+  f.lambda_diffuse = f.diffuse_path * f.lambda0;
+  f.one_minus_decay_ =
+      f.diffuse_path == 1.0
+          ? sp * (f.k * x1 + sp) / (1.0 + f.lambda0)  // (1 − λ0²)/(1 + λ0), 1 − λ0² = σ'(kX1 + σ')
+          : 1.0 - f.lambda_diffuse;
   const double denom = ks + f.lambda0;
   f.a3 = f.s / denom;
   const double one_minus_a3 = (f.k + f.lambda0) / denom, one_plus_a3 = (k2s + f.lambda0) / denom;
   f.p_ = 0.5 * sp * (1.0 / one_minus_a3 + x1 / one_plus_a3);
-  f.q_ = 0.5 * sp * (1.0 / one_minus_a3 - x1 / one_plus_a3) / (1.0 + f.lambda0);
+  f.q_ = 0.5 * sp * (1.0 / one_minus_a3 - x1 / one_plus_a3) / (1.0 + f.lambda_diffuse);
 
   const SurfaceCoefficients& s = in.surface;
   const BottomCoefficients& b = in.bottom;
@@ -193,7 +204,7 @@ Result<FourFlowSolution> solve_four_flow(const FourFlowInput& in) {
   const double r1 = s.t_df * in.e_sun + s.t_ff * in.e_sky + s.rw_df * f.gh_ * d + s.rw_ff * m0 - p0;
   const double r2 = b.r_df * f.g0_ * d + b.r_ff * ph - mh;
 
-  Result<FreeModes> modes = solve_free_modes(a3, f.lambda0, f.tau0, s.rw_ff, r1, b.r_ff, r2);
+  Result<FreeModes> modes = solve_free_modes(a3, f.lambda_diffuse, f.tau0, s.rw_ff, r1, b.r_ff, r2);
   if (!modes) return modes.error();
   f.u_ = modes->u;
   f.w_ = modes->w;

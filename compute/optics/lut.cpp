@@ -64,7 +64,8 @@ Result<FourFlowSolution> solve_wavelength(const LutInputs& in, int i, double dep
       .surface = in.surface ? *in.surface : surface_coefficients(in.params.ior, sun_zenith),
       .bottom = lambertian_bottom(in.params.bottom_albedo),
       .e_sun = in.sky.sun[i],
-      .e_sky = in.sky.sky[i]};
+      .e_sky = in.sky.sky[i],
+      .diffuse_path_factor = in.params.diffuse_path_factor};
   return solve_four_flow(input);
 }
 

@@ -30,6 +30,11 @@ void read_water(ObjectReader& r, optics::WaterParams& w) {
       "phase_x1", w.phase_x1, Bounds::between(0, 2.99), "",
       "With phase \"constant\": first Legendre coefficient X1 of the phase function (3g for asymmetry g); "
       "0 = isotropic. Above 1 the model uses a similar phase function (docs/optics.md).");
+  r.number(
+      "diffuse_path_factor", w.diffuse_path_factor, Bounds::between(1, 4), "",
+      "Path length of the diffuse light per metre of depth (1 / its mean cosine) in the four-flow model: "
+      "1 = the seed's eq. 4 as printed (turbid water then attenuates 20-50 % too little); 2 = isotropic "
+      "diffuse light, nearer Jerlov's measured attenuation for turbid and coastal water (docs/optics.md).");
   r.number("lut_gamma", w.lut_gamma, Bounds::between(0.05, 20), "",
            "Exponent γ of eq. 23: larger values keep the bottom visible deeper before the water colour "
            "takes over.");

@@ -102,7 +102,12 @@ FourFlowProfile solve_four_flow_reference(const optics::FourFlowInput& in, int s
   FourFlowProfile out;
   out.step = tau0 / n;
   // y' = K y, y = (G+, G−, F+, F−): eq. 4 as printed.
-  const Mat4 kmat = {{{-lambda, 0, 0, 0}, {0, lambda, 0, 0}, {s1, s2, -(k + s), s}, {-s2, -s1, -s, k + s}}};
+  // The diffuse path-length factor D scales the diffuse rows' own terms (1 in the seed).
+  const double d = in.diffuse_path_factor;
+  const Mat4 kmat = {{{-lambda, 0, 0, 0},
+                      {0, lambda, 0, 0},
+                      {s1, s2, -d * (k + s), d * s},
+                      {-s2, -s1, -d * s, d * (k + s)}}};
   Mat4 scaled = kmat;
   for (auto& row : scaled)
     for (double& v : row) v *= out.step;

@@ -73,6 +73,8 @@ FourFlowInput random_input(Rng& rng, double max_x1) {
   in.phase_x1 = rng.uniform(0, max_x1);
   const double pick_depth = rng.uniform(0, 1);
   in.depth_m = pick_depth < 0.05 ? 0.0 : pick_depth < 0.5 ? rng.log_uniform(1e-3, 100) : rng.uniform(0, 100);
+  // Half the cases with a diffuse path-length factor (the seed's D = 1 in the others).
+  in.diffuse_path_factor = rng.uniform(0, 1) < 0.5 ? 1.0 : rng.uniform(1, 3);
   return in;
 }
 
@@ -167,8 +169,8 @@ TEST(FourFlowResidual, SatisfiesEquation4) {
       const std::array<std::array<double, 4>, 4> terms = {{
           {-f.lambda * y[0], 0, 0, 0},
           {f.lambda * y[1], 0, 0, 0},
-          {-(f.k + f.s) * y[2], f.s * y[3], f.s1 * y[0], f.s2 * y[1]},
-          {(f.k + f.s) * y[3], -f.s * y[2], -f.s1 * y[1], -f.s2 * y[0]},
+          {-f.diffuse_path * (f.k + f.s) * y[2], f.diffuse_path * f.s * y[3], f.s1 * y[0], f.s2 * y[1]},
+          {f.diffuse_path * (f.k + f.s) * y[3], -f.diffuse_path * f.s * y[2], -f.s1 * y[1], -f.s2 * y[0]},
       }};
       for (int c = 0; c < 4; ++c) {
         const double derivative = (b[c] - a[c]) / (2 * h);
