@@ -12,6 +12,7 @@
 #include "io/atomic_file.h"
 #include "io/npy.h"
 #include "io/png.h"
+#include "kd_plot.h"
 #include "lut_underwater.h"
 #include "optics/colour.h"
 #include "optics/lut.h"
@@ -214,11 +215,27 @@ int write_luts(const optics::LutInputs& inputs, const std::string& out) {
   return kExitOk;
 }
 
+// K_d of every Jerlov type, the model with D = 1 and D = 2 against the measurements (kd_plot.h).
+int write_kd_plot(const std::string& path) {
+  if (path.size() < 4 || path.substr(path.size() - 4) != ".png") {
+    std::fprintf(stderr, "lagoon lut: --kd-plot %s must name a .png file\n", path.c_str());
+    return kExitUsage;
+  }
+  auto image = kd_plot();
+  if (!image) return lut_failure(image.error().message);
+  if (auto written = io::write_png(path, *image); !written) return lut_failure(written.error().message);
+  std::printf("wrote %s\n", path.c_str());
+  return kExitOk;
+}
+
 int run_lut(const ParsedArgs& args) {
   const auto overrides = lut_overrides(args);
   if (!overrides) return kExitUsage;
+  if (auto plot = args.get("kd-plot")) return write_kd_plot(*plot);
   if (!args.has("out") && !args.has("explain")) {
-    std::fprintf(stderr, "lagoon lut: give --out DIR (write the LUTs) or --explain R,H (print one entry)\n");
+    std::fprintf(stderr,
+                 "lagoon lut: give --out DIR (write the LUTs), --explain R,H (print one entry) or --kd-plot "
+                 "FILE.png (K_d against Jerlov)\n");
     return kExitUsage;
   }
   auto scene = load_scene_from_args(args, "lut", *overrides);
@@ -244,14 +261,17 @@ const Command& lut_command() {
                "T0.npy, T1.npy, lut.json and PNG previews, with the tables a camera under water needs "
                "(underwater_*.npy: what a view ray transmits and adds); or prints every quantity behind one "
                "entry with --explain.",
-           .options = {{"scene", "FILE", "take water and sun from this scene (default: all defaults)"},
-                       {"water", "TYPE", "water type, e.g. jerlov-IB (same as --set water.type=TYPE)"},
-                       {"out", "DIR",
-                        "output folder for T0.npy, T1.npy, lut.json, T0.png, T1.png and the underwater "
-                        "tables underwater_*.npy, underwater.png"},
-                       {"sun-elevation", "DEG", "sun elevation (same as --set sun.elevation_deg=DEG)"},
-                       {"explain", "R,H", "print JSON for the entry at distance R and depth H (metres)"},
-                       set_option()},
+           .options =
+               {{"scene", "FILE", "take water and sun from this scene (default: all defaults)"},
+                {"water", "TYPE", "water type, e.g. jerlov-IB (same as --set water.type=TYPE)"},
+                {"out", "DIR",
+                 "output folder for T0.npy, T1.npy, lut.json, T0.png, T1.png and the underwater "
+                 "tables underwater_*.npy, underwater.png"},
+                {"sun-elevation", "DEG", "sun elevation (same as --set sun.elevation_deg=DEG)"},
+                {"explain", "R,H", "print JSON for the entry at distance R and depth H (metres)"},
+                {"kd-plot", "FILE.png",
+                 "draw the model's K_d (D = 1 and D = 2) against Jerlov's for every type (docs/optics.md)"},
+                set_option()},
            .details = "water types: jerlov-I, jerlov-IA, jerlov-IB, jerlov-II, jerlov-III, jerlov-1C, "
                       "jerlov-3C, jerlov-5C, jerlov-7C, jerlov-9C, custom (with water.table)\n"
                       "example:\n  lagoon lut --water jerlov-IA --out out/lut-IA --sun-elevation 45\n"},

@@ -77,6 +77,21 @@ TEST(LutCli, TheSurfaceFollowsTheWind) {
   EXPECT_LT(gale["r_dd"].get<double>(), calm["r_dd"].get<double>() - 0.01);  // the sun at 80° from zenith
 }
 
+// --kd-plot draws the model's K_d against Jerlov's (10 panels) and refuses a file that is not a PNG.
+TEST(LutCli, KdPlotDrawsEveryType) {
+  TempDir dir;
+  const fs::path out = dir / "kd.png";
+  auto r = lagoon("lut --kd-plot " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto image = io::read_png(out);
+  ASSERT_TRUE(image) << image.error().message;
+  EXPECT_EQ(image->width, 1500u);
+  EXPECT_EQ(image->height, 440u);
+  r = lagoon("lut --kd-plot " + (dir / "kd.jpg").string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("must name a .png file"), std::string::npos) << r.output;
+}
+
 TEST(LutCli, ExplainPrintsEveryQuantityPerWavelength) {
   auto r = lagoon("lut --water jerlov-II --explain 4,2.5");
   ASSERT_EQ(r.exit_code, 0) << r.output;

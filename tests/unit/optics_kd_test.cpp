@@ -11,33 +11,13 @@
 
 #include "optics/csv_table.h"
 #include "optics/four_flow.h"
+#include "optics/kd.h"
 #include "optics/lut.h"
 #include "optics/surface.h"
 #include "optics/water_types.h"
 
 namespace lagoon::optics {
 namespace {
-
-double model_kd(const LutInputs& in, int i, double diffuse_path) {
-  const double sigma = in.water.scattering_per_m[i];
-  const double particles = std::max(sigma - pure_seawater_scattering()[i], 0.0);
-  const SimilarScattering s = similarity_scaled(sigma, 3 * 0.924 * particles / sigma);  // the "mixed" phase
-  const double epsilon = in.water.absorption_per_m[i] + s.scattering_per_m;
-  auto down = [&](double z) {
-    auto f = solve_four_flow({.absorption_per_m = in.water.absorption_per_m[i],
-                              .scattering_per_m = s.scattering_per_m,
-                              .phase_x1 = s.phase_x1,
-                              .depth_m = 500,
-                              .surface = surface_coefficients(1.333, 30 * M_PI / 180),
-                              .bottom = lambertian_bottom(0),
-                              .e_sun = in.sky.sun[i],
-                              .e_sky = in.sky.sky[i],
-                              .diffuse_path_factor = diffuse_path});
-    EXPECT_TRUE(f);
-    return f->g_plus(epsilon * z) + f->f_plus(epsilon * z);
-  };
-  return -std::log(down(10.0) / down(5.0)) / 5.0;
-}
 
 TEST(OpticsKd, DeepWaterAttenuationAgainstJerlov1976) {
   auto table = CsvTable::embedded("jerlov1976_kd_table27.csv");
