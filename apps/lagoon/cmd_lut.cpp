@@ -24,7 +24,6 @@
 namespace lagoon::cli {
 namespace {
 
-constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
 
 // Preview: columns = r (left r = 0), rows = h (top h = 0), tone-mapped with eq. 18 and sRGB-encoded,
 // each LUT sample drawn as a block so 64 samples make a 256-pixel image.
@@ -48,9 +47,7 @@ io::Image8 preview(const optics::WaterLut& lut, const std::vector<float>& data, 
 
 // The surface coefficients the tables were built with: the wavy sea's (eq. 10) or the flat surface's.
 nlohmann::json surface_json(const optics::LutInputs& in) {
-  const double zenith = (90.0 - std::max(in.sky.sun_elevation_deg, 0.0)) * 3.14159265358979323846 / 180;
-  const optics::SurfaceCoefficients c =
-      in.surface ? *in.surface : optics::surface_coefficients(in.params.ior, zenith);
+  const optics::SurfaceCoefficients c = optics::lut_surface(in);
   return {{"wavy", in.surface.has_value()},
           {"r_dd", c.r_dd},
           {"t_dd", c.t_dd},
@@ -93,8 +90,7 @@ int explain(const optics::LutInputs& in, const std::string& at) {
     std::fprintf(stderr, "lagoon lut: %s\n", e.error().message.c_str());
     return kExitFailure;
   }
-  const double zenith = (90.0 - std::max(in.sky.sun_elevation_deg, 0.0)) * kDegToRad;
-  const optics::SurfaceCoefficients s = optics::surface_coefficients(in.params.ior, zenith);
+  const optics::SurfaceCoefficients s = optics::lut_surface(in);  // the wavy sea's, as the tables used
   const optics::BottomCoefficients b = optics::lambertian_bottom(in.params.bottom_albedo);
   const nlohmann::json surface{{"t_dd", s.t_dd},   {"r_dd", s.r_dd},  {"t_df", s.t_df},   {"r_df", s.r_df},
                                {"t_ff", s.t_ff},   {"r_ff", s.r_ff},  {"rw_dd", s.rw_dd}, {"rw_df", s.rw_df},

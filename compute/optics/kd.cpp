@@ -13,16 +13,16 @@ double model_kd(const LutInputs& in, int i, double diffuse_path_factor) {
   const double particles = std::max(sigma - pure_seawater_scattering()[i], 0.0);
   const SimilarScattering s = similarity_scaled(sigma, sigma > 0 ? 3 * 0.924 * particles / sigma : 0.0);
   const double epsilon = in.water.absorption_per_m[i] + s.scattering_per_m;
-  const double zenith = (90.0 - std::max(in.sky.sun_elevation_deg, 0.0)) * 3.14159265358979323846 / 180;
-  const Result<FourFlowSolution> f = solve_four_flow({.absorption_per_m = in.water.absorption_per_m[i],
-                                                      .scattering_per_m = s.scattering_per_m,
-                                                      .phase_x1 = s.phase_x1,
-                                                      .depth_m = 500,
-                                                      .surface = surface_coefficients(in.params.ior, zenith),
-                                                      .bottom = lambertian_bottom(0),
-                                                      .e_sun = in.sky.sun[i],
-                                                      .e_sky = in.sky.sky[i],
-                                                      .diffuse_path_factor = diffuse_path_factor});
+  const Result<FourFlowSolution> f =
+      solve_four_flow({.absorption_per_m = in.water.absorption_per_m[i],
+                       .scattering_per_m = s.scattering_per_m,
+                       .phase_x1 = s.phase_x1,
+                       .depth_m = 500,
+                       .surface = surface_coefficients(in.params.ior, sun_zenith_rad(in.sky)),
+                       .bottom = lambertian_bottom(0),
+                       .e_sun = in.sky.sun[i],
+                       .e_sky = in.sky.sky[i],
+                       .diffuse_path_factor = diffuse_path_factor});
   if (!f) return 0;
   auto down = [&](double z) { return f->g_plus(epsilon * z) + f->f_plus(epsilon * z); };
   return -std::log(down(10.0) / down(5.0)) / 5.0;

@@ -53,19 +53,25 @@ double phase_x1_at(const LutInputs& in, int i) {
   return 3.0 * kPetzoldParticleG * particles / sigma;
 }
 
+double sun_zenith_rad(const SkyIrradiance& sky) {
+  return (90.0 - std::max(sky.sun_elevation_deg, 0.0)) * kDegToRad;
+}
+
+SurfaceCoefficients lut_surface(const LutInputs& in) {
+  return in.surface ? *in.surface : surface_coefficients(in.params.ior, sun_zenith_rad(in.sky));
+}
+
 Result<FourFlowSolution> solve_wavelength(const LutInputs& in, int i, double depth_m) {
-  const double sun_zenith = (90.0 - std::max(in.sky.sun_elevation_deg, 0.0)) * kDegToRad;
   const SimilarScattering scaled = similarity_scaled(in.water.scattering_per_m[i], phase_x1_at(in, i));
-  const FourFlowInput input{
-      .absorption_per_m = in.water.absorption_per_m[i],
-      .scattering_per_m = scaled.scattering_per_m,
-      .phase_x1 = scaled.phase_x1,
-      .depth_m = depth_m,
-      .surface = in.surface ? *in.surface : surface_coefficients(in.params.ior, sun_zenith),
-      .bottom = lambertian_bottom(in.params.bottom_albedo),
-      .e_sun = in.sky.sun[i],
-      .e_sky = in.sky.sky[i],
-      .diffuse_path_factor = in.params.diffuse_path_factor};
+  const FourFlowInput input{.absorption_per_m = in.water.absorption_per_m[i],
+                            .scattering_per_m = scaled.scattering_per_m,
+                            .phase_x1 = scaled.phase_x1,
+                            .depth_m = depth_m,
+                            .surface = lut_surface(in),
+                            .bottom = lambertian_bottom(in.params.bottom_albedo),
+                            .e_sun = in.sky.sun[i],
+                            .e_sky = in.sky.sky[i],
+                            .diffuse_path_factor = in.params.diffuse_path_factor};
   return solve_four_flow(input);
 }
 
@@ -131,8 +137,7 @@ Result<LutInputs> lut_inputs(const WaterParams& params, double sun_elevation_deg
   // model has no light at all, so the colours of a low (2°) sun are used; the renderer supplies darkness.
   in.sky = clear_sky(std::max(sun_elevation_deg, kMinSunElevationDeg), sky);
   if (slopes.mean_square() > 0)
-    in.surface = wavy_surface_coefficients(
-        params.ior, (90.0 - std::max(in.sky.sun_elevation_deg, 0.0)) * kDegToRad, slopes);
+    in.surface = wavy_surface_coefficients(params.ior, sun_zenith_rad(in.sky), slopes);
   return in;
 }
 

@@ -52,6 +52,10 @@ SimilarScattering similarity_scaled(double scattering_per_m, double phase_x1);
 // X1 at grid wavelength i under params.phase; the flows of one wavelength for a bottom at depth_m, with the
 // scattering similarity-scaled as above; and the white Φ adapts to, E_sun + E_sky above the water.
 double phase_x1_at(const LutInputs& inputs, int i);
+// The sun's zenith angle the tables are built for (the sky's sun, clamped to the horizon), radians; and the
+// surface coefficients they use: the wavy sea's when the inputs have them, else the flat surface's there.
+double sun_zenith_rad(const SkyIrradiance& sky);
+SurfaceCoefficients lut_surface(const LutInputs& inputs);
 Result<FourFlowSolution> solve_wavelength(const LutInputs& inputs, int i, double depth_m);
 Spectrum downwelling_white(const SkyIrradiance& sky);
 
