@@ -24,7 +24,6 @@
 namespace lagoon::cli {
 namespace {
 
-
 // Preview: columns = r (left r = 0), rows = h (top h = 0), tone-mapped with eq. 18 and sRGB-encoded,
 // each LUT sample drawn as a block so 64 samples make a 256-pixel image.
 io::Image8 preview(const optics::WaterLut& lut, const std::vector<float>& data, int stride, bool times_a) {
