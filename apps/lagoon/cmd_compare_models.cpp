@@ -112,7 +112,9 @@ int run_compare(const ParsedArgs& args) {
     std::fprintf(stderr, "lagoon compare: %s\n", rounds.error().message.c_str());
     return kExitUsage;
   }
-  // Every model's scene first: a model the scene cannot run stops the command before any work.
+  // The scene as given, then every model's: a scene or a model that cannot run stops the command before any
+  // work, each with its own message.
+  if (!load_scene_from_args(args, "compare")) return kExitFailure;
   std::vector<scene::Scene> scenes;
   std::vector<std::string> notes;
   for (const std::string& model : *models) {

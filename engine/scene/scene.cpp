@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "ocean/springs.h"
 #include "ocean/validate.h"
 
 #include "scene/ocean_block.h"
@@ -100,6 +101,13 @@ void read_scene(ObjectReader& r, Scene& s) {
   r.block("render", s.render, read_render, "Output image settings and effects.");
   r.number("time_s", s.time_s, Bounds::between(0, 86400), "s",
            "Simulation time of the rendered frame (at most one day: wave phases are 32-bit floats).");
+  // Model springs steps its grid from rest to the frame's time, a bounded number of steps at once.
+  const double springs_reach = double(ocean::kSpringsMaxCatchUpSteps) * s.ocean.springs.step_s;
+  r.rule("time_s", s.ocean.model != ocean::SurfaceModel::Springs || s.time_s < springs_reach,
+         "< what model springs reaches from rest in one go",
+         "model springs steps its grid from rest; at ocean.springs.step_s = " +
+             format_number(s.ocean.springs.step_s) + " s that is below " + format_number(springs_reach) +
+             " s; choose an earlier time");
 }
 
 // ---- Loading ----

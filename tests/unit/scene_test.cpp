@@ -93,6 +93,18 @@ TEST(SceneParse, EmptyObjectGivesDefaults) {
   EXPECT_FLOAT_EQ(scene->time_s, 0.f);
 }
 
+// Model springs steps its grid from rest to the frame's time; a time beyond what one call may step to is
+// refused at load, naming time_s and the limit, while the FFT ocean takes the same time.
+TEST(SceneParse, SpringsRefuseATimeTheirGridCannotReach) {
+  Result<Scene> late =
+      parse_scene(json::parse(R"({"ocean": {"model": "springs"}, "time_s": 60000})"), kSource);
+  ASSERT_FALSE(late.ok());
+  EXPECT_NE(late.error().message.find("time_s"), std::string::npos) << late.error().message;
+  EXPECT_NE(late.error().message.find("52428.8"), std::string::npos) << late.error().message;
+  EXPECT_TRUE(parse_scene(json::parse(R"({"ocean": {"model": "springs"}, "time_s": 50000})"), kSource).ok());
+  EXPECT_TRUE(parse_scene(json::parse(R"({"time_s": 60000})"), kSource).ok());
+}
+
 TEST(SceneParse, EmptyBlocksGiveDefaults) {
   Result<Scene> scene = parse_scene(json::parse(R"({"camera": {}, "sun": {}, "render": {}})"), kSource);
   ASSERT_TRUE(scene.ok()) << scene.error().message;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <string>
 
@@ -15,6 +16,18 @@ namespace {
 
 constexpr VkBufferUsageFlags kStorage =
     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+
+// Why a time cannot be reached in one call, with the numbers and the fix.
+std::string springs_catch_up_message(const SpringsParams& p, double time_s, uint64_t steps) {
+  char text[320];
+  std::snprintf(
+      text, sizeof text,
+      "model springs: reaching t = %.6g s takes %llu steps of %.6g s, more than the %llu one call may "
+      "take; step through time, or choose a time below %.6g s",
+      time_s, (unsigned long long)steps, p.step_s, (unsigned long long)kSpringsMaxCatchUpSteps,
+      double(kSpringsMaxCatchUpSteps) * p.step_s);
+  return text;
+}
 
 }  // namespace
 
@@ -72,11 +85,7 @@ void SpringsGpu::record(VkCommandBuffer cmd, double time_s, double dt_s, bool re
   const uint64_t wanted = springs_steps_for(params_.springs, time_s);
   if (wanted < steps_) record_clear(cmd);
   if (wanted - steps_ > kSpringsMaxCatchUpSteps)
-    vk::throw_usage_error("model springs: reaching t = " + std::to_string(time_s) + " s takes " +
-                          std::to_string(wanted - steps_) + " steps of " +
-                          std::to_string(params_.springs.step_s) + " s, more than the " +
-                          std::to_string(kSpringsMaxCatchUpSteps) +
-                          " one call may take; step through time, or choose an earlier time");
+    vk::throw_usage_error(springs_catch_up_message(params_.springs, time_s, wanted - steps_));
   const std::array<uint32_t, 3> nodes{n_, n_, 1};
   {
     vk::GpuScope scope(timer, cmd, "springs steps");
