@@ -3,6 +3,7 @@
 #include <cmath>
 #include <complex>
 #include <numbers>
+#include <vector>
 
 #include "ocean/spectrum.h"
 
@@ -82,9 +83,15 @@ SlopeMoments spectrum_slope_moments(const OceanParams& params, double k_from, do
 }
 
 SlopeMoments sea_slope_moments(const OceanParams& params) {
+  std::vector<CascadeSpectrum> spectra;
+  for (uint32_t c = 0; c < params.cascades.size(); ++c) spectra.push_back(make_cascade_spectrum(params, c));
+  return sea_slope_moments(params, spectra);
+}
+
+SlopeMoments sea_slope_moments(const OceanParams& params, const std::vector<CascadeSpectrum>& spectra) {
   SlopeMoments m;
-  for (uint32_t c = 0; c < params.cascades.size(); ++c) {
-    const SlopeMoments one = slope_moments(make_cascade_spectrum(params, c));
+  for (const CascadeSpectrum& s : spectra) {
+    const SlopeMoments one = slope_moments(s);
     m.xx += one.xx, m.zz += one.zz, m.xz += one.xz;
   }
   if (params.model == SurfaceModel::Fft) {

@@ -32,6 +32,9 @@ SlopeMoments spectrum_slope_moments(const OceanParams& params, double k_from, do
 // The whole sea's: every cascade's, plus the spectrum's from the last cascade's band to 1 cm for the FFT
 // ocean (the waves the glint also counts; the other models have no waves beyond their cascades).
 SlopeMoments sea_slope_moments(const OceanParams& params);
+// The same from cascade spectra already built for `params` (make_cascade_spectra), without building them
+// again.
+SlopeMoments sea_slope_moments(const OceanParams& params, const std::vector<CascadeSpectrum>& spectra);
 
 // Shortest wave the glint model counts, 1 cm (k = 2π/0.01): below it capillary damping dominates and the
 // gravity-wave spectra used here no longer hold (Cox & Munk's glitter slopes end about here).

@@ -48,7 +48,7 @@ Result<void> OceanRenderer::init(const scene::Scene& scene) {
   if (!ocean_step) return make_error("ocean: " + ocean_step.error().message);
   ocean_step_.emplace(std::move(*ocean_step));
   shading_ = ocean_shading(ocean());
-  auto luts = upload_water_luts(ctx_, scene);
+  auto luts = upload_water_luts(ctx_, scene, &ocean().spectra());  // the spectra the ocean step built
   if (!luts) return luts.error();
   luts_ = std::move(*luts);
   auto objects = SceneObjects::load(ctx_, scene, samplers_, kColorFormat, kHdrFormat, kDepthFormat);

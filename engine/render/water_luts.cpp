@@ -58,13 +58,16 @@ Result<void> upload_underwater(vk::Context& ctx, const optics::LutInputs& inputs
 
 }  // namespace
 
-Result<optics::LutInputs> scene_lut_inputs(const scene::Scene& scene) {
-  const ocean::SlopeMoments m = ocean::sea_slope_moments(scene.ocean);
+Result<optics::LutInputs> scene_lut_inputs(const scene::Scene& scene,
+                                           const std::vector<ocean::CascadeSpectrum>* spectra) {
+  const ocean::SlopeMoments m =
+      spectra ? ocean::sea_slope_moments(scene.ocean, *spectra) : ocean::sea_slope_moments(scene.ocean);
   return optics::lut_inputs(scene.water, scene.sun.elevation_deg, {}, {.xx = m.xx, .zz = m.zz, .xz = m.xz});
 }
 
-Result<WaterLuts> upload_water_luts(vk::Context& ctx, const scene::Scene& scene) {
-  auto inputs = scene_lut_inputs(scene);
+Result<WaterLuts> upload_water_luts(vk::Context& ctx, const scene::Scene& scene,
+                                    const std::vector<ocean::CascadeSpectrum>* spectra) {
+  auto inputs = scene_lut_inputs(scene, spectra);
   if (!inputs) return inputs.error();
   auto lut = optics::build_water_lut(*inputs);
   if (!lut) return lut.error();

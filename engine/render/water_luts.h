@@ -6,6 +6,7 @@
 #include <glm/vec4.hpp>
 
 #include "core/result.h"
+#include "ocean/initial_spectrum.h"
 #include "optics/lut.h"
 #include "scene/scene.h"
 #include "vk/context.h"
@@ -26,11 +27,14 @@ struct WaterLuts {
 };
 
 // Fails with the optics model's message (e.g. an unreadable custom water table).
-Result<WaterLuts> upload_water_luts(vk::Context& ctx, const scene::Scene& scene);
+// `spectra`: the ocean's cascade spectra when the caller has built them already (the renderer), else null.
+Result<WaterLuts> upload_water_luts(vk::Context& ctx, const scene::Scene& scene,
+                                    const std::vector<ocean::CascadeSpectrum>* spectra = nullptr);
 
 // The LUTs' inputs for a scene: its water and sun, and the sea's slopes for eq. 10's wavy surface
 // (optics/rough_surface.h; ocean::sea_slope_moments). Every LUT of the renderer, the demo and lagoon lut
 // comes from here, so they agree.
-Result<optics::LutInputs> scene_lut_inputs(const scene::Scene& scene);
+Result<optics::LutInputs> scene_lut_inputs(const scene::Scene& scene,
+                                           const std::vector<ocean::CascadeSpectrum>* spectra = nullptr);
 
 }  // namespace lagoon::render
