@@ -54,7 +54,10 @@ uint32_t write_point_lights(const scene::Scene& scene, gpu::PointLightGpu* out) 
 gpu::FrameUniforms frame_uniforms(const FrameInputs& in) {
   const scene::Scene& scene = in.scene;
   const SkyLight light = sky_light(scene.sun);
-  const optics::ToneMapCurve curve = optics::tone_map_curve();
+  optics::ToneMapParams tone;
+  tone.world_adaptation_luminance = scene.render.tone_map_adaptation;
+  tone.white_luminance = scene.render.tone_map_white;
+  const optics::ToneMapCurve curve = optics::tone_map_curve(tone);
   const float width = float(in.extent.width), height = float(in.extent.height);
   const uint32_t drawn = std::min<uint32_t>(in.ocean.cascade_count(), LAGOON_MAX_CASCADES);
   gpu::FrameUniforms f{
@@ -62,7 +65,7 @@ gpu::FrameUniforms frame_uniforms(const FrameInputs& in) {
       .inv_view_proj = glm::inverse(in.view_proj),
       .camera_pos = glm::vec4(scene.camera.position, float(scene.time_s)),
       .sun_dir = glm::vec4(light.sun_direction, float(scene.water.ior)),
-      .sun_irradiance = glm::vec4(light.sun_irradiance, float(1.0 / sky_shape_integral(light.sun_direction))),
+      .sun_irradiance = glm::vec4(light.sun_irradiance, 0.0f),
       .sky_radiance = glm::vec4(light.sky_radiance, float(std::cos(kSunDiscRadiusRad))),
       .sun_disc = glm::vec4(light.sun_disc_radiance, 0.0f),
       .water_deep = glm::vec4(in.luts.deep_colour, kFoamAlbedo),
@@ -93,7 +96,8 @@ gpu::FrameUniforms frame_uniforms(const FrameInputs& in) {
       .wakes = in.wakes_window,
       .classic_ambient = glm::vec4(scene.render.classic.ambient, 0.0f),
       .classic_diffuse = glm::vec4(scene.render.classic.diffuse, scene.render.classic.shininess),
-      .classic_specular = glm::vec4(scene.render.classic.specular, 0.0f)};
+      .classic_specular = glm::vec4(scene.render.classic.specular, 0.0f),
+      .sky = light.sky_model};
   for (uint32_t c = 0; c < drawn; ++c) {
     const ocean::CascadeTextures tex = in.ocean.cascade(c);
     f.cascade_patch[c] = float(tex.patch_size_m);

@@ -2,12 +2,38 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <mutex>
 
 #include "optics/colour.h"
+#include "optics/sky_radiance.h"
 #include "render/camera.h"
-#include "shared/sky_shape.h"
 
 namespace lagoon::render {
+namespace {
+
+// The sky model for one sun elevation and atmosphere, kept while those stay the same: building it fits
+// Preetham's turbidity (a few milliseconds), and frame_uniforms asks for it every frame.
+std::shared_ptr<const optics::SkyRadiance> sky_model_for(double elevation, const optics::SkyParams& params) {
+  static std::mutex mutex;
+  static double last_elevation = -1000;
+  static optics::SkyParams last_params;
+  static std::shared_ptr<const optics::SkyRadiance> last;
+  const std::lock_guard lock(mutex);
+  const bool same = last && last_elevation == elevation &&
+                    last_params.aerosol_optical_depth_500nm == params.aerosol_optical_depth_500nm &&
+                    last_params.angstrom_alpha == params.angstrom_alpha &&
+                    last_params.ozone_cm == params.ozone_cm &&
+                    last_params.surface_pressure_hpa == params.surface_pressure_hpa;
+  if (!same) {
+    last = std::make_shared<const optics::SkyRadiance>(elevation, params);
+    last_elevation = elevation;
+    last_params = params;
+  }
+  return last;
+}
+
+}  // namespace
 
 SkyLight sky_light(const scene::Sun& sun, const optics::SkyParams& params) {
   SkyLight light;
@@ -15,7 +41,9 @@ SkyLight sky_light(const scene::Sun& sun, const optics::SkyParams& params) {
   light.sun_elevation_deg = sun.elevation_deg;
   // Colours relative to the light above the water; below the horizon use a low sun's colours, dimmed.
   const double elevation = std::max<double>(sun.elevation_deg, 2.0);
-  const optics::SkyIrradiance sky = optics::clear_sky(elevation, params);
+  const std::shared_ptr<const optics::SkyRadiance> shared_model = sky_model_for(elevation, params);
+  const optics::SkyRadiance& model = *shared_model;
+  const optics::SkyIrradiance& sky = model.irradiance();
   optics::Spectrum white{};
   for (int i = 0; i < optics::kSamples; ++i) white[i] = sky.sun[i] + sky.sky[i];
   const double cos_zenith = std::sin(elevation * 3.14159265358979323846 / 180.0);
@@ -27,26 +55,19 @@ SkyLight sky_light(const scene::Sun& sun, const optics::SkyParams& params) {
   light.light_scale = float(scale);
   light.sun_irradiance = glm::vec3(sun_h / cos_zenith * scale);
   light.sky_radiance = glm::vec3(sky_h * scale);
+  // B_k as a uniform sky's radiance in white units: π B_k through Φ, like E_sky above.
+  light.sky_model = model.coefficients();
+  glm::vec4* basis[3] = {&light.sky_model.basis0, &light.sky_model.basis1, &light.sky_model.basis2};
+  for (int k = 0; k < 3; ++k) {
+    optics::Spectrum pi_b = model.basis_radiance(k);
+    for (double& v : pi_b) v *= 3.14159265358979323846;
+    *basis[k] = glm::vec4(glm::vec3(optics::adapted_linear_srgb(pi_b, white) * scale), basis[k]->w);
+  }
   // E = L·Ω for the disc: L = E_normal / Ω, times π because white units are E_d/π.
   const double disc_solid_angle = 6.8e-5;
   light.sun_disc_radiance = glm::vec3(sun_h / cos_zenith * scale * 3.14159265358979323846 / disc_solid_angle);
   if (sun.elevation_deg < -0.5) light.sun_irradiance = light.sun_disc_radiance = glm::vec3(0);
   return light;
-}
-
-double sky_shape_integral(glm::vec3 sun_direction) {
-  constexpr double kPi = 3.14159265358979323846;
-  const int steps_theta = 64, steps_phi = 128;
-  double sum = 0;
-  for (int i = 0; i < steps_theta; ++i) {
-    const double theta = (i + 0.5) * (kPi / 2) / steps_theta;
-    for (int j = 0; j < steps_phi; ++j) {
-      const double phi = (j + 0.5) * 2 * kPi / steps_phi;
-      const glm::vec3 dir(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
-      sum += double(gpu::sky_shape(dir, sun_direction)) * std::cos(theta) * std::sin(theta);
-    }
-  }
-  return sum * (kPi / 2 / steps_theta) * (2 * kPi / steps_phi) / kPi;
 }
 
 }  // namespace lagoon::render

@@ -8,6 +8,7 @@
 
 #include "optics/sky.h"
 #include "scene/scene.h"
+#include "shared/sky_model.h"
 
 namespace lagoon::render {
 
@@ -17,6 +18,9 @@ struct SkyLight {
   // both in white units (a white Lambertian surface facing up receives sun·cos Z + sky·1 → radiance 1).
   glm::vec3 sun_irradiance{0};
   glm::vec3 sky_radiance{0};
+  // The sky's radiance by direction (shared/sky_model.h, optics/sky_radiance.h) in white units: its
+  // cosine-weighted integral over the sky, divided by π, is sky_radiance.
+  gpu::SkyModelGpu sky_model{};
   glm::vec3 sun_disc_radiance{0};  // radiance of the solar disc (0.53°), for the sky pass
   float sun_elevation_deg = 0;
   // The light above the water relative to that of the LUTs' sun (sun.intensity, dimmed after sunset): the
@@ -25,9 +29,5 @@ struct SkyLight {
 };
 
 SkyLight sky_light(const scene::Sun& sun, const optics::SkyParams& params = {});
-
-// (1/π) ∫ sky_shape(ω) cos θ dω over the upper hemisphere (shared/sky_shape.h): the factor that makes the
-// shaped sky's irradiance the model's E_sky. A uniform shape of 1 gives 1.
-double sky_shape_integral(glm::vec3 sun_direction);
 
 }  // namespace lagoon::render

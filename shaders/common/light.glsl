@@ -1,15 +1,11 @@
-// The frame's sky and sun (render/sky_light.h): a sky brighter towards the horizon and around the sun,
-// normalised so its cosine-weighted integral over the upper hemisphere is the model's E_sky.
+// The frame's sky and sun (render/sky_light.h): the clear sky of shared/sky_model.h, whose cosine-weighted
+// integral over the upper hemisphere is the optics model's E_sky.
 #ifndef LAGOON_COMMON_LIGHT_GLSL
 #define LAGOON_COMMON_LIGHT_GLSL
 
-#include "shared/sky_shape.h"
-
 vec3 sky_radiance(FrameUniforms f, vec3 dir, bool with_sun) {
-  vec3 d = dir;
-  d.y = max(d.y, 0.0);  // below the horizon: the horizon's colour (distant sea haze)
-  d = normalize(d + vec3(0.0, 1e-4, 0.0));
-  vec3 sky = f.sky_radiance.rgb * sky_shape(d, f.sun_dir.xyz) * f.sun_irradiance.w;
+  // Below the horizon: the horizon's colour (distant sea haze); sky_model_rgb clamps the elevation.
+  vec3 sky = sky_model_rgb(f.sky, dir, f.sun_dir.xyz);
   if (with_sun && dir.y > 0.0 && dot(dir, f.sun_dir.xyz) > f.sky_radiance.w) sky += f.sun_disc.rgb;
   return sky;
 }
@@ -37,7 +33,8 @@ vec3 point_light_irradiance(PointLightGpu light, vec3 p, vec3 n, out vec3 to_lig
   vec3 d = light.position_range.xyz - p;
   float dist2 = max(dot(d, d), 1e-4);
   to_light = d * inversesqrt(dist2);
-  return light.colour.rgb * (light_range_window(dist2, light.position_range.w) / dist2) * max(dot(n, to_light), 0.0);
+  return light.colour.rgb * (light_range_window(dist2, light.position_range.w) / dist2) *
+         max(dot(n, to_light), 0.0);
 }
 
 #endif

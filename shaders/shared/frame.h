@@ -4,6 +4,7 @@
 #define LAGOON_SHARED_FRAME_H
 #include "shared/interop.h"
 #include "shared/limits.h"
+#include "shared/sky_model.h"
 
 // The sky pass (render/sky.frag) binds only the frame.
 #define LAGOON_SKY_BIND_FRAME 0
@@ -14,7 +15,7 @@ struct FrameUniforms {
   mat4 inv_view_proj;
   vec4 camera_pos;      // xyz metres, w = time s
   vec4 sun_dir;         // xyz towards the sun, w = index of refraction of the water
-  vec4 sun_irradiance;  // rgb on a surface facing the sun, w = 1 / normalisation of the sky's shape
+  vec4 sun_irradiance;  // rgb on a surface facing the sun, w unused
   vec4 sky_radiance;    // rgb of a uniform sky with the model's E_sky, w = cos of the sun disc's radius
   vec4 sun_disc;        // rgb radiance of the solar disc, w = unused
   vec4 water_deep;      // rgb deep-water colour (LUT), w = foam albedo
@@ -52,6 +53,7 @@ struct FrameUniforms {
   vec4 classic_ambient;   // rgb = ambient reflectance (of the sky's light), w unused
   vec4 classic_diffuse;   // rgb = diffuse reflectance, w = shininess (the exponent of the highlight)
   vec4 classic_specular;  // rgb = specular reflectance, w unused
+  SkyModelGpu sky;        // the sky's radiance by direction (shared/sky_model.h), white units
 };
 
 // One point light of the scene's "lights" block (storage buffer, std430).
@@ -62,7 +64,8 @@ struct PointLightGpu {
 LAGOON_GPU_END
 
 #ifdef __cplusplus
-LAGOON_CHECK_SIZE(FrameUniforms, 592);
+LAGOON_CHECK_SIZE(FrameUniforms, 720);
+LAGOON_CHECK_OFFSET(FrameUniforms, sky, 592);
 LAGOON_CHECK_SIZE(PointLightGpu, 32);
 LAGOON_CHECK_OFFSET(FrameUniforms, camera_pos, 128);
 LAGOON_CHECK_OFFSET(FrameUniforms, water_deep, 208);

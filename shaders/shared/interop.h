@@ -20,13 +20,16 @@ using mat4 = glm::mat4;
 using uint = uint32_t;
 // GLSL's built-ins, for the functions shared headers define for both languages (e.g. shared/clipmap.h).
 using glm::abs;
+using glm::acos;
 using glm::clamp;
 using glm::dot;
+using glm::exp;
 using glm::exp2;
 using glm::floor;
 using glm::max;
 using glm::min;
 using glm::mix;
+using glm::normalize;
 using glm::pow;
 LAGOON_GPU_END
 #define LAGOON_FN inline

@@ -9,7 +9,7 @@
 
 #include "lagoon_test_shaders/shaders.h"
 #include "render/sky_light.h"
-#include "shared/sky_shape.h"
+#include "shared/sky_model.h"
 #include "support/vk_fixture.h"
 #include "vk/barriers.h"
 #include "vk/pipeline.h"
@@ -25,10 +25,26 @@ std::vector<T> from_bytes(const std::vector<std::byte>& bytes) {
   return out;
 }
 
-// The sky's shape as docs/rendering.md states it, in double: 0.55 + 1.2(1 − max(y, 0))⁴ + 0.6 max(d·s, 0)¹².
-double reference_shape(glm::dvec3 d, glm::dvec3 s) {
-  return 0.55 + 1.2 * std::pow(1.0 - std::max(d.y, 0.0), 4) +
-         0.6 * std::pow(std::max(glm::dot(d, s), 0.0), 12);
+// Preetham et al. (1999) as they print it, in double: Perez F(θ, γ) for Y, x, y (x, y shifted by Lagoon's
+// (Δx, Δy), optics/sky_radiance.h), the CIE daylight M1, M2, and the radiance Σ_k w_k B_k with
+// w = F_Y (1, M1, M2) / (Y0 + M1 Y1 + M2 Y2).
+double perez(glm::dvec4 abcd, double e, double cos_theta, double gamma) {
+  return (1 + abcd.x * std::exp(abcd.y / cos_theta)) *
+         (1 + abcd.z * std::exp(abcd.w * gamma) + e * std::cos(gamma) * std::cos(gamma));
+}
+
+glm::dvec3 reference_rgb(const gpu::SkyModelGpu& m, glm::dvec3 d, glm::dvec3 s) {
+  const double cos_theta = std::max(d.y, 0.01);
+  const glm::dvec3 above = glm::normalize(glm::dvec3(d.x, cos_theta, d.z));
+  const double gamma = std::acos(std::clamp(glm::dot(above, s), -1.0, 1.0));
+  const double lum = perez(m.perez_lum, m.perez_e.x, cos_theta, gamma);
+  const double x = m.zenith.x * perez(m.perez_x, m.perez_e.y, cos_theta, gamma) + m.zenith.z;
+  const double y = m.zenith.y * perez(m.perez_y, m.perez_e.z, cos_theta, gamma) + m.zenith.w;
+  const double den = 0.0241 + 0.2562 * x - 0.7341 * y;
+  const double m1 = (-1.3515 - 1.7703 * x + 5.9114 * y) / den,
+               m2 = (0.0300 - 31.4424 * x + 30.0717 * y) / den;
+  const double scale = lum / (m.basis0.w + m1 * m.basis1.w + m2 * m.basis2.w);
+  return scale * (glm::dvec3(m.basis0) + m1 * glm::dvec3(m.basis1) + m2 * glm::dvec3(m.basis2));
 }
 
 std::vector<glm::vec4> random_pairs(uint32_t count) {
@@ -42,34 +58,62 @@ std::vector<glm::vec4> random_pairs(uint32_t count) {
 
 class SharedFormula : public GpuTest {};
 
-TEST_F(SharedFormula, SkyShapeIsTheSameOnGpuAndCpu) {
+TEST_F(SharedFormula, SkyModelIsTheSameOnGpuAndCpu) {
   const uint32_t count = 1000;
-  const std::vector<glm::vec4> pairs = random_pairs(count);
+  std::vector<glm::vec4> pairs = random_pairs(count);
+  for (uint32_t i = 0; i < count; ++i) pairs[2 * i + 1].y = std::abs(pairs[2 * i + 1].y);  // sun above
+  const render::SkyLight light = render::sky_light({.elevation_deg = 35.0f, .azimuth_deg = 120.0f});
   const auto usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
                      VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
   vk::Buffer in =
       vk::Buffer::create(ctx(), pairs.size() * sizeof(glm::vec4), usage, vk::MemoryUsage::Device, "in");
-  vk::Buffer out = vk::Buffer::create(ctx(), count * 4, usage, vk::MemoryUsage::Device, "out");
+  vk::Buffer model =
+      vk::Buffer::create(ctx(), sizeof(gpu::SkyModelGpu), usage, vk::MemoryUsage::Device, "model");
+  vk::Buffer out =
+      vk::Buffer::create(ctx(), count * sizeof(glm::vec4), usage, vk::MemoryUsage::Device, "out");
   vk::upload_buffer(ctx(), in, vk::as_bytes_of(pairs));
-  const vk::ComputePipeline eval = vk::ComputePipeline::create(ctx(), shaders::gpu_sky_shape_eval_comp);
+  vk::upload_buffer(ctx(), model, vk::as_bytes_of(std::vector<gpu::SkyModelGpu>{light.sky_model}));
+  const vk::ComputePipeline eval = vk::ComputePipeline::create(ctx(), shaders::gpu_sky_model_eval_comp);
   ctx().submit_and_wait([&](VkCommandBuffer cmd) {
     vk::memory_barrier(cmd, vk::access::kTransferWrite, vk::access::kComputeReadWrite);
-    vk::dispatch(cmd, eval, {vk::bind(0, in), vk::bind(1, out)}, count, vk::groups_for(eval, {count, 1, 1}));
+    vk::dispatch(cmd, eval, {vk::bind(0, in), vk::bind(1, model), vk::bind(2, out)}, count,
+                 vk::groups_for(eval, {count, 1, 1}));
     vk::memory_barrier(cmd, vk::access::kComputeWrite, vk::access::kTransferRead);
   });
-  const std::vector<float> gpu = from_bytes<float>(vk::readback_buffer(ctx(), out));
+  const std::vector<glm::vec4> gpu = from_bytes<glm::vec4>(vk::readback_buffer(ctx(), out));
   for (uint32_t i = 0; i < count; ++i) {
     const glm::vec3 d(pairs[2 * i]), s(pairs[2 * i + 1]);
-    const double reference = reference_shape(glm::dvec3(d), glm::dvec3(s));
-    ASSERT_NEAR(gpu::sky_shape(d, s), reference, 1e-5 * reference) << "C++ at " << i;
-    ASSERT_NEAR(gpu[i], reference, 1e-4 * reference) << "GPU at " << i;
+    const glm::dvec3 reference = reference_rgb(light.sky_model, glm::dvec3(d), glm::dvec3(s));
+    const glm::vec3 cpu = gpu::sky_model_rgb(light.sky_model, d, s);
+    for (int c = 0; c < 3; ++c) {
+      ASSERT_GT(reference[c], 0.0) << "a clear sky is never black or negative, at " << i;
+      ASSERT_NEAR(cpu[c], reference[c], 2e-5 * reference[c]) << "C++ at " << i << " channel " << c;
+      ASSERT_NEAR(gpu[i][c], reference[c], 1e-3 * reference[c]) << "GPU at " << i << " channel " << c;
+    }
   }
 }
 
-TEST(SkyShapeIntegral, MatchesAClosedFormForTheSunBelowTheHorizon) {
-  // With the sun straight down, d·s ≤ 0 over the upper hemisphere, so the shape is 0.55 + 1.2(1 − cos θ)⁴ and
-  // (1/π)∫ shape cos θ dω = 0.55 + 2.4 ∫₀¹ (1 − μ)⁴ μ dμ = 0.55 + 2.4 / 30.
-  EXPECT_NEAR(render::sky_shape_integral(glm::vec3(0, -1, 0)), 0.55 + 2.4 / 30.0, 1e-3);
+TEST(SkyModelIntegral, IsTheUniformSkyOfTheSameIrradiance) {
+  // (1/π) ∫ L cos θ dω over the sky, in white units, is the uniform sky of the optics model's E_sky
+  // (sky_light.sky_radiance, Φ(E_sky)): the image and the LUTs see the same light (issue 16, 1 %).
+  for (float elevation : {5.0f, 30.0f, 60.0f, 89.0f}) {
+    const render::SkyLight light = render::sky_light({.elevation_deg = elevation, .azimuth_deg = 40.0f});
+    const int n = 90;
+    const double pi = 3.14159265358979323846, dt = pi / 2 / n, dp = 2 * pi / (2 * n);
+    glm::dvec3 sum(0.0);
+    for (int i = 0; i < n; ++i) {
+      const double t = (i + 0.5) * dt;
+      for (int j = 0; j < 2 * n; ++j) {
+        const double p = (j + 0.5) * dp;
+        const glm::vec3 d(std::sin(t) * std::cos(p), std::cos(t), std::sin(t) * std::sin(p));
+        sum += glm::dvec3(gpu::sky_model_rgb(light.sky_model, d, light.sun_direction)) * std::cos(t) *
+               std::sin(t) * dt * dp;
+      }
+    }
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(sum[c] / pi, light.sky_radiance[c], 0.01 * light.sky_radiance[c])
+          << "elevation " << elevation << " channel " << c;
+  }
 }
 
 }  // namespace
