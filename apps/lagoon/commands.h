@@ -22,5 +22,6 @@ const Command& lut_command();
 const Command& compare_images_command();
 const Command& compare_command();
 const Command& soak_command();
+const Command& sky_command();
 
 }  // namespace lagoon::cli

@@ -14,9 +14,16 @@ using lagoon::cli::Command;
 
 const std::vector<const Command*>& commands() {
   static const std::vector<const Command*> list{
-      &lagoon::cli::info_command(),           &lagoon::cli::render_command(),  &lagoon::cli::export_command(),
-      &lagoon::cli::probe_command(),          &lagoon::cli::lut_command(),     &lagoon::cli::bench_command(),
-      &lagoon::cli::compare_images_command(), &lagoon::cli::compare_command(), &lagoon::cli::soak_command(),
+      &lagoon::cli::info_command(),
+      &lagoon::cli::render_command(),
+      &lagoon::cli::export_command(),
+      &lagoon::cli::probe_command(),
+      &lagoon::cli::lut_command(),
+      &lagoon::cli::bench_command(),
+      &lagoon::cli::compare_images_command(),
+      &lagoon::cli::compare_command(),
+      &lagoon::cli::soak_command(),
+      &lagoon::cli::sky_command(),
   };
   return list;
 }

@@ -81,6 +81,8 @@ struct RenderSettings {
   float exposure = 1.f;
   float gamma = 2.2f;
   ToneMap tone_map = ToneMap::Belyaev;  // "belyaev" / "clamp" in the file
+  float tone_map_adaptation = 1.0f;     // eq. 18's L_wa, white units (optics::ToneMapParams)
+  float tone_map_white = 1.5f;          // eq. 18's L_white, units of L_da
   RenderEffects effects;
 };
 

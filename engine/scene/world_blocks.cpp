@@ -297,6 +297,12 @@ void read_render(ObjectReader& r, RenderSettings& s) {
       std::vector<std::pair<std::string, ToneMap>>{{"belyaev", ToneMap::Belyaev}, {"clamp", ToneMap::Clamp}},
       "Scene brightness to display: \"belyaev\" = Belyaev's eq. 18 (Tumblin-Rushmeier with white-point "
       "compression, docs/optics.md); \"clamp\" = exposure, then each channel clipped at 1.");
+  r.number("tone_map_adaptation", s.tone_map_adaptation, Bounds::between(0.001, 1000), "",
+           "Eq. 18's world adaptation luminance L_wa in white units (a white surface under the sun and sky = "
+           "1). `lagoon sky` fits it to the sky image (docs/optics.md).");
+  r.number("tone_map_white", s.tone_map_white, Bounds::between(0.1, 100), "",
+           "Eq. 18's L_white: the compressed luminance L_d that shows as display white. `lagoon sky` fits it "
+           "to the sky image (docs/optics.md).");
   r.block("effects", s.effects, read_effects, "Parts of the image that can be switched off.");
 }
 
