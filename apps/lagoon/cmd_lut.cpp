@@ -13,7 +13,9 @@
 #include "io/npy.h"
 #include "io/png.h"
 #include "kd_plot.h"
+#include "lut_error_map.h"
 #include "lut_underwater.h"
+#include "optics/bottom_spectra.h"
 #include "optics/colour.h"
 #include "optics/lut.h"
 #include "optics/surface.h"
@@ -227,10 +229,11 @@ int run_lut(const ParsedArgs& args) {
   const auto overrides = lut_overrides(args);
   if (!overrides) return kExitUsage;
   if (auto plot = args.get("kd-plot")) return write_kd_plot(*plot);
-  if (!args.has("out") && !args.has("explain")) {
-    std::fprintf(stderr,
-                 "lagoon lut: give --out DIR (write the LUTs), --explain R,H (print one entry) or --kd-plot "
-                 "FILE.png (K_d against Jerlov)\n");
+  if (!args.has("out") && !args.has("explain") && !args.has("error-map")) {
+    std::fprintf(
+        stderr,
+        "lagoon lut: give --out DIR (write the LUTs), --explain R,H (print one entry), --error-map DIR "
+        "(eqs. 21, 22, 24 against eq. 20) or --kd-plot FILE.png (K_d against Jerlov)\n");
     return kExitUsage;
   }
   auto scene = load_scene_from_args(args, "lut", *overrides);
@@ -241,6 +244,16 @@ int run_lut(const ParsedArgs& args) {
     return kExitFailure;
   }
   if (auto at = args.get("explain")) return explain(*inputs, *at);
+  if (auto dir = args.get("error-map")) {
+    std::printf("lagoon lut: measuring eqs. 21, 22 and 24 against eq. 20 for %zu bottoms, two Phi...\n",
+                optics::bottom_spectra().size() + 1);
+    if (auto written = write_error_maps(*inputs, *dir); !written) return lut_failure(written.error().message);
+    std::printf(
+        "wrote %s: error_maps_linear.png, error_maps_seed.png, error_summary.csv, error_summary.md, "
+        "error.json\n",
+        dir->c_str());
+    return kExitOk;
+  }
   return write_luts(*inputs, *args.get("out"));
 }
 
@@ -264,6 +277,10 @@ const Command& lut_command() {
                  "tables underwater_*.npy, underwater.png"},
                 {"sun-elevation", "DEG", "sun elevation (same as --set sun.elevation_deg=DEG)"},
                 {"explain", "R,H", "print JSON for the entry at distance R and depth H (metres)"},
+                {"error-map", "DIR",
+                 "measure eqs. 21, 22 and 24 against the spectral eq. 20 over measured bottoms: CIEDE2000 "
+                 "maps "
+                 "over (r, h) as PNG, error_summary.csv/.md and error.json (docs/optics.md)"},
                 {"kd-plot", "FILE.png",
                  "draw the model's K_d (D = 1 and D = 2) against Jerlov's for every type (docs/optics.md)"},
                 set_option()},

@@ -24,13 +24,6 @@ double mean_over_grid(const Spectrum& s) {
   return sum / double(kLambdaMaxNm - kLambdaMinNm);
 }
 
-// The flows a LUT column (one bottom depth) needs, per wavelength.
-struct ColumnFlows {
-  Spectrum at_bottom;    // G+(τ0) + F+(τ0): light arriving at the bottom
-  Spectrum upwelling;    // F−(0): diffuse light leaving the water column upwards, average bottom
-  Spectrum attenuation;  // ε = χ + σ
-};
-
 }  // namespace
 
 SimilarScattering similarity_scaled(double scattering_per_m, double phase_x1) {
@@ -81,10 +74,17 @@ Spectrum downwelling_white(const SkyIrradiance& sky) {
   return w;
 }
 
-namespace {
+std::vector<double> lut_axis(double max_m, uint32_t n) {
+  std::vector<double> axis;
+  for (uint32_t i = 0; i < n; ++i) {
+    const double u = double(i) / (n - 1);
+    axis.push_back(max_m * u * u);  // denser near 0, where colour changes fastest
+  }
+  return axis;
+}
 
-Result<ColumnFlows> column_flows(const LutInputs& in, double depth_m) {
-  ColumnFlows c;
+Result<LutColumn> lut_column(const LutInputs& in, double depth_m) {
+  LutColumn c;
   for (int i = 0; i < kSamples; ++i) {
     auto s = solve_wavelength(in, i, depth_m);
     if (!s) return s.error();
@@ -95,6 +95,18 @@ Result<ColumnFlows> column_flows(const LutInputs& in, double depth_m) {
   return c;
 }
 
+LutPath lut_path(const LutColumn& c, double r_m, double h_m, double gamma) {
+  LutPath p;
+  // At l = 0 both parts of eq. 22 are 0/0; their limits are those of a tiny path, so use one.
+  const double l = std::max(std::hypot(r_m, h_m), 1e-4);
+  for (int i = 0; i < kSamples; ++i) p.alpha[i] = std::exp(-c.attenuation[i] * l);
+  p.mean_alpha = mean_over_grid(p.alpha);
+  p.a = 1.0 - std::pow(1.0 - p.mean_alpha, gamma);
+  return p;
+}
+
+namespace {
+
 struct Entry {
   glm::dvec3 t0{0}, t1{0};
   double a = 0;
@@ -102,22 +114,20 @@ struct Entry {
 };
 
 // One LUT entry from its column's flows: eq. 20 split as eq. 22 prescribes.
-Entry entry(const ColumnFlows& c, const Spectrum& white, double r_m, double h_m, double gamma) {
+Entry entry(const LutColumn& c, const Spectrum& white, double r_m, double h_m, double gamma) {
   Entry e;
-  // At l = 0 both parts are 0/0; their limits are those of a tiny path, so use one.
-  const double l = std::max(std::hypot(r_m, h_m), 1e-4);
+  const LutPath p = lut_path(c, r_m, h_m, gamma);
+  e.alpha = p.alpha;
+  e.a = p.a;
   Spectrum bottom{}, scatter{};
   for (int i = 0; i < kSamples; ++i) {
-    e.alpha[i] = std::exp(-c.attenuation[i] * l);
-    bottom[i] = e.alpha[i] * c.at_bottom[i];
-    scatter[i] = (1.0 - e.alpha[i]) * c.upwelling[i];
+    bottom[i] = p.alpha[i] * c.at_bottom[i];
+    scatter[i] = (1.0 - p.alpha[i]) * c.upwelling[i];
   }
-  const double mean_alpha = mean_over_grid(e.alpha);
-  e.a = 1.0 - std::pow(1.0 - mean_alpha, gamma);
   // T0 carries the colour of the light that reaches the eye from a white bottom, per unit of mean
   // transmission; a carries how much of it there is. T1 likewise for the scattered light.
-  if (mean_alpha > 1e-300) e.t0 = adapted_linear_srgb(bottom, white) / mean_alpha;
-  e.t1 = adapted_linear_srgb(scatter, white) / std::max(1.0 - mean_alpha, 1e-300);
+  if (p.mean_alpha > 1e-300) e.t0 = adapted_linear_srgb(bottom, white) / p.mean_alpha;
+  e.t1 = adapted_linear_srgb(scatter, white) / std::max(1.0 - p.mean_alpha, 1e-300);
   // Spectral blue-greens lie outside the sRGB gamut (a small negative red); clip to the gamut.
   e.t0 = glm::max(e.t0, glm::dvec3(0.0));
   e.t1 = glm::max(e.t1, glm::dvec3(0.0));
@@ -146,16 +156,13 @@ Result<WaterLut> build_water_lut(const LutInputs& in) {
   WaterLut lut;
   const uint32_t n = std::max(2u, in.params.lut_size);
   lut.r_count = lut.h_count = n;
-  for (uint32_t i = 0; i < n; ++i) {
-    const double u = double(i) / (n - 1);
-    lut.r_m.push_back(in.params.lut_r_max_m * u * u);  // denser near 0, where colour changes fastest
-    lut.h_m.push_back(in.params.lut_h_max_m * u * u);
-  }
+  lut.r_m = lut_axis(in.params.lut_r_max_m, n);
+  lut.h_m = lut_axis(in.params.lut_h_max_m, n);
   const Spectrum white = downwelling_white(in.sky);
   lut.t0.resize(size_t{n} * n * 4);
   lut.t1.resize(size_t{n} * n * 3);
   for (uint32_t j = 0; j < n; ++j) {
-    auto column = column_flows(in, lut.h_m[j]);
+    auto column = lut_column(in, lut.h_m[j]);
     if (!column) return column.error();
     for (uint32_t i = 0; i < n; ++i) {
       const Entry e = entry(*column, white, lut.r_m[i], lut.h_m[j], in.params.lut_gamma);
@@ -165,7 +172,7 @@ Result<WaterLut> build_water_lut(const LutInputs& in) {
       t0[3] = float(e.a);
     }
   }
-  auto deep = column_flows(in, 1e4);
+  auto deep = lut_column(in, 1e4);
   if (!deep) return deep.error();
   lut.deep_colour = glm::max(adapted_linear_srgb(deep->upwelling, white), glm::dvec3(0.0));
   lut.build_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -174,7 +181,7 @@ Result<WaterLut> build_water_lut(const LutInputs& in) {
 
 Result<LutExplain> explain_lut_point(const LutInputs& in, double r_m, double h_m) {
   if (!(r_m >= 0) || !(h_m >= 0)) return make_error("--explain R,H: r and h must be >= 0 metres");
-  auto column = column_flows(in, h_m);
+  auto column = lut_column(in, h_m);
   if (!column) return column.error();
   LutExplain out;
   out.r_m = r_m;

@@ -59,6 +59,23 @@ SurfaceCoefficients lut_surface(const LutInputs& inputs);
 Result<FourFlowSolution> solve_wavelength(const LutInputs& inputs, int i, double depth_m);
 Spectrum downwelling_white(const SkyIrradiance& sky);
 
+// The LUT axes: value i of n is max (i/(n−1))², denser near 0 where the colour changes fastest.
+std::vector<double> lut_axis(double max_m, uint32_t n);
+// The flows one LUT column (a bottom at depth_m) needs, per wavelength.
+struct LutColumn {
+  Spectrum at_bottom;    // G+(τ0) + F+(τ0): light arriving at the bottom
+  Spectrum upwelling;    // F−(0): diffuse light leaving the water column upwards, average bottom
+  Spectrum attenuation;  // ε = χ + σ
+};
+Result<LutColumn> lut_column(const LutInputs& inputs, double depth_m);
+// Bouguer's α_l(λ) along the path l = sqrt(r² + h²) (a 0.1 mm path at l = 0, the limit eq. 22's parts
+// take), its mean ᾱ over 380–780 nm and eq. 23's a = 1 − (1 − ᾱ)^γ.
+struct LutPath {
+  Spectrum alpha{};
+  double mean_alpha = 0, a = 0;
+};
+LutPath lut_path(const LutColumn& column, double r_m, double h_m, double gamma);
+
 // `slopes`: the sea's slope covariance, for eq. 10's wavy surface (zero: the flat surface).
 Result<LutInputs> lut_inputs(const WaterParams& params, double sun_elevation_deg, const SkyParams& sky = {},
                              const SlopeCovariance& slopes = {});

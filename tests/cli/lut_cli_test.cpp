@@ -92,6 +92,41 @@ TEST(LutCli, KdPlotDrawsEveryType) {
   EXPECT_NE(r.output.find("must name a .png file"), std::string::npos) << r.output;
 }
 
+// --error-map: the composites of eqs. 21, 22, 24 against eq. 20 over the measured bottoms and a grey one,
+// both Φ, as two PNG sheets and a summary; over the grey bottom eq. 22 with signed tables is eq. 20 exactly.
+TEST(LutCli, ErrorMapMeasuresTheCompositesAgainstEq20) {
+  TempDir dir;
+  const fs::path out = dir / "errors";
+  auto r = lagoon("lut --error-map " + out.string() + " --water jerlov-IB --set water.lut_size=16");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  for (const char* png : {"error_maps_linear.png", "error_maps_seed.png"}) {
+    const auto image = io::read_png(out / png);
+    ASSERT_TRUE(image) << png;
+    EXPECT_GT(image->width, 300u);
+  }
+  std::ifstream meta_file(out / "error.json");
+  const auto meta = nlohmann::json::parse(meta_file);
+  EXPECT_EQ(meta["bottoms"].size(), 6u);
+  size_t rows = 0;
+  for (const auto& row : meta["summary"]) {
+    ++rows;
+    const bool grey_signed = row["bottom"] == "grey 0.3" && row["phi"] == "linear" &&
+                             row["equation"] == "eq22" && row["tables"] == "signed";
+    if (grey_signed) {
+      EXPECT_LT(row["max"].get<double>(), 1e-6);
+    }
+    if (row["bottom"] == "coralline_algae" && row["equation"] == "eq24") {
+      EXPECT_GT(row["max"].get<double>(), 0.5);
+    }
+  }
+  EXPECT_EQ(rows, 6u * (4 + 3));  // linear: eq21, eq22, eq22 signed, eq24; seed: eq21, eq22, eq24
+  std::ifstream csv(out / "error_summary.csv");
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header, "phi,bottom,equation,tables,mean_de2000,p95_de2000,max_de2000,share_above_2");
+  EXPECT_TRUE(fs::exists(out / "error_summary.md"));
+}
+
 TEST(LutCli, ExplainPrintsEveryQuantityPerWavelength) {
   auto r = lagoon("lut --water jerlov-II --explain 4,2.5");
   ASSERT_EQ(r.exit_code, 0) << r.output;
