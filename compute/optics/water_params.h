@@ -17,9 +17,9 @@ struct WaterParams {
   double phase_x1 = 2.0;   // [0, 3), used when phase is "constant"
   double lut_gamma = 1.0;  // γ of eq. 23: how fast the bottom fades into the water colour with path length
   // D: the diffuse flows' path length per unit depth (four_flow.h). The seed's eq. 4 is 1; 2 (isotropic
-  // diffuse light) brings the model's K_d nearer Jerlov's for the turbid types (docs/optics.md, which says
-  // why the default stays 1 for now).
-  double diffuse_path_factor = 1.0;
+  // diffuse light) brings the model's K_d within 15 % of Jerlov's for seven of the ten types, against two
+  // with 1 (docs/optics.md), so 2 is the default.
+  double diffuse_path_factor = 2.0;
   double ior = 1.333;        // index of refraction of water relative to air
   uint32_t lut_size = 64;    // samples along r and along h
   double lut_r_max_m = 100;  // largest horizontal distance r in the LUT

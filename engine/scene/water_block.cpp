@@ -33,8 +33,9 @@ void read_water(ObjectReader& r, optics::WaterParams& w) {
   r.number(
       "diffuse_path_factor", w.diffuse_path_factor, Bounds::between(1, 4), "",
       "Path length of the diffuse light per metre of depth (1 / its mean cosine) in the four-flow model: "
-      "1 = the seed's eq. 4 as printed (turbid water then attenuates 20-50 % too little); 2 = isotropic "
-      "diffuse light, nearer Jerlov's measured attenuation for turbid and coastal water (docs/optics.md).");
+      "2 = isotropic diffuse light, the default: K_d within 15 % of Jerlov's measurements for seven of the "
+      "ten types; 1 = the seed's eq. 4 as printed (turbid water then attenuates 20-50 % too little) "
+      "(docs/optics.md).");
   r.number("lut_gamma", w.lut_gamma, Bounds::between(0.05, 20), "",
            "Exponent γ of eq. 23: larger values keep the bottom visible deeper before the water colour "
            "takes over.");

@@ -12,8 +12,11 @@
 namespace lagoon::optics {
 namespace {
 
-LutInputs grey_water(double chi, double sigma, double phase_x1) {
+// Grey water with the seed's D = 1 unless asked: the closed forms below are the seed's eq. 4 (no path-length
+// factor on the diffuse flows).
+LutInputs grey_water(double chi, double sigma, double phase_x1, double diffuse_path_factor = 1.0) {
   LutInputs in;
+  in.params.diffuse_path_factor = diffuse_path_factor;
   in.water.name = "grey";
   in.water.absorption_per_m.fill(chi);
   in.water.scattering_per_m.fill(sigma);
@@ -49,6 +52,23 @@ TEST(OpticsUnderwater, NonScatteringGreyWaterIsBeerLambertAlongTheRayAndWithDept
       // Nothing scatters, so the water adds no light in either direction.
       EXPECT_NEAR(glm::length(s.water_down) + glm::length(s.water_up), 0.0, 1e-12) << d << ", " << z;
     }
+}
+
+TEST(OpticsUnderwater, WithAPathLengthFactorTheDiffuseLightFallsFasterThanTheBeam) {
+  // Non-scattering grey water with D = 2: the direct beam still falls as exp(−χz), the diffuse light as
+  // exp(−2χz). So each channel is f·exp(−χz) + (1 − f)·exp(−2χz) with f its direct share at the surface: f
+  // from z = 3 m predicts z = 12 m, and the direct share grows with depth.
+  const double chi = 0.2;
+  const LutInputs in = grey_water(chi, 0.0, 0.0, 2.0);
+  const UnderwaterSample top = at(in, 0, 0);
+  const glm::dvec3 r3 = at(in, 0, 3.0).target / top.target, r12 = at(in, 0, 12.0).target / top.target;
+  for (int c = 0; c < 3; ++c) {
+    const double f = (r3[c] - std::exp(-2 * chi * 3)) / (std::exp(-chi * 3) - std::exp(-2 * chi * 3));
+    EXPECT_GT(f, 0.3) << c;
+    EXPECT_LT(f, 1.0) << c;
+    EXPECT_NEAR(r12[c], f * std::exp(-chi * 12) + (1 - f) * std::exp(-2 * chi * 12), 1e-9) << c;
+  }
+  EXPECT_GT(at(in, 0, 10.0).direct_share, top.direct_share + 0.1);
 }
 
 TEST(OpticsUnderwater, ForwardScatteringStaysOnTheRayBlurredAsDeltaEddingtonSays) {
