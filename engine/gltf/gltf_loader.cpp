@@ -121,17 +121,15 @@ void warn_extensions(const tinygltf::ExtensionMap& extensions, std::vector<std::
 }
 
 void warn_unsupported(const tinygltf::Model& g, std::vector<std::string>& warnings) {
-  bool skins = !g.skins.empty(), cameras = !g.cameras.empty(), morphs = false;
+  bool skins = !g.skins.empty(), morphs = false;
   for (const tinygltf::Node& n : g.nodes) {
     skins |= n.skin != -1;
-    cameras |= n.camera != -1;
     morphs |= !n.weights.empty();
     warn_extensions(n.extensions, warnings);
   }
   for (const tinygltf::Mesh& m : g.meshes) morphs |= !m.weights.empty();
   if (skins) warn_once(warnings, "skins are not supported; drawn in bind pose");
   if (!g.animations.empty()) warn_once(warnings, "animations are not supported; drawn in the rest pose");
-  if (cameras) warn_once(warnings, "cameras are not supported; ignored");
   if (morphs) warn_once(warnings, "morph targets are not supported; drawn with the base geometry");
   warn_extensions(g.extensions, warnings);
 }
@@ -281,7 +279,8 @@ Result<std::vector<Mesh>> convert_meshes(const tinygltf::Model& g, const detail:
   return meshes;
 }
 
-Result<std::vector<Instance>> convert_nodes(const tinygltf::Model& g, const Limits& limits) {
+Result<std::vector<Instance>> convert_nodes(const tinygltf::Model& g, const Limits& limits,
+                                            std::vector<detail::CameraNode>& cameras) {
   if (g.nodes.size() > limits.max_nodes) {
     return make_error("nodes: " + std::to_string(g.nodes.size()) + " nodes is more than the limit of " +
                       std::to_string(limits.max_nodes));
@@ -289,23 +288,61 @@ Result<std::vector<Instance>> convert_nodes(const tinygltf::Model& g, const Limi
   std::vector<detail::NodeDesc> nodes;
   nodes.reserve(g.nodes.size());
   for (const tinygltf::Node& n : g.nodes) {
-    nodes.push_back({n.children, n.mesh, n.matrix, n.translation, n.rotation, n.scale});
+    nodes.push_back({n.children, n.mesh, n.matrix, n.translation, n.rotation, n.scale, n.camera});
   }
-  if (g.scenes.empty()) return detail::flatten_nodes(nodes, std::nullopt, "nodes", g.meshes.size());
+  if (g.scenes.empty())
+    return detail::flatten_nodes(nodes, std::nullopt, "nodes", g.meshes.size(), &cameras, g.cameras.size());
   const int scene = g.defaultScene == -1 ? 0 : g.defaultScene;
   if (!valid_index(scene, g.scenes.size())) {
     return make_error("scene: scenes[" + std::to_string(scene) + "] does not exist");
   }
   return detail::flatten_nodes(nodes, g.scenes[static_cast<size_t>(scene)].nodes,
-                               at("scenes", scene) + ".nodes", g.meshes.size());
+                               at("scenes", scene) + ".nodes", g.meshes.size(), &cameras, g.cameras.size());
+}
+
+// The camera nodes as Model::cameras; a perspective camera's numbers are checked as the spec requires.
+Result<std::vector<Camera>> convert_cameras(const tinygltf::Model& g,
+                                            const std::vector<detail::CameraNode>& nodes) {
+  std::vector<Camera> cameras;
+  for (const detail::CameraNode& c : nodes) {
+    const tinygltf::Camera& t = g.cameras[static_cast<size_t>(c.camera)];
+    const std::string where = at("cameras", c.camera);
+    Camera out;
+    out.node_name = g.nodes[static_cast<size_t>(c.node)].name;
+    out.name = !t.name.empty() ? t.name : !out.node_name.empty() ? out.node_name : where;
+    out.world = glm::mat4(c.world);
+    out.perspective = t.type != "orthographic";
+    if (out.perspective) {
+      const tinygltf::PerspectiveCamera& pc = t.perspective;
+      if (!(pc.yfov > 0.0 && pc.yfov < 3.14159265358979)) {
+        return make_error(where + ".perspective.yfov: " + std::to_string(pc.yfov) +
+                          " is not an angle between 0 and pi radians");
+      }
+      if (!(pc.znear > 0.0)) {
+        return make_error(where + ".perspective.znear: " + std::to_string(pc.znear) + " must be above 0");
+      }
+      if (pc.zfar != 0.0 && !(pc.zfar > pc.znear)) {
+        return make_error(where + ".perspective.zfar: " + std::to_string(pc.zfar) + " must exceed znear " +
+                          std::to_string(pc.znear));
+      }
+      out.yfov_rad = float(pc.yfov);
+      out.znear = float(pc.znear);
+      out.zfar = float(pc.zfar);
+    }
+    cameras.push_back(std::move(out));
+  }
+  return cameras;
 }
 
 Result<Model> convert(const tinygltf::Model& g, const Limits& limits, std::vector<std::string> warnings) {
   Model model;
   warn_unsupported(g, warnings);
   // Cheap structural checks first, so a broken file fails before images are decoded.
-  Result<std::vector<Instance>> instances = convert_nodes(g, limits);
+  std::vector<detail::CameraNode> camera_nodes;
+  Result<std::vector<Instance>> instances = convert_nodes(g, limits, camera_nodes);
   if (!instances) return instances.error();
+  Result<std::vector<Camera>> cameras = convert_cameras(g, camera_nodes);
+  if (!cameras) return cameras.error();
   Result<detail::Accessors> accessors = build_accessors(g);
   if (!accessors) return accessors.error();
   std::map<int, int> image_slots;
@@ -319,6 +356,7 @@ Result<Model> convert(const tinygltf::Model& g, const Limits& limits, std::vecto
   model.materials = std::move(*materials);
   model.textures = std::move(*textures);
   model.instances = std::move(*instances);
+  model.cameras = std::move(*cameras);
   model.warnings = std::move(warnings);
   detail::compute_bounds(model);
   return model;

@@ -44,11 +44,23 @@ struct Instance {  // one node of the default scene that has a mesh; the hierarc
   glm::mat4 world{1.0f};
 };
 
+// A camera node of the default scene (glTF's camera looks down its local −Z with +Y up).
+struct Camera {
+  std::string name;         // the camera's name, else its node's, else "cameras[i]"
+  std::string node_name;    // the node's name ("" if none)
+  glm::mat4 world{1.0f};    // the node's world transform
+  bool perspective = true;  // false: orthographic
+  float yfov_rad = 0.8f;    // perspective: vertical field of view
+  float znear = 0.1f;       // perspective: near plane, metres
+  float zfar = 0.0f;        // perspective: far plane, metres (0 = infinite)
+};
+
 struct Model {
   std::vector<Mesh> meshes;
   std::vector<Material> materials;
   std::vector<Texture> textures;  // only the images some material uses as base colour, each once
   std::vector<Instance> instances;
+  std::vector<Camera> cameras;             // one per camera node of the default scene, in depth-first order
   glm::vec3 bounds_min{0}, bounds_max{0};  // of all instances in world space; zero when there are none
   // One per unsupported feature kind (e.g. "skins are not supported; drawn in bind pose"), not per
   // occurrence: the model still loads, but looks different from what its author saw.

@@ -141,7 +141,8 @@ Result<Instance> mesh_instance(const NodeDesc& n, const glm::dmat4& world, const
 
 Result<std::vector<Instance>> flatten_nodes(const std::vector<NodeDesc>& nodes,
                                             const std::optional<std::vector<int>>& roots,
-                                            const std::string& roots_where, size_t mesh_count) {
+                                            const std::string& roots_where, size_t mesh_count,
+                                            std::vector<CameraNode>* cameras, size_t camera_count) {
   Result<std::vector<int>> parent = parents(nodes);
   if (!parent) return parent.error();
   if (Result<void> r = check_cycles(*parent); !r) return r.error();
@@ -171,6 +172,12 @@ Result<std::vector<Instance>> flatten_nodes(const std::vector<NodeDesc>& nodes,
       Result<Instance> instance = mesh_instance(n, world, where, mesh_count);
       if (!instance) return instance.error();
       instances.push_back(*instance);
+    }
+    if (n.camera != -1 && cameras) {
+      if (!valid_index(n.camera, camera_count)) {
+        return make_error(where + ".camera: cameras[" + std::to_string(n.camera) + "] does not exist");
+      }
+      cameras->push_back({p.node, n.camera, world});
     }
     for (auto it = n.children.rbegin(); it != n.children.rend(); ++it)
       stack.push_back({*it, world, p.depth + 1});

@@ -19,6 +19,14 @@ struct NodeDesc {
   std::vector<double> translation;  // 3
   std::vector<double> rotation;     // 4, quaternion x, y, z, w
   std::vector<double> scale;        // 3
+  int camera = -1;
+};
+
+// A node that carries a camera, and its world transform.
+struct CameraNode {
+  int node = -1;
+  int camera = -1;
+  glm::dmat4 world{1.0};
 };
 
 // Deeper hierarchies are refused: no real asset nests a thousand levels, a hostile one could nest 100 000.
@@ -26,8 +34,11 @@ constexpr size_t kMaxNodeDepth = 1000;
 
 // Instances of every node with a mesh under `roots` (a scene's node list, named `roots_where` in
 // messages), in depth-first order; without roots (a file with no scenes), under every parentless node.
+// The nodes with a camera go to `cameras` when given (their camera index checked against camera_count).
 Result<std::vector<Instance>> flatten_nodes(const std::vector<NodeDesc>& nodes,
                                             const std::optional<std::vector<int>>& roots,
-                                            const std::string& roots_where, size_t mesh_count);
+                                            const std::string& roots_where, size_t mesh_count,
+                                            std::vector<CameraNode>* cameras = nullptr,
+                                            size_t camera_count = 0);
 
 }  // namespace lagoon::gltf::detail

@@ -477,13 +477,74 @@ TEST(GltfWarnings, UnsupportedFeaturesWarnOncePerKind) {
   b.doc["meshes"][0]["primitives"].push_back(lines);
   b.doc["meshes"][0]["primitives"].push_back(lines);
   const Model m = load_ok(b.write(dir.path(), "m", Layout::kGlb));
-  for (std::string_view kind : {"skins", "animations", "cameras", "morph targets", "point and line",
+  for (std::string_view kind : {"skins", "animations", "morph targets", "point and line",
                                 "'KHR_materials_clearcoat'", "'KHR_lights_punctual'"}) {
     EXPECT_EQ(count_of(m.warnings, kind), 1) << kind;
   }
-  EXPECT_EQ(m.warnings.size(), 7u);
+  EXPECT_EQ(m.warnings.size(), 6u);  // cameras are read (Model::cameras), not warned about
+  EXPECT_EQ(m.cameras.size(), 1u);
   EXPECT_EQ(m.meshes[0].primitives.size(), 1u);  // the line primitives were skipped
   EXPECT_EQ(m.instances.size(), 2u);
+}
+
+// ---- Cameras ---------------------------------------------------------------------------------------------
+
+TEST(GltfCameras, ACameraNodeGivesItsWorldTransformAndLens) {
+  TempDir dir;
+  Builder b = textured_quad(ImageAt::kBufferView);
+  // The camera node is a child of a translated parent and turned 90° about +y: its −Z (the view) is world −x.
+  b.doc["nodes"] =
+      json::array({json{{"mesh", 0}}, json{{"translation", {1, 2, 3}}, {"children", {2}}},
+                   json{{"name", "deck"}, {"camera", 0}, {"rotation", {0, 0.70710678, 0, 0.70710678}}}});
+  b.doc["scenes"][0]["nodes"] = {0, 1};
+  b.doc["cameras"] = json::array(
+      {json{{"name", "bridge"},
+            {"type", "perspective"},
+            {"perspective", {{"yfov", 0.6}, {"znear", 0.5}, {"zfar", 200.0}, {"aspectRatio", 1.5}}}}});
+  const Model m = load_ok(b.write(dir.path(), "cam", Layout::kDataUri));
+  ASSERT_EQ(m.cameras.size(), 1u);
+  const Camera& c = m.cameras[0];
+  EXPECT_EQ(c.name, "bridge");
+  EXPECT_EQ(c.node_name, "deck");
+  EXPECT_TRUE(c.perspective);
+  EXPECT_FLOAT_EQ(c.yfov_rad, 0.6f);
+  EXPECT_FLOAT_EQ(c.znear, 0.5f);
+  EXPECT_FLOAT_EQ(c.zfar, 200.0f);
+  const glm::vec3 position(c.world[3]), view = -glm::vec3(c.world[2]), up(c.world[1]);
+  EXPECT_NEAR(glm::distance(position, glm::vec3(1, 2, 3)), 0.0f, 1e-6f);
+  EXPECT_NEAR(glm::distance(view, glm::vec3(-1, 0, 0)), 0.0f, 1e-6f);
+  EXPECT_NEAR(glm::distance(up, glm::vec3(0, 1, 0)), 0.0f, 1e-6f);
+}
+
+TEST(GltfCameras, BrokenCamerasAreRefusedAndOrthographicOnesMarked) {
+  TempDir dir;
+  auto with_camera = [](json camera, int node_camera = 0) {
+    Builder b = textured_quad(ImageAt::kBufferView);
+    b.doc["nodes"].push_back(json{{"camera", node_camera}});
+    b.doc["scenes"][0]["nodes"].push_back(int(b.doc["nodes"].size()) - 1);
+    b.doc["cameras"] = json::array({std::move(camera)});
+    return b;
+  };
+  const json lens = {{"type", "perspective"}, {"perspective", {{"yfov", 0.8}, {"znear", 0.1}}}};
+  json zero_fov = lens;
+  zero_fov["perspective"]["yfov"] = 0.0;
+  EXPECT_NE(load_error(with_camera(zero_fov).write(dir.path(), "a", Layout::kDataUri))
+                .find("cameras[0].perspective.yfov"),
+            std::string::npos);
+  json far_before_near = lens;
+  far_before_near["perspective"]["zfar"] = 0.05;
+  EXPECT_NE(load_error(with_camera(far_before_near).write(dir.path(), "b", Layout::kDataUri))
+                .find("cameras[0].perspective.zfar"),
+            std::string::npos);
+  EXPECT_NE(
+      load_error(with_camera(lens, 3).write(dir.path(), "c", Layout::kDataUri)).find(".camera: cameras[3]"),
+      std::string::npos);
+  const json ortho = {{"type", "orthographic"},
+                      {"orthographic", {{"xmag", 1.0}, {"ymag", 1.0}, {"znear", 0.1}, {"zfar", 10.0}}}};
+  const Model m = load_ok(with_camera(ortho).write(dir.path(), "d", Layout::kDataUri));
+  ASSERT_EQ(m.cameras.size(), 1u);
+  EXPECT_FALSE(m.cameras[0].perspective);
+  EXPECT_EQ(m.cameras[0].name, "cameras[0]");  // neither the camera nor its node has a name
 }
 
 // ---- Files that are not glTF -----------------------------------------------------------------------------
