@@ -1,5 +1,7 @@
 #include "scene/scene.h"
 
+#include "scene/gltf_camera.h"
+
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
@@ -31,6 +33,12 @@ glm::vec3 view_direction(float yaw_deg, float pitch_deg) {
   const double yaw = glm::radians(double{yaw_deg}), pitch = glm::radians(double{pitch_deg});
   return glm::vec3(
       glm::dvec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw)));
+}
+
+void read_camera_gltf(ObjectReader& r, CameraFromGltf& g) {
+  r.text("file", g.file,
+         "glTF 2.0 file (.gltf or .glb) holding the camera, relative to the scene file's folder.");
+  r.text("name", g.name, "The camera's name, or its node's, in that file; \"\" = the file's first camera.");
 }
 
 void read_camera(ObjectReader& r, Camera& c) {
@@ -65,6 +73,15 @@ void read_camera(ObjectReader& r, Camera& c) {
              "; raise far_m or lower near_m");
   r.rule("look_at", c.look_at != c.position, "different from position",
          "the view direction is look_at - position, so move look_at to the point you want to face");
+  r.block("gltf", c.gltf, read_camera_gltf,
+          "Take the camera from a glTF file: its node's position and orientation (roll included), its "
+          "vertical field of view and near and far planes. Replaces every other camera field.");
+  if (!c.gltf.file.empty()) {  // a saved scene writes an empty gltf block beside the fields
+    for (const char* field : {"position", "look_at", "yaw_deg", "pitch_deg", "fov_deg", "near_m", "far_m"})
+      r.rule(
+          field, !r.has(field), "left out when gltf is given",
+          "the glTF camera sets the view and the lens; keep either camera.gltf or the other camera fields");
+  }
 }
 
 void read_sun(ObjectReader& r, Sun& s) {
@@ -175,6 +192,7 @@ void resolve_files(Scene& scene, const std::filesystem::path& folder) {
     if (!file.empty() && std::filesystem::path(file).is_relative()) file = (folder / file).string();
   };
   resolve(scene.water.table);
+  resolve(scene.camera.gltf.file);
   resolve(scene.seafloor.texture);
   resolve(scene.seafloor.file);
   for (Object& object : scene.objects) resolve(object.file);
@@ -203,6 +221,7 @@ Result<Scene> load_scene(const std::filesystem::path& path, std::span<const std:
     if (scene) {
       scene->source = path;
       resolve_files(*scene, path.parent_path());
+      if (Result<void> camera = apply_gltf_camera(*scene, path.string()); !camera) return camera.error();
     }
     return scene;
   } catch (const std::exception& e) {  // defensive: a bug here must not take the app down
@@ -244,6 +263,8 @@ nlohmann::ordered_json scene_to_json(const Scene& scene, const std::filesystem::
     const std::filesystem::path rel = std::filesystem::relative(file, folder, ec);
     if (!ec && !rel.empty() && *rel.begin() != "..") file = rel.generic_string();
   };
+  // A glTF camera is saved as the view it gave (position, look_at, lens); its roll is not kept.
+  copy.camera.gltf = {};
   relative(copy.water.table);
   relative(copy.seafloor.texture);
   relative(copy.seafloor.file);

@@ -18,6 +18,12 @@
 namespace lagoon::scene {
 
 // World space: y is up, the mean water surface is y = 0, +z is north, +x is east; distances in metres.
+// camera.gltf: take the camera from a glTF file (issue 17) instead of position, look_at and the lens.
+struct CameraFromGltf {
+  std::string file;  // "" = none; relative paths are resolved against the scene file's folder
+  std::string name;  // the camera's (or its node's) name; "" = the file's first camera
+};
+
 struct Camera {
   glm::vec3 position{0.f, 6.f, -40.f};
   // The file's look_at, or a point computed from its yaw_deg/pitch_deg: the one aim there is to read.
@@ -25,6 +31,10 @@ struct Camera {
   float fov_deg = 55.f;  // vertical
   float near_m = 0.1f;
   float far_m = 5000.f;
+  CameraFromGltf gltf;
+  // The view's up direction: level (+y) for a camera the scene file places; a glTF camera's own up, so its
+  // roll is kept (not a file field: it comes with camera.gltf).
+  glm::vec3 up{0.f, 1.f, 0.f};
 };
 
 struct Sun {
