@@ -32,4 +32,10 @@ inline void warn_once(std::vector<std::string>& warnings, std::string message) {
   warnings.push_back(std::move(message));
 }
 
+// The extensions the loader reads (issue 17); every other one is skipped with one warning, and a file that
+// requires another one is refused.
+inline bool supported_extension(std::string_view name) {
+  return name == "KHR_lights_punctual";
+}
+
 }  // namespace lagoon::gltf::detail

@@ -116,7 +116,8 @@ std::string tidy(const std::string& message) {
 
 void warn_extensions(const tinygltf::ExtensionMap& extensions, std::vector<std::string>& warnings) {
   for (const auto& [name, value] : extensions) {
-    warn_once(warnings, "extension '" + name + "' is not supported; ignored");
+    if (!detail::supported_extension(name))
+      warn_once(warnings, "extension '" + name + "' is not supported; ignored");
   }
 }
 
@@ -279,34 +280,54 @@ Result<std::vector<Mesh>> convert_meshes(const tinygltf::Model& g, const detail:
   return meshes;
 }
 
+// The light a node carries through KHR_lights_punctual, -1 for none; a malformed reference is an error.
+Result<int> node_light(const tinygltf::Node& n, const std::string& where) {
+  const auto ext = n.extensions.find("KHR_lights_punctual");
+  if (ext == n.extensions.end()) return -1;
+  if (!ext->second.IsObject() || !ext->second.Has("light") || !ext->second.Get("light").IsNumber()) {
+    return make_error(where + ".extensions.KHR_lights_punctual: needs a \"light\" index");
+  }
+  const double index = ext->second.Get("light").GetNumberAsDouble();
+  if (!(index >= 0 && index < 1e9) || index != std::floor(index)) {
+    return make_error(where + ".extensions.KHR_lights_punctual.light: " + std::to_string(index) +
+                      " is not an index");
+  }
+  return static_cast<int>(index);
+}
+
 Result<std::vector<Instance>> convert_nodes(const tinygltf::Model& g, const Limits& limits,
-                                            std::vector<detail::CameraNode>& cameras) {
+                                            detail::Attachments& attached) {
   if (g.nodes.size() > limits.max_nodes) {
     return make_error("nodes: " + std::to_string(g.nodes.size()) + " nodes is more than the limit of " +
                       std::to_string(limits.max_nodes));
   }
   std::vector<detail::NodeDesc> nodes;
   nodes.reserve(g.nodes.size());
-  for (const tinygltf::Node& n : g.nodes) {
-    nodes.push_back({n.children, n.mesh, n.matrix, n.translation, n.rotation, n.scale, n.camera});
+  for (size_t i = 0; i < g.nodes.size(); ++i) {
+    const tinygltf::Node& n = g.nodes[i];
+    Result<int> light = node_light(n, at("nodes", static_cast<int64_t>(i)));
+    if (!light) return light.error();
+    nodes.push_back({n.children, n.mesh, n.matrix, n.translation, n.rotation, n.scale, n.camera, *light});
   }
+  attached.camera_count = g.cameras.size();
+  attached.light_count = g.lights.size();
   if (g.scenes.empty())
-    return detail::flatten_nodes(nodes, std::nullopt, "nodes", g.meshes.size(), &cameras, g.cameras.size());
+    return detail::flatten_nodes(nodes, std::nullopt, "nodes", g.meshes.size(), &attached);
   const int scene = g.defaultScene == -1 ? 0 : g.defaultScene;
   if (!valid_index(scene, g.scenes.size())) {
     return make_error("scene: scenes[" + std::to_string(scene) + "] does not exist");
   }
   return detail::flatten_nodes(nodes, g.scenes[static_cast<size_t>(scene)].nodes,
-                               at("scenes", scene) + ".nodes", g.meshes.size(), &cameras, g.cameras.size());
+                               at("scenes", scene) + ".nodes", g.meshes.size(), &attached);
 }
 
 // The camera nodes as Model::cameras; a perspective camera's numbers are checked as the spec requires.
 Result<std::vector<Camera>> convert_cameras(const tinygltf::Model& g,
-                                            const std::vector<detail::CameraNode>& nodes) {
+                                            const std::vector<detail::AttachedNode>& nodes) {
   std::vector<Camera> cameras;
-  for (const detail::CameraNode& c : nodes) {
-    const tinygltf::Camera& t = g.cameras[static_cast<size_t>(c.camera)];
-    const std::string where = at("cameras", c.camera);
+  for (const detail::AttachedNode& c : nodes) {
+    const tinygltf::Camera& t = g.cameras[static_cast<size_t>(c.index)];
+    const std::string where = at("cameras", c.index);
     Camera out;
     out.node_name = g.nodes[static_cast<size_t>(c.node)].name;
     out.name = !t.name.empty() ? t.name : !out.node_name.empty() ? out.node_name : where;
@@ -334,15 +355,63 @@ Result<std::vector<Camera>> convert_cameras(const tinygltf::Model& g,
   return cameras;
 }
 
+// The light nodes as Model::lights, their numbers checked as KHR_lights_punctual requires.
+Result<std::vector<Light>> convert_lights(const tinygltf::Model& g,
+                                          const std::vector<detail::AttachedNode>& nodes) {
+  std::vector<Light> lights;
+  for (const detail::AttachedNode& l : nodes) {
+    const tinygltf::Light& t = g.lights[static_cast<size_t>(l.index)];
+    const std::string where = "extensions.KHR_lights_punctual.lights[" + std::to_string(l.index) + "]";
+    Light out;
+    const std::string& node_name = g.nodes[static_cast<size_t>(l.node)].name;
+    out.name = !t.name.empty()      ? t.name
+               : !node_name.empty() ? node_name
+                                    : "lights[" + std::to_string(l.index) + "]";
+    if (t.type == "point") {
+      out.type = Light::Type::Point;
+    } else if (t.type == "spot") {
+      out.type = Light::Type::Spot;
+    } else if (t.type == "directional") {
+      out.type = Light::Type::Directional;
+    } else {
+      return make_error(where + ".type: '" + t.type + "' is not point, spot or directional");
+    }
+    if (!t.color.empty()) {
+      if (t.color.size() != 3 ||
+          !std::all_of(t.color.begin(), t.color.end(), [](double c) { return c >= 0 && c <= 1e6; }))
+        return make_error(where + ".color: expected three numbers from 0 up");
+      out.colour = glm::vec3(float(t.color[0]), float(t.color[1]), float(t.color[2]));
+    }
+    if (!(t.intensity >= 0 && t.intensity <= 1e12))
+      return make_error(where + ".intensity: must be 0 or more");
+    if (!(t.range >= 0 && t.range <= 1e9)) return make_error(where + ".range: must be above 0 (or absent)");
+    out.intensity = float(t.intensity);
+    out.range_m = float(t.range);
+    if (out.type == Light::Type::Spot) {
+      const double inner = t.spot.innerConeAngle, outer = t.spot.outerConeAngle;
+      if (!(inner >= 0 && inner < outer && outer <= 1.5707963268)) {
+        return make_error(where + ".spot: needs 0 <= innerConeAngle < outerConeAngle <= pi/2");
+      }
+      out.inner_cone_rad = float(inner);
+      out.outer_cone_rad = float(outer);
+    }
+    out.world = glm::mat4(l.world);
+    lights.push_back(std::move(out));
+  }
+  return lights;
+}
+
 Result<Model> convert(const tinygltf::Model& g, const Limits& limits, std::vector<std::string> warnings) {
   Model model;
   warn_unsupported(g, warnings);
   // Cheap structural checks first, so a broken file fails before images are decoded.
-  std::vector<detail::CameraNode> camera_nodes;
-  Result<std::vector<Instance>> instances = convert_nodes(g, limits, camera_nodes);
+  detail::Attachments attached;
+  Result<std::vector<Instance>> instances = convert_nodes(g, limits, attached);
   if (!instances) return instances.error();
-  Result<std::vector<Camera>> cameras = convert_cameras(g, camera_nodes);
+  Result<std::vector<Camera>> cameras = convert_cameras(g, attached.cameras);
   if (!cameras) return cameras.error();
+  Result<std::vector<Light>> lights = convert_lights(g, attached.lights);
+  if (!lights) return lights.error();
   Result<detail::Accessors> accessors = build_accessors(g);
   if (!accessors) return accessors.error();
   std::map<int, int> image_slots;
@@ -357,6 +426,7 @@ Result<Model> convert(const tinygltf::Model& g, const Limits& limits, std::vecto
   model.textures = std::move(*textures);
   model.instances = std::move(*instances);
   model.cameras = std::move(*cameras);
+  model.lights = std::move(*lights);
   model.warnings = std::move(warnings);
   detail::compute_bounds(model);
   return model;

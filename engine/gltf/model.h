@@ -55,12 +55,26 @@ struct Camera {
   float zfar = 0.0f;        // perspective: far plane, metres (0 = infinite)
 };
 
+// A KHR_lights_punctual light on a node of the default scene. Units are glTF's: point and spot lights in
+// candela (lm/sr), directional lights in lux; colour linear RGB.
+struct Light {
+  enum class Type { Point, Spot, Directional };
+  std::string name;  // the light's name, else its node's, else "lights[i]"
+  Type type = Type::Point;
+  glm::vec3 colour{1.0f};
+  float intensity = 1.0f;
+  float range_m = 0.0f;                                      // 0 = infinite
+  float inner_cone_rad = 0.0f, outer_cone_rad = 0.7853982f;  // spot lights
+  glm::mat4 world{1.0f};  // its node's; the light sits at the origin and shines down −z
+};
+
 struct Model {
   std::vector<Mesh> meshes;
   std::vector<Material> materials;
   std::vector<Texture> textures;  // only the images some material uses as base colour, each once
   std::vector<Instance> instances;
   std::vector<Camera> cameras;             // one per camera node of the default scene, in depth-first order
+  std::vector<Light> lights;               // one per KHR_lights_punctual light node of the default scene
   glm::vec3 bounds_min{0}, bounds_max{0};  // of all instances in world space; zero when there are none
   // One per unsupported feature kind (e.g. "skins are not supported; drawn in bind pose"), not per
   // occurrence: the model still loads, but looks different from what its author saw.

@@ -142,7 +142,7 @@ Result<Instance> mesh_instance(const NodeDesc& n, const glm::dmat4& world, const
 Result<std::vector<Instance>> flatten_nodes(const std::vector<NodeDesc>& nodes,
                                             const std::optional<std::vector<int>>& roots,
                                             const std::string& roots_where, size_t mesh_count,
-                                            std::vector<CameraNode>* cameras, size_t camera_count) {
+                                            Attachments* attached) {
   Result<std::vector<int>> parent = parents(nodes);
   if (!parent) return parent.error();
   if (Result<void> r = check_cycles(*parent); !r) return r.error();
@@ -173,11 +173,18 @@ Result<std::vector<Instance>> flatten_nodes(const std::vector<NodeDesc>& nodes,
       if (!instance) return instance.error();
       instances.push_back(*instance);
     }
-    if (n.camera != -1 && cameras) {
-      if (!valid_index(n.camera, camera_count)) {
+    if (attached && n.camera != -1) {
+      if (!valid_index(n.camera, attached->camera_count)) {
         return make_error(where + ".camera: cameras[" + std::to_string(n.camera) + "] does not exist");
       }
-      cameras->push_back({p.node, n.camera, world});
+      attached->cameras.push_back({p.node, n.camera, world});
+    }
+    if (attached && n.light != -1) {
+      if (!valid_index(n.light, attached->light_count)) {
+        return make_error(where + ".extensions.KHR_lights_punctual.light: lights[" + std::to_string(n.light) +
+                          "] does not exist");
+      }
+      attached->lights.push_back({p.node, n.light, world});
     }
     for (auto it = n.children.rbegin(); it != n.children.rend(); ++it)
       stack.push_back({*it, world, p.depth + 1});

@@ -20,13 +20,21 @@ struct NodeDesc {
   std::vector<double> rotation;     // 4, quaternion x, y, z, w
   std::vector<double> scale;        // 3
   int camera = -1;
+  int light = -1;  // KHR_lights_punctual
 };
 
-// A node that carries a camera, and its world transform.
-struct CameraNode {
+// A node that carries a camera or a light (`index` into the file's cameras or lights), and its world
+// transform.
+struct AttachedNode {
   int node = -1;
-  int camera = -1;
+  int index = -1;
   glm::dmat4 world{1.0};
+};
+
+// Where flatten_nodes puts the nodes with a camera or a light, and how many the file has (to check indices).
+struct Attachments {
+  std::vector<AttachedNode> cameras, lights;
+  size_t camera_count = 0, light_count = 0;
 };
 
 // Deeper hierarchies are refused: no real asset nests a thousand levels, a hostile one could nest 100 000.
@@ -34,11 +42,10 @@ constexpr size_t kMaxNodeDepth = 1000;
 
 // Instances of every node with a mesh under `roots` (a scene's node list, named `roots_where` in
 // messages), in depth-first order; without roots (a file with no scenes), under every parentless node.
-// The nodes with a camera go to `cameras` when given (their camera index checked against camera_count).
+// The nodes with a camera or a light go to `attached` when given (their indices checked).
 Result<std::vector<Instance>> flatten_nodes(const std::vector<NodeDesc>& nodes,
                                             const std::optional<std::vector<int>>& roots,
                                             const std::string& roots_where, size_t mesh_count,
-                                            std::vector<CameraNode>* cameras = nullptr,
-                                            size_t camera_count = 0);
+                                            Attachments* attached = nullptr);
 
 }  // namespace lagoon::gltf::detail

@@ -62,18 +62,19 @@ Result<void> check_version(const json& root) {
   return {};
 }
 
-// No extension is implemented, so any required one means the file cannot be drawn correctly.
+// A required extension the loader does not read means the file cannot be drawn correctly.
 Result<void> check_extensions(const json& root, std::vector<std::string>& warnings) {
   std::string required;
   for (const json& name : array_member(root, "extensionsRequired")) {
-    if (name.is_string()) required += (required.empty() ? "'" : ", '") + name.get<std::string>() + "'";
+    if (name.is_string() && !supported_extension(name.get<std::string>()))
+      required += (required.empty() ? "'" : ", '") + name.get<std::string>() + "'";
   }
   if (!required.empty()) {
     return make_error("extensionsRequired: " + required +
                       " not supported by Lagoon (the file cannot be shown without it)");
   }
   for (const json& name : array_member(root, "extensionsUsed")) {
-    if (name.is_string()) {
+    if (name.is_string() && !supported_extension(name.get<std::string>())) {
       warn_once(warnings, "extension '" + name.get<std::string>() + "' is not supported; ignored");
     }
   }

@@ -477,11 +477,13 @@ TEST(GltfWarnings, UnsupportedFeaturesWarnOncePerKind) {
   b.doc["meshes"][0]["primitives"].push_back(lines);
   b.doc["meshes"][0]["primitives"].push_back(lines);
   const Model m = load_ok(b.write(dir.path(), "m", Layout::kGlb));
-  for (std::string_view kind : {"skins", "animations", "morph targets", "point and line",
-                                "'KHR_materials_clearcoat'", "'KHR_lights_punctual'"}) {
+  for (std::string_view kind :
+       {"skins", "animations", "morph targets", "point and line", "'KHR_materials_clearcoat'"}) {
     EXPECT_EQ(count_of(m.warnings, kind), 1) << kind;
   }
-  EXPECT_EQ(m.warnings.size(), 6u);  // cameras are read (Model::cameras), not warned about
+  // Cameras (Model::cameras) and KHR_lights_punctual (Model::lights) are read, not warned about.
+  EXPECT_EQ(count_of(m.warnings, "KHR_lights_punctual"), 0);
+  EXPECT_EQ(m.warnings.size(), 5u);
   EXPECT_EQ(m.cameras.size(), 1u);
   EXPECT_EQ(m.meshes[0].primitives.size(), 1u);  // the line primitives were skipped
   EXPECT_EQ(m.instances.size(), 2u);
@@ -545,6 +547,52 @@ TEST(GltfCameras, BrokenCamerasAreRefusedAndOrthographicOnesMarked) {
   ASSERT_EQ(m.cameras.size(), 1u);
   EXPECT_FALSE(m.cameras[0].perspective);
   EXPECT_EQ(m.cameras[0].name, "cameras[0]");  // neither the camera nor its node has a name
+}
+
+TEST(GltfLights, PunctualLightsComeWithTheirNodesWorldTransform) {
+  TempDir dir;
+  Builder b = textured_quad(ImageAt::kBufferView);
+  b.doc["extensionsUsed"] = {"KHR_lights_punctual"};
+  b.doc["extensionsRequired"] = {"KHR_lights_punctual"};  // read, so requiring it is fine
+  b.doc["extensions"] = {
+      {"KHR_lights_punctual",
+       {{"lights", json::array({json{{"name", "lamp"},
+                                     {"type", "point"},
+                                     {"color", {1.0, 0.5, 0.25}},
+                                     {"intensity", 40.0},
+                                     {"range", 12.0}},
+                                json{{"type", "spot"},
+                                     {"intensity", 5.0},
+                                     {"spot", {{"innerConeAngle", 0.2}, {"outerConeAngle", 0.5}}}},
+                                json{{"type", "directional"}, {"intensity", 3.0}}})}}}};
+  b.doc["nodes"] = json::array({json{{"mesh", 0}, {"translation", {0, 1, 0}}, {"children", {1, 2}}},
+                                json{{"name", "mast"},
+                                     {"translation", {0, 2, 0}},
+                                     {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}},
+                                json{{"extensions", {{"KHR_lights_punctual", {{"light", 1}}}}}}});
+  b.doc["scenes"][0]["nodes"] = {0};
+  const Model m = load_ok(b.write(dir.path(), "lamp", Layout::kDataUri));
+  EXPECT_TRUE(m.warnings.empty()) << m.warnings.front();
+  ASSERT_EQ(m.lights.size(), 2u);  // the directional light's node is not in the scene
+  const Light& lamp = m.lights[0];
+  EXPECT_EQ(lamp.name, "lamp");
+  EXPECT_EQ(lamp.type, Light::Type::Point);
+  EXPECT_EQ(lamp.colour, glm::vec3(1.0f, 0.5f, 0.25f));
+  EXPECT_FLOAT_EQ(lamp.intensity, 40.0f);
+  EXPECT_FLOAT_EQ(lamp.range_m, 12.0f);
+  EXPECT_NEAR(glm::distance(glm::vec3(lamp.world[3]), glm::vec3(0, 3, 0)), 0.0f, 1e-6f);
+  EXPECT_EQ(m.lights[1].type, Light::Type::Spot);
+  EXPECT_FLOAT_EQ(m.lights[1].outer_cone_rad, 0.5f);
+  EXPECT_EQ(m.lights[1].name, "lights[1]");
+  // Broken references and numbers are refused, naming them.
+  b.doc["nodes"][1]["extensions"]["KHR_lights_punctual"]["light"] = 7;
+  EXPECT_NE(
+      load_error(b.write(dir.path(), "bad1", Layout::kDataUri)).find("KHR_lights_punctual.light: lights[7]"),
+      std::string::npos);
+  b.doc["nodes"][1]["extensions"]["KHR_lights_punctual"]["light"] = 0;
+  b.doc["extensions"]["KHR_lights_punctual"]["lights"][0]["intensity"] = -1.0;
+  EXPECT_NE(load_error(b.write(dir.path(), "bad2", Layout::kDataUri)).find("lights[0].intensity"),
+            std::string::npos);
 }
 
 // ---- Files that are not glTF -----------------------------------------------------------------------------
