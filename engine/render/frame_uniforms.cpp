@@ -41,10 +41,11 @@ OceanShading ocean_shading(const ocean::GpuOcean& ocean) {
   return out;
 }
 
-uint32_t write_point_lights(const scene::Scene& scene, gpu::PointLightGpu* out) {
-  const uint32_t count = uint32_t(std::min<size_t>(scene.lights.size(), LAGOON_MAX_LIGHTS));
+uint32_t write_point_lights(const scene::Scene& scene, const std::vector<scene::PointLight>& more,
+                            gpu::PointLightGpu* out) {
+  const uint32_t count = uint32_t(std::min<size_t>(scene.lights.size() + more.size(), LAGOON_MAX_LIGHTS));
   for (uint32_t i = 0; i < count; ++i) {
-    const scene::PointLight& l = scene.lights[i];
+    const scene::PointLight& l = i < scene.lights.size() ? scene.lights[i] : more[i - scene.lights.size()];
     out[i] = {.position_range = glm::vec4(l.position, l.range_m),
               .colour = glm::vec4(l.colour * l.intensity, 0)};
   }

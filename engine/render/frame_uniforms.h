@@ -40,6 +40,7 @@ struct FrameInputs {
 gpu::FrameUniforms frame_uniforms(const FrameInputs& in);
 
 // The scene's point lights (at most LAGOON_MAX_LIGHTS) into `out`; returns how many were written.
-uint32_t write_point_lights(const scene::Scene& scene, gpu::PointLightGpu* out);
+uint32_t write_point_lights(const scene::Scene& scene, const std::vector<scene::PointLight>& more,
+                            gpu::PointLightGpu* out);
 
 }  // namespace lagoon::render

@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "render/camera.h"
+#include "render/sky_light.h"
 #include "render/surface_grid.h"
 #include "vk/barriers.h"
 #include "vk/transfer.h"
@@ -144,7 +145,8 @@ FrameContext OceanRenderer::begin_frame(VkCommandBuffer cmd, const scene::Scene&
   place_floating_objects(scene.time_s);
   wakes_->follow_camera(scene);
   const uint32_t light_count =
-      write_point_lights(scene, reinterpret_cast<gpu::PointLightGpu*>(slot.lights.mapped()));
+      write_point_lights(scene, objects_->gltf_lights(reference_illuminance_lux(scene.sun)),
+                         reinterpret_cast<gpu::PointLightGpu*>(slot.lights.mapped()));
   slot.lights.flush();
   write_sediment(scene.time_s, slot);
   const CameraMatrices cam = camera_matrices(scene.camera, float(extent.width) / float(extent.height));

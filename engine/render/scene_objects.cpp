@@ -47,7 +47,12 @@ Result<std::unique_ptr<SceneObjects>> SceneObjects::load(vk::Context& ctx, const
   for (size_t o = 0; o < scene.objects.size(); ++o) {
     const std::string field = "objects[" + std::to_string(o) + "].file";
     const size_t first = objects->objects_.size();
-    if (auto r = objects->load_model(scene.objects[o].file, object_transform(scene.objects[o]), field); !r)
+    objects->object_world_.push_back(object_transform(scene.objects[o]));
+    const std::optional<size_t> lights_of =
+        scene.objects[o].lights_from_gltf ? std::optional(o) : std::nullopt;
+    if (auto r =
+            objects->load_model(scene.objects[o].file, object_transform(scene.objects[o]), field, lights_of);
+        !r)
       return r.error();
     objects->object_draws_.push_back({first, objects->objects_.size()});
   }
@@ -85,9 +90,10 @@ Result<void> SceneObjects::load_floor(const scene::Scene& scene) {
 }
 
 Result<void> SceneObjects::load_model(const std::string& file, const glm::mat4& transform,
-                                      const std::string& field) {
+                                      const std::string& field, std::optional<size_t> lights_of) {
   auto model = gltf::load_gltf(file);
   if (!model) return make_error(field + ": " + model.error().message);
+  if (lights_of) add_lights(*model, *lights_of, file);
   for (const std::string& warning : model->warnings)
     std::fprintf(stderr, "lagoon: warning: %s: %s\n", file.c_str(), warning.c_str());
   const int texture_base = int(textures_.size());
@@ -116,7 +122,34 @@ Result<void> SceneObjects::load_model(const std::string& file, const glm::mat4& 
   return {};
 }
 
+void SceneObjects::add_lights(const gltf::Model& model, size_t object, const std::string& file) {
+  for (const gltf::Light& light : model.lights) {
+    if (light.type == gltf::Light::Type::Directional) {
+      std::fprintf(stderr,
+                   "lagoon: warning: %s: directional light '%s' ignored: the sun is the scene's one\n",
+                   file.c_str(), light.name.c_str());
+      continue;
+    }
+    if (light.type == gltf::Light::Type::Spot)
+      std::fprintf(stderr, "lagoon: warning: %s: spot light '%s' is drawn as a point light (no cone)\n",
+                   file.c_str(), light.name.c_str());
+    lights_.push_back({object, light.world, light.colour, light.intensity, light.range_m});
+  }
+}
+
+std::vector<scene::PointLight> SceneObjects::gltf_lights(double reference_lux) const {
+  std::vector<scene::PointLight> out;
+  for (const ModelLight& l : lights_) {
+    const glm::vec4 at = object_world_[l.object] * l.local * glm::vec4(0, 0, 0, 1);
+    const float intensity = float(l.candela / reference_lux);
+    const float range = l.range_m > 0 ? l.range_m : std::clamp(std::sqrt(intensity / 1e-4f), 0.1f, 1e5f);
+    out.push_back({.position = glm::vec3(at), .colour = l.colour, .intensity = intensity, .range_m = range});
+  }
+  return out;
+}
+
 void SceneObjects::place(size_t object, const glm::mat4& model_to_world) {
+  if (object < object_world_.size()) object_world_[object] = model_to_world;
   const auto [first, end] = object_draws_.at(object);
   for (size_t d = first; d < end; ++d) {
     objects_[d].world = model_to_world * objects_[d].local;

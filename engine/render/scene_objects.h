@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/result.h"
+#include "gltf/model.h"
 #include "render/frame_context.h"
 #include "render/gpu_mesh.h"
 #include "render/samplers.h"
@@ -35,11 +36,19 @@ class SceneObjects {
   // Moves scene object `object` (objects[object], then vehicles[object - objects.size()]) to
   // `model_to_world`: a floating body's or a vehicle's pose.
   void place(size_t object, const glm::mat4& model_to_world);
+  // The objects' glTF lights (objects[].lights_from_gltf) where their objects are now, as scene point
+  // lights: a light of I candela has intensity I / reference_lux (the irradiance 1 m away in units of the
+  // light above the water, render::reference_illuminance_lux); without a glTF range, range_m is where that
+  // irradiance falls to 1e-4.
+  std::vector<scene::PointLight> gltf_lights(double reference_lux) const;
 
  private:
   SceneObjects(vk::Context& ctx, const Samplers& samplers) : ctx_(ctx), samplers_(samplers) {}
   Result<void> load_floor(const scene::Scene& scene);
-  Result<void> load_model(const std::string& file, const glm::mat4& transform, const std::string& field);
+  // `lights_of`: the scene object whose lights the model's KHR_lights_punctual lights become (none: ignored).
+  Result<void> load_model(const std::string& file, const glm::mat4& transform, const std::string& field,
+                          std::optional<size_t> lights_of = std::nullopt);
+  void add_lights(const gltf::Model& model, size_t object, const std::string& file);
   void draw_mesh(const FrameContext& frame, gpu::MeshMode mode, const GpuMesh& mesh,
                  const gpu::MeshPush& push, const vk::Image& texture) const;
 
@@ -56,6 +65,14 @@ class SceneObjects {
   const Samplers& samplers_;
   std::vector<ObjectDraw> objects_;
   std::vector<std::pair<size_t, size_t>> object_draws_;  // per scene object, its range in objects_
+  struct ModelLight {
+    size_t object;
+    glm::mat4 local;  // the light's node within its model
+    glm::vec3 colour;
+    float candela, range_m;
+  };
+  std::vector<ModelLight> lights_;
+  std::vector<glm::mat4> object_world_;  // per scene object with lights: its model-to-world transform
   std::vector<vk::Image> textures_;
   vk::Image white_texture_;
   std::optional<GpuMesh> floor_;

@@ -5,6 +5,7 @@
 #include <memory>
 #include <mutex>
 
+#include "optics/cie.h"
 #include "optics/colour.h"
 #include "optics/sky_radiance.h"
 #include "render/camera.h"
@@ -68,6 +69,15 @@ SkyLight sky_light(const scene::Sun& sun, const optics::SkyParams& params) {
   light.sun_disc_radiance = glm::vec3(sun_h / cos_zenith * scale * 3.14159265358979323846 / disc_solid_angle);
   if (sun.elevation_deg < -0.5) light.sun_irradiance = light.sun_disc_radiance = glm::vec3(0);
   return light;
+}
+
+double reference_illuminance_lux(const scene::Sun& sun, const optics::SkyParams& params) {
+  const std::shared_ptr<const optics::SkyRadiance> model =
+      sky_model_for(std::max<double>(sun.elevation_deg, 2.0), params);
+  optics::Spectrum white{};
+  for (int i = 0; i < optics::kSamples; ++i)
+    white[i] = model->irradiance().sun[i] + model->irradiance().sky[i];
+  return 683.0 * optics::spectrum_to_xyz(white).y;
 }
 
 }  // namespace lagoon::render

@@ -30,4 +30,9 @@ struct SkyLight {
 
 SkyLight sky_light(const scene::Sun& sun, const optics::SkyParams& params = {});
 
+// The illuminance (lux) of the light above the water the white units refer to, E_sun + E_sky on a horizontal
+// surface (the sun clamped to 2° as for the colours): 683 lm/W times the CIE-Y integral of the optics model's
+// spectra. A lamp's irradiance in white units is its lux over this.
+double reference_illuminance_lux(const scene::Sun& sun, const optics::SkyParams& params = {});
+
 }  // namespace lagoon::render

@@ -136,6 +136,7 @@ struct Object {
   glm::vec3 rotation_deg{0.f};  // yaw (about y), pitch (about x), roll (about z), applied in that order
   float scale = 1.f;
   Floating floating;
+  bool lights_from_gltf = true;  // the file's KHR_lights_punctual lights join the scene's lights
 };
 
 // Where a vehicle goes (vehicles[].path): a smooth curve through the waypoints (x, z), travelled at a

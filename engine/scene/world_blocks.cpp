@@ -250,6 +250,10 @@ void read_object(ObjectReader& r, Object& o) {
          "raises the model's +z end), then roll about the model's z axis; see Objects below.");
   r.number("scale", o.scale, Bounds::above_up_to(0, 1000), "", "Uniform scale of the model.");
   r.block("floating", o.floating, read_floating, "An object that rides the waves (docs/physics.md).");
+  r.flag(
+      "lights_from_gltf", o.lights_from_gltf,
+      "The model's KHR_lights_punctual lights (a buoy's lamp, a boat's lanterns) join the scene's lights "
+      "and move with it; point and spot lights are drawn as point lights (docs/scene-format.md, Objects).");
 }
 
 void read_light(ObjectReader& r, PointLight& l) {

@@ -960,7 +960,7 @@ TEST(SceneWorld, WrongTypesAndNames) {
       {R"({"objects": ["a.glb"]})", "objects[0]: expected an object {...}, got string \"a.glb\""},
       {R"({"objects": [{"file": "a.glb", "colour": [1, 0, 0]}]})",
        "objects[0].colour: unknown field; Fields allowed in objects[0]: name, file, position, "
-       "rotation_deg, scale, floating, comment"},
+       "rotation_deg, scale, floating, lights_from_gltf, comment"},
       {R"({"lights": [{"range": 5}]})", "lights[0].range: unknown field; did you mean 'range_m'?"},
       {R"({"render": {"tone_map": "reinhard"}})",
        "render.tone_map: string \"reinhard\" is not one of the allowed names; allowed: \"belyaev\", "
