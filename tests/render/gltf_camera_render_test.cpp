@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "render/ocean_renderer.h"
+#include "support/image_compare.h"
 #include "support/temp_dir.h"
 #include "support/vk_fixture.h"
 
@@ -15,6 +16,10 @@ namespace lagoon::test {
 namespace {
 
 using nlohmann::json;
+
+int max_channel_difference(const io::Image8& a, const io::Image8& b) {
+  return compare_images(a, b, {}).max_channel_difference;
+}
 
 class GltfCameraRender : public GpuTest {
  protected:
@@ -56,13 +61,6 @@ class GltfCameraRender : public GpuTest {
   }
 };
 
-int max_difference(const io::Image8& a, const io::Image8& b) {
-  int worst = 0;
-  for (size_t i = 0; i < a.rgba.size(); ++i)
-    worst = std::max(worst, std::abs(int(a.rgba[i]) - int(b.rgba[i])));
-  return worst;
-}
-
 // Mean over the rows (along_rows) or the columns of the variance of the pixels' luminance along each.
 double variation(const io::Image8& img, bool along_rows) {
   const uint32_t lines = along_rows ? img.height : img.width, length = along_rows ? img.width : img.height;
@@ -83,7 +81,7 @@ TEST_F(GltfCameraRender, SeesWhatTheSameSceneCameraSeesAndItsRollTurnsThePicture
   const io::Image8 from_gltf = render_with_camera({{"gltf", {{"file", "cams.gltf"}, {"name", "level"}}}});
   const io::Image8 written = render_with_camera(
       {{"position", {0, 4, -30}}, {"yaw_deg", 0}, {"pitch_deg", 0}, {"fov_deg", 40}, {"near_m", 0.1}});
-  EXPECT_LE(max_difference(from_gltf, written), 2) << "the glTF camera and the scene's own differ";
+  EXPECT_LE(max_channel_difference(from_gltf, written), 2) << "the glTF camera and the scene's own differ";
   // Rolled 90°: the horizon runs down the picture. Level, the picture varies along its columns (sky above,
   // sea below) more than along its rows; rolled, the other way round.
   const io::Image8 rolled = render_with_camera({{"gltf", {{"file", "cams.gltf"}, {"name", "rolled"}}}});

@@ -9,6 +9,7 @@
 
 #include "render/ocean_renderer.h"
 #include "render/sky_light.h"
+#include "support/image_compare.h"
 #include "support/temp_dir.h"
 #include "support/vk_fixture.h"
 
@@ -16,6 +17,10 @@ namespace lagoon::test {
 namespace {
 
 using nlohmann::json;
+
+int max_channel_difference(const io::Image8& a, const io::Image8& b) {
+  return compare_images(a, b, {}).max_channel_difference;
+}
 
 constexpr double kCandela = 4.0e6;  // a bright lamp: the scene light below is then intensity ~40 at night
 
@@ -66,13 +71,6 @@ class GltfLightsRender : public GpuTest {
   }
 };
 
-int max_difference(const io::Image8& a, const io::Image8& b) {
-  int worst = 0;
-  for (size_t i = 0; i < a.rgba.size(); ++i)
-    worst = std::max(worst, std::abs(int(a.rgba[i]) - int(b.rgba[i])));
-  return worst;
-}
-
 int brightest_red(const io::Image8& img) {
   int best = 0;
   for (uint32_t y = 50; y < 90; ++y)
@@ -89,7 +87,7 @@ TEST_F(GltfLightsRender, AnObjectsLampIsTheSceneLampItStandsFor) {
       json::array({json{
           {"position", {0, 4, 25}}, {"colour", {1, 0.8, 0.5}}, {"intensity", intensity}, {"range_m", 80}}}));
   const io::Image8 a = render(with_gltf), b = render(written);
-  EXPECT_LE(max_difference(a, b), 1);
+  EXPECT_LE(max_channel_difference(a, b), 1);
   json off = object;
   off["lights_from_gltf"] = false;
   const io::Image8 dark = render(night(json::array({off}), json::array()));
