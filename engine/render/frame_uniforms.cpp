@@ -7,6 +7,7 @@
 #include "optics/colour.h"
 #include "render/seafloor.h"
 #include "render/sky_light.h"
+#include "shared/light_spot.h"
 
 namespace lagoon::render {
 namespace {
@@ -46,8 +47,13 @@ uint32_t write_point_lights(const scene::Scene& scene, const std::vector<scene::
   const uint32_t count = uint32_t(std::min<size_t>(scene.lights.size() + more.size(), LAGOON_MAX_LIGHTS));
   for (uint32_t i = 0; i < count; ++i) {
     const scene::PointLight& l = i < scene.lights.size() ? scene.lights[i] : more[i - scene.lights.size()];
+    const bool spot = l.spot_outer_deg < 180.f;
+    const glm::vec2 cone = spot ? gpu::spot_cone(std::cos(glm::radians(l.spot_inner_deg)),
+                                                 std::cos(glm::radians(l.spot_outer_deg)))
+                                : glm::vec2(0.0f, 1.0f);
     out[i] = {.position_range = glm::vec4(l.position, l.range_m),
-              .colour = glm::vec4(l.colour * l.intensity, 0)};
+              .colour = glm::vec4(l.colour * l.intensity, cone.x),
+              .spot = glm::vec4(glm::normalize(l.spot_direction), cone.y)};
   }
   return count;
 }

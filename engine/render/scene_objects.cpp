@@ -130,10 +130,10 @@ void SceneObjects::add_lights(const gltf::Model& model, size_t object, const std
                    file.c_str(), light.name.c_str());
       continue;
     }
-    if (light.type == gltf::Light::Type::Spot)
-      std::fprintf(stderr, "lagoon: warning: %s: spot light '%s' is drawn as a point light (no cone)\n",
-                   file.c_str(), light.name.c_str());
-    lights_.push_back({object, light.world, light.colour, light.intensity, light.range_m});
+    const bool spot = light.type == gltf::Light::Type::Spot;
+    lights_.push_back({object, light.world, light.colour, light.intensity, light.range_m,
+                       spot ? glm::degrees(light.inner_cone_rad) : 0.0f,
+                       spot ? glm::degrees(light.outer_cone_rad) : 180.0f});
   }
 }
 
@@ -143,7 +143,15 @@ std::vector<scene::PointLight> SceneObjects::gltf_lights(double reference_lux) c
     const glm::vec4 at = object_world_[l.object] * l.local * glm::vec4(0, 0, 0, 1);
     const float intensity = float(l.candela / reference_lux);
     const float range = l.range_m > 0 ? l.range_m : std::clamp(std::sqrt(intensity / 1e-4f), 0.1f, 1e5f);
-    out.push_back({.position = glm::vec3(at), .colour = l.colour, .intensity = intensity, .range_m = range});
+    // glTF lights shine down their node's −z.
+    const glm::vec3 axis = glm::vec3(object_world_[l.object] * l.local * glm::vec4(0, 0, -1, 0));
+    out.push_back({.position = glm::vec3(at),
+                   .colour = l.colour,
+                   .intensity = intensity,
+                   .range_m = range,
+                   .spot_direction = glm::length(axis) > 0 ? axis : glm::vec3(0, -1, 0),
+                   .spot_inner_deg = l.inner_deg,
+                   .spot_outer_deg = l.outer_deg});
   }
   return out;
 }

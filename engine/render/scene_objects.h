@@ -39,7 +39,7 @@ class SceneObjects {
   // The objects' glTF lights (objects[].lights_from_gltf) where their objects are now, as scene point
   // lights: a light of I candela has intensity I / reference_lux (the irradiance 1 m away in units of the
   // light above the water, render::reference_illuminance_lux); without a glTF range, range_m is where that
-  // irradiance falls to 1e-4.
+  // irradiance falls to 1e-4. Spot lights keep their cone, along their node's −z.
   std::vector<scene::PointLight> gltf_lights(double reference_lux) const;
 
  private:
@@ -70,6 +70,7 @@ class SceneObjects {
     glm::mat4 local;  // the light's node within its model
     glm::vec3 colour;
     float candela, range_m;
+    float inner_deg, outer_deg;  // a spot's cone; outer 180 = a point light
   };
   std::vector<ModelLight> lights_;
   std::vector<glm::mat4> object_world_;  // per scene object with lights: its model-to-world transform

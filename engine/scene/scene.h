@@ -198,6 +198,11 @@ struct PointLight {
   glm::vec3 colour{1.f, 0.9f, 0.7f};  // linear RGB
   float intensity = 1.f;              // irradiance at 1 m, in units of the sun's (white = 1)
   float range_m = 50.f;               // beyond this the light has no effect
+  // A spot light: the direction it shines and its cone (full inside inner, none outside outer); an outer
+  // angle of 180° is a point light.
+  glm::vec3 spot_direction{0.f, -1.f, 0.f};
+  float spot_inner_deg = 0.f;
+  float spot_outer_deg = 180.f;
 };
 
 struct Scene {

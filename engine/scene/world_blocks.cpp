@@ -265,6 +265,17 @@ void read_light(ObjectReader& r, PointLight& l) {
            "the distance.");
   r.number("range_m", l.range_m, Bounds::above_up_to(0, 100000), "m",
            "Beyond this distance the light has no effect (bounds its cost).");
+  r.vec3("spot_direction", l.spot_direction, "m", "A spot light: the direction it shines (any length).");
+  r.number("spot_inner_deg", l.spot_inner_deg, Bounds::between(0, 180), "deg",
+           "A spot light: half-angle of the cone it lights fully.");
+  r.number(
+      "spot_outer_deg", l.spot_outer_deg, Bounds::between(0, 180), "deg",
+      "A spot light: half-angle beyond which it lights nothing, fading from spot_inner_deg; 180 = a point "
+      "light (KHR_lights_punctual's spot cone).");
+  r.rule("spot_outer_deg", l.spot_outer_deg > l.spot_inner_deg, "> spot_inner_deg",
+         "the light fades from the inner to the outer angle; raise spot_outer_deg");
+  r.rule("spot_direction", glm::length(l.spot_direction) > 0, "not [0, 0, 0]",
+         "give the direction the spot shines, e.g. [0, -1, 0] straight down");
 }
 
 void read_classic(ObjectReader& r, ClassicMaterial& m) {

@@ -3,6 +3,8 @@
 #ifndef LAGOON_COMMON_LIGHT_GLSL
 #define LAGOON_COMMON_LIGHT_GLSL
 
+#include "shared/light_spot.h"
+
 vec3 sky_radiance(FrameUniforms f, vec3 dir, bool with_sun) {
   // Below the horizon: the horizon's colour (distant sea haze); sky_model_rgb clamps the elevation.
   vec3 sky = sky_model_rgb(f.sky, dir, f.sun_dir.xyz);
@@ -29,12 +31,17 @@ float light_range_window(float dist2, float range) {
   return window * window;
 }
 
+// A spot light's cone (shared/light_spot.h); 1 for a point light.
+float light_cone(PointLightGpu light, vec3 from_light) {
+  return spot_attenuation(light.spot.xyz, light.colour.w, light.spot.w, from_light);
+}
+
 vec3 point_light_irradiance(PointLightGpu light, vec3 p, vec3 n, out vec3 to_light) {
   vec3 d = light.position_range.xyz - p;
   float dist2 = max(dot(d, d), 1e-4);
   to_light = d * inversesqrt(dist2);
   return light.colour.rgb * (light_range_window(dist2, light.position_range.w) / dist2) *
-         max(dot(n, to_light), 0.0);
+         max(dot(n, to_light), 0.0) * light_cone(light, -to_light);
 }
 
 #endif

@@ -38,7 +38,7 @@ vec3 lamp_above_irradiance(PointLightGpu light, vec3 p, vec3 n_surface, out floa
   }
   float path = water_path + length(lamp - s);
   return light.colour.rgb * t * focus * light_range_window(path * path, light.position_range.w) *
-         max(dot(n_surface, to_light), 0.0);
+         max(dot(n_surface, to_light), 0.0) * light_cone(light, normalize(s - lamp));
 }
 
 // White units, not relative to the sun: not scaled by frame.lut.w.

@@ -59,14 +59,16 @@ struct FrameUniforms {
 // One point light of the scene's "lights" block (storage buffer, std430).
 struct PointLightGpu {
   vec4 position_range;  // xyz metres, w = range (m)
-  vec4 colour;          // rgb = colour x intensity (irradiance at 1 m in white units), w unused
+  vec4 colour;          // rgb = colour x intensity (irradiance at 1 m in white units), w = the spot cone's
+                        // scale (0: a point light; shared/light_spot.h)
+  vec4 spot;  // xyz = the direction a spot light shines (unit), w = its cone's offset (1 for a point)
 };
 LAGOON_GPU_END
 
 #ifdef __cplusplus
 LAGOON_CHECK_SIZE(FrameUniforms, 720);
 LAGOON_CHECK_OFFSET(FrameUniforms, sky, 592);
-LAGOON_CHECK_SIZE(PointLightGpu, 32);
+LAGOON_CHECK_SIZE(PointLightGpu, 48);
 LAGOON_CHECK_OFFSET(FrameUniforms, camera_pos, 128);
 LAGOON_CHECK_OFFSET(FrameUniforms, water_deep, 208);
 LAGOON_CHECK_OFFSET(FrameUniforms, post2, 352);

@@ -22,7 +22,7 @@ int max_channel_difference(const io::Image8& a, const io::Image8& b) {
   return compare_images(a, b, {}).max_channel_difference;
 }
 
-constexpr double kCandela = 4.0e6;  // a bright lamp: the scene light below is then intensity ~40 at night
+constexpr double kCandela = 4.0e6;  // a bright lamp (in white units ~1000 against a 2° sun's light)
 
 class GltfLightsRender : public GpuTest {
  protected:
@@ -92,6 +92,80 @@ TEST_F(GltfLightsRender, AnObjectsLampIsTheSceneLampItStandsFor) {
   off["lights_from_gltf"] = false;
   const io::Image8 dark = render(night(json::array({off}), json::array()));
   EXPECT_GT(brightest_red(a), brightest_red(dark) + 60) << "the glTF lamp does not light the water";
+}
+
+TEST_F(GltfLightsRender, ASpotLightsOnlyItsConeAndAGltfSpotIsTheSceneSpot) {
+  // No sun; the camera 4 m above a calm sea looks down at a white floor 3 m down, where a lamp 2 m above the
+  // floor shines straight down: as a point light and as a spot of 15°/20°, whose pool on the floor is
+  // 2 tan 20° = 0.73 m in radius. Under the lamp they agree; 1.5 m beside it the point light still lights
+  // the floor and the spot does not.
+  auto floor_view = [&](const json& objects, const json& lights) {
+    std::ifstream in(std::string(LAGOON_SOURCE_DIR) + "/scenes/default.json");
+    json s = json::parse(in);
+    s["camera"] = {{"position", {0, 4, 0}}, {"look_at", {0, -3, 0.01}}};
+    s["render"].update(
+        {{"width", 64}, {"height", 64}, {"tone_map", "clamp"}, {"gamma", 1}, {"exposure", 0.15}});
+    s["seafloor"] = {
+        {"type", "slope"}, {"depth_near_m", 3}, {"depth_far_m", 3}, {"albedo", {1, 1, 1}}, {"texture", ""}};
+    s["sun"]["intensity"] = 0;
+    s["ocean"]["spectrum"]["wind_speed_mps"] = 2;
+    s["objects"] = objects;
+    s["lights"] = lights;
+    std::ofstream(dir_ / "floor.json") << s.dump();
+    auto scene = scene::load_scene(dir_ / "floor.json");
+    EXPECT_TRUE(scene) << scene.error().message;
+    return render(*scene);
+  };
+  auto lamp = [](double outer_deg, double intensity) {
+    json l = {{"position", {0, -1, 0}}, {"colour", {1, 1, 1}}, {"intensity", intensity}, {"range_m", 20}};
+    if (outer_deg < 180)
+      l.update({{"spot_direction", {0, -1, 0}}, {"spot_inner_deg", 15}, {"spot_outer_deg", outer_deg}});
+    return l;
+  };
+  const io::Image8 point = floor_view(json::array(), json::array({lamp(180, 12)}));
+  const io::Image8 spot = floor_view(json::array(), json::array({lamp(20, 12)}));
+  // The floor is 7 m from the camera, the view 55° high: 64 px span 7.3 m, so 1.5 m is 13 px.
+  auto luminance_at = [](const io::Image8& img, uint32_t x, uint32_t y) {
+    double sum = 0;
+    for (uint32_t dy = 0; dy < 3; ++dy)
+      for (uint32_t dx = 0; dx < 3; ++dx)
+        for (int c = 0; c < 3; ++c) sum += img.pixel(x + dx - 1, y + dy - 1)[c];
+    return sum / 27;
+  };
+  const double point_centre = luminance_at(point, 32, 32), spot_centre = luminance_at(spot, 32, 32);
+  const double point_beside = luminance_at(point, 45, 32), spot_beside = luminance_at(spot, 45, 32);
+  RecordProperty("levels", std::to_string(point_centre) + "/" + std::to_string(spot_centre) +
+                               " under the lamp, " + std::to_string(point_beside) + "/" +
+                               std::to_string(spot_beside) + " beside");
+  EXPECT_NEAR(spot_centre, point_centre, 0.1 * point_centre)
+      << "inside the inner cone a spot is a point light";
+  EXPECT_GT(point_beside, 3 * spot_beside + 5) << "outside its cone the spot lights nothing";
+  // The same spot from a glTF file: a lamp node turned −90° about x shines down its −z, i.e. straight down.
+  // With the sun's intensity 0 the reference illuminance is still the 35° sun's (white units do not dim).
+  const double candela = 12.0 * render::reference_illuminance_lux(scene::Sun{});
+  const double s = 0.70710678118654752, pi = 3.14159265358979;
+  const json spot_file = {
+      {"asset", {{"version", "2.0"}}},
+      {"extensionsUsed", {"KHR_lights_punctual"}},
+      {"extensions",
+       {{"KHR_lights_punctual",
+         {{"lights",
+           json::array(
+               {json{{"type", "spot"},
+                     {"color", {1.0, 1.0, 1.0}},
+                     {"intensity", candela},
+                     {"range", 20.0},
+                     {"spot", {{"innerConeAngle", 15 * pi / 180}, {"outerConeAngle", 20 * pi / 180}}}}})}}}}},
+      {"scene", 0},
+      {"scenes", json::array({json{{"nodes", {0}}}})},
+      {"nodes", json::array({json{{"rotation", {-s, 0, 0, s}},
+                                  {"extensions", {{"KHR_lights_punctual", {{"light", 0}}}}}}})}};
+  std::ofstream(dir_ / "spot.gltf") << spot_file.dump();
+  const io::Image8 a =
+      floor_view(json::array({json{{"file", "spot.gltf"}, {"position", {0, -1, 0}}}}), json::array());
+  const io::Image8 b = floor_view(json::array(), json::array({lamp(20, 12)}));
+  EXPECT_LE(max_channel_difference(a, b), 1);
+  EXPECT_GT(luminance_at(a, 32, 32), 20.0) << "the glTF spot does not light the floor";
 }
 
 TEST(ReferenceIlluminance, IsDaylightsOrder) {
