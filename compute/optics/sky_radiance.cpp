@@ -122,19 +122,27 @@ gpu::SkyModelGpu preetham_shape(double t, double theta_s) {
 }
 
 // A_k = ∫ w_k cos θ dω over the sky on an n × 2n (θ, φ) grid: the unscaled sky's irradiance is Σ A_k S_k(λ).
-glm::dvec3 hemisphere_weights(const gpu::SkyModelGpu& m, glm::vec3 sun, int n) {
-  glm::dvec3 a(0.0);
+// Calls f(direction, cos θ dω) for the cells of the upper hemisphere split by the midpoint rule into an
+// n × 2n grid of (θ, φ); ∑ f's weights is π.
+template <typename F>
+void for_each_sky_cell(int n, F&& f) {
   const double d_theta = (kPi / 2) / n, d_phi = 2 * kPi / (2 * n);
   for (int i = 0; i < n; ++i) {
     const double theta = (i + 0.5) * d_theta;
     const double weight = std::cos(theta) * std::sin(theta) * d_theta * d_phi;
     for (int j = 0; j < 2 * n; ++j) {
       const double phi = (j + 0.5) * d_phi;
-      const glm::vec3 dir(float(std::sin(theta) * std::cos(phi)), float(std::cos(theta)),
-                          float(std::sin(theta) * std::sin(phi)));
-      a += glm::dvec3(gpu::sky_daylight_weights(m, dir, sun)) * weight;
+      f(glm::dvec3(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)),
+        weight);
     }
   }
+}
+
+glm::dvec3 hemisphere_weights(const gpu::SkyModelGpu& m, glm::vec3 sun, int n) {
+  glm::dvec3 a(0.0);
+  for_each_sky_cell(n, [&](glm::dvec3 dir, double weight) {
+    a += glm::dvec3(gpu::sky_daylight_weights(m, glm::vec3(dir), sun)) * weight;
+  });
   return a;
 }
 
@@ -188,17 +196,10 @@ Spectrum SkyRadiance::radiance(glm::dvec3 dir) const {
 
 Spectrum sky_image_irradiance(const SkyRadiance& sky, int n_theta) {
   Spectrum e{};
-  const double d_theta = (kPi / 2) / n_theta, d_phi = 2 * kPi / (2 * n_theta);
-  for (int i = 0; i < n_theta; ++i) {
-    const double theta = (i + 0.5) * d_theta;
-    for (int j = 0; j < 2 * n_theta; ++j) {
-      const double phi = (j + 0.5) * d_phi;
-      const glm::dvec3 dir(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi));
-      const Spectrum l = sky.radiance(dir);
-      const double weight = std::cos(theta) * std::sin(theta) * d_theta * d_phi;
-      for (int k = 0; k < kSamples; ++k) e[k] += l[k] * weight;
-    }
-  }
+  for_each_sky_cell(n_theta, [&](glm::dvec3 dir, double weight) {
+    const Spectrum l = sky.radiance(dir);
+    for (int k = 0; k < kSamples; ++k) e[k] += l[k] * weight;
+  });
   return e;
 }
 

@@ -7,6 +7,7 @@
 
 #include "optics/cie.h"
 #include "optics/colour.h"
+#include "optics/lut.h"
 #include "optics/sky_radiance.h"
 #include "render/camera.h"
 
@@ -45,8 +46,7 @@ SkyLight sky_light(const scene::Sun& sun, const optics::SkyParams& params) {
   const std::shared_ptr<const optics::SkyRadiance> shared_model = sky_model_for(elevation, params);
   const optics::SkyRadiance& model = *shared_model;
   const optics::SkyIrradiance& sky = model.irradiance();
-  optics::Spectrum white{};
-  for (int i = 0; i < optics::kSamples; ++i) white[i] = sky.sun[i] + sky.sky[i];
+  const optics::Spectrum white = optics::downwelling_white(sky);
   const double cos_zenith = std::sin(elevation * 3.14159265358979323846 / 180.0);
   const glm::dvec3 sun_h = optics::adapted_linear_srgb(sky.sun, white);  // sun on a horizontal surface
   const glm::dvec3 sky_h = optics::adapted_linear_srgb(sky.sky, white);
@@ -74,10 +74,7 @@ SkyLight sky_light(const scene::Sun& sun, const optics::SkyParams& params) {
 double reference_illuminance_lux(const scene::Sun& sun, const optics::SkyParams& params) {
   const std::shared_ptr<const optics::SkyRadiance> model =
       sky_model_for(std::max<double>(sun.elevation_deg, 2.0), params);
-  optics::Spectrum white{};
-  for (int i = 0; i < optics::kSamples; ++i)
-    white[i] = model->irradiance().sun[i] + model->irradiance().sky[i];
-  return 683.0 * optics::spectrum_to_xyz(white).y;
+  return 683.0 * optics::spectrum_to_xyz(optics::downwelling_white(model->irradiance())).y;
 }
 
 }  // namespace lagoon::render
