@@ -8,7 +8,7 @@
 namespace lagoon::render {
 
 struct Samplers {
-  vk::Unique<VkSampler> repeat;   // tiling textures (cascades, albedo); anisotropic on GPUs
+  vk::Unique<VkSampler> repeat;   // tiling textures (cascades, albedo); isotropic on every device
   vk::Unique<VkSampler> clamp;    // screen-space targets and LUTs
   vk::Unique<VkSampler> nearest;  // depth read back as a texture
 

@@ -52,10 +52,9 @@ std::vector<const char*> required_device_extensions();
 
 // The feature chain to give vkCreateDevice (VkDeviceCreateInfo::pNext = chain()): the required features
 // (dynamicRendering, synchronization2) and, when constructed with a device, the optional ones Lagoon uses
-// where that device has them (samplerAnisotropy: Lagoon's samplers turn anisotropy on whenever the device
-// supports it, so a host must enable it on such a device). A host that needs features of its own sets them in
-// these structs (a chain may hold each struct type once) and may hang further structs on vulkan13.pNext.
-// Not copyable: the structs point at each other.
+// where that device has them (shaderFloat64, fillModeNonSolid). A host that needs features of its own sets
+// them in these structs (a chain may hold each struct type once) and may hang further structs on
+// vulkan13.pNext. Not copyable: the structs point at each other.
 struct RequiredFeatures {
   VkPhysicalDeviceFeatures2 features2{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
   VkPhysicalDeviceVulkan11Features vulkan11{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES};

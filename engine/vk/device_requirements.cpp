@@ -183,9 +183,8 @@ RequiredFeatures::RequiredFeatures(VkPhysicalDevice optional_from) {
   if (optional_from == VK_NULL_HANDLE) return;
   VkPhysicalDeviceFeatures supported{};
   vkGetPhysicalDeviceFeatures(optional_from, &supported);
-  // Optional features used when present (anisotropic filtering of the ocean textures; 64-bit floats in
-  // tests).
-  features2.features.samplerAnisotropy = supported.samplerAnisotropy;
+  // Optional features used when present (64-bit floats in tests). Not samplerAnisotropy: Lagoon filters
+  // isotropically on every device, as anisotropic filters differ between vendors (docs/devices.md).
   features2.features.shaderFloat64 = supported.shaderFloat64;
   features2.features.fillModeNonSolid = supported.fillModeNonSolid;
 }

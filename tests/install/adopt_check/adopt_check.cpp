@@ -182,7 +182,7 @@ int main() {
                    ctx.instance() == instance,
                "the context uses the host's instance, device and queue");
         expect(ctx.validation_enabled() == validation, "validation_messenger adds Lagoon's messenger");
-        expect(ctx.enabled_features().samplerAnisotropy == features.features2.features.samplerAnisotropy,
+        expect(ctx.enabled_features().shaderFloat64 == features.features2.features.shaderFloat64,
                "enabled_features() are the host's");
         expect(ctx.deferred().slots() == 2, "frames_in_flight sets the deferred-destruction slots");
         bool ran = false;
