@@ -35,7 +35,8 @@ inline void warn_once(std::vector<std::string>& warnings, std::string message) {
 // The extensions the loader reads (issue 17); every other one is skipped with one warning, and a file that
 // requires another one is refused.
 inline bool supported_extension(std::string_view name) {
-  return name == "KHR_lights_punctual";
+  return name == "KHR_lights_punctual" || name == "KHR_texture_transform" ||
+         name == "KHR_materials_emissive_strength" || name == "KHR_mesh_quantization";
 }
 
 }  // namespace lagoon::gltf::detail

@@ -174,50 +174,210 @@ Result<detail::Accessors> build_accessors(const tinygltf::Model& g) {
   return a;
 }
 
-// Materials, and the images their base colour textures use (image index -> Model::textures index).
+// ---- Materials -------------------------------------------------------------------------------------------
+
+bool finite_all(const std::vector<double>& v, size_t n) {
+  return v.size() == n && std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
+}
+
+// A number of an extension object, `fallback` when absent; an error when present but not a finite number.
+Result<double> ext_number(const tinygltf::Value& object, const char* key, double fallback,
+                          const std::string& where) {
+  if (!object.Has(key)) return fallback;
+  const tinygltf::Value& v = object.Get(key);
+  if (!v.IsNumber() || !std::isfinite(v.GetNumberAsDouble()))
+    return make_error(where + "." + key + ": expected a finite number");
+  return v.GetNumberAsDouble();
+}
+
+Result<glm::vec2> ext_vec2(const tinygltf::Value& object, const char* key, glm::vec2 fallback,
+                           const std::string& where) {
+  if (!object.Has(key)) return fallback;
+  const tinygltf::Value& v = object.Get(key);
+  if (!v.IsArray() || v.ArrayLen() != 2 || !v.Get(0).IsNumber() || !v.Get(1).IsNumber() ||
+      !std::isfinite(v.Get(0).GetNumberAsDouble()) || !std::isfinite(v.Get(1).GetNumberAsDouble()))
+    return make_error(where + "." + key + ": expected 2 finite numbers");
+  return glm::vec2(v.Get(0).GetNumberAsDouble(), v.Get(1).GetNumberAsDouble());
+}
+
+Sampler::Filter filter_of(int gl) {
+  return gl == 9728 || gl == 9984 || gl == 9986 ? Sampler::Filter::Nearest : Sampler::Filter::Linear;
+}
+
+Sampler::Wrap wrap_of(int gl) {
+  if (gl == 33071) return Sampler::Wrap::ClampToEdge;
+  if (gl == 33648) return Sampler::Wrap::MirroredRepeat;
+  return Sampler::Wrap::Repeat;
+}
+
+// glTF sampler (GL enums) to ours; absent filters are linear with mipmaps, as most viewers do.
+Result<Sampler> convert_sampler(const tinygltf::Sampler& s, const std::string& where) {
+  auto known = [](int v, std::initializer_list<int> allowed) {
+    return v == -1 || std::find(allowed.begin(), allowed.end(), v) != allowed.end();
+  };
+  if (!known(s.magFilter, {9728, 9729})) return make_error(where + ".magFilter: must be 9728 or 9729");
+  if (!known(s.minFilter, {9728, 9729, 9984, 9985, 9986, 9987}))
+    return make_error(where + ".minFilter: must be 9728, 9729 or 9984-9987");
+  if (!known(s.wrapS, {10497, 33071, 33648}) || !known(s.wrapT, {10497, 33071, 33648}))
+    return make_error(where + ".wrapS/wrapT: must be 10497 (REPEAT), 33071 (CLAMP_TO_EDGE) or 33648");
+  Sampler out;
+  out.wrap_s = wrap_of(s.wrapS);
+  out.wrap_t = wrap_of(s.wrapT);
+  out.mag = filter_of(s.magFilter);
+  out.min = filter_of(s.minFilter);
+  out.mipmaps = s.minFilter == -1 || s.minFilter >= 9984;
+  out.mip = s.minFilter == 9984 || s.minFilter == 9985 ? Sampler::Filter::Nearest : Sampler::Filter::Linear;
+  return out;
+}
+
+// KHR_texture_transform of a textureInfo into ref.transform (and its texCoord override).
+Result<void> texture_transform(const tinygltf::ExtensionMap& extensions, const std::string& where,
+                               TextureRef& ref) {
+  const auto it = extensions.find("KHR_texture_transform");
+  if (it == extensions.end()) return {};
+  const tinygltf::Value& t = it->second;
+  const std::string at_ext = where + ".extensions.KHR_texture_transform";
+  if (!t.IsObject()) return make_error(at_ext + ": expected an object");
+  Result<glm::vec2> offset = ext_vec2(t, "offset", glm::vec2(0), at_ext);
+  Result<glm::vec2> scale = ext_vec2(t, "scale", glm::vec2(1), at_ext);
+  Result<double> rotation = ext_number(t, "rotation", 0, at_ext);
+  Result<double> texcoord = ext_number(t, "texCoord", ref.texcoord, at_ext);
+  if (!offset) return offset.error();
+  if (!scale) return scale.error();
+  if (!rotation) return rotation.error();
+  if (!texcoord) return texcoord.error();
+  const float c = float(std::cos(*rotation)), s = float(std::sin(*rotation));
+  ref.transform = glm::mat3(glm::vec3(scale->x * c, -scale->x * s, 0),
+                            glm::vec3(scale->y * s, scale->y * c, 0), glm::vec3(offset->x, offset->y, 1));
+  ref.texcoord = int(*texcoord);
+  return {};
+}
+
+// One textureInfo (`where` names it, e.g. "materials[0].normalTexture") into a TextureRef; the image it
+// uses is given a slot in `image_slots` (image index -> Model::textures index).
+Result<TextureRef> texture_ref(const tinygltf::Model& g, int index, int texcoord,
+                               const tinygltf::ExtensionMap& extensions, const std::string& where,
+                               std::map<int, int>& image_slots, std::vector<std::string>& warnings) {
+  TextureRef ref;
+  if (index == -1) return ref;
+  if (!valid_index(index, g.textures.size())) {
+    return make_error(where + ".index: textures[" + std::to_string(index) +
+                      "] does not exist (the file has " + std::to_string(g.textures.size()) + ")");
+  }
+  const tinygltf::Texture& texture = g.textures[static_cast<size_t>(index)];
+  warn_extensions(texture.extensions, warnings);
+  warn_extensions(extensions, warnings);
+  ref.texcoord = texcoord;
+  if (Result<void> r = texture_transform(extensions, where, ref); !r) return r.error();
+  if (ref.texcoord < 0 || ref.texcoord > 1) {
+    warn_once(warnings, "texture coordinate sets above TEXCOORD_1 are not supported; TEXCOORD_0 is used");
+    ref.texcoord = 0;
+  }
+  if (texture.sampler != -1) {
+    if (!valid_index(texture.sampler, g.samplers.size()))
+      return make_error(at("textures", index) + ".sampler: samplers[" + std::to_string(texture.sampler) +
+                        "] does not exist");
+    Result<Sampler> sampler =
+        convert_sampler(g.samplers[size_t(texture.sampler)], at("samplers", texture.sampler));
+    if (!sampler) return sampler.error();
+    ref.sampler = *sampler;
+  }
+  if (texture.source == -1) {
+    warn_once(warnings, "textures without a PNG or JPEG image are not supported; drawn untextured");
+  } else if (!valid_index(texture.source, g.images.size())) {
+    return make_error(at("textures", index) + ".source: images[" + std::to_string(texture.source) +
+                      "] does not exist");
+  } else {
+    auto [slot, added] = image_slots.try_emplace(texture.source, static_cast<int>(image_slots.size()));
+    ref.image = slot->second;
+  }
+  return ref;
+}
+
+// The scalar factors of a material, checked against the ranges the spec gives.
+Result<void> material_factors(const tinygltf::Material& m, const std::string& where, Material& out) {
+  const tinygltf::PbrMetallicRoughness& pbr = m.pbrMetallicRoughness;
+  if (!finite_all(pbr.baseColorFactor, 4))
+    return make_error(where + ".pbrMetallicRoughness.baseColorFactor: expected 4 finite numbers");
+  out.base_color_factor = glm::vec4(pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2],
+                                    pbr.baseColorFactor[3]);
+  auto unit = [&](double v, const std::string& field) -> Result<float> {
+    if (!(v >= 0.0 && v <= 1.0)) return make_error(where + "." + field + ": must be between 0 and 1");
+    return float(v);
+  };
+  Result<float> metallic = unit(pbr.metallicFactor, "pbrMetallicRoughness.metallicFactor");
+  Result<float> roughness = unit(pbr.roughnessFactor, "pbrMetallicRoughness.roughnessFactor");
+  Result<float> strength = unit(m.occlusionTexture.strength, "occlusionTexture.strength");
+  if (!metallic) return metallic.error();
+  if (!roughness) return roughness.error();
+  if (!strength) return strength.error();
+  out.metallic = *metallic;
+  out.roughness = *roughness;
+  out.occlusion_strength = *strength;
+  if (!std::isfinite(m.normalTexture.scale))
+    return make_error(where + ".normalTexture.scale: expected a finite number");
+  out.normal_scale = float(m.normalTexture.scale);
+  if (!finite_all(m.emissiveFactor, 3) ||
+      std::any_of(m.emissiveFactor.begin(), m.emissiveFactor.end(), [](double v) { return v < 0; }))
+    return make_error(where + ".emissiveFactor: expected 3 numbers >= 0");
+  float emissive_strength = 1.0f;
+  if (auto it = m.extensions.find("KHR_materials_emissive_strength"); it != m.extensions.end()) {
+    const std::string at_ext = where + ".extensions.KHR_materials_emissive_strength";
+    Result<double> e = ext_number(it->second, "emissiveStrength", 1.0, at_ext);
+    if (!e) return e.error();
+    if (*e < 0) return make_error(at_ext + ".emissiveStrength: must be >= 0");
+    emissive_strength = float(*e);
+  }
+  out.emissive_factor =
+      glm::vec3(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2]) * emissive_strength;
+  if (m.alphaMode == "MASK") {
+    out.alpha_mode = Material::AlphaMode::Mask;
+  } else if (m.alphaMode == "BLEND") {
+    out.alpha_mode = Material::AlphaMode::Blend;
+  } else if (m.alphaMode != "OPAQUE") {
+    return make_error(where + ".alphaMode: '" + m.alphaMode + "' is not OPAQUE, MASK or BLEND");
+  }
+  if (!(m.alphaCutoff >= 0.0) || !std::isfinite(m.alphaCutoff))
+    return make_error(where + ".alphaCutoff: must be a number >= 0");
+  out.alpha_cutoff = float(m.alphaCutoff);
+  out.double_sided = m.doubleSided;
+  return {};
+}
+
+// Materials, and the images their textures use (image index -> Model::textures index).
 Result<std::vector<Material>> convert_materials(const tinygltf::Model& g, std::map<int, int>& image_slots,
                                                 std::vector<std::string>& warnings) {
   std::vector<Material> materials;
   for (size_t i = 0; i < g.materials.size(); ++i) {
     const tinygltf::Material& m = g.materials[i];
     const tinygltf::PbrMetallicRoughness& pbr = m.pbrMetallicRoughness;
-    const std::string where = at("materials", static_cast<int64_t>(i)) + ".pbrMetallicRoughness";
+    const std::string where = at("materials", static_cast<int64_t>(i));
     Material out;
     out.name = m.name;
-    const std::vector<double>& f = pbr.baseColorFactor;
-    if (f.size() != 4 || !std::all_of(f.begin(), f.end(), [](double v) { return std::isfinite(v); })) {
-      return make_error(where + ".baseColorFactor: expected 4 finite numbers");
+    if (Result<void> r = material_factors(m, where, out); !r) return r.error();
+    struct Slot {
+      TextureRef* ref;
+      int index, texcoord;
+      const tinygltf::ExtensionMap* extensions;
+      const char* field;
+    };
+    for (const Slot& t :
+         {Slot{&out.base_color, pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord,
+               &pbr.baseColorTexture.extensions, ".pbrMetallicRoughness.baseColorTexture"},
+          Slot{&out.metallic_roughness, pbr.metallicRoughnessTexture.index,
+               pbr.metallicRoughnessTexture.texCoord, &pbr.metallicRoughnessTexture.extensions,
+               ".pbrMetallicRoughness.metallicRoughnessTexture"},
+          Slot{&out.normal, m.normalTexture.index, m.normalTexture.texCoord, &m.normalTexture.extensions,
+               ".normalTexture"},
+          Slot{&out.occlusion, m.occlusionTexture.index, m.occlusionTexture.texCoord,
+               &m.occlusionTexture.extensions, ".occlusionTexture"},
+          Slot{&out.emissive, m.emissiveTexture.index, m.emissiveTexture.texCoord,
+               &m.emissiveTexture.extensions, ".emissiveTexture"}}) {
+      Result<TextureRef> ref =
+          texture_ref(g, t.index, t.texcoord, *t.extensions, where + t.field, image_slots, warnings);
+      if (!ref) return ref.error();
+      *t.ref = *ref;
     }
-    out.base_color_factor = glm::vec4(f[0], f[1], f[2], f[3]);
-    if (const int t = pbr.baseColorTexture.index; t != -1) {
-      if (!valid_index(t, g.textures.size())) {
-        return make_error(where + ".baseColorTexture.index: textures[" + std::to_string(t) +
-                          "] does not exist (the file has " + std::to_string(g.textures.size()) + ")");
-      }
-      const tinygltf::Texture& texture = g.textures[static_cast<size_t>(t)];
-      warn_extensions(texture.extensions, warnings);
-      warn_extensions(pbr.baseColorTexture.extensions, warnings);
-      if (texture.source == -1) {
-        warn_once(warnings, "textures without a PNG or JPEG image are not supported; drawn untextured");
-      } else if (!valid_index(texture.source, g.images.size())) {
-        return make_error(at("textures", t) + ".source: images[" + std::to_string(texture.source) +
-                          "] does not exist");
-      } else {
-        auto [slot, added] = image_slots.try_emplace(texture.source, static_cast<int>(image_slots.size()));
-        out.base_color_texture = slot->second;
-      }
-      if (pbr.baseColorTexture.texCoord != 0) {
-        warn_once(warnings,
-                  "base colour textures on TEXCOORD_1 or higher are not supported; TEXCOORD_0 is used");
-      }
-    }
-    if (pbr.metallicRoughnessTexture.index != -1 || m.normalTexture.index != -1 ||
-        m.occlusionTexture.index != -1 || m.emissiveTexture.index != -1) {
-      warn_once(warnings,
-                "metallic-roughness, normal, occlusion and emissive textures are not supported; ignored");
-    }
-    if (m.alphaMode != "OPAQUE")
-      warn_once(warnings, "alphaMode MASK and BLEND are not supported; drawn opaque");
     warn_extensions(m.extensions, warnings);
     materials.push_back(std::move(out));
   }
@@ -228,7 +388,7 @@ Result<std::vector<Texture>> decode_textures(const tinygltf::Model& g, const det
                                              const std::map<int, int>& image_slots, const Limits& limits) {
   if (image_slots.size() > limits.max_textures) {
     return make_error("materials: " + std::to_string(image_slots.size()) +
-                      " base colour images is more than the limit of " + std::to_string(limits.max_textures) +
+                      " images is more than the limit of " + std::to_string(limits.max_textures) +
                       " textures");
   }
   std::vector<Texture> textures(image_slots.size());
@@ -260,6 +420,8 @@ Result<std::vector<Mesh>> convert_meshes(const tinygltf::Model& g, const detail:
                                          size_t material_count, const Limits& limits,
                                          std::vector<std::string>& warnings) {
   detail::Budget budget{limits.max_vertices, limits.max_indices};
+  const bool quantized = std::find(g.extensionsUsed.begin(), g.extensionsUsed.end(),
+                                   "KHR_mesh_quantization") != g.extensionsUsed.end();
   std::vector<Mesh> meshes;
   for (size_t m = 0; m < g.meshes.size(); ++m) {
     Mesh mesh;
@@ -267,7 +429,8 @@ Result<std::vector<Mesh>> convert_meshes(const tinygltf::Model& g, const detail:
     for (size_t p = 0; p < g.meshes[m].primitives.size(); ++p) {
       const tinygltf::Primitive& t = g.meshes[m].primitives[p];
       warn_extensions(t.extensions, warnings);
-      const detail::PrimitiveDesc desc{t.attributes, t.indices, t.mode, t.material, !t.targets.empty()};
+      const detail::PrimitiveDesc desc{t.attributes, t.indices,          t.mode,
+                                       t.material,   !t.targets.empty(), quantized};
       const std::string where =
           at("meshes", static_cast<int64_t>(m)) + at(".primitives", static_cast<int64_t>(p));
       Result<std::optional<Primitive>> prim =

@@ -15,7 +15,7 @@ namespace lagoon::gltf {
 struct Limits {
   size_t max_vertices = 5'000'000;       // summed over all primitives
   size_t max_indices = 15'000'000;       // summed over all primitives, generated ones included
-  size_t max_textures = 64;              // decoded base colour images
+  size_t max_textures = 64;              // decoded images (any material texture)
   uint32_t max_texture_size = 8192;      // width and height, pixels
   size_t max_file_bytes = 512ull << 20;  // each of the .gltf/.glb, .bin and image files
   size_t max_nodes = 100'000;

@@ -17,6 +17,10 @@ struct Primitive {                   // triangles only (strips and fans are conv
   std::vector<glm::vec3> positions;  // model space, metres
   std::vector<glm::vec3> normals;    // generated (area-weighted) when the file has none
   std::vector<glm::vec2> uvs;        // TEXCOORD_0; zero when the file has none
+  std::vector<glm::vec2> uvs1;       // TEXCOORD_1; a copy of TEXCOORD_0 when the file has none
+  // xyz along +u in the surface, w = ±1 the handedness (bitangent = w · normal × tangent): the file's
+  // TANGENT, else generated from TEXCOORD_0 (gltf/tangents.h) when a material has a normal map.
+  std::vector<glm::vec4> tangents;
   std::vector<uint32_t> indices;  // generated 0..n-1 when the file has none; every index < positions.size()
   int material = -1;              // index into Model::materials, -1 = default material
 };
@@ -28,9 +32,42 @@ struct Texture {
   std::vector<uint8_t> rgba;
 };
 
+// A glTF sampler: how a texture is filtered and wrapped (defaults as glTF's when the file gives none).
+struct Sampler {
+  enum class Wrap { Repeat, MirroredRepeat, ClampToEdge };
+  enum class Filter { Nearest, Linear };
+  Wrap wrap_s = Wrap::Repeat, wrap_t = Wrap::Repeat;
+  Filter mag = Filter::Linear, min = Filter::Linear;
+  bool mipmaps = true;          // false: minFilter NEAREST or LINEAR (no mip levels sampled)
+  Filter mip = Filter::Linear;  // between mip levels
+  bool operator==(const Sampler&) const = default;
+};
+
+// A material's use of a texture: glTF textureInfo with its sampler and KHR_texture_transform.
+struct TextureRef {
+  int image = -1;    // index into Model::textures, -1 = none
+  int texcoord = 0;  // 0 or 1: TEXCOORD_0 or TEXCOORD_1
+  Sampler sampler;
+  // KHR_texture_transform as uv' = transform · (u, v, 1): translation · rotation · scale, in the
+  // extension's order (its rotation turns uv counter-clockwise as the spec's matrix does).
+  glm::mat3 transform{1.0f};
+};
+
 struct Material {
-  glm::vec4 base_color_factor{1.0f};  // linear, multiplies the texture
-  int base_color_texture = -1;        // index into Model::textures, -1 = none
+  enum class AlphaMode { Opaque, Mask, Blend };
+  glm::vec4 base_color_factor{1.0f};  // linear, multiplies the texture (sRGB)
+  TextureRef base_color;
+  float metallic = 1.0f, roughness = 1.0f;  // glTF's defaults
+  TextureRef metallic_roughness;            // B = metallic, G = roughness (linear)
+  TextureRef normal;                        // tangent-space normal map (linear)
+  float normal_scale = 1.0f;
+  TextureRef occlusion;  // R = ambient occlusion (linear)
+  float occlusion_strength = 1.0f;
+  glm::vec3 emissive_factor{0.0f};  // linear; times KHR_materials_emissive_strength
+  TextureRef emissive;              // sRGB
+  AlphaMode alpha_mode = AlphaMode::Opaque;
+  float alpha_cutoff = 0.5f;  // MASK: drawn where alpha >= cutoff
+  bool double_sided = false;
   std::string name;
 };
 
@@ -71,7 +108,7 @@ struct Light {
 struct Model {
   std::vector<Mesh> meshes;
   std::vector<Material> materials;
-  std::vector<Texture> textures;  // only the images some material uses as base colour, each once
+  std::vector<Texture> textures;  // only the images some material uses, each once
   std::vector<Instance> instances;
   std::vector<Camera> cameras;             // one per camera node of the default scene, in depth-first order
   std::vector<Light> lights;               // one per KHR_lights_punctual light node of the default scene

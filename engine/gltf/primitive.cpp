@@ -5,6 +5,7 @@
 
 #include "gltf/checks.h"
 #include "gltf/geometry.h"
+#include "gltf/tangents.h"
 
 namespace lagoon::gltf::detail {
 namespace {
@@ -38,6 +39,34 @@ bool is_texcoord(const AccessorDesc& d) {
          (d.component_type == kFloat ||
           (d.normalized && (d.component_type == kUnsignedByte || d.component_type == kUnsignedShort)));
 }
+
+bool is_vec4_float(const AccessorDesc& d) {
+  return d.components == 4 && d.component_type == kFloat;
+}
+
+// KHR_mesh_quantization's wider choices (its "Extending Mesh Attributes" table).
+bool is_int_type(const AccessorDesc& d) {
+  return d.component_type == kByte || d.component_type == kUnsignedByte || d.component_type == kShort ||
+         d.component_type == kUnsignedShort;
+}
+bool is_signed_normalized(const AccessorDesc& d) {
+  return d.normalized && (d.component_type == kByte || d.component_type == kShort);
+}
+bool is_quantized_position(const AccessorDesc& d) {
+  return d.components == 3 && (d.component_type == kFloat || is_int_type(d));
+}
+bool is_quantized_normal(const AccessorDesc& d) {
+  return d.components == 3 && (d.component_type == kFloat || is_signed_normalized(d));
+}
+bool is_quantized_tangent(const AccessorDesc& d) {
+  return d.components == 4 && (d.component_type == kFloat || is_signed_normalized(d));
+}
+bool is_quantized_texcoord(const AccessorDesc& d) {
+  return d.components == 2 && (d.component_type == kFloat || is_int_type(d));
+}
+
+constexpr const char* kQuantizedTypes =
+    "FLOAT, or (KHR_mesh_quantization) BYTE, UNSIGNED_BYTE, SHORT or UNSIGNED_SHORT";
 
 bool is_index(const AccessorDesc& d) {
   return d.components == 1 && (d.component_type == kUnsignedByte || d.component_type == kUnsignedShort ||
@@ -98,8 +127,12 @@ Result<std::vector<glm::vec3>> read_positions(const PrimitiveDesc& desc, const s
                                               const Accessors& a, Budget& budget) {
   const auto position = desc.attributes.find("POSITION");
   if (position == desc.attributes.end()) return make_error(where + ".attributes: POSITION is missing");
-  Result<const AccessorDesc*> pd = attribute(a, position->second, where + ".attributes.POSITION",
-                                             "VEC3 FLOAT", is_vec3_float, std::nullopt);
+  Result<const AccessorDesc*> pd =
+      desc.quantized
+          ? attribute(a, position->second, where + ".attributes.POSITION",
+                      (std::string("VEC3 ") + kQuantizedTypes).c_str(), is_quantized_position, std::nullopt)
+          : attribute(a, position->second, where + ".attributes.POSITION", "VEC3 FLOAT", is_vec3_float,
+                      std::nullopt);
   if (!pd) return pd.error();
   if (Result<void> r = spend(budget.vertices, (*pd)->count, budget.max_vertices,
                              where + ".attributes.POSITION", "vertices");
@@ -117,29 +150,56 @@ Result<std::vector<glm::vec3>> read_positions(const PrimitiveDesc& desc, const s
   return to_vectors<glm::vec3>(*positions);
 }
 
-// NORMAL and TEXCOORD_0, each with one element per vertex. A missing NORMAL stays empty (computed once the
-// triangles are known); missing UVs are zero.
+// An optional attribute with one element per vertex, as floats (normalized integers mapped to [0,1] or
+// [-1,1]); empty when the file does not have it.
+Result<std::vector<float>> optional_attribute(const PrimitiveDesc& desc, const char* name,
+                                              const std::string& where, const Accessors& a, size_t n,
+                                              const char* allowed, bool (*ok)(const AccessorDesc&)) {
+  const auto it = desc.attributes.find(name);
+  if (it == desc.attributes.end()) return std::vector<float>();
+  Result<const AccessorDesc*> d = attribute(a, it->second, where + ".attributes." + name, allowed, ok, n);
+  if (!d) return d.error();
+  return read_floats(a, it->second);
+}
+
+// NORMAL, TANGENT, TEXCOORD_0 and TEXCOORD_1, each with one element per vertex. A missing NORMAL or TANGENT
+// stays empty (computed once the triangles are known); missing UVs are zero, a missing TEXCOORD_1 copies
+// TEXCOORD_0.
 Result<void> read_normals_and_uvs(const PrimitiveDesc& desc, const std::string& where, const Accessors& a,
                                   size_t n, Primitive& prim) {
-  if (auto it = desc.attributes.find("NORMAL"); it != desc.attributes.end()) {
-    Result<const AccessorDesc*> d =
-        attribute(a, it->second, where + ".attributes.NORMAL", "VEC3 FLOAT", is_vec3_float, n);
-    if (!d) return d.error();
-    Result<std::vector<float>> normals = read_floats(a, it->second);
-    if (!normals) return normals.error();
-    prim.normals = to_vectors<glm::vec3>(*normals);
+  const std::string q =
+      desc.quantized ? std::string(", or with KHR_mesh_quantization normalized BYTE or SHORT") : "";
+  const std::string texcoords =
+      desc.quantized ? std::string("VEC2 ") + kQuantizedTypes
+                     : "VEC2 FLOAT, VEC2 normalized UNSIGNED_BYTE or VEC2 normalized UNSIGNED_SHORT";
+  Result<std::vector<float>> normals =
+      optional_attribute(desc, "NORMAL", where, a, n, ("VEC3 FLOAT" + q).c_str(),
+                         desc.quantized ? is_quantized_normal : is_vec3_float);
+  if (!normals) return normals.error();
+  Result<std::vector<float>> tangents =
+      optional_attribute(desc, "TANGENT", where, a, n, ("VEC4 FLOAT" + q).c_str(),
+                         desc.quantized ? is_quantized_tangent : is_vec4_float);
+  if (!tangents) return tangents.error();
+  auto uv_ok = desc.quantized ? is_quantized_texcoord : is_texcoord;
+  Result<std::vector<float>> uv0 =
+      optional_attribute(desc, "TEXCOORD_0", where, a, n, texcoords.c_str(), uv_ok);
+  if (!uv0) return uv0.error();
+  Result<std::vector<float>> uv1 =
+      optional_attribute(desc, "TEXCOORD_1", where, a, n, texcoords.c_str(), uv_ok);
+  if (!uv1) return uv1.error();
+  prim.normals = to_vectors<glm::vec3>(*normals);
+  for (glm::vec3& v : prim.normals) {  // quantized normals are only nearly unit length
+    const float len = glm::length(v);
+    v = std::isfinite(len) && len > 0 ? v / len : glm::vec3(0, 1, 0);
   }
-  if (auto it = desc.attributes.find("TEXCOORD_0"); it != desc.attributes.end()) {
-    Result<const AccessorDesc*> d = attribute(
-        a, it->second, where + ".attributes.TEXCOORD_0",
-        "VEC2 FLOAT, VEC2 normalized UNSIGNED_BYTE or VEC2 normalized UNSIGNED_SHORT", is_texcoord, n);
-    if (!d) return d.error();
-    Result<std::vector<float>> uvs = read_floats(a, it->second);
-    if (!uvs) return uvs.error();
-    prim.uvs = to_vectors<glm::vec2>(*uvs);
-  } else {
-    prim.uvs.assign(n, glm::vec2(0.0f));
+  prim.tangents = to_vectors<glm::vec4>(*tangents);
+  for (glm::vec4& t : prim.tangents) {
+    const float len = glm::length(glm::vec3(t));
+    t = std::isfinite(len) && len > 0 ? glm::vec4(glm::vec3(t) / len, t.w < 0 ? -1.0f : 1.0f)
+                                      : glm::vec4(1, 0, 0, 1);
   }
+  prim.uvs = uv0->empty() ? std::vector<glm::vec2>(n, glm::vec2(0.0f)) : to_vectors<glm::vec2>(*uv0);
+  prim.uvs1 = uv1->empty() ? prim.uvs : to_vectors<glm::vec2>(*uv1);
   return {};
 }
 
@@ -196,6 +256,8 @@ Result<std::optional<Primitive>> convert_primitive(const PrimitiveDesc& desc, co
     return std::optional<Primitive>();
   }
   if (prim.normals.empty()) prim.normals = area_weighted_normals(prim.positions, prim.indices);
+  if (prim.tangents.empty())
+    prim.tangents = generate_tangents(prim.positions, prim.normals, prim.uvs, prim.indices);
   return std::optional<Primitive>(std::move(prim));
 }
 

@@ -19,6 +19,7 @@ struct PrimitiveDesc {  // as tinygltf parses it
   int mode = 4;
   int material = -1;
   bool has_targets = false;
+  bool quantized = false;  // KHR_mesh_quantization is used: integer POSITION, NORMAL, TANGENT, TEXCOORD
 };
 
 // Vertices and indices of the whole model so far, against the limits: checked before anything is read, so

@@ -35,7 +35,8 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-constexpr int kUnsignedByte = 5121, kUnsignedShort = 5123, kInt = 5124, kUnsignedInt = 5125, kFloat = 5126;
+constexpr int kByte = 5120, kShort = 5122, kUnsignedByte = 5121, kUnsignedShort = 5123, kInt = 5124,
+              kUnsignedInt = 5125, kFloat = 5126;
 
 struct TempDir : test::TempDir {
   TempDir() : test::TempDir("lagoon_gltf_test") {}
@@ -301,7 +302,7 @@ void check_textured_quad(Layout layout) {
     ASSERT_EQ(m.materials.size(), 1u);
     EXPECT_EQ(m.materials[0].name, "painted");
     EXPECT_EQ(m.materials[0].base_color_factor, glm::vec4(0.5f, 1, 1, 1));
-    EXPECT_EQ(m.materials[0].base_color_texture, 0);
+    EXPECT_EQ(m.materials[0].base_color.image, 0);
     ASSERT_EQ(m.textures.size(), 1u);
     EXPECT_EQ(m.textures[0].width, 2u);
     EXPECT_EQ(m.textures[0].height, 2u);
@@ -452,7 +453,7 @@ TEST(GltfLoad, SharedImageIsDecodedOnce) {
   b.push("materials", {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 1}}}}}});
   const Model m = load_ok(b.write(dir.path(), "m", Layout::kGlb));
   EXPECT_EQ(m.textures.size(), 1u);
-  EXPECT_EQ(m.materials[1].base_color_texture, 0);
+  EXPECT_EQ(m.materials[1].base_color.image, 0);
 }
 
 // ---- Warnings --------------------------------------------------------------------------------------------
@@ -1032,11 +1033,18 @@ void fuzz(const TempDir& dir, const std::string& name, int iterations, uint32_t 
         ASSERT_EQ(p.indices.size() % 3, 0u);
         ASSERT_EQ(p.normals.size(), p.positions.size());
         ASSERT_EQ(p.uvs.size(), p.positions.size());
+        ASSERT_EQ(p.uvs1.size(), p.positions.size());
+        ASSERT_EQ(p.tangents.size(), p.positions.size());
         ASSERT_LT(p.material, static_cast<int>(model->materials.size()));
       }
     }
-    for (const Material& m : model->materials)
-      ASSERT_LT(m.base_color_texture, static_cast<int>(model->textures.size()));
+    for (const Material& m : model->materials) {
+      for (const TextureRef* t :
+           {&m.base_color, &m.metallic_roughness, &m.normal, &m.occlusion, &m.emissive}) {
+        ASSERT_LT(t->image, static_cast<int>(model->textures.size()));
+        ASSERT_TRUE(t->texcoord == 0 || t->texcoord == 1);
+      }
+    }
     for (const Texture& t : model->textures) ASSERT_EQ(t.rgba.size(), size_t{t.width} * t.height * 4);
     for (const Instance& instance : model->instances) ASSERT_LT(instance.mesh, model->meshes.size());
   }
@@ -1180,6 +1188,201 @@ TEST(GltfFuzz, MutatedJsonText) {
     }
     return t;
   });
+}
+
+// ---- Materials, samplers, tangents, quantized meshes (issue 17) ------------------------------------------
+
+void expect_contains(const std::string& text, const std::string& part) {
+  EXPECT_NE(text.find(part), std::string::npos) << "'" << part << "' not in: " << text;
+}
+
+// The textured quad with a second uv set (u and v swapped) and every material slot filled.
+Builder pbr_quad() {
+  Builder b = textured_quad(ImageAt::kBufferView);
+  const int uv1 = b.accessor(b.view(std::vector<float>{1, 0, 1, 1, 0, 1, 0, 0}), kFloat, 4, "VEC2");
+  b.primitive()["attributes"]["TEXCOORD_1"] = uv1;
+  json& m = b.doc["materials"][0];
+  m["pbrMetallicRoughness"]["metallicFactor"] = 0.25;
+  m["pbrMetallicRoughness"]["roughnessFactor"] = 0.6;
+  m["pbrMetallicRoughness"]["metallicRoughnessTexture"] = {
+      {"index", 0},
+      {"extensions",
+       {{"KHR_texture_transform",
+         {{"offset", {0.5, 0}}, {"rotation", 1.5707963267948966}, {"scale", {2, 3}}, {"texCoord", 1}}}}}};
+  m["normalTexture"] = {{"index", 0}, {"texCoord", 1}, {"scale", 0.5}};
+  m["occlusionTexture"] = {{"index", 0}, {"strength", 0.7}};
+  m["emissiveTexture"] = {{"index", 0}};
+  m["emissiveFactor"] = {1.0, 0.5, 0.0};
+  m["extensions"] = {{"KHR_materials_emissive_strength", {{"emissiveStrength", 4.0}}}};
+  m["alphaMode"] = "MASK";
+  m["alphaCutoff"] = 0.3;
+  m["doubleSided"] = true;
+  b.doc["extensionsUsed"] = {"KHR_texture_transform", "KHR_materials_emissive_strength"};
+  return b;
+}
+
+TEST(GltfMaterials, EverySlotFactorAndExtensionIsRead) {
+  TempDir dir;
+  const Model m = load_ok(pbr_quad().write(dir.path(), "m", Layout::kGlb));
+  EXPECT_TRUE(m.warnings.empty()) << m.warnings.front();
+  ASSERT_EQ(m.materials.size(), 1u);
+  const Material& mat = m.materials[0];
+  EXPECT_FLOAT_EQ(mat.metallic, 0.25f);
+  EXPECT_FLOAT_EQ(mat.roughness, 0.6f);
+  EXPECT_FLOAT_EQ(mat.normal_scale, 0.5f);
+  EXPECT_FLOAT_EQ(mat.occlusion_strength, 0.7f);
+  expect_near(mat.emissive_factor, glm::vec3(4, 2, 0));  // times KHR_materials_emissive_strength
+  EXPECT_EQ(mat.alpha_mode, Material::AlphaMode::Mask);
+  EXPECT_FLOAT_EQ(mat.alpha_cutoff, 0.3f);
+  EXPECT_TRUE(mat.double_sided);
+  EXPECT_EQ(m.textures.size(), 1u);  // one image behind all five slots, decoded once
+  for (const TextureRef* t :
+       {&mat.base_color, &mat.metallic_roughness, &mat.normal, &mat.occlusion, &mat.emissive})
+    EXPECT_EQ(t->image, 0);
+  EXPECT_EQ(mat.normal.texcoord, 1);
+  EXPECT_EQ(mat.occlusion.texcoord, 0);
+  // KHR_texture_transform: uv' = T·R·S·uv with the spec's R = [[cos, sin], [−sin, cos]]; (1, 0) → S (2, 0)
+  // → R (0, −2) → T (0.5, −2). Its texCoord overrides the textureInfo's.
+  const glm::vec3 moved = mat.metallic_roughness.transform * glm::vec3(1, 0, 1);
+  expect_near(moved, glm::vec3(0.5f, -2.0f, 1.0f));
+  EXPECT_EQ(mat.metallic_roughness.texcoord, 1);
+  expect_near(mat.base_color.transform * glm::vec3(0.3f, 0.7f, 1), glm::vec3(0.3f, 0.7f, 1));
+  const Primitive& p = m.meshes[0].primitives[0];
+  ASSERT_EQ(p.uvs1.size(), 4u);
+  EXPECT_EQ(p.uvs1[1], glm::vec2(1, 1));
+  EXPECT_EQ(p.uvs1[2], glm::vec2(0, 1));
+}
+
+TEST(GltfMaterials, OutOfRangeValuesAreRefusedByName) {
+  TempDir dir;
+  struct Case {
+    std::function<void(json&)> edit;
+    const char* message;
+  };
+  const std::vector<Case> cases = {
+      {[](json& m) { m["pbrMetallicRoughness"]["metallicFactor"] = 2.0; },
+       "materials[0].pbrMetallicRoughness.metallicFactor: must be between 0 and 1"},
+      {[](json& m) { m["alphaMode"] = "SOMETIMES"; }, "materials[0].alphaMode: 'SOMETIMES' is not OPAQUE"},
+      {[](json& m) { m["alphaCutoff"] = -1.0; }, "materials[0].alphaCutoff: must be a number >= 0"},
+      {[](json& m) {
+         m["emissiveFactor"] = {1.0, -1.0, 0.0};
+       },
+       "materials[0].emissiveFactor"},
+      {[](json& m) { m["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"] = -2.0; },
+       "KHR_materials_emissive_strength.emissiveStrength: must be >= 0"},
+      {[](json& m) { m["normalTexture"]["index"] = 7; },
+       "materials[0].normalTexture.index: textures[7] does not exist"},
+      {[](json& m) {
+         m["pbrMetallicRoughness"]["metallicRoughnessTexture"]["extensions"]["KHR_texture_transform"]
+          ["scale"] = "big";
+       },
+       "metallicRoughnessTexture.extensions.KHR_texture_transform.scale: expected 2 finite numbers"},
+  };
+  for (const Case& c : cases) {
+    Builder b = pbr_quad();
+    c.edit(b.doc["materials"][0]);
+    expect_contains(load_error(b.write(dir.path(), "bad", Layout::kGlb)), c.message);
+  }
+}
+
+TEST(GltfSamplers, EveryWrapAndFilterModeIsRead) {
+  TempDir dir;
+  Builder b = textured_quad(ImageAt::kBufferView);
+  // GL enums: 9728 NEAREST, 9729 LINEAR, 9984-9987 the mipmapped minifications; 10497 REPEAT, 33071
+  // CLAMP_TO_EDGE, 33648 MIRRORED_REPEAT.
+  struct Mode {
+    json sampler;
+    Sampler expected;
+  };
+  using W = Sampler::Wrap;
+  using F = Sampler::Filter;
+  const std::vector<Mode> modes = {
+      {json::object(), Sampler{}},
+      {{{"magFilter", 9728}, {"minFilter", 9728}, {"wrapS", 33071}, {"wrapT", 33648}},
+       Sampler{W::ClampToEdge, W::MirroredRepeat, F::Nearest, F::Nearest, false, F::Linear}},
+      {{{"magFilter", 9729}, {"minFilter", 9729}},
+       Sampler{W::Repeat, W::Repeat, F::Linear, F::Linear, false, F::Linear}},
+      {{{"minFilter", 9984}}, Sampler{W::Repeat, W::Repeat, F::Linear, F::Nearest, true, F::Nearest}},
+      {{{"minFilter", 9985}}, Sampler{W::Repeat, W::Repeat, F::Linear, F::Linear, true, F::Nearest}},
+      {{{"minFilter", 9986}}, Sampler{W::Repeat, W::Repeat, F::Linear, F::Nearest, true, F::Linear}},
+      {{{"minFilter", 9987}, {"wrapS", 10497}},
+       Sampler{W::Repeat, W::Repeat, F::Linear, F::Linear, true, F::Linear}},
+  };
+  for (size_t i = 0; i < modes.size(); ++i) {
+    b.doc["samplers"] = json::array({modes[i].sampler});
+    b.doc["textures"][0]["sampler"] = 0;
+    const Model m = load_ok(b.write(dir.path(), "s", Layout::kGlb));
+    EXPECT_TRUE(m.materials[0].base_color.sampler == modes[i].expected) << "mode " << i;
+  }
+  b.doc["samplers"] = json::array({json{{"magFilter", 9986}}});
+  expect_contains(load_error(b.write(dir.path(), "bad", Layout::kGlb)),
+                  "samplers[0].magFilter: must be 9728 or 9729");
+  b.doc["samplers"] = json::array({json{{"wrapT", 1}}});
+  expect_contains(load_error(b.write(dir.path(), "bad", Layout::kGlb)), "samplers[0].wrapS/wrapT");
+  b.doc["textures"][0]["sampler"] = 3;
+  expect_contains(load_error(b.write(dir.path(), "bad", Layout::kGlb)),
+                  "textures[0].sampler: samplers[3] does not exist");
+}
+
+TEST(GltfTangents, GeneratedTangentsPointAlongUAndKnowTheirHandedness) {
+  TempDir dir;
+  // The quad's u grows along +x and v along −y (uv (0,1) at the origin): tangent +x, and the bitangent
+  // (the direction of growing v) −y = −(n × t), so w = −1.
+  Model m = load_ok(textured_quad(ImageAt::kBufferView).write(dir.path(), "q", Layout::kGlb));
+  const Primitive& p = m.meshes[0].primitives[0];
+  ASSERT_EQ(p.tangents.size(), 4u);
+  for (const glm::vec4& t : p.tangents) {
+    expect_near(glm::vec3(t), glm::vec3(1, 0, 0));
+    EXPECT_EQ(t.w, -1.0f);
+  }
+  // u along +y, v along +x: tangent +y, bitangent +x = −(z × y): w = −1; v along −x: w = +1.
+  for (float sign : {1.0f, -1.0f}) {
+    Builder b = textured_quad(ImageAt::kBufferView);
+    const float o = sign > 0 ? 0.0f : 1.0f;
+    const int uv = b.accessor(b.view(std::vector<float>{0, o, 0, 1 - o, 1, 1 - o, 1, o}), kFloat, 4, "VEC2");
+    b.primitive()["attributes"]["TEXCOORD_0"] = uv;
+    m = load_ok(b.write(dir.path(), "r", Layout::kGlb));
+    for (const glm::vec4& t : m.meshes[0].primitives[0].tangents) {
+      expect_near(glm::vec3(t), glm::vec3(0, 1, 0));
+      EXPECT_EQ(t.w, -sign);
+    }
+  }
+  // A file's own tangents are kept (normalised).
+  Builder b = textured_quad(ImageAt::kBufferView);
+  const int tan = b.accessor(b.view(std::vector<float>{0, 2, 0, 1, 0, 2, 0, 1, 0, 2, 0, 1, 0, 2, 0, 1}),
+                             kFloat, 4, "VEC4");
+  b.primitive()["attributes"]["TANGENT"] = tan;
+  m = load_ok(b.write(dir.path(), "t", Layout::kGlb));
+  expect_near(glm::vec3(m.meshes[0].primitives[0].tangents[2]), glm::vec3(0, 1, 0));
+  EXPECT_EQ(m.meshes[0].primitives[0].tangents[2].w, 1.0f);
+}
+
+TEST(GltfQuantization, IntegerAttributesLoadWithTheExtensionAndAreRefusedWithout) {
+  TempDir dir;
+  Builder b;
+  // Positions as plain SHORTs (a node scale brings them to metres), normals as normalized BYTEs,
+  // texcoords as plain UNSIGNED_SHORTs: KHR_mesh_quantization's typical layout.
+  // Vertex elements are 4-byte aligned: SHORT VEC3 and BYTE VEC3 are padded (strides 8 and 4).
+  const int pos = b.accessor(b.view(std::vector<int16_t>{0, 0, 0, 0, 1000, 0, 0, 0, 0, 1000, 0, 0}, 8),
+                             kShort, 3, "VEC3", {{"min", {0, 0, 0}}, {"max", {1000, 1000, 0}}});
+  const int nrm = b.accessor(b.view(std::vector<int8_t>{0, 0, 127, 0, 0, 0, 127, 0, 0, 0, 127, 0}, 4), kByte,
+                             3, "VEC3", {{"normalized", true}});
+  const int uv = b.accessor(b.view(std::vector<uint16_t>{0, 0, 2, 0, 0, 2}), kUnsignedShort, 3, "VEC2");
+  b.push("meshes",
+         {{"primitives",
+           json::array({json{{"attributes", {{"POSITION", pos}, {"NORMAL", nrm}, {"TEXCOORD_0", uv}}}}})}});
+  b.push("nodes", {{"mesh", 0}, {"scale", {0.001, 0.001, 0.001}}});
+  b.doc["scenes"] = json::array({json{{"nodes", {0}}}});
+  expect_contains(load_error(b.write(dir.path(), "plain", Layout::kGlb)), "VEC3 FLOAT");
+  b.doc["extensionsUsed"] = {"KHR_mesh_quantization"};
+  b.doc["extensionsRequired"] = {"KHR_mesh_quantization"};
+  const Model m = load_ok(b.write(dir.path(), "q", Layout::kGlb));
+  EXPECT_TRUE(m.warnings.empty());
+  const Primitive& p = m.meshes[0].primitives[0];
+  expect_near(p.positions[1], glm::vec3(1000, 0, 0));
+  expect_near(p.normals[2], glm::vec3(0, 0, 1));
+  EXPECT_EQ(p.uvs[1], glm::vec2(2, 0));
+  expect_near(m.bounds_max, glm::vec3(1, 1, 0), 1e-4f);
 }
 
 }  // namespace
