@@ -20,9 +20,9 @@ GpuMesh upload_mesh(vk::Context& ctx, std::span<const MeshVertex> vertices,
   return mesh;
 }
 
-vk::Image upload_texture(vk::Context& ctx, const io::Image8& image, const char* name) {
+vk::Image upload_texture(vk::Context& ctx, const io::Image8& image, const char* name, bool srgb) {
   vk::Image texture =
-      vk::Image::create(ctx, {.format = VK_FORMAT_R8G8B8A8_SRGB,
+      vk::Image::create(ctx, {.format = srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM,
                               .extent = {image.width, image.height},
                               .mip_levels = 0,
                               .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |

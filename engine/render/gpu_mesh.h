@@ -17,8 +17,10 @@ struct MeshVertex {  // matches `struct Vertex` in mesh.vert
   glm::vec3 position;
   glm::vec3 normal;
   glm::vec2 uv;
+  glm::vec2 uv1{0.0f};                  // TEXCOORD_1
+  glm::vec4 tangent{1.0f, 0, 0, 1.0f};  // xyz, w = handedness (gltf/model.h)
 };
-static_assert(sizeof(MeshVertex) == 32);
+static_assert(sizeof(MeshVertex) == 56);
 
 struct GpuMesh {
   vk::Buffer vertices, indices;
@@ -28,7 +30,8 @@ struct GpuMesh {
 GpuMesh upload_mesh(vk::Context& ctx, std::span<const MeshVertex> vertices,
                     std::span<const uint32_t> indices);
 
-// RGBA8 sRGB texture with a full mip chain, left in GENERAL layout for sampling.
-vk::Image upload_texture(vk::Context& ctx, const io::Image8& image, const char* name);
+// RGBA8 texture with a full mip chain, left in GENERAL layout for sampling: sRGB-encoded colours (base
+// colour, emissive) or linear data (normals, metallic-roughness, occlusion).
+vk::Image upload_texture(vk::Context& ctx, const io::Image8& image, const char* name, bool srgb = true);
 
 }  // namespace lagoon::render

@@ -143,6 +143,7 @@ FrameContext OceanRenderer::begin_frame(VkCommandBuffer cmd, const scene::Scene&
                         std::sqrt(1.0 + double(aspect) * aspect);
   const CameraSide side = camera_medium_->side(scene.camera.position, lens_m, scene.time_s);
   place_floating_objects(scene.time_s);
+  objects_->set_sky(sky_light(scene.sun));
   wakes_->follow_camera(scene);
   const uint32_t light_count =
       write_point_lights(scene, objects_->gltf_lights(reference_illuminance_lux(scene.sun)),

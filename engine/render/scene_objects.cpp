@@ -8,8 +8,12 @@
 #include "gltf/gltf_loader.h"
 #include "lagoon_shaders/shaders.h"
 
+#include "render/dfg_table.h"
+#include "render/mesh_material.h"
 #include "render/object_pose.h"
 #include "render/seafloor.h"
+#include "vk/barriers.h"
+#include "vk/transfer.h"
 
 namespace lagoon::render {
 namespace {
@@ -27,22 +31,43 @@ glm::vec2 world_y_range(const glm::mat4& world, glm::vec3 lo, glm::vec3 hi) {
 
 }  // namespace
 
+SceneObjects::SceneObjects(vk::Context& ctx, const Samplers& samplers)
+    : ctx_(ctx),
+      samplers_(samplers),
+      environment_sampler_(vk::create_sampler(ctx, {.mipmap = VK_SAMPLER_MIPMAP_MODE_NEAREST,
+                                                    .address = VK_SAMPLER_ADDRESS_MODE_REPEAT,
+                                                    .address_v = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
+                                                    .mip_levels = false})),
+      environment_(ctx) {}
+
 Result<std::unique_ptr<SceneObjects>> SceneObjects::load(vk::Context& ctx, const scene::Scene& scene,
                                                          const Samplers& samplers, VkFormat display_format,
                                                          VkFormat hdr_format, VkFormat depth_format) {
   std::unique_ptr<SceneObjects> objects(new SceneObjects(ctx, samplers));
   static_assert(LAGOON_MESH_WINDOW + 1 == std::tuple_size_v<decltype(pipelines_)>, "a pipeline per mode");
-  for (uint32_t mode = 0; mode < objects->pipelines_.size(); ++mode)
-    objects->pipelines_[mode] = vk::GraphicsPipeline::create(
-        ctx, {.vertex = &shaders::render_mesh_vert,
-              .fragment = &shaders::render_mesh_frag,
-              .color_formats = {mode == LAGOON_MESH_LIT ? display_format : hdr_format},
-              .depth_format = depth_format,
-              .depth_test = true,
-              .depth_write = true,
-              .spec = {{LAGOON_MESH_SPEC_MODE, mode}}});
+  for (uint32_t mode = 0; mode < objects->pipelines_.size(); ++mode) {
+    for (bool blend : {false, true}) {
+      (blend ? objects->blend_pipelines_ : objects->pipelines_)[mode] = vk::GraphicsPipeline::create(
+          ctx, {.vertex = &shaders::render_mesh_vert,
+                .fragment = &shaders::render_mesh_frag,
+                .color_formats = {mode == LAGOON_MESH_LIT ? display_format : hdr_format},
+                .depth_format = depth_format,
+                .depth_test = true,
+                .depth_write = !blend,
+                .alpha_blend = blend,
+                .spec = {{LAGOON_MESH_SPEC_MODE, mode}}});
+    }
+  }
   const io::Image8 white{.width = 1, .height = 1, .rgba = {255, 255, 255, 255}};
   objects->white_texture_ = upload_texture(ctx, white, "white");
+  objects->materials_.push_back(default_material_gpu());  // materials_[0]: primitives without a material
+  objects->dfg_texture_ =
+      vk::Image::create(ctx, {.format = VK_FORMAT_R32G32_SFLOAT,
+                              .extent = {LAGOON_DFG_SIZE, LAGOON_DFG_SIZE},
+                              .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                              .debug_name = "dfg table"});
+  vk::upload_image(ctx, objects->dfg_texture_, std::as_bytes(std::span(dfg_table().ab)),
+                   VK_IMAGE_LAYOUT_GENERAL, vk::access::kGraphicsSampled);
   if (auto r = objects->load_floor(scene); !r) return r.error();
   for (size_t o = 0; o < scene.objects.size(); ++o) {
     const std::string field = "objects[" + std::to_string(o) + "].file";
@@ -67,6 +92,7 @@ Result<std::unique_ptr<SceneObjects>> SceneObjects::load(vk::Context& ctx, const
     if (auto r = objects->load_model(vehicle.file, at, field); !r) return r.error();
     objects->object_draws_.push_back({first, objects->objects_.size()});
   }
+  objects->upload_materials();
   return objects;
 }
 
@@ -79,13 +105,19 @@ Result<void> SceneObjects::load_floor(const scene::Scene& scene) {
   const FloorMesh mesh =
       build_slope_floor(floor, glm::vec2(scene.camera.position.x, scene.camera.position.z));
   floor_ = upload_mesh(ctx_, mesh.vertices, mesh.indices);
-  floor_albedo_ = floor.albedo;
   floor_texture_scale_ = floor.texture_scale_m;
-  if (floor.texture.empty()) return {};
-  auto image = io::read_png(floor.texture);
-  if (!image) return make_error("seafloor.texture: " + image.error().message);
-  floor_texture_ = upload_texture(ctx_, *image, "floor texture");
-  floor_textured_ = true;
+  gltf::Material material;
+  material.base_color_factor = glm::vec4(floor.albedo, 1.0f);
+  material.double_sided = true;
+  gpu::MaterialGpu gpu_material = material_gpu(material);
+  if (!floor.texture.empty()) {
+    auto image = io::read_png(floor.texture);
+    if (!image) return make_error("seafloor.texture: " + image.error().message);
+    floor_texture_ = upload_texture(ctx_, *image, "floor texture");
+    gpu_material.flags.y = 1u << LAGOON_TEX_BASE;
+  }
+  floor_material_ = uint32_t(materials_.size());
+  materials_.push_back(gpu_material);
   return {};
 }
 
@@ -96,30 +128,85 @@ Result<void> SceneObjects::load_model(const std::string& file, const glm::mat4& 
   if (lights_of) add_lights(*model, *lights_of, file);
   for (const std::string& warning : model->warnings)
     std::fprintf(stderr, "lagoon: warning: %s: %s\n", file.c_str(), warning.c_str());
-  const int texture_base = int(textures_.size());
-  for (const gltf::Texture& t : model->textures)
-    textures_.push_back(upload_texture(ctx_, io::Image8{.width = t.width, .height = t.height, .rgba = t.rgba},
-                                       "model texture"));
+  // Each model's images are uploaded when a material first uses them, once per colour space.
+  const size_t model_id = model_count_++;
+  std::vector<std::pair<uint32_t, DrawTextures>> materials;
+  for (const gltf::Material& m : model->materials) {
+    DrawTextures textures;
+    const uint32_t index = add_material(*model, m, model_id, textures);
+    materials.push_back({index, textures});
+  }
+  DrawTextures plain;
+  plain.image.fill(&white_texture_);
+  plain.sampler.fill(samplers_.repeat.get());
   for (const gltf::Instance& instance : model->instances) {
     for (const gltf::Primitive& p : model->meshes[instance.mesh].primitives) {
       std::vector<MeshVertex> vertices(p.positions.size());
       for (size_t i = 0; i < vertices.size(); ++i)
-        vertices[i] = {p.positions[i], p.normals[i], i < p.uvs.size() ? p.uvs[i] : glm::vec2(0)};
+        vertices[i] = {p.positions[i], p.normals[i], i < p.uvs.size() ? p.uvs[i] : glm::vec2(0),
+                       i < p.uvs1.size() ? p.uvs1[i] : glm::vec2(0),
+                       i < p.tangents.size() ? p.tangents[i] : glm::vec4(1, 0, 0, 1)};
       ObjectDraw draw{.mesh = upload_mesh(ctx_, vertices, p.indices),
                       .world = transform * instance.world,
                       .local = instance.world};
       draw.lo = draw.hi = p.positions.empty() ? glm::vec3(0.0f) : p.positions[0];
       for (const glm::vec3& q : p.positions) draw.lo = glm::min(draw.lo, q), draw.hi = glm::max(draw.hi, q);
       draw.y_range = world_y_range(draw.world, draw.lo, draw.hi);
+      draw.textures = plain;
       if (p.material >= 0) {
-        const gltf::Material& m = model->materials[p.material];
-        draw.base_colour = glm::vec4(glm::vec3(m.base_color_factor), m.base_color_texture >= 0 ? 1.0f : 0.0f);
-        if (m.base_color_texture >= 0) draw.texture = texture_base + m.base_color_texture;
+        std::tie(draw.material, draw.textures) = materials[size_t(p.material)];
+        draw.blend = model->materials[size_t(p.material)].alpha_mode == gltf::Material::AlphaMode::Blend;
       }
       objects_.push_back(std::move(draw));
     }
   }
   return {};
+}
+
+uint32_t SceneObjects::add_material(const gltf::Model& model, const gltf::Material& material, size_t model_id,
+                                    DrawTextures& textures) {
+  gpu::MaterialGpu gpu_material = material_gpu(material);
+  const gltf::TextureRef* refs[LAGOON_TEX_COUNT] = {&material.base_color, &material.metallic_roughness,
+                                                    &material.normal, &material.occlusion,
+                                                    &material.emissive};
+  for (int i = 0; i < LAGOON_TEX_COUNT; ++i) {
+    const bool srgb = i == LAGOON_TEX_BASE || i == LAGOON_TEX_EMISSIVE;  // colours; the rest is data
+    textures.image[size_t(i)] = &white_texture_;
+    textures.sampler[size_t(i)] = samplers_.repeat.get();
+    if (refs[i]->image < 0) continue;
+    textures.image[size_t(i)] = &model_texture(model, model_id, refs[i]->image, srgb);
+    textures.sampler[size_t(i)] = sampler_for(refs[i]->sampler);
+    gpu_material.flags.y |= 1u << i;
+  }
+  materials_.push_back(gpu_material);
+  return uint32_t(materials_.size() - 1);
+}
+
+const vk::Image& SceneObjects::model_texture(const gltf::Model& model, size_t model_id, int image,
+                                             bool srgb) {
+  const std::pair<size_t, bool> key{(model_id << 20) + size_t(image), srgb};
+  for (const auto& [k, slot] : texture_slots_)
+    if (k == key) return *textures_[slot];
+  const gltf::Texture& t = model.textures[size_t(image)];
+  textures_.push_back(std::make_unique<vk::Image>(upload_texture(
+      ctx_, io::Image8{.width = t.width, .height = t.height, .rgba = t.rgba}, "model texture", srgb)));
+  texture_slots_.push_back({key, textures_.size() - 1});
+  return *textures_.back();
+}
+
+VkSampler SceneObjects::sampler_for(const gltf::Sampler& sampler) {
+  for (const auto& [s, handle] : gltf_samplers_)
+    if (s == sampler) return handle.get();
+  gltf_samplers_.emplace_back(sampler, vk::create_sampler(ctx_, sampler_desc(sampler)));
+  return gltf_samplers_.back().second.get();
+}
+
+void SceneObjects::upload_materials() {
+  const std::span<const gpu::MaterialGpu> data(materials_);
+  materials_buffer_ = vk::Buffer::create(
+      ctx_, data.size_bytes(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+      vk::MemoryUsage::Device, "mesh materials");
+  vk::upload_buffer(ctx_, materials_buffer_, std::as_bytes(data));
 }
 
 void SceneObjects::add_lights(const gltf::Model& model, size_t object, const std::string& file) {
@@ -166,34 +253,57 @@ void SceneObjects::place(size_t object, const glm::mat4& model_to_world) {
 }
 
 void SceneObjects::draw_mesh(const FrameContext& frame, gpu::MeshMode mode, const GpuMesh& mesh,
-                             const gpu::MeshPush& push, const vk::Image& texture) const {
-  const vk::GraphicsPipeline& pipeline = pipelines_[uint32_t(mode)];
+                             const gpu::MeshPush& push, const DrawTextures& t, bool blend) const {
+  const vk::GraphicsPipeline& pipeline = (blend ? blend_pipelines_ : pipelines_)[uint32_t(mode)];
+  auto tex = [&](int i) { return sampled(*t.image[size_t(i)], t.sampler[size_t(i)]); };
   vk::draw(
       frame.cmd, pipeline,
       {vk::bind(LAGOON_MESH_BIND_FRAME, frame.uniforms()), vk::bind(LAGOON_MESH_BIND_VERTICES, mesh.vertices),
        vk::bind(LAGOON_MESH_BIND_INDICES, mesh.indices),
-       vk::bind(LAGOON_MESH_BIND_ALBEDO, sampled(texture, samplers_.repeat)),
-       vk::bind(LAGOON_MESH_BIND_LIGHTS, frame.slot.lights)},
+       vk::bind(LAGOON_MESH_BIND_ALBEDO, tex(LAGOON_TEX_BASE)),
+       vk::bind(LAGOON_MESH_BIND_LIGHTS, frame.slot.lights),
+       vk::bind(LAGOON_MESH_BIND_METAL_ROUGH, tex(LAGOON_TEX_METAL_ROUGH)),
+       vk::bind(LAGOON_MESH_BIND_NORMAL, tex(LAGOON_TEX_NORMAL)),
+       vk::bind(LAGOON_MESH_BIND_OCCLUSION, tex(LAGOON_TEX_OCCLUSION)),
+       vk::bind(LAGOON_MESH_BIND_EMISSIVE, tex(LAGOON_TEX_EMISSIVE)),
+       vk::bind(LAGOON_MESH_BIND_MATERIALS, materials_buffer_),
+       vk::bind(LAGOON_MESH_BIND_ENVIRONMENT, sampled(environment_.image(), environment_sampler_.get())),
+       vk::bind(LAGOON_MESH_BIND_DFG, sampled(dfg_texture_, samplers_.clamp.get()))},
       push, mesh.index_count);
 }
 
 void SceneObjects::draw(const FrameContext& frame, gpu::MeshMode mode) const {
+  // The viewer the draws are sorted for: in the reflection, the camera mirrored about the water level.
+  glm::vec3 eye = frame.scene.camera.position;
+  if (mode == gpu::MeshMode::Mirrored) eye.y = -eye.y;
+  std::vector<std::pair<float, const ObjectDraw*>> blended;
   for (const ObjectDraw& o : objects_) {
     // mesh.frag keeps only what is on its pass's side of y = 0; a mesh wholly on the other side is skipped.
     const bool wanted = mode == gpu::MeshMode::Refraction ? o.y_range.x < 0.0f : o.y_range.y > 0.0f;
     if (!wanted) continue;
-    const gpu::MeshPush push{.model = o.world, .base_colour = o.base_colour};
-    draw_mesh(frame, mode, o.mesh, push, o.texture >= 0 ? textures_[o.texture] : white_texture_);
+    if (o.blend) {
+      const glm::vec3 centre = glm::vec3(o.world * glm::vec4(0.5f * (o.lo + o.hi), 1.0f));
+      blended.push_back({glm::length(centre - eye), &o});
+      continue;
+    }
+    draw_mesh(frame, mode, o.mesh, {.model = o.world, .material = o.material}, o.textures, false);
   }
+  // BLEND after everything opaque, farthest first (by the centre of each primitive's bounds).
+  std::stable_sort(blended.begin(), blended.end(),
+                   [](const auto& a, const auto& b) { return a.first > b.first; });
+  for (const auto& [distance, o] : blended)
+    draw_mesh(frame, mode, o->mesh, {.model = o->world, .material = o->material}, o->textures, true);
 }
 
 void SceneObjects::draw_floor(const FrameContext& frame) const {
   if (!floor_) return;
-  const gpu::MeshPush push{.model = glm::mat4(1.0f),
-                           .base_colour = glm::vec4(floor_albedo_, floor_textured_ ? 1.0f : 0.0f),
-                           .texture_scale = floor_texture_scale_};
-  draw_mesh(frame, gpu::MeshMode::Refraction, *floor_, push,
-            floor_textured_ ? floor_texture_ : white_texture_);
+  DrawTextures t;
+  t.image.fill(&white_texture_);
+  t.sampler.fill(samplers_.repeat.get());
+  if (materials_[floor_material_].flags.y != 0u) t.image[LAGOON_TEX_BASE] = &floor_texture_;
+  const gpu::MeshPush push{
+      .model = glm::mat4(1.0f), .material = floor_material_, .texture_scale = floor_texture_scale_};
+  draw_mesh(frame, gpu::MeshMode::Refraction, *floor_, push, t, false);
 }
 
 }  // namespace lagoon::render

@@ -1,6 +1,7 @@
 // The scene's meshes on the GPU: the glTF objects (objects[]) and vehicles (vehicles[]), a glTF sea floor,
-// and the procedural slope floor, with their textures and the mesh pipelines (shaders/render/mesh.*). Passes
-// draw them in one of the three modes of shared/mesh.h.
+// and the procedural slope floor, with their glTF materials, textures and samplers, the pre-filtered sky
+// they are lit by, and the mesh pipelines (shaders/render/mesh.*). Passes draw them in one of the modes of
+// shared/mesh.h.
 #pragma once
 #include <array>
 #include <memory>
@@ -10,6 +11,7 @@
 
 #include "core/result.h"
 #include "gltf/model.h"
+#include "render/environment_map.h"
 #include "render/frame_context.h"
 #include "render/gpu_mesh.h"
 #include "render/samplers.h"
@@ -41,25 +43,40 @@ class SceneObjects {
   // light above the water, render::reference_illuminance_lux); without a glTF range, range_m is where that
   // irradiance falls to 1e-4. Spot lights keep their cone, along their node's −z.
   std::vector<scene::PointLight> gltf_lights(double reference_lux) const;
+  // The sky the objects are lit by (their pre-filtered environment); call before the frame's first draw.
+  void set_sky(const SkyLight& light) { environment_.update(light); }
 
  private:
-  SceneObjects(vk::Context& ctx, const Samplers& samplers) : ctx_(ctx), samplers_(samplers) {}
+  SceneObjects(vk::Context& ctx, const Samplers& samplers);
   Result<void> load_floor(const scene::Scene& scene);
   // `lights_of`: the scene object whose lights the model's KHR_lights_punctual lights become (none: ignored).
   Result<void> load_model(const std::string& file, const glm::mat4& transform, const std::string& field,
                           std::optional<size_t> lights_of = std::nullopt);
   void add_lights(const gltf::Model& model, size_t object, const std::string& file);
+  // A material's textures and samplers for a draw (one per LAGOON_TEX_*; a white texture where it has none).
+  struct DrawTextures {
+    std::array<const vk::Image*, LAGOON_TEX_COUNT> image{};
+    std::array<VkSampler, LAGOON_TEX_COUNT> sampler{};
+  };
   void draw_mesh(const FrameContext& frame, gpu::MeshMode mode, const GpuMesh& mesh,
-                 const gpu::MeshPush& push, const vk::Image& texture) const;
+                 const gpu::MeshPush& push, const DrawTextures& textures, bool blend) const;
+  // The material's index in materials_, its images uploaded (each once per colour space) and samplers made.
+  // `model_id` tells this model's images from other models'.
+  uint32_t add_material(const gltf::Model& model, const gltf::Material& material, size_t model_id,
+                        DrawTextures& textures);
+  const vk::Image& model_texture(const gltf::Model& model, size_t model_id, int image, bool srgb);
+  VkSampler sampler_for(const gltf::Sampler& sampler);
+  void upload_materials();
 
   struct ObjectDraw {
     GpuMesh mesh;
     glm::mat4 world{1.0f};
     glm::mat4 local{1.0f};         // within its model (the glTF node's transform)
     glm::vec3 lo{0.0f}, hi{0.0f};  // its vertices' bounds within the node
-    glm::vec4 base_colour{1.0f};   // a = 1 when `texture` is used
-    int texture = -1;              // index into textures_
-    glm::vec2 y_range{0.0f};       // lowest and highest world y of its vertices
+    uint32_t material = 0;         // index into materials_
+    DrawTextures textures;
+    bool blend = false;       // alphaMode BLEND: drawn after the rest, farthest first
+    glm::vec2 y_range{0.0f};  // lowest and highest world y of its vertices
   };
   vk::Context& ctx_;
   const Samplers& samplers_;
@@ -74,15 +91,24 @@ class SceneObjects {
   };
   std::vector<ModelLight> lights_;
   std::vector<glm::mat4> object_world_;  // per scene object with lights: its model-to-world transform
-  std::vector<vk::Image> textures_;
+  size_t model_count_ = 0;
+  std::vector<std::unique_ptr<vk::Image>> textures_;  // stable addresses for DrawTextures
+  std::vector<std::pair<std::pair<size_t, bool>, size_t>> texture_slots_;  // (model image, sRGB) -> textures_
+  std::vector<std::pair<gltf::Sampler, vk::Unique<VkSampler>>> gltf_samplers_;
+  vk::Unique<VkSampler> environment_sampler_;  // repeats around the horizon, clamps at the poles
+  vk::Image dfg_texture_;                      // render/dfg_table.h
   vk::Image white_texture_;
+  std::vector<gpu::MaterialGpu> materials_;
+  vk::Buffer materials_buffer_;
+  EnvironmentMap environment_;
   std::optional<GpuMesh> floor_;
   vk::Image floor_texture_;
-  bool floor_textured_ = false;
-  glm::vec3 floor_albedo_{1};
+  uint32_t floor_material_ = 0;
   float floor_texture_scale_ = 1;
-  // One per gpu::MeshMode (LAGOON_MESH_SPEC_MODE): Lit into the displayed frame, the others into HDR targets.
+  // One per gpu::MeshMode (LAGOON_MESH_SPEC_MODE): Lit into the displayed frame, the others into HDR targets;
+  // opaque and MASK materials, then BLEND ones (blending, no depth writes).
   std::array<vk::GraphicsPipeline, 4> pipelines_;
+  std::array<vk::GraphicsPipeline, 4> blend_pipelines_;
 };
 
 }  // namespace lagoon::render

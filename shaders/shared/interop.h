@@ -21,16 +21,21 @@ using uint = uint32_t;
 // GLSL's built-ins, for the functions shared headers define for both languages (e.g. shared/clipmap.h).
 using glm::abs;
 using glm::acos;
+using glm::atan;
 using glm::clamp;
+using glm::cos;
 using glm::dot;
 using glm::exp;
 using glm::exp2;
 using glm::floor;
+using glm::fract;
 using glm::max;
 using glm::min;
 using glm::mix;
 using glm::normalize;
 using glm::pow;
+using glm::sin;
+using glm::sqrt;
 LAGOON_GPU_END
 #define LAGOON_FN inline
 // Use inside #ifdef __cplusplus: the layout GLSL assumes, checked by the C++ compiler.
