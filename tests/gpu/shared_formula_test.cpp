@@ -8,7 +8,9 @@
 #include <vector>
 
 #include "lagoon_test_shaders/shaders.h"
+#include "render/dfg_table.h"
 #include "render/sky_light.h"
+#include "shared/pbr.h"
 #include "shared/sky_model.h"
 #include "support/vk_fixture.h"
 #include "vk/barriers.h"
@@ -89,6 +91,50 @@ TEST_F(SharedFormula, SkyModelIsTheSameOnGpuAndCpu) {
       ASSERT_GT(reference[c], 0.0) << "a clear sky is never black or negative, at " << i;
       ASSERT_NEAR(cpu[c], reference[c], 2e-5 * reference[c]) << "C++ at " << i << " channel " << c;
       ASSERT_NEAR(gpu[i][c], reference[c], 1e-3 * reference[c]) << "GPU at " << i << " channel " << c;
+    }
+  }
+}
+
+TEST_F(SharedFormula, PbrBrdfIsTheSameOnGpuAndCpu) {
+  // shared/pbr.h as the mesh shader compiles it against the C++ the unit tests check (pbr_brdf_test.cpp).
+  const uint32_t count = 1000;
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> u(0.0f, 1.0f);
+  std::vector<glm::vec4> cases;
+  for (uint32_t i = 0; i < count; ++i) {
+    const glm::vec3 n(0, 1, 0);
+    const glm::vec3 v = glm::normalize(glm::vec3(u(rng) - 0.5f, 0.05f + u(rng), u(rng) - 0.5f));
+    const glm::vec3 l = glm::normalize(glm::vec3(u(rng) - 0.5f, 0.05f + u(rng), u(rng) - 0.5f));
+    const float roughness = u(rng);
+    const glm::vec2 ab = render::dfg_table().lookup(v.y, roughness);
+    cases.insert(cases.end(), {glm::vec4(n, roughness), glm::vec4(v, ab.x), glm::vec4(l, ab.y),
+                               glm::vec4(u(rng), u(rng), u(rng), u(rng))});
+  }
+  const auto usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                     VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+  vk::Buffer in =
+      vk::Buffer::create(ctx(), cases.size() * sizeof(glm::vec4), usage, vk::MemoryUsage::Device, "in");
+  vk::Buffer out =
+      vk::Buffer::create(ctx(), 2 * count * sizeof(glm::vec4), usage, vk::MemoryUsage::Device, "out");
+  vk::upload_buffer(ctx(), in, vk::as_bytes_of(cases));
+  const vk::ComputePipeline eval = vk::ComputePipeline::create(ctx(), shaders::gpu_pbr_eval_comp);
+  ctx().submit_and_wait([&](VkCommandBuffer cmd) {
+    vk::memory_barrier(cmd, vk::access::kTransferWrite, vk::access::kComputeReadWrite);
+    vk::dispatch(cmd, eval, {vk::bind(0, in), vk::bind(1, out)}, count, vk::groups_for(eval, {count, 1, 1}));
+    vk::memory_barrier(cmd, vk::access::kComputeWrite, vk::access::kTransferRead);
+  });
+  const std::vector<glm::vec4> gpu = from_bytes<glm::vec4>(vk::readback_buffer(ctx(), out));
+  for (uint32_t i = 0; i < count; ++i) {
+    const glm::vec4* c = &cases[4 * i];
+    const glm::vec2 ab(c[1].w, c[2].w);
+    const glm::vec3 brdf = gpu::pbr_brdf_cos(glm::vec3(c[0]), glm::vec3(c[1]), glm::vec3(c[2]),
+                                             glm::vec3(c[3]), c[3].w, c[0].w, ab);
+    const glm::vec3 env =
+        gpu::pbr_environment(ab, glm::vec3(c[3]), c[3].w, {0.7f, 0.8f, 0.9f}, {0.5f, 0.6f, 0.7f});
+    for (int k = 0; k < 3; ++k) {
+      ASSERT_NEAR(gpu[2 * i][k], brdf[k], 1e-3f * brdf[k] + 1e-6f) << "BRDF at " << i << " channel " << k;
+      ASSERT_NEAR(gpu[2 * i + 1][k], env[k], 1e-4f * env[k] + 1e-6f)
+          << "environment at " << i << " channel " << k;
     }
   }
 }
