@@ -5,6 +5,9 @@
   boat.gltf + boat.bin   5 m open motor boat, waterline at y = 0, bow toward +z
   rocks.gltf + rocks.bin three boulders bedded in sand, the sand at y = 0
   auv.gltf + auv.bin     2 m torpedo-shaped AUV, axis along z, bow toward +z, origin at its centre
+  workboat.gltf + .bin   the boat with a painted hull in PBR textures (workboat_paint.png base colour,
+                         workboat_normal.png plank seams, workboat_orm.png occlusion/roughness/metallic)
+                         and a mooring rope whose texture (workboat_rope.png) is cut out by alpha MASK
   sand.png               256x256 seamlessly tiling RGBA8 sand texture
   README.md              what each asset is and how to regenerate it
 
@@ -353,14 +356,36 @@ MATERIALS = {
     "rock_grey": ((118, 112, 100), 0.9),
     "auv_yellow": ((236, 180, 22), 0.35),
     "auv_black": ((28, 28, 30), 0.5),
+    "workboat_paint": ((255, 255, 255), 1.0),  # the textures carry colour and roughness
+    "workboat_rope": ((255, 255, 255), 0.8),
+}
+
+# Materials with textures (issue 17): what material_json gives, plus these glTF fields; "*.png" values are
+# texture references to images this generator writes.
+TEXTURED_MATERIALS = {
+    "workboat_paint": {"pbrMetallicRoughness": {"baseColorTexture": "workboat_paint.png",
+                                                "metallicRoughnessTexture": "workboat_orm.png"},
+                       "normalTexture": "workboat_normal.png", "occlusionTexture": "workboat_orm.png"},
+    "workboat_rope": {"pbrMetallicRoughness": {"baseColorTexture": "workboat_rope.png"},
+                      "alphaMode": "MASK", "alphaCutoff": 0.5, "doubleSided": True},
 }
 
 
-def material_json(name):
+def material_json(name, texture_index=None):
+    """texture_index(png name) -> glTF texture index, for the TEXTURED_MATERIALS."""
     rgb, rough = MATERIALS[name]
-    return {"name": name,
-            "pbrMetallicRoughness": {"baseColorFactor": [srgb_to_linear(c) for c in rgb] + [1.0],
-                                     "metallicFactor": 0.0, "roughnessFactor": rough}}
+    m = {"name": name,
+         "pbrMetallicRoughness": {"baseColorFactor": [srgb_to_linear(c) for c in rgb] + [1.0],
+                                  "metallicFactor": 0.0, "roughnessFactor": rough}}
+    for key, value in TEXTURED_MATERIALS.get(name, {}).items():
+        if key == "pbrMetallicRoughness":
+            for k, png in value.items():
+                m[key][k] = {"index": texture_index(png)}
+        elif isinstance(value, str) and value.endswith(".png"):
+            m[key] = {"index": texture_index(value)}
+        else:
+            m[key] = value
+    return m
 
 
 # --------------------------------------------------------------------------------------------------------
@@ -692,6 +717,126 @@ def build_boat():
 
 
 # --------------------------------------------------------------------------------------------------------
+# Work boat (issue 17): the boat with its white hull painted in PBR textures that tile once per metre of
+# TEXCOORD_0 (planks 0.25 m wide between 1 cm seams: a normal map, darker and occluded in the seams, the
+# paint's roughness varying with grime), and a mooring rope from the bow down to the water: a flat strip
+# whose texture's alpha is the twisted rope's outline (alpha MASK).
+
+PAINT_SIZE = 128
+PAINT_SEED = 4411
+ROPE_W, ROPE_H = 64, 16
+ROPE_TWIST_M = 0.2  # one repeat of the rope texture along the rope
+
+
+def periodic_noise(rng, period, n):
+    table = [[rng.random() for _ in range(period)] for _ in range(period)]
+
+    def at(x, y):
+        fx, fy = x * period / n, y * period / n
+        ix, iy = int(fx), int(fy)
+        tx, ty = fx - ix, fy - iy
+        tx, ty = tx * tx * (3 - 2 * tx), ty * ty * (3 - 2 * ty)
+        x0, x1, y0, y1 = ix % period, (ix + 1) % period, iy % period, (iy + 1) % period
+        return lerp(lerp(table[y0][x0], table[y0][x1], tx), lerp(table[y1][x0], table[y1][x1], tx), ty)
+    return at
+
+
+def paint_textures():
+    """Rows of the three hull textures (colour, normal, occlusion-roughness-metallic), PAINT_SIZE square."""
+    n = PAINT_SIZE
+    rng = random.Random(PAINT_SEED)
+    grime, speck = periodic_noise(rng, 4, n), periodic_noise(rng, 32, n)
+    plank = n // 4  # 0.25 m
+
+    def seam(y):  # 1 in the middle of a seam, 0 outside; seams 1 cm (~1.3 px) wide, smooth over 4 px
+        d = min((y % plank), plank - (y % plank)) / 2.0
+        return max(0.0, math.cos(min(d, 2.0) * math.pi / 4.0)) ** 2 if d < 2.0 else 0.0
+
+    colour, normal, orm = [], [], []
+    for y in range(n):
+        c_row, n_row, o_row = bytearray(), bytearray(), bytearray()
+        # The seam's slope across v (finite difference of its depth, 1 mm deep per texel's 7.8 mm).
+        slope = (seam(y + 1) - seam(y - 1)) * 0.5 * 0.4
+        nv = normalize((0.0, slope, 1.0))
+        for x in range(n):
+            g = 0.7 * grime(x, y) + 0.3 * speck(x, y)
+            shade = (1.0 - 0.12 * g) * (1.0 - 0.35 * seam(y))
+            for k, base in enumerate((0.93, 0.93, 0.90)):
+                c_row.append(int(round(255.0 * base * shade)))
+            c_row.append(255)
+            for k in range(3):
+                n_row.append(int(round(255.0 * (0.5 + 0.5 * nv[k]))))
+            n_row.append(255)
+            o_row += bytes((int(round(255.0 * (1.0 - 0.6 * seam(y)))), int(round(255.0 * (0.25 + 0.45 * g))), 0,
+                            255))
+        colour.append(bytes(c_row))
+        normal.append(bytes(n_row))
+        orm.append(bytes(o_row))
+    return colour, normal, orm
+
+
+def rope_texture():
+    """Rows of the rope texture: u along the rope (one twist of three strands), v across; alpha 0 outside
+    the strands' outline."""
+    rows = []
+    for y in range(ROPE_H):
+        v = (y + 0.5) / ROPE_H
+        row = bytearray()
+        for x in range(ROPE_W):
+            u = (x + 0.5) / ROPE_W
+            phase = (3.0 * u + 1.5 * v) % 1.0  # three strands, laid at an angle
+            bulge = 0.5 + 0.5 * math.cos(2.0 * math.pi * phase)
+            half = 0.32 + 0.12 * abs(math.cos(math.pi * 3.0 * u))  # the outline swells over each strand
+            inside = abs(v - 0.5) < half
+            shade = 0.55 + 0.45 * bulge
+            row += bytes((int(round(205 * shade)), int(round(170 * shade)), int(round(110 * shade)),
+                          255 if inside else 0))
+        rows.append(bytes(row))
+    return rows
+
+
+def strip(prim, a, b, width, thickness, u_per_m):
+    """A closed flat strip from a to b, `width` across (horizontal) and `thickness` thick; its two broad
+    faces carry the texture (u along, v across), the narrow ones the texture's middle row."""
+    xf = Xform.along(a, b)
+    length_m = length(sub(b, a))
+    w, t = width / 2.0, thickness / 2.0
+    corners = {}
+    for i in (0, 1):
+        for j in (0, 1):
+            for k in (0, 1):
+                corners[(i, j, k)] = qp(xf.point(((2 * k - 1) * t, i * length_m, (2 * j - 1) * w)))
+    faces = (((0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)), ((0, 0, 0), (0, 1, 0), (1, 1, 0), (1, 0, 0)),
+             ((0, 0, 0), (1, 0, 0), (1, 0, 1), (0, 0, 1)), ((0, 1, 0), (0, 1, 1), (1, 1, 1), (1, 1, 0)),
+             ((0, 0, 0), (0, 0, 1), (0, 1, 1), (0, 1, 0)), ((1, 0, 0), (1, 1, 0), (1, 1, 1), (1, 0, 1)))
+    centre = xf.point((0.0, length_m / 2.0, 0.0))
+    for f in faces:
+        quad = [corners[c] for c in f]
+        n = normalize(cross(sub(quad[2], quad[0]), sub(quad[3], quad[1])))
+        fc = mul(add(add(quad[0], quad[1]), add(quad[2], quad[3])), 0.25)
+        if dot(n, sub(fc, centre)) < 0:
+            quad.reverse()
+            f = tuple(reversed(f))
+            n = mul(n, -1.0)
+        broad = f[0][2] == f[1][2] == f[2][2] == f[3][2]
+        ids = [prim.vert(p, n, (c[0] * length_m * u_per_m, c[1] if broad else 0.5)) for p, c in zip(quad, f)]
+        prim.tri(ids[0], ids[1], ids[2])
+        prim.tri(ids[0], ids[2], ids[3])
+
+
+def build_workboat():
+    _, nodes = build_boat()
+    hull = nodes[0][1]
+    hull.name = "workboat_hull"
+    paint = hull.prims.pop("boat_hull_white")
+    paint.material = "workboat_paint"
+    hull.prims = {"workboat_paint": paint, **hull.prims}
+    rope = Mesh("workboat_rope")
+    strip(rope.prim("workboat_rope"), (0.0, 0.62, 2.45), (0.0, -0.05, 4.6), 0.05, 0.012, 1.0 / ROPE_TWIST_M)
+    return "workboat", nodes + [("mooring_rope", rope, None)]
+
+
+# --------------------------------------------------------------------------------------------------------
 # glTF writer: one .gltf (JSON) + one .bin; one bufferView per accessor, 4-byte aligned.
 
 FLOAT, USHORT, UINT = 5126, 5123, 5125
@@ -756,7 +901,18 @@ def write_gltf(name, root_name, nodes):
         doc["nodes"].append(node)
     while len(blob) % 4:
         blob.append(0)
-    doc["materials"] = [material_json(m) for m in materials]
+    images = []
+
+    def texture_index(png):
+        if png not in images:
+            images.append(png)
+        return images.index(png)
+
+    doc["materials"] = [material_json(m, texture_index) for m in materials]
+    if images:  # one texture per image, all with the default sampler (repeat, trilinear)
+        doc["images"] = [{"uri": png} for png in images]
+        doc["samplers"] = [{"magFilter": 9729, "minFilter": 9987, "wrapS": 10497, "wrapT": 10497}]
+        doc["textures"] = [{"sampler": 0, "source": k} for k in range(len(images))]
     doc["buffers"] = [{"uri": name + ".bin", "byteLength": len(blob)}]
     text = json.dumps(doc, indent=1) + "\n"
     return {name + ".gltf": text.encode("ascii"), name + ".bin": bytes(blob)}
@@ -1245,23 +1401,78 @@ tile per 2 to 4 m of sea floor or beach.
 # --------------------------------------------------------------------------------------------------------
 
 
+def texture_rows():
+    """Every texture but the sand: file name -> (rows, width, height)."""
+    colour, normal, orm = paint_textures()
+    return {"workboat_paint.png": (colour, PAINT_SIZE, PAINT_SIZE),
+            "workboat_normal.png": (normal, PAINT_SIZE, PAINT_SIZE),
+            "workboat_orm.png": (orm, PAINT_SIZE, PAINT_SIZE),
+            "workboat_rope.png": (rope_texture(), ROPE_W, ROPE_H)}
+
+
+def expect_workboat(s):
+    rope = [x for x in s["meshes"] if x["node"] == "mooring_rope"]
+    hull = [x for x in s["meshes"] if x["node"] == "hull"][0]
+    conds = [(len(rope) == 1 and rope[0]["materials"] == ["workboat_rope"], "a mooring rope of workboat_rope"),
+             (hull["materials"][0] == "workboat_paint", "the hull painted with workboat_paint"),
+             (near(s["hi"][2], 4.6, 0.01), "the rope reaching 2.1 m ahead of the bow")]
+    for ok, what in conds:
+        if not ok:
+            raise CheckError("workboat: expected " + what)
+
+
+def check_textures(files, fresh):
+    """The PNGs decode to the fresh pixels (another zlib may compress them differently)."""
+    for name, (rows, w, h) in fresh.items():
+        dw, dh, drows = decode_png(files[name])
+        if (dw, dh) != (w, h) or drows != rows:
+            raise CheckError("%s pixels differ from a fresh generation" % name)
+
+
+def workboat_readme(files, s):
+    return """
+## `workboat.gltf` + `workboat.bin`: the boat in PBR materials (issue 17)
+
+The motor boat above, its white hull painted with textures that tile once per metre of `TEXCOORD_0`, and
+a mooring rope from the bow down to the water, ahead of the bow. %(tris)d triangles, %(verts)d vertices;
+bounds %(box)s.
+
+- `workboat_paint`: base colour `workboat_paint.png` (sRGB white paint, grime, darker plank seams every
+  0.25 m), normal map `workboat_normal.png` (the seams' grooves), `workboat_orm.png` as occlusion (R) and
+  metallic-roughness (G roughness 0.25-0.70 with the grime, B metallic 0); %(paint)d × %(paint)d texels each.
+- `workboat_rope`: base colour `workboat_rope.png` (%(rw)d × %(rh)d, three twisted strands per %(twist).2f m), alpha
+  MASK at 0.5 cutting out everything outside the strands' outline, double-sided. The rope is a flat strip
+  5 cm wide: from the side it shows its cut-out outline, not a rectangle.
+
+%(table)s
+""" % {"tris": s["triangles"], "verts": s["vertices"], "box": fmt_box(s["lo"], s["hi"]), "paint": PAINT_SIZE,
+       "rw": ROPE_W, "rh": ROPE_H, "twist": ROPE_TWIST_M,
+       "table": "\n".join(["| node | mesh | triangles | materials |", "|---|---|---|---|"]
+                           + ["| `%s` | `%s` | %d | %s |" % (m["node"], m["mesh"], m["triangles"],
+                                                            ", ".join("`%s`" % x for x in m["materials"]))
+                              for m in s["meshes"]])}
+
+
 def generate():
     files = {}
-    for build in (build_buoy, build_boat, build_rocks, build_auv):
+    for build in (build_buoy, build_boat, build_rocks, build_auv, build_workboat):
         root_name, nodes = build()
         files.update(write_gltf(root_name, root_name, nodes))
     rows = sand_pixels()
     files["sand.png"] = encode_png(rows, SAND_SIZE, SAND_SIZE)
+    for name, (trows, w, h) in texture_rows().items():
+        files[name] = encode_png(trows, w, h)
     buoy = check_gltf("buoy", files, expect_buoy)
     boat = check_gltf("boat", files, expect_boat)
     rocks = check_gltf("rocks", files, expect_rocks)
     auv = check_gltf("auv", files, expect_auv)
-    files["README.md"] = readme(files, buoy, boat, rocks, auv).encode("utf-8")
-    return files, rows, {"buoy": buoy, "boat": boat, "rocks": rocks, "auv": auv}
+    workboat = check_gltf("workboat", files, expect_workboat)
+    files["README.md"] = (readme(files, buoy, boat, rocks, auv) + workboat_readme(files, workboat)).encode("utf-8")
+    return files, rows, {"buoy": buoy, "boat": boat, "rocks": rocks, "auv": auv, "workboat": workboat}
 
 
 def summary(stats, png):
-    for name in ("buoy", "boat", "rocks", "auv"):
+    for name in ("buoy", "boat", "rocks", "auv", "workboat"):
         s = stats[name]
         print("%s.gltf: %d triangles, %d vertices, %s.bin %d bytes, bounds %s"
               % (name, s["triangles"], s["vertices"], name, s["bin_bytes"], fmt_box(s["lo"], s["hi"])))
@@ -1298,13 +1509,16 @@ def main(argv):
             disk[name] = f.read()
         if disk[name] == files[name]:
             print("ok   scenes/assets/%s equals a fresh generation" % name)
-        elif name == "sand.png":
+        elif name.endswith(".png"):
             # Another zlib build may compress differently; the pixels are what must match.
             try:
-                check_png(disk, rows)
-                print("ok   scenes/assets/sand.png has the same pixels (compressed by another zlib)")
+                if name == "sand.png":
+                    check_png(disk, rows)
+                else:
+                    check_textures(disk, {name: texture_rows()[name]})
+                print("ok   scenes/assets/%s has the same pixels (compressed by another zlib)" % name)
             except (CheckError, ValueError, zlib.error) as e:
-                failures.append("scenes/assets/sand.png: %s" % e)
+                failures.append("scenes/assets/%s: %s" % (name, e))
         else:
             failures.append("scenes/assets/%s differs from a fresh generation; "
                             "run python3 tools/gen_assets.py"
@@ -1317,7 +1531,9 @@ def main(argv):
             stats = {"buoy": check_gltf("buoy", disk, expect_buoy),
                      "boat": check_gltf("boat", disk, expect_boat),
                      "rocks": check_gltf("rocks", disk, expect_rocks),
-                     "auv": check_gltf("auv", disk, expect_auv)}
+                     "auv": check_gltf("auv", disk, expect_auv),
+                     "workboat": check_gltf("workboat", disk, expect_workboat)}
+            check_textures(disk, texture_rows())
             png = check_png(disk, rows)
             summary(stats, png)
     except (CheckError, ValueError, KeyError, struct.error, zlib.error) as e:
