@@ -31,6 +31,7 @@ layout(location = 1) in vec3 v_normal;
 layout(location = 2) in vec2 v_uv;
 layout(location = 3) in vec2 v_uv1;
 layout(location = 4) in vec4 v_tangent;
+layout(location = 5) in vec2 v_base_uv;  // the base colour texture's, transformed (mesh.vert)
 layout(location = 0) out vec4 out_colour;
 
 bool has_texture(MaterialGpu m, int i) { return ((m.flags.y >> i) & 1u) != 0u; }
@@ -80,7 +81,7 @@ void main() {
   bool front = gl_FrontFacing != (mode == LAGOON_MESH_MIRRORED);
   if (m.flags.w == 0u && !front) discard;  // single-sided: back faces are culled
   vec4 base = m.base_colour;
-  if (has_texture(m, LAGOON_TEX_BASE)) base *= material_texture(base_texture, m, LAGOON_TEX_BASE);
+  if (has_texture(m, LAGOON_TEX_BASE)) base *= texture(base_texture, v_base_uv);
   if (m.flags.x == LAGOON_ALPHA_MASK && base.a < m.emissive.w) discard;
   if (m.flags.x != LAGOON_ALPHA_BLEND) base.a = 1.0;
   if (mode == LAGOON_MESH_REFRACTION) {
