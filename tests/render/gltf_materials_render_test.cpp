@@ -3,6 +3,7 @@
 // whatever order the file lists them in.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -154,6 +155,144 @@ TEST_F(GltfMaterialsRender, MaskCutsOutAndBlendIsOrderCorrect) {
   write_quads(dir_ / "blend_c.gltf", {near_green, back, far_red});
   const io::Image8 c = render_model("blend_c.gltf");
   EXPECT_GT(mean_at(c, 80, 45, 1), mean_at(c, 80, 45, 0) + 15) << "the nearer green plane must dominate";
+}
+
+// Spheres of radius 0.5 m in the style of the glTF sample MetalRoughSpheres: one row of dielectrics over
+// one row of metals, both red (0.9, 0, 0), roughness growing towards −x; each sphere its own node and
+// material.
+void write_sphere_grid(const std::filesystem::path& path, const std::vector<float>& roughness) {
+  constexpr int kRings = 24, kSegments = 48;
+  std::vector<float> pos, nrm;
+  std::vector<uint16_t> idx;
+  for (int r = 0; r <= kRings; ++r) {
+    const double t = 3.14159265358979 * r / kRings;
+    for (int k = 0; k <= kSegments; ++k) {
+      const double p = 2 * 3.14159265358979 * k / kSegments;
+      const double n[3] = {std::sin(t) * std::cos(p), std::cos(t), std::sin(t) * std::sin(p)};
+      for (int c = 0; c < 3; ++c) {
+        nrm.push_back(float(n[c]));
+        pos.push_back(float(0.5 * n[c]));
+      }
+    }
+  }
+  for (int r = 0; r < kRings; ++r) {
+    for (int k = 0; k < kSegments; ++k) {
+      const uint16_t a = uint16_t(r * (kSegments + 1) + k), b = uint16_t(a + kSegments + 1);
+      idx.insert(idx.end(), {a, uint16_t(a + 1), b, uint16_t(a + 1), uint16_t(b + 1), b});
+    }
+  }
+  std::vector<uint8_t> bin;
+  auto add = [&](const void* data, size_t bytes) {
+    const auto* b = static_cast<const uint8_t*>(data);
+    bin.insert(bin.end(), b, b + bytes);
+  };
+  add(pos.data(), pos.size() * 4);
+  add(nrm.data(), nrm.size() * 4);
+  add(idx.data(), idx.size() * 2);
+  const size_t count = pos.size() / 3;
+  json doc = {{"asset", {{"version", "2.0"}}},
+              {"scene", 0},
+              {"scenes", json::array({json{{"nodes", json::array()}}})},
+              {"bufferViews",
+               {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", pos.size() * 4}},
+                {{"buffer", 0}, {"byteOffset", pos.size() * 4}, {"byteLength", nrm.size() * 4}},
+                {{"buffer", 0}, {"byteOffset", 2 * pos.size() * 4}, {"byteLength", idx.size() * 2}}}},
+              {"accessors",
+               {{{"bufferView", 0},
+                 {"componentType", 5126},
+                 {"count", count},
+                 {"type", "VEC3"},
+                 {"min", {-0.5, -0.5, -0.5}},
+                 {"max", {0.5, 0.5, 0.5}}},
+                {{"bufferView", 1}, {"componentType", 5126}, {"count", count}, {"type", "VEC3"}},
+                {{"bufferView", 2}, {"componentType", 5123}, {"count", idx.size()}, {"type", "SCALAR"}}}}};
+  for (int metal = 0; metal < 2; ++metal) {
+    for (size_t i = 0; i < roughness.size(); ++i) {
+      const size_t m = doc["materials"].size();
+      doc["materials"].push_back({{"pbrMetallicRoughness",
+                                   {{"baseColorFactor", {0.9, 0.0, 0.0, 1}},
+                                    {"metallicFactor", metal},
+                                    {"roughnessFactor", roughness[i]}}}});
+      doc["meshes"].push_back(
+          {{"primitives",
+            json::array(
+                {json{{"attributes", {{"POSITION", 0}, {"NORMAL", 1}}}, {"indices", 2}, {"material", m}}})}});
+      doc["nodes"].push_back(
+          {{"mesh", m},
+           {"translation", {1.3 * (double(i) - 0.5 * double(roughness.size() - 1)), metal ? -0.7 : 0.7, 0}}});
+      doc["scenes"][0]["nodes"].push_back(m);
+    }
+  }
+  doc["buffers"] = json::array(
+      {json{{"byteLength", bin.size()}, {"uri", "data:application/octet-stream;base64," + base64(bin)}}});
+  std::ofstream(path) << doc.dump();
+}
+
+TEST_F(GltfMaterialsRender, RougherSpheresSpreadTheirHighlightAndOnlyMetalsTintIt) {
+  // Red spheres (base colour 0.9, 0, 0) at night, lit by one lamp beside the camera: a metal reflects only
+  // red (f0 = base colour), so its green channel is dark; a dielectric's green channel holds nothing but its
+  // highlight (f0 = 0.04 in every channel; its diffuse is red only). The highlight's size is measured in
+  // the channel that holds it: the metal's red, the dielectric's green.
+  const std::vector<float> roughness = {0.25f, 0.35f, 0.5f, 0.65f, 0.8f};
+  write_sphere_grid(dir_ / "spheres.gltf", roughness);
+  auto render_at = [&](double lamp, double gamma) {
+    std::ifstream in(std::string(LAGOON_SOURCE_DIR) + "/scenes/default.json");
+    json s = json::parse(in);
+    s["camera"] = {{"position", {0, 3, 0}}, {"look_at", {0, 3, 7}}, {"fov_deg", 60}};
+    s["render"].update(
+        {{"width", 640}, {"height", 360}, {"tone_map", "clamp"}, {"gamma", gamma}, {"exposure", 1}});
+    s["sun"] = {{"elevation_deg", -20}, {"azimuth_deg", 185}};
+    s["lights"] = json::array(
+        {json{{"position", {0.5, 3.5, -1}}, {"colour", {1, 1, 1}}, {"intensity", lamp}, {"range_m", 60}}});
+    s["seafloor"] = {{"type", "none"}};
+    s["objects"] = json::array({json{{"file", "spheres.gltf"}, {"position", {0, 3, 7}}}});
+    std::ofstream(dir_ / "spheres.json") << s.dump();
+    auto scene = scene::load_scene(dir_ / "spheres.json");
+    EXPECT_TRUE(scene) << scene.error().message;
+    auto renderer = render::OceanRenderer::create(ctx(), *scene);
+    EXPECT_TRUE(renderer) << renderer.error().message;
+    return (*renderer)->render(*scene);
+  };
+  // The dielectrics' highlight (f0 = 0.04) under a lamp 48 times brighter than the metals' (f0 = 0.9), and
+  // through a gamma of 2.2 so its rough spheres' faint highlights keep enough levels; the measure (pixels
+  // above a fixed fraction of the peak) is the same for any monotonic encoding.
+  const io::Image8 metals = render_at(2.0, 1.0), dielectrics = render_at(96.0, 2.2);
+  // The vertical field of view is 60°: 7 m away, 1 m spans 360 / (2 · 7 · tan 30°) = 44.5 px.
+  const double px_per_m = 360.0 / (2 * 7 * std::tan(3.14159265358979 / 6));
+  for (int metal = 0; metal < 2; ++metal) {
+    const io::Image8& img = metal ? metals : dielectrics;
+    const int channel = metal ? 0 : 1;
+    double previous_area = 0;
+    for (size_t i = 0; i < roughness.size(); ++i) {
+      const int cx = int(std::lround(320 - px_per_m * 1.3 * (double(i) - 2.0)));  // +x is on the left
+      const int cy = int(std::lround(180 - px_per_m * (metal ? -0.7 : 0.7)));
+      const int r = int(0.45 * px_per_m);
+      std::vector<const uint8_t*> disc;
+      for (int y = cy - r; y <= cy + r; ++y)
+        for (int x = cx - r; x <= cx + r; ++x)
+          if ((x - cx) * (x - cx) + (y - cy) * (y - cy) <= r * r)
+            disc.push_back(img.pixel(uint32_t(x), uint32_t(y)));
+      const uint8_t* top = *std::max_element(disc.begin(), disc.end(),
+                                             [&](auto a, auto b) { return a[channel] < b[channel]; });
+      const double peak = top[channel];
+      const double area =
+          double(std::count_if(disc.begin(), disc.end(), [&](auto p) { return p[channel] > 0.5 * peak; })) /
+          double(disc.size());
+      RecordProperty((metal ? "metal_" : "dielectric_") + std::to_string(i),
+                     "roughness " + std::to_string(roughness[i]) + ": highlight " + std::to_string(area) +
+                         " of the disc, peak rgb " + std::to_string(top[0]) + " " + std::to_string(top[1]) +
+                         " " + std::to_string(top[2]));
+      EXPECT_LT(peak, 254.5) << "clipped: the measure needs an unclipped highlight";
+      EXPECT_GT(peak, 9.0) << "no highlight to measure";
+      if (i > 0) {
+        EXPECT_GT(area, previous_area) << (metal ? "metal" : "dielectric") << " roughness " << roughness[i];
+      }
+      previous_area = area;
+      if (metal) {
+        EXPECT_LT(top[1], 0.05 * top[0] + 2) << "a metal's highlight takes its base colour";
+      }
+    }
+  }
 }
 
 }  // namespace

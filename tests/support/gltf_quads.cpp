@@ -8,6 +8,14 @@ namespace {
 
 using nlohmann::json;
 
+template <typename T>
+void append(std::vector<uint8_t>& bin, const std::vector<T>& values) {
+  const auto* p = reinterpret_cast<const uint8_t*>(values.data());
+  bin.insert(bin.end(), p, p + values.size() * sizeof(T));
+}
+
+}  // namespace
+
 std::string base64(const std::vector<uint8_t>& bytes) {
   static const char* k = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   std::string out;
@@ -22,14 +30,6 @@ std::string base64(const std::vector<uint8_t>& bytes) {
   }
   return out;
 }
-
-template <typename T>
-void append(std::vector<uint8_t>& bin, const std::vector<T>& values) {
-  const auto* p = reinterpret_cast<const uint8_t*>(values.data());
-  bin.insert(bin.end(), p, p + values.size() * sizeof(T));
-}
-
-}  // namespace
 
 void write_quads(const std::filesystem::path& path, const std::vector<Quad>& quads, const json& extra) {
   json doc = {{"asset", {{"version", "2.0"}}},

@@ -2,6 +2,7 @@
 #pragma once
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <string>
 #include <vector>
 
 namespace lagoon::test {
@@ -19,5 +20,8 @@ struct Quad {
 // samplers, textures, extensionsUsed, ...).
 void write_quads(const std::filesystem::path& path, const std::vector<Quad>& quads,
                  const nlohmann::json& extra = {});
+
+// Base64 of `bytes`, for data URIs.
+std::string base64(const std::vector<uint8_t>& bytes);
 
 }  // namespace lagoon::test
