@@ -161,6 +161,38 @@ for name, image, mime in (("quad-png", sand_png, "image/png"), ("quad-jpeg", san
     q.doc["scenes"] = [{"nodes": [0]}]
     q.write(name)
 
+# Every material slot of issue 17 on a quantized quad: SHORT positions and BYTE normals and tangents
+# (KHR_mesh_quantization), two texture sets, a sampler, KHR_texture_transform, emissive strength, MASK.
+SHORT, BYTE = 5122, 5120
+p = Model()
+pos = p.accessor("<16h", (0, 0, 0, 0, 100, 0, 0, 0, 100, 100, 0, 0, 0, 100, 0, 0), SHORT, 4, "VEC3",
+                 min=[0, 0, 0], max=[100, 100, 0])
+p.doc["bufferViews"][p.doc["accessors"][pos]["bufferView"]]["byteStride"] = 8
+nrm = p.accessor("<16b", (0, 0, 127, 0) * 4, BYTE, 4, "VEC3", normalized=True)
+p.doc["bufferViews"][p.doc["accessors"][nrm]["bufferView"]]["byteStride"] = 4
+tan = p.accessor("<16b", (127, 0, 0, 127) * 4, BYTE, 4, "VEC4", normalized=True)
+uv0 = p.accessor("<8B", (0, 255, 255, 255, 255, 0, 0, 0), UBYTE, 4, "VEC2", normalized=True)
+uv1 = p.accessor("<8f", (0, 0, 1, 0, 1, 1, 0, 1), FLOAT, 4, "VEC2")
+idx = p.accessor("<6H", (0, 1, 2, 0, 2, 3), USHORT, 6, "SCALAR")
+p.push("meshes", {"primitives": [{"attributes": {"POSITION": pos, "NORMAL": nrm, "TANGENT": tan, "TEXCOORD_0": uv0,
+                                                 "TEXCOORD_1": uv1}, "indices": idx, "material": 0}]})
+p.push("images", {"bufferView": p.view(sand_png), "mimeType": "image/png"})
+p.push("samplers", {"magFilter": 9728, "minFilter": 9985, "wrapS": 33648, "wrapT": 33071})
+p.push("textures", {"source": 0, "sampler": 0})
+transform = {"KHR_texture_transform": {"offset": [0.5, 0], "rotation": 0.5, "scale": [2, 2], "texCoord": 1}}
+p.push("materials", {"pbrMetallicRoughness": {"baseColorTexture": {"index": 0, "extensions": transform},
+                                              "metallicRoughnessTexture": {"index": 0, "texCoord": 1},
+                                              "metallicFactor": 0.5, "roughnessFactor": 0.25},
+                     "normalTexture": {"index": 0, "scale": 0.8}, "occlusionTexture": {"index": 0, "strength": 0.5},
+                     "emissiveTexture": {"index": 0}, "emissiveFactor": [1, 0.5, 0],
+                     "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": 3}},
+                     "alphaMode": "MASK", "alphaCutoff": 0.4, "doubleSided": True})
+p.push("nodes", {"mesh": 0, "scale": [0.01, 0.01, 0.01]})
+p.doc.update(scene=0, scenes=[{"nodes": [0]}],
+             extensionsUsed=["KHR_mesh_quantization", "KHR_texture_transform", "KHR_materials_emissive_strength"],
+             extensionsRequired=["KHR_mesh_quantization"])
+p.write("pbr-quantized")
+
 # A node hierarchy (matrix, TRS), a triangle strip and a sparse accessor, with an unsupported extension.
 h = Model()
 pos = h.accessor("<12f", (0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0), FLOAT, 4, "VEC3")
