@@ -89,7 +89,10 @@ Result<std::unique_ptr<SceneObjects>> SceneObjects::load(vk::Context& ctx, const
     const glm::vec2 start = vehicle.path.waypoints.empty() ? glm::vec2(0.0f) : vehicle.path.waypoints.front();
     const glm::mat4 at = object_transform(glm::dvec3(start.x, -vehicle.depth_m, start.y),
                                           glm::dquat(1, 0, 0, 0), vehicle.scale);
-    if (auto r = objects->load_model(vehicle.file, at, field); !r) return r.error();
+    const size_t object = scene.objects.size() + v;
+    objects->object_world_.push_back(at);
+    const std::optional<size_t> lights_of = vehicle.lights_from_gltf ? std::optional(object) : std::nullopt;
+    if (auto r = objects->load_model(vehicle.file, at, field, lights_of); !r) return r.error();
     objects->object_draws_.push_back({first, objects->objects_.size()});
   }
   objects->upload_materials();

@@ -38,7 +38,7 @@ class SceneObjects {
   // Moves scene object `object` (objects[object], then vehicles[object - objects.size()]) to
   // `model_to_world`: a floating body's or a vehicle's pose.
   void place(size_t object, const glm::mat4& model_to_world);
-  // The objects' glTF lights (objects[].lights_from_gltf) where their objects are now, as scene point
+  // The glTF lights of objects and vehicles (their lights_from_gltf) where they are now, as scene point
   // lights: a light of I candela has intensity I / reference_lux (the irradiance 1 m away in units of the
   // light above the water, render::reference_illuminance_lux); without a glTF range, range_m is where that
   // irradiance falls to 1e-4. Spot lights keep their cone, along their node's −z.
@@ -90,7 +90,7 @@ class SceneObjects {
     float inner_deg, outer_deg;  // a spot's cone; outer 180 = a point light
   };
   std::vector<ModelLight> lights_;
-  std::vector<glm::mat4> object_world_;  // per scene object with lights: its model-to-world transform
+  std::vector<glm::mat4> object_world_;  // per scene object, then per vehicle: its model-to-world transform
   size_t model_count_ = 0;
   std::vector<std::unique_ptr<vk::Image>> textures_;  // stable addresses for DrawTextures
   std::vector<std::pair<std::pair<size_t, bool>, size_t>> texture_slots_;  // (model image, sRGB) -> textures_

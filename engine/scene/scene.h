@@ -157,8 +157,9 @@ struct Vehicle {
   VehiclePath path;
   float depth_m = 0.f;  // 0 = at the surface; > 0: the model's origin this far below the mean level
   HullBody body;
-  float wake_strength = 1.f;  // scales the pressure its hull puts on the water (wakes); 0 = no wake
-  float foam_per_s = 8.f;     // how fast foam builds behind its stern at the surface; 0 = no trail
+  float wake_strength = 1.f;     // scales the pressure its hull puts on the water (wakes); 0 = no wake
+  float foam_per_s = 8.f;        // how fast foam builds behind its stern at the surface; 0 = no trail
+  bool lights_from_gltf = true;  // the file's KHR_lights_punctual lights join the scene's lights
 };
 
 // The dynamic wave layer (wakes; docs/physics.md, Wakes): linear waves on a square grid around the camera,

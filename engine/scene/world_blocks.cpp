@@ -156,6 +156,9 @@ void read_vehicle(ObjectReader& r, Vehicle& v) {
       "How fast foam builds behind its stern (propeller wash) and, at 0.3 of it, at its bow, while it "
       "runs at the surface: coverage per second where the hull passes, saturating at 1 (`wakes`); 0 = no "
       "trail. Submerged vehicles leave none.");
+  r.flag("lights_from_gltf", v.lights_from_gltf,
+         "The model's KHR_lights_punctual lights (running lights, an AUV's lamp) join the scene's lights and "
+         "move with it, as objects[].lights_from_gltf.");
 }
 
 void read_wakes(ObjectReader& r, Wakes& w) {
@@ -250,10 +253,9 @@ void read_object(ObjectReader& r, Object& o) {
          "raises the model's +z end), then roll about the model's z axis; see Objects below.");
   r.number("scale", o.scale, Bounds::above_up_to(0, 1000), "", "Uniform scale of the model.");
   r.block("floating", o.floating, read_floating, "An object that rides the waves (docs/physics.md).");
-  r.flag(
-      "lights_from_gltf", o.lights_from_gltf,
-      "The model's KHR_lights_punctual lights (a buoy's lamp, a boat's lanterns) join the scene's lights "
-      "and move with it; point and spot lights are drawn as point lights (docs/scene-format.md, Objects).");
+  r.flag("lights_from_gltf", o.lights_from_gltf,
+         "The model's KHR_lights_punctual lights (a buoy's lamp, a boat's lanterns) join the scene's lights "
+         "and move with it; spot lights keep their cone (docs/scene-format.md, Objects).");
 }
 
 void read_light(ObjectReader& r, PointLight& l) {

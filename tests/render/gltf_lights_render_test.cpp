@@ -94,6 +94,31 @@ TEST_F(GltfLightsRender, AnObjectsLampIsTheSceneLampItStandsFor) {
   EXPECT_GT(brightest_red(a), brightest_red(dark) + 60) << "the glTF lamp does not light the water";
 }
 
+TEST_F(GltfLightsRender, AVehiclesLampTravelsWithItAndHasTheSameSwitch) {
+  // The lamp model as a submerged vehicle whose origin runs 0.5 m down: its lamp 0.5 m above the water,
+  // 25 m ahead, lights the water like the object's; lights_from_gltf = false turns it off.
+  auto vehicle = [](bool lights) {
+    return json{{"file", "lamp.gltf"},
+                {"depth_m", 0.5},
+                {"path", {{"waypoints", {{0, 25}, {0, 60}}}, {"speed_mps", 0.1}}},
+                {"lights_from_gltf", lights}};
+  };
+  auto with_vehicles = [&](const json& vehicles) {
+    std::ifstream in(dir_ / "night.json");
+    json s = json::parse(in);
+    s["vehicles"] = vehicles;
+    std::ofstream(dir_ / "night_vehicle.json") << s.dump();
+    auto scene = scene::load_scene(dir_ / "night_vehicle.json");
+    EXPECT_TRUE(scene) << scene.error().message;
+    return *scene;
+  };
+  night(json::array(), json::array());  // writes night.json
+  const io::Image8 lit = render(with_vehicles(json::array({vehicle(true)})));
+  const io::Image8 dark = render(with_vehicles(json::array({vehicle(false)})));
+  EXPECT_GT(brightest_red(lit), brightest_red(dark) + 60)
+      << "the vehicle's glTF lamp does not light the water";
+}
+
 TEST_F(GltfLightsRender, ASpotLightsOnlyItsConeAndAGltfSpotIsTheSceneSpot) {
   // No sun; the camera 4 m above a calm sea looks down at a white floor 3 m down, where a lamp 2 m above the
   // floor shines straight down: as a point light and as a spot of 15°/20°, whose pool on the floor is
