@@ -564,7 +564,8 @@ Result<std::vector<Light>> convert_lights(const tinygltf::Model& g,
   return lights;
 }
 
-Result<Model> convert(const tinygltf::Model& g, const Limits& limits, std::vector<std::string> warnings) {
+Result<Model> convert(const tinygltf::Model& g, const Limits& limits, std::vector<std::string> warnings,
+                      Content content) {
   Model model;
   warn_unsupported(g, warnings);
   // Cheap structural checks first, so a broken file fails before images are decoded.
@@ -575,6 +576,14 @@ Result<Model> convert(const tinygltf::Model& g, const Limits& limits, std::vecto
   if (!cameras) return cameras.error();
   Result<std::vector<Light>> lights = convert_lights(g, attached.lights);
   if (!lights) return lights.error();
+  model.instances = std::move(*instances);
+  model.cameras = std::move(*cameras);
+  model.lights = std::move(*lights);
+  if (content == Content::Nodes) {
+    model.instances.clear();  // they would name meshes that are not read
+    model.warnings = std::move(warnings);
+    return model;
+  }
   Result<detail::Accessors> accessors = build_accessors(g);
   if (!accessors) return accessors.error();
   std::map<int, int> image_slots;
@@ -587,9 +596,6 @@ Result<Model> convert(const tinygltf::Model& g, const Limits& limits, std::vecto
   model.meshes = std::move(*meshes);
   model.materials = std::move(*materials);
   model.textures = std::move(*textures);
-  model.instances = std::move(*instances);
-  model.cameras = std::move(*cameras);
-  model.lights = std::move(*lights);
   model.warnings = std::move(warnings);
   detail::compute_bounds(model);
   return model;
@@ -597,7 +603,7 @@ Result<Model> convert(const tinygltf::Model& g, const Limits& limits, std::vecto
 
 // ---- Loading ---------------------------------------------------------------------------------------------
 
-Result<Model> load(const fs::path& file, const Limits& limits) {
+Result<Model> load(const fs::path& file, const Limits& limits, Content content) {
   Result<std::vector<uint8_t>> bytes = detail::read_file(file, limits.max_file_bytes);
   if (!bytes) return bytes.error();
   if (bytes->size() > UINT32_MAX) return make_error("files of 4 GiB or more are not supported");
@@ -628,15 +634,15 @@ Result<Model> load(const fs::path& file, const Limits& limits) {
                                        folder.string());
   if (!ok) return make_error("not a valid glTF file: " + tidy(err));
   std::vector<uint8_t>().swap(*bytes);  // released: tinygltf copied the GLB's BIN chunk into g.buffers
-  return convert(g, limits, std::move(pre->warnings));
+  return convert(g, limits, std::move(pre->warnings), content);
 }
 
 }  // namespace
 
-Result<Model> load_gltf(const fs::path& file, const Limits& limits) {
+Result<Model> load_gltf(const fs::path& file, const Limits& limits, Content content) {
   // Errors below carry the glTF object and the reason; the file is named once, here.
   try {
-    Result<Model> model = load(file, limits);
+    Result<Model> model = load(file, limits, content);
     if (!model) return make_error(file.string() + ": " + model.error().message);
     return model;
   } catch (const std::bad_alloc&) {

@@ -21,8 +21,14 @@ struct Limits {
   size_t max_nodes = 100'000;
 };
 
+// What to read. Nodes: only the cameras and lights of the node tree (Model::cameras, lights), for a scene
+// that takes its camera from the file: meshes, materials and images are not converted or decoded, so
+// they cost nothing and a broken image does not stop the camera from loading (Model::instances is empty).
+enum class Content { Everything, Nodes };
+
 // The default scene (or the first, or every root node when the file has no scenes) flattened into
 // Model::instances. Unsupported features are skipped with one warning per kind (Model::warnings).
-Result<Model> load_gltf(const std::filesystem::path& file, const Limits& limits = {});
+Result<Model> load_gltf(const std::filesystem::path& file, const Limits& limits = {},
+                        Content content = Content::Everything);
 
 }  // namespace lagoon::gltf

@@ -23,7 +23,7 @@ Result<void> apply_gltf_camera(Scene& scene, const std::string& scene_name) {
   const CameraFromGltf& ref = scene.camera.gltf;
   if (ref.file.empty()) return {};
   const std::string field = scene_name + ": camera.gltf";
-  Result<gltf::Model> model = gltf::load_gltf(ref.file);
+  Result<gltf::Model> model = gltf::load_gltf(ref.file, {}, gltf::Content::Nodes);
   if (!model) return Error{field + ".file: " + model.error().message};
   if (model->cameras.empty()) {
     return Error{field + ".file: " + ref.file +

@@ -1385,5 +1385,24 @@ TEST(GltfQuantization, IntegerAttributesLoadWithTheExtensionAndAreRefusedWithout
   expect_near(m.bounds_max, glm::vec3(1, 1, 0), 1e-4f);
 }
 
+TEST(GltfLoad, NodesOnlyReadsCamerasWithoutDecodingImagesOrMeshes) {
+  // camera.gltf reads only the nodes: a model whose image is broken still gives its camera, quickly.
+  TempDir dir;
+  Builder b = textured_quad(ImageAt::kBufferView);
+  b.doc["images"][0] = {{"bufferView", b.view(std::vector<uint8_t>{0x89, 'P', 'N', 'G', 1, 2, 3})},
+                        {"mimeType", "image/png"}};
+  b.doc["cameras"] =
+      json::array({json{{"type", "perspective"}, {"perspective", {{"yfov", 0.9}, {"znear", 0.2}}}}});
+  b.doc["nodes"].push_back({{"camera", 0}, {"translation", {1, 2, 3}}});
+  b.doc["scenes"][0]["nodes"] = {0, 1};
+  const fs::path file = b.write(dir.path(), "m", Layout::kGlb);
+  expect_contains(load_error(file), "images[0]");
+  Result<Model> nodes = load_gltf(file, {}, Content::Nodes);
+  ASSERT_TRUE(nodes) << nodes.error().message;
+  ASSERT_EQ(nodes->cameras.size(), 1u);
+  expect_near(glm::vec3(nodes->cameras[0].world[3]), glm::vec3(1, 2, 3));
+  EXPECT_TRUE(nodes->meshes.empty() && nodes->textures.empty() && nodes->instances.empty());
+}
+
 }  // namespace
 }  // namespace lagoon::gltf
