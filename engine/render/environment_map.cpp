@@ -94,10 +94,6 @@ EnvironmentLayers prefilter_environment(const gpu::SkyModelGpu& sky, glm::vec3 s
   return out;
 }
 
-}  // namespace lagoon::render
-
-namespace lagoon::render {
-
 EnvironmentMap::EnvironmentMap(vk::Context& ctx)
     : ctx_(ctx),
       image_(vk::Image::create(ctx, {.format = VK_FORMAT_R32G32B32A32_SFLOAT,
