@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "render/ocean_renderer.h"
+#include "support/edited_scene.h"
 #include "support/image_compare.h"
 #include "support/temp_dir.h"
 #include "support/vk_fixture.h"
@@ -47,17 +48,14 @@ class GltfCameraRender : public GpuTest {
   }
 
   io::Image8 render_with_camera(const json& camera) {
-    std::ifstream in(std::string(LAGOON_SOURCE_DIR) + "/scenes/open-ocean.json");
-    json scene = json::parse(in);
+    json scene = shipped_scene_json("open-ocean");
     scene["camera"] = camera;
     scene["render"]["width"] = 96;
     scene["render"]["height"] = 64;
-    std::ofstream(dir_ / "scene.json") << scene.dump();
-    auto s = scene::load_scene(dir_ / "scene.json");
-    EXPECT_TRUE(s) << s.error().message;
-    auto renderer = render::OceanRenderer::create(ctx(), *s);
+    const scene::Scene s = write_and_load(scene, dir_ / "scene.json");
+    auto renderer = render::OceanRenderer::create(ctx(), s);
     EXPECT_TRUE(renderer) << renderer.error().message;
-    return (*renderer)->render(*s);
+    return (*renderer)->render(s);
   }
 };
 

@@ -9,6 +9,7 @@
 
 #include "render/ocean_renderer.h"
 #include "render/sky_light.h"
+#include "support/edited_scene.h"
 #include "support/image_compare.h"
 #include "support/temp_dir.h"
 #include "support/vk_fixture.h"
@@ -48,8 +49,7 @@ class GltfLightsRender : public GpuTest {
   }
 
   scene::Scene night(const json& objects, const json& lights) {
-    std::ifstream in(std::string(LAGOON_SOURCE_DIR) + "/scenes/default.json");
-    json s = json::parse(in);
+    json s = shipped_scene_json("default");
     s["sun"]["elevation_deg"] = -8;
     s["render"]["exposure"] = 6;
     s["render"]["width"] = 160;
@@ -58,10 +58,7 @@ class GltfLightsRender : public GpuTest {
     s["camera"] = {{"position", {0, 4, 0}}, {"look_at", {0, 0, 30}}};
     s["objects"] = objects;
     s["lights"] = lights;
-    std::ofstream(dir_ / "night.json") << s.dump();
-    auto scene = scene::load_scene(dir_ / "night.json");
-    EXPECT_TRUE(scene) << scene.error().message;
-    return *scene;
+    return write_and_load(s, dir_ / "night.json");
   }
 
   io::Image8 render(const scene::Scene& s) {
@@ -107,10 +104,7 @@ TEST_F(GltfLightsRender, AVehiclesLampTravelsWithItAndHasTheSameSwitch) {
     std::ifstream in(dir_ / "night.json");
     json s = json::parse(in);
     s["vehicles"] = vehicles;
-    std::ofstream(dir_ / "night_vehicle.json") << s.dump();
-    auto scene = scene::load_scene(dir_ / "night_vehicle.json");
-    EXPECT_TRUE(scene) << scene.error().message;
-    return *scene;
+    return write_and_load(s, dir_ / "night_vehicle.json");
   };
   night(json::array(), json::array());  // writes night.json
   const io::Image8 lit = render(with_vehicles(json::array({vehicle(true)})));
@@ -125,8 +119,7 @@ TEST_F(GltfLightsRender, ASpotLightsOnlyItsConeAndAGltfSpotIsTheSceneSpot) {
   // 2 tan 20° = 0.73 m in radius. Under the lamp they agree; 1.5 m beside it the point light still lights
   // the floor and the spot does not.
   auto floor_view = [&](const json& objects, const json& lights) {
-    std::ifstream in(std::string(LAGOON_SOURCE_DIR) + "/scenes/default.json");
-    json s = json::parse(in);
+    json s = shipped_scene_json("default");
     s["camera"] = {{"position", {0, 4, 0}}, {"look_at", {0, -3, 0.01}}};
     s["render"].update(
         {{"width", 64}, {"height", 64}, {"tone_map", "clamp"}, {"gamma", 1}, {"exposure", 0.15}});
@@ -136,10 +129,7 @@ TEST_F(GltfLightsRender, ASpotLightsOnlyItsConeAndAGltfSpotIsTheSceneSpot) {
     s["ocean"]["spectrum"]["wind_speed_mps"] = 2;
     s["objects"] = objects;
     s["lights"] = lights;
-    std::ofstream(dir_ / "floor.json") << s.dump();
-    auto scene = scene::load_scene(dir_ / "floor.json");
-    EXPECT_TRUE(scene) << scene.error().message;
-    return render(*scene);
+    return render(write_and_load(s, dir_ / "floor.json"));
   };
   auto lamp = [](double outer_deg, double intensity) {
     json l = {{"position", {0, -1, 0}}, {"colour", {1, 1, 1}}, {"intensity", intensity}, {"range_m", 20}};

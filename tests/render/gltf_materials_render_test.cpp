@@ -10,6 +10,7 @@
 
 #include "io/png.h"
 #include "render/ocean_renderer.h"
+#include "support/edited_scene.h"
 #include "support/gltf_quads.h"
 #include "support/temp_dir.h"
 #include "support/vk_fixture.h"
@@ -23,21 +24,21 @@ class GltfMaterialsRender : public GpuTest {
  protected:
   TempDir dir_{"lagoon_gltf_materials_render"};
 
+  io::Image8 render(const scene::Scene& s) {
+    auto renderer = render::OceanRenderer::create(ctx(), s);
+    EXPECT_TRUE(renderer) << renderer.error().message;
+    return (*renderer)->render(s);
+  }
+
   // The model `file` 20 m in front of a camera 3 m above a calm sea, at 160 × 90.
   io::Image8 render_model(const std::string& file) {
-    std::ifstream in(std::string(LAGOON_SOURCE_DIR) + "/scenes/default.json");
-    json s = json::parse(in);
+    json s = shipped_scene_json("default");
     s["camera"] = {{"position", {0, 3, 0}}, {"look_at", {0, 3, 20}}};
     s["render"].update({{"width", 160}, {"height", 90}});
     s["sun"] = {{"elevation_deg", 40}, {"azimuth_deg", 230}};
     s["seafloor"] = {{"type", "none"}};
     s["objects"] = json::array({json{{"file", file}, {"position", {0, 3, 20}}}});
-    std::ofstream(dir_ / "scene.json") << s.dump();
-    auto scene = scene::load_scene(dir_ / "scene.json");
-    EXPECT_TRUE(scene) << scene.error().message;
-    auto renderer = render::OceanRenderer::create(ctx(), *scene);
-    EXPECT_TRUE(renderer) << renderer.error().message;
-    return (*renderer)->render(*scene);
+    return render(write_and_load(s, dir_ / "scene.json"));
   }
 
   // An image file next to the models: w × h texels of `rgba`.
@@ -236,8 +237,7 @@ TEST_F(GltfMaterialsRender, RougherSpheresSpreadTheirHighlightAndOnlyMetalsTintI
   const std::vector<float> roughness = {0.25f, 0.35f, 0.5f, 0.65f, 0.8f};
   write_sphere_grid(dir_ / "spheres.gltf", roughness);
   auto render_at = [&](double lamp, double gamma) {
-    std::ifstream in(std::string(LAGOON_SOURCE_DIR) + "/scenes/default.json");
-    json s = json::parse(in);
+    json s = shipped_scene_json("default");
     s["camera"] = {{"position", {0, 3, 0}}, {"look_at", {0, 3, 7}}, {"fov_deg", 60}};
     s["render"].update(
         {{"width", 640}, {"height", 360}, {"tone_map", "clamp"}, {"gamma", gamma}, {"exposure", 1}});
@@ -246,12 +246,7 @@ TEST_F(GltfMaterialsRender, RougherSpheresSpreadTheirHighlightAndOnlyMetalsTintI
         {json{{"position", {0.5, 3.5, -1}}, {"colour", {1, 1, 1}}, {"intensity", lamp}, {"range_m", 60}}});
     s["seafloor"] = {{"type", "none"}};
     s["objects"] = json::array({json{{"file", "spheres.gltf"}, {"position", {0, 3, 7}}}});
-    std::ofstream(dir_ / "spheres.json") << s.dump();
-    auto scene = scene::load_scene(dir_ / "spheres.json");
-    EXPECT_TRUE(scene) << scene.error().message;
-    auto renderer = render::OceanRenderer::create(ctx(), *scene);
-    EXPECT_TRUE(renderer) << renderer.error().message;
-    return (*renderer)->render(*scene);
+    return render(write_and_load(s, dir_ / "spheres.json"));
   };
   // The dielectrics' highlight (f0 = 0.04) under a lamp 48 times brighter than the metals' (f0 = 0.9), and
   // through a gamma of 2.2 so its rough spheres' faint highlights keep enough levels; the measure (pixels

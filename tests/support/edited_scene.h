@@ -1,0 +1,28 @@
+// Scenes a test builds from a shipped one: read scenes/NAME.json as JSON, change it, and load it from a
+// file in the test's folder (so the models the test writes there resolve against it).
+#pragma once
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "scene/scene.h"
+
+namespace lagoon::test {
+
+inline nlohmann::json shipped_scene_json(const std::string& name) {
+  std::ifstream in(std::string(LAGOON_SOURCE_DIR) + "/scenes/" + name + ".json");
+  return nlohmann::json::parse(in);
+}
+
+// Writes `scene` to `file` and loads it; a failure to load fails the test and gives a default scene.
+inline scene::Scene write_and_load(const nlohmann::json& scene, const std::filesystem::path& file) {
+  std::ofstream(file) << scene.dump();
+  auto s = scene::load_scene(file);
+  EXPECT_TRUE(s) << s.error().message;
+  return s ? *s : scene::Scene{};
+}
+
+}  // namespace lagoon::test
