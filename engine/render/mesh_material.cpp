@@ -21,10 +21,13 @@ gpu::MaterialGpu material_gpu(const gltf::Material& m) {
                          : m.alpha_mode == gltf::Material::AlphaMode::Blend ? LAGOON_ALPHA_BLEND
                                                                             : LAGOON_ALPHA_OPAQUE,
                          0u, 0u, m.double_sided ? 1u : 0u);
-  const gltf::TextureRef* refs[LAGOON_TEX_COUNT] = {&m.base_color, &m.metallic_roughness, &m.normal,
-                                                    &m.occlusion, &m.emissive};
-  for (int i = 0; i < LAGOON_TEX_COUNT; ++i) set_transform(out, i, *refs[i]);
+  const auto slots = texture_slots(m);
+  for (int i = 0; i < LAGOON_TEX_COUNT; ++i) set_transform(out, i, *slots[size_t(i)]);
   return out;
+}
+
+std::array<const gltf::TextureRef*, LAGOON_TEX_COUNT> texture_slots(const gltf::Material& m) {
+  return {&m.base_color, &m.metallic_roughness, &m.normal, &m.occlusion, &m.emissive};
 }
 
 gpu::MaterialGpu default_material_gpu() {

@@ -1,11 +1,16 @@
 // A glTF material as the mesh shader reads it (shared/mesh.h MaterialGpu), and the Vulkan sampler of a
 // glTF sampler.
 #pragma once
+#include <array>
+
 #include "gltf/model.h"
 #include "shared/mesh.h"
 #include "vk/sampler.h"
 
 namespace lagoon::render {
+
+// The material's five texture slots in LAGOON_TEX_* order (the order of MaterialGpu's bits and uv_rows).
+std::array<const gltf::TextureRef*, LAGOON_TEX_COUNT> texture_slots(const gltf::Material& material);
 
 // Which textures are present is left to the caller (flags.y): a texture may be missing from the file.
 gpu::MaterialGpu material_gpu(const gltf::Material& material);

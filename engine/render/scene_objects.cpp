@@ -169,16 +169,14 @@ Result<void> SceneObjects::load_model(const std::string& file, const glm::mat4& 
 uint32_t SceneObjects::add_material(const gltf::Model& model, const gltf::Material& material, size_t model_id,
                                     DrawTextures& textures) {
   gpu::MaterialGpu gpu_material = material_gpu(material);
-  const gltf::TextureRef* refs[LAGOON_TEX_COUNT] = {&material.base_color, &material.metallic_roughness,
-                                                    &material.normal, &material.occlusion,
-                                                    &material.emissive};
+  const auto refs = texture_slots(material);
   for (int i = 0; i < LAGOON_TEX_COUNT; ++i) {
     const bool srgb = i == LAGOON_TEX_BASE || i == LAGOON_TEX_EMISSIVE;  // colours; the rest is data
     textures.image[size_t(i)] = &white_texture_;
     textures.sampler[size_t(i)] = samplers_.repeat.get();
-    if (refs[i]->image < 0) continue;
-    textures.image[size_t(i)] = &model_texture(model, model_id, refs[i]->image, srgb);
-    textures.sampler[size_t(i)] = sampler_for(refs[i]->sampler);
+    if (refs[size_t(i)]->image < 0) continue;
+    textures.image[size_t(i)] = &model_texture(model, model_id, refs[size_t(i)]->image, srgb);
+    textures.sampler[size_t(i)] = sampler_for(refs[size_t(i)]->sampler);
     gpu_material.flags.y |= 1u << i;
   }
   materials_.push_back(gpu_material);
