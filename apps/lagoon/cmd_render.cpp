@@ -5,8 +5,11 @@
 #include <vector>
 
 #include "commands.h"
+#include "dataset_render.h"
+#include "frame_sequence.h"
 #include "gpu_session.h"
 #include "io/png.h"
+#include "io/sha256.h"
 #include "render/ocean_renderer.h"
 #include "scene/scene.h"
 #include "scene_args.h"
@@ -37,21 +40,15 @@ std::optional<std::vector<std::string>> shorthand_overrides(const ParsedArgs& ar
   return overrides;
 }
 
-// --frames and --fps: how many frames, and the simulation time between them (1/fps).
-struct FrameRun {
-  long long frames = 1;
-  double fps = 30.0;
-};
-
-// nullopt (after printing why) when either is out of range.
-std::optional<FrameRun> frame_run_option(const ParsedArgs& args) {
-  FrameRun run;
+// --frames, --fps and --shard. nullopt (after printing why) when one is out of range.
+std::optional<FrameSequence> frame_sequence_option(const ParsedArgs& args) {
+  FrameSequence sequence;
   const auto frames_arg = integer_option(args, "frames", 1, 1, 100000);
   if (!frames_arg) {
     std::fprintf(stderr, "lagoon render: %s\n", frames_arg.error().message.c_str());
     return std::nullopt;
   }
-  run.frames = *frames_arg;
+  sequence.frames = *frames_arg;
   if (auto v = args.get("fps")) {
     auto f = parse_number(*v);
     if (!f || *f <= 0 || *f > 1000) {
@@ -59,38 +56,67 @@ std::optional<FrameRun> frame_run_option(const ParsedArgs& args) {
                    v->c_str());
       return std::nullopt;
     }
-    run.fps = *f;
+    sequence.fps = *f;
   }
+  if (auto v = args.get("shard")) {
+    Result<Shard> shard = parse_shard(*v);
+    if (!shard) {
+      std::fprintf(stderr, "lagoon render: %s\n", shard.error().message.c_str());
+      return std::nullopt;
+    }
+    sequence.shard = *shard;
+  }
+  return sequence;
+}
+
+// The camera flight of --path, checked to cover every frame. nullopt (after printing why) when it cannot be
+// read or is too short; an absent --path gives an empty optional in the Result.
+std::optional<std::optional<scene::CameraPath>> camera_path_option(const ParsedArgs& args,
+                                                                   const FrameSequence& sequence) {
+  const auto file = args.get("path");
+  if (!file) return std::optional<scene::CameraPath>{};
+  Result<scene::CameraPath> path = scene::load_camera_path(*file);
+  if (!path) {
+    std::fprintf(stderr, "lagoon render: %s\n", path.error().message.c_str());
+    return std::nullopt;
+  }
+  const double needed = sequence.offset_s(sequence.frames - 1);
+  if (needed > path->duration_s() + 1e-9) {
+    std::fprintf(
+        stderr,
+        "lagoon render: %s: the path lasts %.3g s but --frames %lld at --fps %.3g needs %.3g s; render "
+        "fewer frames, raise --fps or add keyframes\n",
+        file->c_str(), path->duration_s(), sequence.frames, sequence.fps, needed);
+    return std::nullopt;
+  }
+  return std::optional<scene::CameraPath>(std::move(*path));
+}
+
+// A file's SHA-256 for the manifest's run record ("" when unreadable: loading it reports why).
+std::string checksum(const std::string& file) {
+  Result<std::string> sha = io::sha256_file(file);
+  return sha ? *sha : "";
+}
+
+// What the manifest records as the run: two shards may share a folder only when all of it is equal.
+nlohmann::json run_record(const ParsedArgs& args, const std::vector<std::string>& overrides,
+                          const FrameSequence& sequence) {
+  nlohmann::json run{{"scene", *args.get("scene")},
+                     {"scene_sha256", checksum(*args.get("scene"))},
+                     {"set", overrides},
+                     {"frames", sequence.frames},
+                     {"fps", sequence.fps},
+                     {"shards", sequence.shard.count}};
+  for (const std::string& s : args.all("set")) run["set"].push_back(s);
+  if (auto path = args.get("path")) run["path"] = {{"file", *path}, {"sha256", checksum(*path)}};
   return run;
 }
 
-// One PNG per frame: out.png for a single frame, out_0000.png, out_0001.png ... for several.
-std::string frame_path(const std::string& out_path, long long frame, long long frames) {
-  if (frames == 1) return out_path;
-  char suffix[24];  // "_" + up to 19 digits + NUL
-  std::snprintf(suffix, sizeof(suffix), "_%04lld", frame);
-  return out_path.substr(0, out_path.size() - 4) + suffix + ".png";
-}
-
-void print_progress(long long done_frames, long long frames) {
-  const int done = int(40 * done_frames / frames);
-  std::fprintf(stderr, "\r[%s%s] %lld/%lld frames", std::string(done, '#').c_str(),
-               std::string(40 - done, ' ').c_str(), done_frames, frames);
-}
-
-// What was written, on which device, and each pass's GPU time (of the last frame).
-void print_summary(const std::string& out_path, const FrameRun& run, const io::Image8& image,
-                   const scene::Scene& scene, const vk::Context& ctx,
-                   const std::vector<vk::PassTime>& timings) {
-  if (run.frames == 1) {
-    std::printf("wrote %s (%ux%u, t = %.2f s) on %s (%s)\n", out_path.c_str(), image.width, image.height,
-                scene.time_s, ctx.device_info().name.c_str(), ctx.device_info().type.c_str());
-  } else {
-    const std::string stem = out_path.substr(0, out_path.size() - 4);
-    std::printf("wrote %s_0000.png .. %s_%04lld.png (%lld frames at %.3g fps, %ux%u) on %s (%s)\n",
-                stem.c_str(), stem.c_str(), run.frames - 1, run.frames, run.fps, image.width, image.height,
-                ctx.device_info().name.c_str(), ctx.device_info().type.c_str());
-  }
+// What was written, on which device, and each pass's GPU time.
+void print_summary(const std::string& out_path, const io::Image8& image, const scene::Scene& scene,
+                   const vk::Context& ctx, const std::vector<vk::PassTime>& timings) {
+  std::printf("wrote %s (%ux%u, t = %.2f s) on %s (%s)\n", out_path.c_str(), image.width, image.height,
+              scene.time_s, ctx.device_info().name.c_str(), ctx.device_info().type.c_str());
   for (const auto& t : timings) std::printf("  %-10s %8.2f ms GPU\n", t.name.c_str(), t.ms);
 }
 
@@ -102,8 +128,10 @@ int run_render(const ParsedArgs& args) {
   }
   const auto overrides = shorthand_overrides(args);
   if (!overrides) return kExitUsage;
-  const auto run = frame_run_option(args);
-  if (!run) return kExitUsage;
+  const auto sequence = frame_sequence_option(args);
+  if (!sequence) return kExitUsage;
+  const auto path = camera_path_option(args, *sequence);
+  if (!path) return kExitFailure;
   auto scene = load_scene_from_args(args, "render", *overrides);
   if (!scene) return kExitFailure;
   auto ctx = open_context();
@@ -114,22 +142,22 @@ int run_render(const ParsedArgs& args) {
     std::fprintf(stderr, "lagoon render: %s: %s\n", scene->source.c_str(), renderer.error().message.c_str());
     return kExitFailure;
   }
-  const double t0 = scene->time_s;
-  std::vector<vk::PassTime> timings;
-  io::Image8 image;
-  for (long long f = 0; f < run->frames; ++f) {
-    scene->time_s = float(t0 + double(f) / run->fps);
-    image = (*renderer)->render(*scene, &timings);
-    // A frame rendered with validation errors is not written: it cannot be trusted.
-    if (int status = validation_status(*ctx); status != kExitOk) return status;
-    if (auto written = io::write_png(frame_path(out_path, f, run->frames), image); !written) {
-      std::fprintf(stderr, "lagoon render: %s\n", written.error().message.c_str());
-      return kExitFailure;
-    }
-    if (run->frames > 1) print_progress(f + 1, run->frames);
+  if (sequence->frames > 1 || args.has("shard") || *path) {
+    const DatasetRun run{.out_png = out_path,
+                         .sequence = *sequence,
+                         .path = *path,
+                         .run = run_record(args, *overrides, *sequence)};
+    return render_dataset(run, *scene, *ctx, **renderer);
   }
-  if (run->frames > 1) std::fprintf(stderr, "\n");
-  print_summary(out_path, *run, image, *scene, *ctx, timings);
+  std::vector<vk::PassTime> timings;
+  const io::Image8 image = (*renderer)->render(*scene, &timings);
+  // A frame rendered with validation errors is not written: it cannot be trusted.
+  if (int status = validation_status(*ctx); status != kExitOk) return status;
+  if (auto written = io::write_png(out_path, image); !written) {
+    std::fprintf(stderr, "lagoon render: %s\n", written.error().message.c_str());
+    return kExitFailure;
+  }
+  print_summary(out_path, image, *scene, *ctx, timings);
   return kExitOk;
 }
 
@@ -137,21 +165,38 @@ int run_render(const ParsedArgs& args) {
 
 const Command& render_command() {
   static const Command command{
-      .spec = {.name = "render",
-               .summary = "Renders one frame of a scene headless and writes it as a PNG. The file is written "
-                          "under a temporary name and renamed when complete, so a failed run leaves nothing.",
-               .options = {scene_option(),
-                           {"out", "FILE.png", "output image; missing folders are created", true},
-                           {"width", "W", "image width in pixels (same as --set render.width=W)"},
-                           {"height", "H", "image height in pixels (same as --set render.height=H)"},
-                           {"time", "T", "simulation time in seconds (same as --set time_s=T)"},
-                           {"frames", "N", "render N frames: OUT_0000.png, OUT_0001.png, ... (default 1)"},
-                           {"fps", "F", "frames per second of simulation time between frames (default 30)"},
-                           {"set", "PATH=VALUE", "override a scene field, e.g. --set camera.fov_deg=40",
-                            false, true}},
-               .details =
-                   "example:\n  lagoon render --scene scenes/default.json --out out/default.png --width 640 "
-                   "--height 360\n"},
+      .spec =
+          {.name = "render",
+           .summary = "Renders a frame of a scene headless as a PNG, or a sequence with ground truth and a "
+                      "manifest, sharded across processes. Every file is written under a temporary name and "
+                      "renamed when complete, so a failed run leaves nothing half-written.",
+           .options = {scene_option(),
+                       {"out", "FILE.png", "output image; missing folders are created", true},
+                       {"width", "W", "image width in pixels (same as --set render.width=W)"},
+                       {"height", "H", "image height in pixels (same as --set render.height=H)"},
+                       {"time", "T", "simulation time in seconds (same as --set time_s=T)"},
+                       {"frames", "N",
+                        "render N frames: OUT_0000.png, OUT_0001.png, ..., each with its metadata "
+                        "(OUT_0000.json) and listed in a manifest (OUT.shard-0-of-1.jsonl); a second run "
+                        "skips the frames already finished (default 1)"},
+                       {"fps", "F", "frames per second of simulation time between frames (default 30)"},
+                       {"shard", "I/N",
+                        "render only frames I, I+N, I+2N, ... (I from 0), with their own manifest "
+                        "OUT.shard-I-of-N.jsonl: one shard per cluster task (docs/datasets.md)"},
+                       {"path", "PATH.json",
+                        "fly the camera along this keyframed path, frame k at its time k/fps "
+                        "(scenes/paths/evaluation.json; docs/datasets.md)"},
+                       {"set", "PATH=VALUE", "override a scene field, e.g. --set camera.fov_deg=40", false,
+                        true}},
+           .details =
+               "A sequence's frame k depends only on the scene and its time t = time_s + k/fps: each "
+               "frame re-runs its foam warm-up and wakes from still water, so frames drawn by different "
+               "shards, or after a restart, are byte-identical to those of one run.\n\n"
+               "examples:\n  lagoon render --scene scenes/default.json --out out/default.png --width 640 "
+               "--height 360\n"
+               "  lagoon render --scene scenes/harbour.json --path scenes/paths/evaluation.json --frames 660 "
+               "--fps 30 --shard 0/4 --out set/frame.png\n"
+               "  lagoon dataset verify set\n"},
       .run = run_render};
   return command;
 }

@@ -23,5 +23,6 @@ const Command& compare_images_command();
 const Command& compare_command();
 const Command& soak_command();
 const Command& sky_command();
+const Command& dataset_command();
 
 }  // namespace lagoon::cli

@@ -24,6 +24,7 @@ const std::vector<const Command*>& commands() {
       &lagoon::cli::compare_command(),
       &lagoon::cli::soak_command(),
       &lagoon::cli::sky_command(),
+      &lagoon::cli::dataset_command(),
   };
   return list;
 }

@@ -131,8 +131,8 @@ void OceanRenderer::record_frame(const FrameContext& f, const CausticsWindow& ca
 }
 
 void OceanRenderer::prepare(const scene::Scene& scene) {
-  ocean_step_->prepare(ctx_, scene.time_s);
-  wakes_->prepare(ctx_, scene);
+  ocean_step_->prepare(ctx_, scene.time_s, history_ == History::Replay);
+  wakes_->prepare(ctx_, scene, history_ == History::Replay);
 }
 
 FrameContext OceanRenderer::begin_frame(VkCommandBuffer cmd, const scene::Scene& scene, VkExtent2D extent,

@@ -71,8 +71,17 @@ class OceanRenderer {
   // and waits for it.
   io::Image8 render(const scene::Scene& scene, std::vector<vk::PassTime>* timings = nullptr);
 
+  // How a frame's state that builds up over time (foam, the wakes' waves) is reached. Continuous (the
+  // default, for real time): from the last frame's. Replay: every frame runs its warm-up again from still
+  // water, so its pixels depend only on the scene and its time, not on which frames came before (datasets,
+  // sharded renders: docs/datasets.md). Floating bodies and vehicles are always simulated from t = 0 at a
+  // fixed step, and sediment and particles are functions of time, so they need nothing.
+  enum class History { Continuous, Replay };
+  void set_history(History history) { history_ = history; }
+
   // Work that submits and waits, kept out of record(): the foam warm-up when scene.time_s jumps (the first
-  // frame, a step back, or more than kWarmupS ahead). Call before recording a frame for scene.time_s.
+  // frame, a step back, or more than kWarmupS ahead) or always with History::Replay, and the wakes' likewise.
+  // Call before recording a frame for scene.time_s.
   void prepare(const scene::Scene& scene);
   // Records the frame (the ocean stepped to scene.time_s, then every pass) into `cmd`; never submits. Uses
   // slot `slot` (mod kSlots): the caller must have waited for the last frame recorded with it. Returns the
@@ -149,6 +158,7 @@ class OceanRenderer {
   VehicleTracks tracks_;
   std::unique_ptr<FloatingObjects> floating_;
   VehicleSediment sediment_;
+  History history_ = History::Continuous;
   VkExtent2D extent_{};  // of the passes' targets
   std::unique_ptr<OwnTargets> own_;
   std::array<FrameSlot, kSlots> slots_;

@@ -12,6 +12,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <filesystem>
 #include <limits>
 #include <map>
 #include <optional>
@@ -214,6 +215,15 @@ class ObjectReader {
 // these is refused before parsing, so hostile input cannot exhaust the stack or memory.
 inline constexpr io::JsonLimits kSceneJsonLimits{
     .max_depth = 32, .max_array_length = 4096, .max_string_bytes = 4096};
+
+// What a JSON file holds, for messages: "scene file", "scenes/default.json", "about 2 KB".
+struct JsonFileKind {
+  std::string_view name, example, example_size;
+};
+// Reads a JSON file whole (at most 16 MiB), reporting a missing file, a folder, a huge file or a read error
+// as a file error that points at a shipped example of the kind.
+std::optional<std::string> read_json_file(const std::filesystem::path& path, Diagnostics& diag,
+                                          const JsonFileKind& kind);
 
 // Parses JSON text, reporting syntax errors with nlohmann's line/column and duplicate keys (which plain
 // JSON parsing would silently resolve to the last one), and text beyond kSceneJsonLimits. Never throws.

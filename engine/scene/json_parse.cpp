@@ -1,6 +1,10 @@
 // JSON text into a document, with what plain parsing lets through reported: duplicate keys, text beyond
 // kSceneJsonLimits. Declared in scene/json_fields.h.
+#include <cerrno>
+#include <cstring>
+#include <fstream>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -104,6 +108,45 @@ std::optional<json> parse_json_text(std::string_view text, Diagnostics& diag) {
     diag.file_error("invalid JSON: " + without_exception_id(e), "write numbers that fit in a double");
   }
   return std::nullopt;
+}
+
+std::optional<std::string> read_json_file(const std::filesystem::path& path, Diagnostics& diag,
+                                          const JsonFileKind& kind) {
+  const std::string name(kind.name), example(kind.example);
+  std::error_code ec;
+  const std::filesystem::file_status status = std::filesystem::status(path, ec);
+  if (!std::filesystem::exists(status)) {
+    const std::filesystem::path cwd = std::filesystem::current_path(ec);
+    diag.file_error("file not found", "check the path (relative paths start from the working directory " +
+                                          cwd.string() + "); " + example + " is a starting point");
+    return std::nullopt;
+  }
+  if (std::filesystem::is_directory(status)) {
+    diag.file_error("is a directory, not a " + name, "pass a .json file such as " + example);
+    return std::nullopt;
+  }
+  // Scene and path files are a few kilobytes; a huge one is the wrong file, and reading it whole would cost
+  // its size.
+  constexpr std::uintmax_t kMaxSceneBytes = std::uintmax_t{16} << 20;
+  if (const std::uintmax_t size = std::filesystem::file_size(path, ec); !ec && size > kMaxSceneBytes) {
+    diag.file_error("is " + std::to_string(size >> 20) + " MiB; " + name + "s are limited to 16 MiB",
+                    "check that this is the " + name + " you meant (" + example + " is " +
+                        std::string(kind.example_size) + ")");
+    return std::nullopt;
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    diag.file_error(std::string("cannot be opened: ") + std::strerror(errno),
+                    "check that the file is readable by this user");
+    return std::nullopt;
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) {
+    diag.file_error("could not be read", "check the file and the disk it is on");
+    return std::nullopt;
+  }
+  return text.str();
 }
 
 }  // namespace lagoon::scene

@@ -150,41 +150,6 @@ Result<Scene> validate(const json& document, Diagnostics& diag) {
   return scene;
 }
 
-std::optional<std::string> read_file(const std::filesystem::path& path, Diagnostics& diag) {
-  std::error_code ec;
-  const std::filesystem::file_status status = std::filesystem::status(path, ec);
-  if (!std::filesystem::exists(status)) {
-    const std::filesystem::path cwd = std::filesystem::current_path(ec);
-    diag.file_error("file not found", "check the path (relative paths start from the working directory " +
-                                          cwd.string() + "); scenes/default.json is a starting point");
-    return std::nullopt;
-  }
-  if (std::filesystem::is_directory(status)) {
-    diag.file_error("is a directory, not a scene file", "pass a .json file such as scenes/default.json");
-    return std::nullopt;
-  }
-  // Scene files are a few kilobytes; a huge one is the wrong file, and reading it whole would cost its size.
-  constexpr std::uintmax_t kMaxSceneBytes = std::uintmax_t{16} << 20;
-  if (const std::uintmax_t size = std::filesystem::file_size(path, ec); !ec && size > kMaxSceneBytes) {
-    diag.file_error("is " + std::to_string(size >> 20) + " MiB; scene files are limited to 16 MiB",
-                    "check that this is the scene file you meant (scenes/default.json is about 2 KB)");
-    return std::nullopt;
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    diag.file_error(std::string("cannot be opened: ") + std::strerror(errno),
-                    "check that the file is readable by this user");
-    return std::nullopt;
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) {
-    diag.file_error("could not be read", "check the file and the disk it is on");
-    return std::nullopt;
-  }
-  return text.str();
-}
-
 // Files named by the scene are relative to the scene, not to the working directory, so a scene folder can
 // be moved as a whole. Whether they exist is left to their readers, which name the file they miss.
 void resolve_files(Scene& scene, const std::filesystem::path& folder) {
@@ -204,7 +169,8 @@ void resolve_files(Scene& scene, const std::filesystem::path& folder) {
 Result<Scene> load_scene(const std::filesystem::path& path, std::span<const std::string> overrides) {
   try {
     Diagnostics diag(path.string());
-    const std::optional<std::string> text = read_file(path, diag);
+    const std::optional<std::string> text =
+        read_json_file(path, diag, {"scene file", "scenes/default.json", "about 2 KB"});
     if (!text) return diag.to_error();
     std::optional<json> document = parse_json_text(*text, diag);
     if (!document) return diag.to_error();

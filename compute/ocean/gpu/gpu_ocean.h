@@ -63,6 +63,10 @@ class GpuOcean {
   void record_step(VkCommandBuffer cmd, double time_s, double dt_s, vk::GpuTimer* timer = nullptr,
                    Mips mips = Mips::Rebuild);
 
+  // The next step starts foam (and the springs' grid) from still water again, as the first step does, so
+  // what follows depends only on the steps recorded from here on (a replayed warm-up, docs/datasets.md).
+  void restart() { reset_foam_ = true; }
+
   const OceanParams& params() const { return params_; }
   const std::vector<CascadeSpectrum>& spectra() const { return spectra_; }
   CascadeTextures cascade(uint32_t index) const;

@@ -10,8 +10,9 @@ Result<OceanStepPass> OceanStepPass::create(vk::Context& ctx, const ocean::Ocean
   return OceanStepPass(std::move(*ocean));
 }
 
-void OceanStepPass::prepare(vk::Context& ctx, double t) {
-  if (time_s_ >= 0 && t >= time_s_ && t - time_s_ <= kWarmupS) return;
+void OceanStepPass::prepare(vk::Context& ctx, double t, bool replay) {
+  if (!replay && time_s_ >= 0 && t >= time_s_ && t - time_s_ <= kWarmupS) return;
+  ocean_->restart();
   // A still frame needs the foam a running ocean would have: run the last few seconds first.
   ctx.submit_and_wait([&](VkCommandBuffer cmd) {
     double previous = t - kWarmupS;

@@ -20,9 +20,10 @@ class OceanStepPass {
   // Fails with the parameter's message when the scene's ocean is invalid (ocean/validate.h).
   static Result<OceanStepPass> create(vk::Context& ctx, const ocean::OceanParams& params);
 
-  // Set-up work outside the frame: when `time_s` jumps (first frame, backwards, or more than kWarmupS ahead)
-  // runs the warm-up in its own submission and waits. Call before recording the frame for `time_s`.
-  void prepare(vk::Context& ctx, double time_s);
+  // Set-up work outside the frame: when `time_s` jumps (first frame, backwards, or more than kWarmupS ahead),
+  // or always with `replay`, runs the warm-up from still water in its own submission and waits, so the frame
+  // depends on `time_s` alone. Call before recording the frame for `time_s`.
+  void prepare(vk::Context& ctx, double time_s, bool replay = false);
   // Steps to frame.scene.time_s (from wherever prepare() or the last frame left the ocean).
   void record(const FrameContext& frame);
 

@@ -55,10 +55,10 @@ void WakesPass::record_steps(VkCommandBuffer cmd, long long to) {
   }
 }
 
-void WakesPass::prepare(vk::Context& ctx, const scene::Scene& scene) {
+void WakesPass::prepare(vk::Context& ctx, const scene::Scene& scene, bool replay) {
   if (!layer_) return;
   const long long target = hulls_.step_at(scene.time_s);
-  if (steps_done_ >= 0 && target >= steps_done_ && target - steps_done_ <= kStepsPerFrame) return;
+  if (!replay && steps_done_ >= 0 && target >= steps_done_ && target - steps_done_ <= kStepsPerFrame) return;
   follow_camera(scene);
   steps_done_ = hulls_.first_step_for(scene.time_s);
   // The sources ring holds kStepsInFlight steps: a longer history is run in several submissions.

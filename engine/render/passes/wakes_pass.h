@@ -33,8 +33,9 @@ class WakesPass {
   glm::vec4 window() const;
 
   // When the frame's time jumps (the first frame, backwards, or more than a few steps ahead), runs the layer
-  // from wakes.history_s before it in its own submission and waits. Call before recording the frame.
-  void prepare(vk::Context& ctx, const scene::Scene& scene);
+  // from wakes.history_s before it in its own submission and waits (always with `replay`, so the frame
+  // depends on its time alone). Call before recording the frame.
+  void prepare(vk::Context& ctx, const scene::Scene& scene, bool replay = false);
   // Puts the window where the camera looks (VehicleWakes::window_for; waves in the cells both windows share
   // are kept). Call before the frame's uniforms are written (window()).
   void follow_camera(const scene::Scene& scene);

@@ -1,0 +1,123 @@
+#include "dataset_render.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <set>
+
+#include "exit_codes.h"
+#include "frame_metadata.h"
+#include "gpu_session.h"
+#include "io/atomic_file.h"
+#include "io/dataset_manifest.h"
+#include "io/png.h"
+
+namespace lagoon::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The manifest this shard continues: its entries whose files still match, or a new one. nullopt (after
+// printing why) when the folder holds a manifest of another run.
+std::optional<io::Manifest> resume_manifest(const fs::path& path, const DatasetRun& run) {
+  io::Manifest fresh{.run = run.run,
+                     .frames = run.sequence.frames,
+                     .shard_index = run.sequence.shard.index,
+                     .shard_count = run.sequence.shard.count};
+  std::error_code ec;
+  if (!fs::exists(path, ec)) return fresh;
+  Result<io::Manifest> old = io::read_manifest(path);
+  if (!old) {
+    std::fprintf(stderr, "lagoon render: %s\n", old.error().message.c_str());
+    return std::nullopt;
+  }
+  if (old->run != fresh.run || old->frames != fresh.frames) {
+    std::fprintf(stderr,
+                 "lagoon render: %s was written by another run (its scene, options or frame count differ); "
+                 "render into another folder or delete the old set first\n",
+                 path.c_str());
+    return std::nullopt;
+  }
+  for (io::ManifestFrame& entry : old->entries)
+    if (io::entry_mismatch(path.parent_path(), entry).empty()) fresh.entries.push_back(std::move(entry));
+  return fresh;
+}
+
+void print_progress(size_t done, size_t total, size_t skipped) {
+  const int bar = int(40 * done / std::max<size_t>(total, 1));
+  std::fprintf(stderr, "\r[%s%s] %zu/%zu frames", std::string(bar, '#').c_str(),
+               std::string(40 - bar, ' ').c_str(), done, total);
+  if (skipped) std::fprintf(stderr, " (%zu already done)", skipped);
+}
+
+// Writes the frame's files and returns their manifest entries (names relative to the output folder).
+Result<std::vector<io::ManifestFile>> write_frame(const DatasetRun& run, const scene::Scene& scene,
+                                                  long long frame, const io::Image8& image) {
+  const fs::path stem(frame_stem(run.out_png, frame, run.sequence));
+  const fs::path folder = stem.parent_path();
+  const std::string png = stem.filename().string() + ".png", meta = stem.filename().string() + ".json";
+  if (Result<void> ok = io::write_png(folder / png, image); !ok) return ok.error();
+  const std::string text = frame_metadata(scene, frame, {.image = png}).dump(2) + "\n";
+  if (Result<void> ok =
+          io::write_file_atomic(folder / meta, std::as_bytes(std::span(text.data(), text.size())));
+      !ok)
+    return ok.error();
+  std::vector<io::ManifestFile> files;
+  for (const std::string& name : {png, meta}) {
+    Result<io::ManifestFile> file = io::describe_file(folder / name, name);
+    if (!file) return file.error();
+    files.push_back(std::move(*file));
+  }
+  return files;
+}
+
+}  // namespace
+
+int render_dataset(const DatasetRun& run, scene::Scene& scene, vk::Context& ctx,
+                   render::OceanRenderer& renderer) {
+  renderer.set_history(render::OceanRenderer::History::Replay);
+  const fs::path manifest_file = manifest_path(run.out_png, run.sequence.shard);
+  std::optional<io::Manifest> manifest = resume_manifest(manifest_file, run);
+  if (!manifest) return kExitFailure;
+  Result<io::ManifestWriter> writer = io::ManifestWriter::create(manifest_file, *manifest);
+  if (!writer) {
+    std::fprintf(stderr, "lagoon render: %s\n", writer.error().message.c_str());
+    return kExitFailure;
+  }
+  std::set<long long> done;
+  for (const io::ManifestFrame& entry : manifest->entries) done.insert(entry.frame);
+  const std::vector<long long> frames = run.sequence.frames_of_shard();
+  const size_t skipped =
+      std::count_if(frames.begin(), frames.end(), [&](long long f) { return done.count(f); });
+  const double t0 = scene.time_s;
+  const scene::Camera lens = scene.camera;
+  size_t finished = skipped;
+  print_progress(finished, frames.size(), skipped);
+  for (long long f : frames) {
+    if (done.count(f)) continue;
+    scene.time_s = float(t0 + run.sequence.offset_s(f));
+    if (run.path) scene.camera = run.path->at(run.sequence.offset_s(f), lens);
+    const io::Image8 image = renderer.render(scene);
+    // A frame rendered with validation errors is not written: it cannot be trusted.
+    if (int status = validation_status(ctx); status != kExitOk) return status;
+    Result<std::vector<io::ManifestFile>> files = write_frame(run, scene, f, image);
+    Result<void> listed =
+        files ? writer->append(
+                    {.frame = f, .time_s = scene.time_s, .device = ctx.device_info().name, .files = *files})
+              : Result<void>(files.error());
+    if (!listed) {
+      std::fprintf(stderr, "\nlagoon render: %s\n", listed.error().message.c_str());
+      return kExitFailure;
+    }
+    print_progress(++finished, frames.size(), skipped);
+  }
+  std::fprintf(stderr, "\n");
+  std::printf(
+      "shard %lld/%lld: %zu frames of %lld (%zu rendered, %zu already done) at %.3g fps, %ux%u, on %s; "
+      "manifest %s\n",
+      run.sequence.shard.index, run.sequence.shard.count, frames.size(), run.sequence.frames,
+      frames.size() - skipped, skipped, run.sequence.fps, scene.render.width, scene.render.height,
+      ctx.device_info().name.c_str(), manifest_file.c_str());
+  return kExitOk;
+}
+
+}  // namespace lagoon::cli

@@ -1,0 +1,236 @@
+// Sequences as datasets (issue 18): a frame depends only on the scene, its time and the seed, so 4 shards of
+// 12 frames with foam and floating bodies are byte-identical to one process, a killed shard resumes to the
+// same files, and `lagoon dataset verify` checks the set. The scene is the harbour (two floating bodies,
+// breaking waves' foam, vehicles), small, with the wakes off to keep it quick (they replay like the foam).
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "support/child_process.h"
+#include "support/run_process.h"
+#include "support/temp_dir.h"
+
+namespace lagoon::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kHarbour = std::string(LAGOON_SOURCE_DIR) + "/scenes/harbour.json";
+// Wind strong enough for foam; the sequence starts late enough for the bodies to move. A second between
+// frames: a shard's frames are 4 s apart, more than the foam's warm-up, so without replay they would differ.
+const std::string kArgs = " --scene " + shell_quote(kHarbour) +
+                          " --width 96 --height 54 --frames 12 --fps 1 --time 20 --set wakes.enabled=false"
+                          " --set ocean.spectrum.wind_speed_mps=12";
+
+ProcessResult lagoon(const std::string& args) {
+  return run_process(shell_quote(LAGOON_BINARY) + " " + args);
+}
+
+std::string read(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// The frames' files (PNG and metadata JSON) of a folder, by name.
+std::map<std::string, std::string> frame_files(const fs::path& dir) {
+  std::map<std::string, std::string> files;
+  for (const auto& item : fs::directory_iterator(dir)) {
+    const std::string name = item.path().filename().string();
+    if (name.rfind("f_", 0) == 0) files[name] = read(item.path());
+  }
+  return files;
+}
+
+int manifest_lines(const fs::path& path) {
+  std::ifstream in(path);
+  int lines = 0;
+  for (std::string line; std::getline(in, line);) lines += !in.eof();
+  return lines;
+}
+
+// One unsharded run, shared by the tests that compare against it.
+class DatasetCli : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    reference_ =
+        new fs::path(fs::temp_directory_path() / ("lagoon-dataset-ref-" + std::to_string(::getpid())));
+    fs::remove_all(*reference_);
+    const ProcessResult r =
+        lagoon("render" + kArgs + " --out " + shell_quote((*reference_ / "f.png").string()));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+  }
+  static void TearDownTestSuite() {
+    fs::remove_all(*reference_);
+    delete reference_;
+  }
+  static const fs::path& reference() { return *reference_; }
+
+ private:
+  static fs::path* reference_;
+};
+fs::path* DatasetCli::reference_ = nullptr;
+
+TEST_F(DatasetCli, FourShardsAreByteIdenticalToOneProcess) {
+  const auto expected = frame_files(reference());
+  ASSERT_EQ(expected.size(), 24u);  // 12 PNGs and 12 metadata files
+  TempDir dir;
+  for (int s = 0; s < 4; ++s) {
+    const ProcessResult r = lagoon("render" + kArgs + " --shard " + std::to_string(s) + "/4 --out " +
+                                   shell_quote((dir / "f.png").string()));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("shard " + std::to_string(s) + "/4: 3 frames of 12 (3 rendered"),
+              std::string::npos)
+        << r.output;
+  }
+  const auto sharded = frame_files(dir.path());
+  ASSERT_EQ(sharded.size(), expected.size());
+  for (const auto& [name, bytes] : expected) EXPECT_TRUE(sharded.at(name) == bytes) << name << " differs";
+  // The frames differ from each other (the sea moves), so equality is not trivial.
+  EXPECT_NE(expected.at("f_0000.png"), expected.at("f_0011.png"));
+  for (const fs::path& set : {reference(), dir.path()}) {
+    const ProcessResult v = lagoon("dataset verify " + shell_quote(set.string()));
+    EXPECT_EQ(v.exit_code, 0) << v.output;
+    EXPECT_NE(v.output.find("1 set(s), 12 frames, 24 files"), std::string::npos) << v.output;
+  }
+}
+
+TEST_F(DatasetCli, AFrameOfASequenceIsTheSingleFrameAtItsTime) {
+  // Frame 7 at t = 20 + 7 s, drawn alone by a fresh process: the sequence's history left no trace in it.
+  TempDir dir;
+  const std::string single = " --scene " + shell_quote(kHarbour) +
+                             " --width 96 --height 54 --time 27 --set wakes.enabled=false"
+                             " --set ocean.spectrum.wind_speed_mps=12";
+  const ProcessResult r = lagoon("render" + single + " --out " + shell_quote((dir / "alone.png").string()));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_TRUE(read(dir / "alone.png") == read(reference() / "f_0007.png"));
+}
+
+TEST_F(DatasetCli, AKilledShardResumesAndFinishesWithTheSameFiles) {
+  TempDir dir;
+  const std::string command = shell_quote(LAGOON_BINARY) + " render" + kArgs + " --shard 1/4 --out " +
+                              shell_quote((dir / "f.png").string());
+  const fs::path manifest = dir / "f.shard-1-of-4.jsonl";
+  {
+    ChildProcess child(command);
+    // Killed as soon as its first frame (of 1, 5, 9) is listed: header + one line.
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+    while (manifest_lines(manifest) < 2 && std::chrono::steady_clock::now() < deadline)
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    child.send(SIGKILL);
+    ASSERT_EQ(child.wait().code, 128 + SIGKILL) << "finished before it could be killed:\n" << child.output();
+  }
+  const int listed = manifest_lines(manifest) - 1;
+  ASSERT_GE(listed, 1);
+  ASSERT_LT(listed, 3);
+  // A frame whose files a kill left half-way is re-rendered: damage one that is not listed yet.
+  std::ofstream(dir / "f_0009.png", std::ios::binary) << "half a PNG";
+  const ProcessResult resumed = run_process(command);
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.output;
+  EXPECT_NE(resumed.output.find("(" + std::to_string(3 - listed) + " rendered, " + std::to_string(listed) +
+                                " already done)"),
+            std::string::npos)
+      << resumed.output;
+  const auto expected = frame_files(reference());
+  const auto files = frame_files(dir.path());
+  ASSERT_EQ(files.size(), 6u);
+  for (const auto& [name, bytes] : files) EXPECT_TRUE(expected.at(name) == bytes) << name << " differs";
+  EXPECT_EQ(manifest_lines(manifest), 4);
+}
+
+TEST_F(DatasetCli, VerifyNamesADamagedFrameAndAnotherRunIsRefused) {
+  TempDir dir;
+  fs::copy(reference(), dir.path(), fs::copy_options::recursive);
+  std::string png = read(dir / "f_0004.png");
+  png[png.size() / 2] ^= 0x40;
+  std::ofstream(dir / "f_0004.png", std::ios::binary) << png;
+  const ProcessResult v = lagoon("dataset verify " + shell_quote(dir.path().string()));
+  EXPECT_EQ(v.exit_code, 1) << v.output;
+  EXPECT_NE(v.output.find("frame 4: " + (dir / "f_0004.png").string() + " does not match its SHA-256"),
+            std::string::npos)
+      << v.output;
+  // Rendering again mends it (only that frame is drawn), then the set verifies.
+  const ProcessResult again = lagoon("render" + kArgs + " --out " + shell_quote((dir / "f.png").string()));
+  ASSERT_EQ(again.exit_code, 0) << again.output;
+  EXPECT_NE(again.output.find("(1 rendered, 11 already done)"), std::string::npos) << again.output;
+  EXPECT_EQ(lagoon("dataset verify " + shell_quote(dir.path().string())).exit_code, 0);
+  // The same folder with other options is another run's: refused, nothing changed.
+  const ProcessResult other =
+      lagoon("render" + kArgs + " --set sun.elevation_deg=20 --out " + shell_quote((dir / "f.png").string()));
+  EXPECT_EQ(other.exit_code, 1) << other.output;
+  EXPECT_NE(other.output.find("was written by another run"), std::string::npos) << other.output;
+  EXPECT_TRUE(read(dir / "f_0004.png") == read(reference() / "f_0004.png"));
+}
+
+TEST_F(DatasetCli, TheMetadataStatesAPinholeCameraThatSeesItsAimAtTheCentre) {
+  const nlohmann::json meta = nlohmann::json::parse(read(reference() / "f_0003.json"));
+  EXPECT_EQ(meta["frame"], 3);
+  EXPECT_NEAR(meta["time_s"].get<double>(), 23, 1e-6);
+  EXPECT_EQ(meta["image"], "f_0003.png");
+  EXPECT_EQ(meta["seed"]["ocean"], 11);
+  EXPECT_EQ(meta["water"]["type"], "jerlov-1C");
+  const auto& k = meta["camera"]["K"];
+  // harbour: 60° vertical field of view, 96 x 54 pixels.
+  const double fy = 27.0 / std::tan(M_PI / 6);
+  EXPECT_NEAR(k[0][0].get<double>(), fy, 1e-9);
+  EXPECT_NEAR(k[1][1].get<double>(), fy, 1e-9);
+  EXPECT_NEAR(k[0][2].get<double>(), 47.5, 1e-9);
+  EXPECT_NEAR(k[1][2].get<double>(), 26.5, 1e-9);
+  // x_cam = R^T (X - t); the aim projects to the principal point, a point to the camera's right (the quay
+  // camera looks north-ish along +z, so world -x) to the right half and one above to the upper half.
+  const auto& pose = meta["camera"]["world_from_camera"];
+  auto project = [&](double x, double y, double z) {
+    double c[3];
+    for (int i = 0; i < 3; ++i)
+      c[i] = pose[0][i].get<double>() * (x - pose[0][3].get<double>()) +
+             pose[1][i].get<double>() * (y - pose[1][3].get<double>()) +
+             pose[2][i].get<double>() * (z - pose[2][3].get<double>());
+    return std::pair{fy * c[0] / c[2] + 47.5, fy * c[1] / c[2] + 26.5};
+  };
+  const auto centre = project(0, 0, 30);
+  EXPECT_NEAR(centre.first, 47.5, 1e-6);
+  EXPECT_NEAR(centre.second, 26.5, 1e-6);
+  EXPECT_GT(project(-5, 0, 30).first, 50);
+  EXPECT_LT(project(0, 5, 30).second, 24);
+  // ENU: east = x, north = -z, up = y.
+  const auto& enu = meta["camera"]["enu_from_camera"];
+  EXPECT_NEAR(enu[0][3].get<double>(), 0, 1e-9);
+  EXPECT_NEAR(enu[1][3].get<double>(), 16, 1e-9);
+  EXPECT_NEAR(enu[2][3].get<double>(), 5, 1e-9);
+}
+
+TEST(DatasetCliErrors, BadShardsPathsAndFoldersAreClearErrors) {
+  TempDir dir;
+  const std::string base = "render --scene " + shell_quote(kHarbour) + " --width 32 --height 18 --out " +
+                           shell_quote((dir / "f.png").string());
+  for (const char* shard : {"4/4", "x", "1/0", "-1/4", "1/4/2"}) {
+    const ProcessResult r = lagoon(base + " --frames 4 --shard " + shard);
+    EXPECT_EQ(r.exit_code, 2) << shard << "\n" << r.output;
+    EXPECT_NE(r.output.find("--shard"), std::string::npos) << r.output;
+  }
+  std::ofstream(dir / "short.json") << R"({"keyframes":[{"t":0,"position":[0,5,0],"look_at":[0,0,9]},)"
+                                       R"({"t":1,"position":[0,4,0],"look_at":[0,0,9]}]})";
+  const ProcessResult shortp =
+      lagoon(base + " --frames 10 --fps 5 --path " + shell_quote((dir / "short.json").string()));
+  EXPECT_EQ(shortp.exit_code, 1) << shortp.output;
+  EXPECT_NE(shortp.output.find("the path lasts 1 s but --frames 10 at --fps 5 needs 1.8 s"),
+            std::string::npos)
+      << shortp.output;
+  std::ofstream(dir / "bad.json") << R"({"keyframes":[{"t":0,"position":[0,5,0],"look_at":[0,5,0]}]})";
+  const ProcessResult bad = lagoon(base + " --frames 2 --path " + shell_quote((dir / "bad.json").string()));
+  EXPECT_EQ(bad.exit_code, 1) << bad.output;
+  EXPECT_NE(bad.output.find("bad.json: keyframes: has 1 element"), std::string::npos) << bad.output;
+  EXPECT_FALSE(fs::exists(dir / "f_0000.png"));
+  const ProcessResult none = lagoon("dataset verify " + shell_quote((dir / "nothing").string()));
+  EXPECT_EQ(none.exit_code, 1) << none.output;
+  EXPECT_NE(none.output.find("not a folder"), std::string::npos) << none.output;
+  EXPECT_EQ(lagoon("dataset check " + shell_quote(dir.path().string())).exit_code, 2);
+}
+
+}  // namespace
+}  // namespace lagoon::test
