@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "bench_bodies.h"
+#include "bench_effects.h"
 #include "bench_report.h"
 #include "bench_water_share.h"
 #include "commands.h"
@@ -286,6 +287,23 @@ std::optional<std::string> render_only_option(const ParsedArgs& args, const std:
 
 int run_bench(const ParsedArgs& args) {
   const std::string what = args.get("what").value_or("");
+  for (const char* name : {"path", "fps", "out"})
+    if (args.has(name) && what != "effects") {
+      std::fprintf(stderr, "lagoon bench: --%s applies to 'bench effects' only\n", name);
+      return kExitUsage;
+    }
+  if (what == "effects") {
+    if (args.has("rounds") || args.has("json")) {
+      std::fprintf(stderr,
+                   "lagoon bench effects: --%s does not apply: the flight's frames are the rounds and "
+                   "--out receives effects.json\n",
+                   args.has("rounds") ? "rounds" : "json");
+      return kExitUsage;
+    }
+    const auto size = frame_size_option(args);
+    if (!size) return kExitUsage;
+    return run_bench_effects(args, size->width, size->height);
+  }
   if (what == "compute" || what == "render" || what == "wakes" || what == "bodies") {
     if (const auto option = render_only_option(args, what); what != "render" && option) {
       std::fprintf(stderr, "lagoon bench: --%s applies to 'bench render' only\n", option->c_str());
@@ -297,7 +315,8 @@ int run_bench(const ParsedArgs& args) {
     if (what == "bodies") return run_bench_bodies(args, *rounds);
     return what == "compute" ? run_bench_compute(args, *rounds) : run_bench_render(args, *rounds);
   }
-  std::fprintf(stderr, "lagoon bench: unknown benchmark '%s'; available: compute, render, wakes, bodies\n",
+  std::fprintf(stderr,
+               "lagoon bench: unknown benchmark '%s'; available: compute, render, wakes, bodies, effects\n",
                what.c_str());
   return kExitUsage;
 }
@@ -316,29 +335,43 @@ const Command& bench_command() {
                "(wall time, with readback). 'wakes': one step of the dynamic wave layer with two hulls "
                "(N = 256, 512, 1024) on the device against its CPU reference in double precision. 'bodies': "
                "the floating objects' and vehicles' physics of a scene per 60 Hz frame on the CPU (mean "
-               "and worst frame of each second), with and without the wakes felt.",
-           .options = {{"what", "compute|render|wakes|bodies",
-                        "which benchmark: compute, render, wakes or bodies", true},
-                       {"scene", "FILE",
-                        "render: the scene (default scenes/default.json); bodies: the scene (default "
-                        "scenes/harbour.json)"},
-                       set_option(),
-                       {"width", "W", "render: frame width in pixels, 16 to 8192 (default 1280)"},
-                       {"height", "H", "render: frame height in pixels, 16 to 8192 (default 720)"},
-                       {"json", "FILE",
-                        "also write the results as Google Benchmark-style JSON: a \"context\" object "
-                        "(device, type, driver, driver version, Vulkan API version, rounds) and "
-                        "\"benchmarks\" (median real_time, min_time, max_time in ms; measure = \"gpu "
-                        "timestamps\" or \"wall\")"},
-                       {"rounds", "R",
-                        "measured rounds per configuration (default 15 compute, wakes and bodies, 10 render; "
-                        "a round of bodies is 60 frames)"}},
+               "and worst frame of each second), with and without the wakes felt. 'effects': the MARS "
+               "thesis's "
+               "evaluation (tables 4.3-4.7): a scripted camera flight with no effects, each effect alone and "
+               "all effects, min/avg/max FPS and per-pass GPU time, written as JSON, CSV, Markdown and a bar "
+               "chart PNG (docs/evaluation.md).",
+           .options =
+               {{"what", "compute|render|wakes|bodies|effects",
+                 "which benchmark: compute, render, wakes, bodies or effects", true},
+                {"scene", "FILE",
+                 "render: the scene (default scenes/default.json); bodies and effects: the scene "
+                 "(default scenes/harbour.json)"},
+                set_option(),
+                {"width", "W", "render, effects: frame width in pixels, 16 to 8192 (default 1280)"},
+                {"height", "H", "render, effects: frame height in pixels, 16 to 8192 (default 720)"},
+                {"path", "PATH.json",
+                 "effects: the camera flight (default scenes/paths/evaluation.json; docs/datasets.md)"},
+                {"fps", "F",
+                 "effects: frames per second of path time, 0.1 to 240 (default 10: 221 frames along the "
+                 "default 22 s flight)"},
+                {"out", "DIR",
+                 "effects: folder for effects.json, effects.csv, effects.md and effects.png (default "
+                 "out/bench-effects)"},
+                {"json", "FILE",
+                 "also write the results as Google Benchmark-style JSON: a \"context\" object "
+                 "(device, type, driver, driver version, Vulkan API version, rounds) and "
+                 "\"benchmarks\" (median real_time, min_time, max_time in ms; measure = \"gpu "
+                 "timestamps\" or \"wall\")"},
+                {"rounds", "R",
+                 "measured rounds per configuration (default 15 compute, wakes and bodies, 10 render; "
+                 "a round of bodies is 60 frames)"}},
            .positional = {"what"},
            .details = "Timings are medians after a warm-up (lavapipe compiles shaders at their first "
                       "dispatch). The machine's noise makes single numbers unreliable; compare ratios.\n"
                       "examples:\n  lagoon bench compute --rounds 5 --json out/compute.json\n"
                       "  lagoon bench render --scene scenes/open-ocean.json --width 640 --height 360\n"
-                      "  lagoon bench bodies --scene scenes/harbour.json --rounds 5\n"},
+                      "  lagoon bench bodies --scene scenes/harbour.json --rounds 5\n"
+                      "  lagoon bench effects --width 640 --height 360 --out out/effects\n"},
       .run = run_bench};
   return command;
 }
