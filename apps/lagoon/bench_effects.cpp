@@ -61,24 +61,22 @@ FlightSummary summarise(const EffectConfig& config, const FlightTimes& t) {
 }
 
 // Flies `path` at `fps` frames per second of path time, continuously as an interactive run would (foam and
-// wakes carry over from frame to frame). Unmeasured first: frames spread along the path, so every pipeline
-// the flight needs (above, below, across the waterline) is compiled (lavapipe compiles at first use, which
-// would charge hundreds of ms to whichever test meets it first), then the start, whose warm-up is set-up.
-FlightTimes fly(render::OceanRenderer& renderer, scene::Scene scene, const scene::CameraPath& path,
-                double fps) {
+// wakes carry over from frame to frame). Unmeasured first: one frame with the camera taken as above the water,
+// below it and across the waterline, so every pipeline the flight may need is compiled (lavapipe compiles at
+// first use, which would charge hundreds of ms to whichever test first crosses the surface), then the start,
+// whose warm-up is set-up.
+FlightTimes fly(render::OceanRenderer& renderer, scene::Scene scene, const scene::CameraPath& path, double fps) {
   FlightTimes times;
   const float t0 = scene.time_s;
   const scene::Camera lens = scene.camera;
   std::vector<vk::PassTime> timings;
-  constexpr int kWarmupFrames = 4;
-  for (int w = 0; w <= kWarmupFrames; ++w) {
-    const double t = path.duration_s() * w / kWarmupFrames;
-    scene.time_s = t0 + float(t);
-    scene.camera = path.at(t, lens);
+  scene.camera = path.at(0, lens);
+  for (render::CameraSide side :
+       {render::CameraSide::Above, render::CameraSide::Below, render::CameraSide::Waterline}) {
+    renderer.camera_medium().force(side);
     renderer.render(scene, &timings);
   }
-  scene.time_s = t0;
-  scene.camera = path.at(0, lens);
+  renderer.camera_medium().force(std::nullopt);
   renderer.render(scene, &timings);
   const long long frames = (long long)std::floor(path.duration_s() * fps + 1e-9) + 1;
   for (long long f = 0; f < frames; ++f) {

@@ -1,4 +1,5 @@
 // lagoon render: one frame of a scene, headless, to a PNG.
+#include <algorithm>
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -92,6 +93,32 @@ std::optional<std::optional<scene::CameraPath>> camera_path_option(const ParsedA
   return std::optional<scene::CameraPath>(std::move(*path));
 }
 
+// --aov's comma-separated list, each once, in the order given. nullopt (after printing why) for an unknown
+// one.
+std::optional<std::vector<std::string>> aov_option(const ParsedArgs& args) {
+  std::vector<std::string> aovs;
+  const std::string list = args.get("aov").value_or("");
+  for (size_t start = 0; start < list.size();) {
+    size_t end = list.find(',', start);
+    if (end == std::string::npos) end = list.size();
+    const std::string name = list.substr(start, end - start);
+    start = end + 1;
+    if (std::find(kAovNames.begin(), kAovNames.end(), name) == kAovNames.end()) {
+      std::string known;
+      for (const std::string& k : kAovNames) known += (known.empty() ? "" : ", ") + k;
+      std::fprintf(stderr, "lagoon render: --aov %s: unknown ground truth '%s'; available: %s\n",
+                   list.c_str(), name.c_str(), known.c_str());
+      return std::nullopt;
+    }
+    if (std::find(aovs.begin(), aovs.end(), name) == aovs.end()) aovs.push_back(name);
+  }
+  if (args.has("aov") && aovs.empty()) {
+    std::fprintf(stderr, "lagoon render: --aov needs a list, e.g. --aov depth,normal\n");
+    return std::nullopt;
+  }
+  return aovs;
+}
+
 // A file's SHA-256 for the manifest's run record ("" when unreadable: loading it reports why).
 std::string checksum(const std::string& file) {
   Result<std::string> sha = io::sha256_file(file);
@@ -109,6 +136,7 @@ nlohmann::json run_record(const ParsedArgs& args, const std::vector<std::string>
                      {"shards", sequence.shard.count}};
   for (const std::string& s : args.all("set")) run["set"].push_back(s);
   if (auto path = args.get("path")) run["path"] = {{"file", *path}, {"sha256", checksum(*path)}};
+  if (auto aov = args.get("aov")) run["aov"] = *aov;
   return run;
 }
 
@@ -130,6 +158,8 @@ int run_render(const ParsedArgs& args) {
   if (!overrides) return kExitUsage;
   const auto sequence = frame_sequence_option(args);
   if (!sequence) return kExitUsage;
+  const auto aovs = aov_option(args);
+  if (!aovs) return kExitUsage;
   const auto path = camera_path_option(args, *sequence);
   if (!path) return kExitFailure;
   auto scene = load_scene_from_args(args, "render", *overrides);
@@ -142,10 +172,11 @@ int run_render(const ParsedArgs& args) {
     std::fprintf(stderr, "lagoon render: %s: %s\n", scene->source.c_str(), renderer.error().message.c_str());
     return kExitFailure;
   }
-  if (sequence->frames > 1 || args.has("shard") || *path) {
+  if (sequence->frames > 1 || args.has("shard") || *path || !aovs->empty()) {
     const DatasetRun run{.out_png = out_path,
                          .sequence = *sequence,
                          .path = *path,
+                         .aovs = *aovs,
                          .run = run_record(args, *overrides, *sequence)};
     return render_dataset(run, *scene, *ctx, **renderer);
   }
@@ -183,6 +214,10 @@ const Command& render_command() {
                        {"shard", "I/N",
                         "render only frames I, I+N, I+2N, ... (I from 0), with their own manifest "
                         "OUT.shard-I-of-N.jsonl: one shard per cluster task (docs/datasets.md)"},
+                       {"aov", "LIST",
+                        "ground truth beside each frame as float32 .npy (OUT_0000.depth.npy, ...): any of "
+                        "depth (m along the optical axis), normal (world), water_mask (0 air, 1 surface, 2 "
+                        "under water), object_id (docs/datasets.md)"},
                        {"path", "PATH.json",
                         "fly the camera along this keyframed path, frame k at its time k/fps "
                         "(scenes/paths/evaluation.json; docs/datasets.md)"},

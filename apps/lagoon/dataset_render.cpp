@@ -9,7 +9,9 @@
 #include "gpu_session.h"
 #include "io/atomic_file.h"
 #include "io/dataset_manifest.h"
+#include "io/npy.h"
 #include "io/png.h"
+#include "render/ground_truth.h"
 
 namespace lagoon::cli {
 namespace {
@@ -49,20 +51,54 @@ void print_progress(size_t done, size_t total, size_t skipped) {
   if (skipped) std::fprintf(stderr, " (%zu already done)", skipped);
 }
 
+// The requested ground truth of the frame just drawn, as float32 .npy files named STEM.<aov>.npy.
+Result<std::vector<std::string>> write_aovs(const DatasetRun& run, const scene::Scene& scene,
+                                            render::OceanRenderer& renderer, const fs::path& stem) {
+  std::vector<std::string> names;
+  if (run.aovs.empty()) return names;
+  const render::OceanRenderer::SurfaceAov aov = renderer.render_surface_aov(scene, /*with_objects=*/true);
+  const VkExtent2D extent{scene.render.width, scene.render.height};
+  const render::CameraSide side = renderer.camera_side(scene, extent);
+  const double surface_y = side == render::CameraSide::Waterline
+                               ? renderer.camera_medium().surface_height(
+                                     scene.camera.position.x, scene.camera.position.z, scene.time_s)
+                               : 0.0;
+  const render::GroundTruth gt = render::ground_truth(aov, scene, side, surface_y);
+  const size_t h = gt.height, w = gt.width;
+  for (const std::string& kind : run.aovs) {
+    const std::vector<float>& values = kind == "depth"        ? gt.depth
+                                       : kind == "normal"     ? gt.normal
+                                       : kind == "water_mask" ? gt.water_mask
+                                                              : gt.object_id;
+    const std::vector<size_t> shape =
+        kind == "normal" ? std::vector<size_t>{h, w, 3} : std::vector<size_t>{h, w};
+    const std::string name = stem.filename().string() + "." + kind + ".npy";
+    if (Result<void> ok = io::write_npy(stem.parent_path() / name, values, shape); !ok) return ok.error();
+    names.push_back(name);
+  }
+  return names;
+}
+
 // Writes the frame's files and returns their manifest entries (names relative to the output folder).
 Result<std::vector<io::ManifestFile>> write_frame(const DatasetRun& run, const scene::Scene& scene,
-                                                  long long frame, const io::Image8& image) {
+                                                  render::OceanRenderer& renderer, long long frame,
+                                                  const io::Image8& image) {
   const fs::path stem(frame_stem(run.out_png, frame, run.sequence));
   const fs::path folder = stem.parent_path();
   const std::string png = stem.filename().string() + ".png", meta = stem.filename().string() + ".json";
   if (Result<void> ok = io::write_png(folder / png, image); !ok) return ok.error();
-  const std::string text = frame_metadata(scene, frame, {.image = png}).dump(2) + "\n";
+  Result<std::vector<std::string>> aovs = write_aovs(run, scene, renderer, stem);
+  if (!aovs) return aovs.error();
+  const FrameFiles listed{.image = png, .aovs = run.aovs, .aov_files = *aovs};
+  const std::string text = frame_metadata(scene, frame, listed).dump(2) + "\n";
   if (Result<void> ok =
           io::write_file_atomic(folder / meta, std::as_bytes(std::span(text.data(), text.size())));
       !ok)
     return ok.error();
   std::vector<io::ManifestFile> files;
-  for (const std::string& name : {png, meta}) {
+  std::vector<std::string> names = {png, meta};
+  names.insert(names.end(), aovs->begin(), aovs->end());
+  for (const std::string& name : names) {
     Result<io::ManifestFile> file = io::describe_file(folder / name, name);
     if (!file) return file.error();
     files.push_back(std::move(*file));
@@ -99,7 +135,7 @@ int render_dataset(const DatasetRun& run, scene::Scene& scene, vk::Context& ctx,
     const io::Image8 image = renderer.render(scene);
     // A frame rendered with validation errors is not written: it cannot be trusted.
     if (int status = validation_status(ctx); status != kExitOk) return status;
-    Result<std::vector<io::ManifestFile>> files = write_frame(run, scene, f, image);
+    Result<std::vector<io::ManifestFile>> files = write_frame(run, scene, renderer, f, image);
     Result<void> listed =
         files ? writer->append(
                     {.frame = f, .time_s = scene.time_s, .device = ctx.device_info().name, .files = *files})

@@ -4,6 +4,7 @@
 #pragma once
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -15,11 +16,15 @@
 
 namespace lagoon::cli {
 
+// The ground truth --aov may ask for (render/ground_truth.h; docs/datasets.md).
+inline const std::vector<std::string> kAovNames = {"depth", "normal", "water_mask", "object_id"};
+
 struct DatasetRun {
   std::string out_png;
   FrameSequence sequence;
   std::optional<scene::CameraPath> path;
-  nlohmann::json run;  // what the manifest records as the run (scene, checksums, options)
+  std::vector<std::string> aovs;  // ground truth to write beside each frame (kAovNames), in this order
+  nlohmann::json run;             // what the manifest records as the run (scene, checksums, options)
 };
 
 // The process exit code; prints progress on stderr and a summary on stdout.

@@ -2,11 +2,11 @@
 
 #include <cmath>
 #include <glm/geometric.hpp>
-#include <glm/gtc/matrix_access.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/trigonometric.hpp>
 
 #include "render/camera.h"
+#include "render/pinhole.h"
 
 namespace lagoon::cli {
 namespace {
@@ -35,14 +35,10 @@ glm::dmat3 enu_from_world() {
 }  // namespace
 
 ordered_json frame_metadata(const scene::Scene& scene, long long frame, const FrameFiles& files) {
-  const double w = scene.render.width, h = scene.render.height;
-  // The view the renderer draws (render/camera.h: GLM's right-handed look-at, image x right and y down).
-  const render::CameraMatrices m = render::camera_matrices(scene.camera, float(w / h));
-  const glm::dmat3 view(m.view);  // world -> GL camera (x right, y up, z backwards)
-  const glm::dvec3 right = glm::row(view, 0), up = glm::row(view, 1), back = glm::row(view, 2);
-  const glm::dmat3 world_from_optical(right, -up, -back);  // OpenCV optical frame: x right, y down, z forward
-  const glm::dvec3 position(scene.camera.position);
-  const double fy = 0.5 * h / std::tan(0.5 * glm::radians(double(scene.camera.fov_deg)));
+  const render::Pinhole cam = render::pinhole(scene.camera, scene.render.width, scene.render.height);
+  const glm::dmat3& world_from_optical = cam.world_from_camera;
+  const glm::dvec3& position = cam.position;
+  const double fy = cam.fy;
   const glm::dmat3 enu = enu_from_world();
   const glm::dmat3 ned_from_enu(glm::dvec3(0, 1, 0), glm::dvec3(1, 0, 0), glm::dvec3(0, 0, -1));
   const glm::dvec3 sun(render::sun_direction(scene.sun));
@@ -58,7 +54,7 @@ ordered_json frame_metadata(const scene::Scene& scene, long long frame, const Fr
       {"height", scene.render.height},
       {"camera",
        {{"model", "pinhole (OpenCV), no distortion; pixel centres at integer coordinates"},
-        {"K", {{fy, 0.0, 0.5 * (w - 1)}, {0.0, fy, 0.5 * (h - 1)}, {0.0, 0.0, 1.0}}},
+        {"K", {{cam.fx, 0.0, cam.cx}, {0.0, fy, cam.cy}, {0.0, 0.0, 1.0}}},
         {"distortion", {0.0, 0.0, 0.0, 0.0, 0.0}},
         {"fov_y_deg", scene.camera.fov_deg},
         {"near_m", scene.camera.near_m},

@@ -18,11 +18,15 @@ CameraSide CameraMedium::side(const glm::vec3& camera, double lens_m, double tim
   const double band = lens_m > 0 ? 2.0 * lens_m + 0.02 : 0.0;
   if (camera.y > reach_m_ + band) return CameraSide::Above;
   if (camera.y < -reach_m_ - band) return CameraSide::Below;
-  if (!probe_) probe_ = std::make_unique<ocean::HeightProbe>(params_, spectra_, kToleranceM);
   last_queried_ = true;
-  const double height = probe_->height(time_s, camera.x, camera.z).height;
+  const double height = surface_height(camera.x, camera.z, time_s);
   if (std::abs(camera.y - height) < band) return CameraSide::Waterline;
   return camera.y < height ? CameraSide::Below : CameraSide::Above;
+}
+
+double CameraMedium::surface_height(double x, double z, double time_s) {
+  if (!probe_) probe_ = std::make_unique<ocean::HeightProbe>(params_, spectra_, kToleranceM);
+  return probe_->height(time_s, x, z).height;
 }
 
 }  // namespace lagoon::render

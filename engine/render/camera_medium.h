@@ -30,6 +30,8 @@ class CameraMedium {
   bool under_water(const glm::vec3& camera, double time_s) {
     return side(camera, 0.0, time_s) == CameraSide::Below;
   }
+  // The displaced surface's height (m) at (x, z) and time t, within 1 cm (HeightProbe).
+  double surface_height(double x, double z, double time_s);
   // How the last answer was found: false when the camera was beyond the waves' reach (no query).
   bool last_queried() const { return last_queried_; }
 

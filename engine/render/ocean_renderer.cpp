@@ -135,13 +135,17 @@ void OceanRenderer::prepare(const scene::Scene& scene) {
   wakes_->prepare(ctx_, scene, history_ == History::Replay);
 }
 
-FrameContext OceanRenderer::begin_frame(VkCommandBuffer cmd, const scene::Scene& scene, VkExtent2D extent,
-                                        uint32_t slot_index, const CausticsWindow& caustics) {
-  FrameSlot& slot = slots_[slot_index % kSlots];
+CameraSide OceanRenderer::camera_side(const scene::Scene& scene, VkExtent2D extent) {
   const float aspect = float(extent.width) / float(extent.height);
   const double lens_m = scene.camera.near_m * std::tan(0.5 * glm::radians(double(scene.camera.fov_deg))) *
                         std::sqrt(1.0 + double(aspect) * aspect);
-  const CameraSide side = camera_medium_->side(scene.camera.position, lens_m, scene.time_s);
+  return camera_medium_->side(scene.camera.position, lens_m, scene.time_s);
+}
+
+FrameContext OceanRenderer::begin_frame(VkCommandBuffer cmd, const scene::Scene& scene, VkExtent2D extent,
+                                        uint32_t slot_index, const CausticsWindow& caustics) {
+  FrameSlot& slot = slots_[slot_index % kSlots];
+  const CameraSide side = camera_side(scene, extent);
   place_floating_objects(scene.time_s);
   objects_->set_sky(sky_light(scene.sun));
   wakes_->follow_camera(scene);

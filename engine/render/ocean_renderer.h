@@ -95,14 +95,16 @@ class OceanRenderer {
   // Ground truth of the water surface in the frame render() would draw
   // (shaders/render/ocean_surface_aov.frag): per pixel, rows from the top, the shading normal the surface
   // pass uses (xyz, w = foam) and the world point it is evaluated at (xyz m, w = 1; 0 where no water is
-  // drawn). Objects are not drawn.
+  // drawn). Objects are not drawn, unless `with_objects`: then every mesh and the floor too, nearest first
+  // (shaders/render/mesh_aov.frag: their normal with w = 0, and w of the world point says what the pixel
+  // shows, shared/ground_truth.h). render/ground_truth.h makes the dataset's AOVs of it.
   struct SurfaceAov {
     uint32_t width = 0, height = 0;
     std::vector<glm::vec4> normal_foam, world;
     const glm::vec4& normal_at(uint32_t x, uint32_t y) const { return normal_foam[size_t{y} * width + x]; }
     const glm::vec4& world_at(uint32_t x, uint32_t y) const { return world[size_t{y} * width + x]; }
   };
-  SurfaceAov render_surface_aov(const scene::Scene& scene);
+  SurfaceAov render_surface_aov(const scene::Scene& scene, bool with_objects = false);
 
   // The ocean the frames are drawn from (e.g. for a field check after render()).
   const ocean::GpuOcean& ocean() const { return ocean_step_->ocean(); }
@@ -115,6 +117,8 @@ class OceanRenderer {
   const CausticsPass& caustics() const { return *caustics_; }
   // Where the camera is judged to be (above, below, cutting the surface); tests and tools may force a side.
   CameraMedium& camera_medium() { return *camera_medium_; }
+  // The side a frame of `scene` at `extent` is drawn for (its near plane's reach allowed for).
+  CameraSide camera_side(const scene::Scene& scene, VkExtent2D extent);
 
  private:
   explicit OceanRenderer(vk::Context& ctx);

@@ -7,6 +7,7 @@
 #include <glm/common.hpp>
 #include "gltf/gltf_loader.h"
 #include "lagoon_shaders/shaders.h"
+#include "shared/ground_truth.h"
 
 #include "render/dfg_table.h"
 #include "render/mesh_material.h"
@@ -95,6 +96,19 @@ Result<std::unique_ptr<SceneObjects>> SceneObjects::load(vk::Context& ctx, const
     if (auto r = objects->load_model(vehicle.file, at, field, lights_of); !r) return r.error();
     objects->object_draws_.push_back({first, objects->objects_.size()});
   }
+  // What each draw is in the ground truth: the glTF floor's (loaded first), then each scene object's.
+  for (ObjectDraw& o : objects->objects_) o.ground_truth = LAGOON_GT_FLOOR;
+  for (size_t object = 0; object < objects->object_draws_.size(); ++object)
+    for (size_t i = objects->object_draws_[object].first; i < objects->object_draws_[object].second; ++i)
+      objects->objects_[i].ground_truth = LAGOON_GT_OBJECT0 + uint32_t(object);
+  objects->ground_truth_pipeline_ =
+      vk::GraphicsPipeline::create(ctx, {.vertex = &shaders::render_mesh_vert,
+                                         .fragment = &shaders::render_mesh_aov_frag,
+                                         .color_formats = {kGroundTruthFormat, kGroundTruthFormat},
+                                         .depth_format = depth_format,
+                                         .depth_test = true,
+                                         .depth_write = true,
+                                         .spec = {{LAGOON_MESH_SPEC_MODE, LAGOON_MESH_LIT}}});
   objects->upload_materials();
   return objects;
 }
@@ -296,15 +310,41 @@ void SceneObjects::draw(const FrameContext& frame, gpu::MeshMode mode) const {
     draw_mesh(frame, mode, o->mesh, {.model = o->world, .material = o->material}, o->textures, true);
 }
 
-void SceneObjects::draw_floor(const FrameContext& frame) const {
-  if (!floor_) return;
+SceneObjects::DrawTextures SceneObjects::floor_textures() const {
   DrawTextures t;
   t.image.fill(&white_texture_);
   t.sampler.fill(samplers_.repeat.get());
   if (materials_[floor_material_].flags.y != 0u) t.image[LAGOON_TEX_BASE] = &floor_texture_;
+  return t;
+}
+
+void SceneObjects::draw_floor(const FrameContext& frame) const {
+  if (!floor_) return;
   const gpu::MeshPush push{
       .model = glm::mat4(1.0f), .material = floor_material_, .texture_scale = floor_texture_scale_};
-  draw_mesh(frame, gpu::MeshMode::Refraction, *floor_, push, t, false);
+  draw_mesh(frame, gpu::MeshMode::Refraction, *floor_, push, floor_textures(), false);
+}
+
+void SceneObjects::draw_ground_truth(const FrameContext& frame) const {
+  // mesh_aov.frag reads only the material and its base colour (for alpha cut-outs).
+  auto draw = [&](const GpuMesh& mesh, const gpu::MeshPush& push, const DrawTextures& t) {
+    vk::draw(
+        frame.cmd, ground_truth_pipeline_,
+        {vk::bind(LAGOON_MESH_BIND_FRAME, frame.uniforms()),
+         vk::bind(LAGOON_MESH_BIND_VERTICES, mesh.vertices), vk::bind(LAGOON_MESH_BIND_INDICES, mesh.indices),
+         vk::bind(LAGOON_MESH_BIND_ALBEDO, sampled(*t.image[LAGOON_TEX_BASE], t.sampler[LAGOON_TEX_BASE])),
+         vk::bind(LAGOON_MESH_BIND_MATERIALS, materials_buffer_)},
+        push, mesh.index_count);
+  };
+  for (const ObjectDraw& o : objects_)
+    draw(o.mesh, {.model = o.world, .material = o.material, .ground_truth = o.ground_truth}, o.textures);
+  if (!floor_) return;
+  draw(*floor_,
+       {.model = glm::mat4(1.0f),
+        .material = floor_material_,
+        .texture_scale = floor_texture_scale_,
+        .ground_truth = LAGOON_GT_FLOOR},
+       floor_textures());
 }
 
 }  // namespace lagoon::render

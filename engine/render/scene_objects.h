@@ -35,6 +35,10 @@ class SceneObjects {
   void draw(const FrameContext& frame, gpu::MeshMode mode) const;
   // The procedural slope floor (refraction only; a glTF floor is an object). No-op without one.
   void draw_floor(const FrameContext& frame) const;
+  // Every mesh and the floor, above and below the water, into ground-truth targets (two kGroundTruthFormat
+  // colour targets and the depth format, as the water surface's: shaders/render/mesh_aov.frag).
+  static constexpr VkFormat kGroundTruthFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+  void draw_ground_truth(const FrameContext& frame) const;
   // Moves scene object `object` (objects[object], then vehicles[object - objects.size()]) to
   // `model_to_world`: a floating body's or a vehicle's pose.
   void place(size_t object, const glm::mat4& model_to_world);
@@ -60,6 +64,7 @@ class SceneObjects {
   };
   void draw_mesh(const FrameContext& frame, gpu::MeshMode mode, const GpuMesh& mesh,
                  const gpu::MeshPush& push, const DrawTextures& textures, bool blend) const;
+  DrawTextures floor_textures() const;
   // The material's index in materials_, its images uploaded (each once per colour space) and samplers made.
   // `model_id` tells this model's images from other models'.
   uint32_t add_material(const gltf::Model& model, const gltf::Material& material, size_t model_id,
@@ -75,8 +80,9 @@ class SceneObjects {
     glm::vec3 lo{0.0f}, hi{0.0f};  // its vertices' bounds within the node
     uint32_t material = 0;         // index into materials_
     DrawTextures textures;
-    bool blend = false;       // alphaMode BLEND: drawn after the rest, farthest first
-    glm::vec2 y_range{0.0f};  // lowest and highest world y of its vertices
+    bool blend = false;         // alphaMode BLEND: drawn after the rest, farthest first
+    glm::vec2 y_range{0.0f};    // lowest and highest world y of its vertices
+    uint32_t ground_truth = 0;  // shared/ground_truth.h LAGOON_GT_*
   };
   vk::Context& ctx_;
   const Samplers& samplers_;
@@ -109,6 +115,7 @@ class SceneObjects {
   // opaque and MASK materials, then BLEND ones (blending, no depth writes).
   std::array<vk::GraphicsPipeline, 4> pipelines_;
   std::array<vk::GraphicsPipeline, 4> blend_pipelines_;
+  vk::GraphicsPipeline ground_truth_pipeline_;  // draw_ground_truth()
 };
 
 }  // namespace lagoon::render

@@ -1,13 +1,15 @@
-// OceanRenderer::render_surface_aov: the surface pass's ground-truth variant in a frame of its own.
+// OceanRenderer::render_surface_aov: the surface pass's ground-truth variant in a frame of its own, and the
+// scene's meshes in the same targets when asked.
 #include <cstring>
 
 #include "render/ocean_renderer.h"
 #include "vk/barriers.h"
+#include "vk/rendering.h"
 #include "vk/transfer.h"
 
 namespace lagoon::render {
 
-OceanRenderer::SurfaceAov OceanRenderer::render_surface_aov(const scene::Scene& scene) {
+OceanRenderer::SurfaceAov OceanRenderer::render_surface_aov(const scene::Scene& scene, bool with_objects) {
   const VkExtent2D extent{scene.render.width, scene.render.height};
   auto target = [&](VkFormat format, VkImageUsageFlags usage, const char* name) {
     return vk::Image::create(ctx_, {.format = format, .extent = extent, .usage = usage, .debug_name = name});
@@ -29,6 +31,14 @@ OceanRenderer::SurfaceAov OceanRenderer::render_surface_aov(const scene::Scene& 
     vk::use(cmd, {normal.target(), world.target(), depth.target()}, vk::ImageUse::Discard,
             vk::ImageUse::Attachment);
     surface_->record_aov(frame, normal.target(), world.target(), depth.target());
+    if (with_objects) {
+      vk::use(cmd, {normal.target(), world.target(), depth.target()}, vk::ImageUse::Attachment,
+              vk::ImageUse::Attachment);
+      vk::begin_rendering(cmd, extent, {{.view = normal.view()}, {.view = world.view()}},
+                          vk::DepthTarget{.view = depth.view(), .clear = std::nullopt});
+      objects_->draw_ground_truth(frame);
+      vk::end_rendering(cmd);
+    }
     for (auto [image, buffer] : {std::pair{&normal, &normal_out}, {&world, &world_out}})
       vk::record_readback(cmd, *image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                           vk::access::kColorAttachmentWrite, *buffer);

@@ -45,7 +45,7 @@ struct MeshPush {
   mat4 model;           // model to world
   uint material;        // index into MaterialGpu[]
   float texture_scale;  // metres per texture repeat for world-space uv (0 = the mesh's uv)
-  uint pad0;
+  uint ground_truth;    // what it is in the ground truth (shared/ground_truth.h LAGOON_GT_*)
   uint pad1;
 };
 

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <thread>
 
+#include "io/npy.h"
 #include "support/child_process.h"
 #include "support/run_process.h"
 #include "support/temp_dir.h"
@@ -202,6 +203,44 @@ TEST_F(DatasetCli, TheMetadataStatesAPinholeCameraThatSeesItsAimAtTheCentre) {
   EXPECT_NEAR(enu[0][3].get<double>(), 0, 1e-9);
   EXPECT_NEAR(enu[1][3].get<double>(), 16, 1e-9);
   EXPECT_NEAR(enu[2][3].get<double>(), 5, 1e-9);
+}
+
+TEST(DatasetCliAov, GroundTruthIsWrittenBesideEachFrameListedAndChecked) {
+  TempDir dir;
+  const ProcessResult r = lagoon(
+      "render --scene " + shell_quote(kHarbour) +
+      " --width 48 --height 27 --frames 2 --set wakes.enabled=false --aov depth,normal,water_mask,object_id "
+      "--out " +
+      shell_quote((dir / "f.png").string()));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  for (const char* frame : {"f_0000", "f_0001"}) {
+    for (const auto& [kind, channels] :
+         {std::pair{"depth", 1}, {"normal", 3}, {"water_mask", 1}, {"object_id", 1}}) {
+      const auto npy = io::read_npy(dir / (std::string(frame) + "." + kind + ".npy"));
+      ASSERT_TRUE(npy) << npy.error().message;
+      const std::vector<size_t> shape =
+          channels == 3 ? std::vector<size_t>{27, 48, 3} : std::vector<size_t>{27, 48};
+      EXPECT_EQ(npy->shape, shape) << kind;
+    }
+    const nlohmann::json meta = nlohmann::json::parse(read(dir / (std::string(frame) + ".json")));
+    EXPECT_EQ(meta["aov"]["depth"], std::string(frame) + ".depth.npy");
+    EXPECT_EQ(meta["aov"].size(), 4u);
+  }
+  // The harbour from the quay: water, sky and the moored boat (objects[1] has id 2) in view.
+  const auto mask = io::read_npy(dir / "f_0000.water_mask.npy");
+  const auto ids = io::read_npy(dir / "f_0000.object_id.npy");
+  EXPECT_NE(std::count(mask->data.begin(), mask->data.end(), 1.0f), 0);
+  EXPECT_NE(std::count(ids->data.begin(), ids->data.end(), 2.0f), 0);
+  const ProcessResult v = lagoon("dataset verify " + shell_quote(dir.path().string()));
+  EXPECT_EQ(v.exit_code, 0) << v.output;
+  EXPECT_NE(v.output.find("2 frames, 12 files"), std::string::npos) << v.output;
+  const ProcessResult unknown = lagoon("render --scene " + shell_quote(kHarbour) +
+                                       " --aov depth,colour --out " + shell_quote((dir / "g.png").string()));
+  EXPECT_EQ(unknown.exit_code, 2) << unknown.output;
+  EXPECT_NE(
+      unknown.output.find("unknown ground truth 'colour'; available: depth, normal, water_mask, object_id"),
+      std::string::npos)
+      << unknown.output;
 }
 
 TEST(DatasetCliErrors, BadShardsPathsAndFoldersAreClearErrors) {

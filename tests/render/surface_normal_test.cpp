@@ -10,7 +10,9 @@
 #include <vector>
 
 #include "ocean/wave_query.h"
+#include "render/ground_truth.h"
 #include "render/ocean_renderer.h"
+#include "render/pinhole.h"
 #include "support/vk_fixture.h"
 
 namespace lagoon::test {
@@ -142,6 +144,37 @@ TEST_F(SurfaceNormal, ShaderNormalAgreesWithWaveQueryNearMidFar) {
         b.name, b.near_m, b.far_m, e.rms, e.relative_rms, e.blocks, e.reference_rms);
     EXPECT_LT(e.relative_rms, b.max_relative) << b.name << " band: relative rms slope error";
     EXPECT_LT(e.rms, b.max_rms) << b.name << " band: rms slope error";
+  }
+}
+
+// The dataset's normal AOV (lagoon render --aov normal,depth, through render/ground_truth.h) over the water:
+// the world points rebuilt from its depth along each pixel's ray, its normals, the same bands.
+TEST_F(SurfaceNormal, TheDatasetsNormalAovAgreesWithWaveQuery) {
+  auto renderer = render::OceanRenderer::create(ctx(), scene_);
+  ASSERT_TRUE(renderer) << renderer.error().message;
+  const render::GroundTruth gt = render::ground_truth((*renderer)->render_surface_aov(scene_, true), scene_,
+                                                      render::CameraSide::Above, 0.0);
+  const render::Pinhole cam = render::pinhole(scene_.camera, gt.width, gt.height);
+  render::OceanRenderer::SurfaceAov rebuilt{.width = gt.width, .height = gt.height};
+  for (uint32_t y = 0; y < gt.height; ++y)
+    for (uint32_t x = 0; x < gt.width; ++x) {
+      const size_t i = size_t{y} * gt.width + x;
+      const glm::dvec3 ray = cam.ray(x, y);
+      const bool water = gt.water_mask[i] == 1.0f;
+      const glm::dvec3 p =
+          water ? cam.position + ray * (double(gt.depth[i]) / glm::dot(ray, cam.forward())) : glm::dvec3(0);
+      rebuilt.world.push_back(glm::vec4(glm::vec3(p), water ? 1.0f : 0.0f));
+      rebuilt.normal_foam.push_back(
+          glm::vec4(gt.normal[3 * i], gt.normal[3 * i + 1], gt.normal[3 * i + 2], 0.0f));
+    }
+  aov_ = std::move(rebuilt);
+  for (const auto& [name, near_m, far_m, max_relative] :
+       {std::tuple{"near", 13.0, 20.0, 0.25}, std::tuple{"mid", 30.0, 50.0, 0.3}}) {
+    const BandError e = band(near_m, far_m);
+    ASSERT_GT(e.blocks, 10) << name;
+    std::printf("dataset AOV, %s band: relative rms slope error %.3f over %d blocks\n", name, e.relative_rms,
+                e.blocks);
+    EXPECT_LT(e.relative_rms, max_relative) << name;
   }
 }
 

@@ -1,0 +1,45 @@
+#include "render/ground_truth.h"
+
+#include <glm/geometric.hpp>
+#include <limits>
+
+#include "render/pinhole.h"
+#include "shared/ground_truth.h"
+
+namespace lagoon::render {
+
+GroundTruth ground_truth(const OceanRenderer::SurfaceAov& aov, const scene::Scene& scene, CameraSide side,
+                         double surface_y) {
+  const Pinhole cam = pinhole(scene.camera, aov.width, aov.height);
+  const size_t pixels = size_t{aov.width} * aov.height;
+  GroundTruth gt{.width = aov.width, .height = aov.height};
+  gt.depth.assign(pixels, std::numeric_limits<float>::infinity());
+  gt.normal.assign(3 * pixels, 0.0f);
+  gt.water_mask.assign(pixels, 0.0f);
+  gt.object_id.assign(pixels, 0.0f);
+  const double near = scene.camera.near_m;
+  for (uint32_t y = 0; y < aov.height; ++y)
+    for (uint32_t x = 0; x < aov.width; ++x) {
+      const size_t i = size_t{y} * aov.width + x;
+      const glm::vec4& world = aov.world_at(x, y);
+      const uint32_t what = uint32_t(world.w + 0.5f);
+      // Where the pixel's ray starts: in the water when the camera is under it, or, with the lens cutting
+      // the surface, when its point on the near plane is below the water there.
+      bool from_water = side == CameraSide::Below;
+      if (side == CameraSide::Waterline) {
+        const glm::dvec3 d = cam.ray(x, y);
+        from_water = (cam.position + d * (near / glm::dot(d, cam.forward()))).y < surface_y;
+      }
+      gt.water_mask[i] = what == LAGOON_GT_WATER ? 1.0f : from_water ? 2.0f : 0.0f;
+      if (what == LAGOON_GT_NONE) continue;
+      gt.depth[i] = float(glm::dot(glm::dvec3(world) - cam.position, cam.forward()));
+      const glm::vec4& n = aov.normal_at(x, y);
+      for (int c = 0; c < 3; ++c) gt.normal[3 * i + c] = n[c];
+      gt.object_id[i] = what >= LAGOON_GT_OBJECT0 ? float(what - LAGOON_GT_OBJECT0 + 1)
+                        : what == LAGOON_GT_FLOOR ? -1.0f
+                                                  : 0.0f;
+    }
+  return gt;
+}
+
+}  // namespace lagoon::render

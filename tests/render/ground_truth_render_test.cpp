@@ -1,0 +1,168 @@
+// The dataset's ground truth (render/ground_truth.h, lagoon render --aov): the depth at an object's pixels is
+// the distance along the optical axis to the mesh that a ray through the pixel's centre meets, computed here
+// by intersecting the ray with the box analytically (1 cm); every pixel whose ray hits the box well inside
+// its faces is labelled with its object id; and the water mask agrees with the side of the surface the camera
+// is on. The normal over the water is checked against WaveQuery in surface_normal_test.cpp.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <limits>
+#include <set>
+
+#include "render/ground_truth.h"
+#include "render/ocean_renderer.h"
+#include "render/pinhole.h"
+#include "support/edited_scene.h"
+#include "support/gltf_quads.h"
+#include "support/temp_dir.h"
+#include "support/vk_fixture.h"
+
+namespace lagoon::test {
+namespace {
+
+using nlohmann::json;
+
+constexpr double kHalf = 1.0;  // the box's half-size (m)
+
+// A closed cube of six quads, 2 kHalf wide, centred on its node.
+std::vector<Quad> cube() {
+  const double s = std::sqrt(0.5);
+  const std::vector<std::pair<json, json>> faces = {
+      {{0, 0, -kHalf}, {0, 0, 0, 1}}, {{0, 0, kHalf}, {0, 1, 0, 0}},   {{-kHalf, 0, 0}, {0, s, 0, s}},
+      {{kHalf, 0, 0}, {0, -s, 0, s}}, {{0, -kHalf, 0}, {-s, 0, 0, s}}, {{0, kHalf, 0}, {s, 0, 0, s}}};
+  std::vector<Quad> quads;
+  for (const auto& [t, r] : faces)
+    quads.push_back({.material = {{"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.3, 0.2, 1}}}},
+                                  {"doubleSided", true}},
+                     .translation = t,
+                     .rotation = r,
+                     .half = float(kHalf)});
+  return quads;
+}
+
+// The distance along `d` from `o` to the axis-aligned box centred on `c` (slabs), or +inf.
+double hit_box(glm::dvec3 o, glm::dvec3 d, glm::dvec3 c, double h, double* margin = nullptr) {
+  double t0 = 0, t1 = std::numeric_limits<double>::infinity();
+  for (int a = 0; a < 3; ++a) {
+    const double lo = (c[a] - h - o[a]) / d[a], hi = (c[a] + h - o[a]) / d[a];
+    t0 = std::max(t0, std::min(lo, hi));
+    t1 = std::min(t1, std::max(lo, hi));
+  }
+  if (t0 > t1) return std::numeric_limits<double>::infinity();
+  if (margin) {  // how far inside the face's edges the hit point lies
+    const glm::dvec3 p = o + t0 * d - c;
+    double m = std::numeric_limits<double>::infinity();
+    for (int a = 0; a < 3; ++a)
+      if (std::abs(std::abs(p[a]) - h) > 1e-6) m = std::min(m, h - std::abs(p[a]));
+    *margin = m;
+  }
+  return t0;
+}
+
+class GroundTruthRender : public GpuTest {
+ protected:
+  TempDir dir_{"lagoon_ground_truth_render"};
+
+  render::GroundTruth ground_truth(const scene::Scene& s, render::CameraSide* side_out = nullptr) {
+    auto renderer = render::OceanRenderer::create(ctx(), s);
+    EXPECT_TRUE(renderer) << renderer.error().message;
+    const auto aov = (*renderer)->render_surface_aov(s, true);
+    const render::CameraSide side = (*renderer)->camera_side(s, {s.render.width, s.render.height});
+    if (side_out) *side_out = side;
+    const double surface_y =
+        (*renderer)->camera_medium().surface_height(s.camera.position.x, s.camera.position.z, s.time_s);
+    return render::ground_truth(aov, s, side, surface_y);
+  }
+};
+
+TEST_F(GroundTruthRender, DepthAtAnObjectsPixelsIsTheRayMeshDistance) {
+  write_quads(dir_ / "cube.gltf", cube());
+  json s = shipped_scene_json("default");
+  const glm::dvec3 centre(1.5, 4.0, 12.0);
+  s["camera"] = {{"position", {5, 7, -2}}, {"look_at", {0, 4, 12}}, {"fov_deg", 50}};
+  s["render"].update({{"width", 160}, {"height", 90}});
+  s["seafloor"] = {{"type", "none"}};
+  s["objects"] = json::array(
+      {json{{"name", "cube"}, {"file", "cube.gltf"}, {"position", {centre.x, centre.y, centre.z}}}});
+  const scene::Scene scene = write_and_load(s, dir_ / "scene.json");
+  const render::GroundTruth gt = ground_truth(scene);
+  const render::Pinhole cam = render::pinhole(scene.camera, gt.width, gt.height);
+
+  int object_pixels = 0, checked = 0, missed = 0, inside = 0, inside_labelled = 0;
+  double worst = 0;
+  for (uint32_t y = 0; y < gt.height; ++y)
+    for (uint32_t x = 0; x < gt.width; ++x) {
+      const size_t i = size_t{y} * gt.width + x;
+      const glm::dvec3 ray = cam.ray(x, y);
+      double margin = 0;
+      const double t = hit_box(cam.position, ray, centre, kHalf, &margin);
+      if (std::isfinite(t) && margin > 0.05) {
+        ++inside;
+        inside_labelled += gt.object_id[i] == 1.0f;
+      }
+      if (gt.object_id[i] != 1.0f) continue;
+      ++object_pixels;
+      if (!std::isfinite(t)) {
+        ++missed;  // a pixel at the silhouette whose centre's ray just passes the box
+        continue;
+      }
+      const double expected = t * glm::dot(ray, cam.forward());
+      worst = std::max(worst, std::abs(double(gt.depth[i]) - expected));
+      ++checked;
+    }
+  std::printf(
+      "cube: %d object pixels, %d checked, worst depth error %.4f m; %d of %d inside pixels labelled\n",
+      object_pixels, checked, worst, inside_labelled, inside);
+  ASSERT_GT(checked, 200);
+  EXPECT_LT(worst, 0.01);
+  EXPECT_LE(missed, object_pixels / 20);
+  EXPECT_EQ(inside_labelled, inside);
+  // Its normals are the faces' axes.
+  for (size_t i = 0; i < gt.object_id.size(); ++i)
+    if (gt.object_id[i] == 1.0f) {
+      const glm::dvec3 n(gt.normal[3 * i], gt.normal[3 * i + 1], gt.normal[3 * i + 2]);
+      ASSERT_NEAR(std::max({std::abs(n.x), std::abs(n.y), std::abs(n.z)}), 1.0, 1e-3);
+    }
+}
+
+TEST_F(GroundTruthRender, TheWaterMaskFollowsTheSideOfTheSurfaceTheCameraIsOn) {
+  struct Case {
+    const char* scene;
+    std::vector<std::string> overrides;
+    render::CameraSide side;
+    std::set<float> allowed, required;
+  } cases[] = {
+      {"harbour", {}, render::CameraSide::Above, {0, 1}, {0, 1}},
+      {"harbour",
+       {"camera.position=[0,-3,0]", "camera.look_at=[4,-3,12]"},
+       render::CameraSide::Below,
+       {1, 2},
+       {1, 2}},
+      {"waterline", {}, render::CameraSide::Waterline, {0, 1, 2}, {0, 1, 2}},
+  };
+  for (Case& c : cases) {
+    c.overrides.insert(c.overrides.end(), {"render.width=96", "render.height=54"});
+    auto s = scene::load_scene(std::string(LAGOON_SOURCE_DIR) + "/scenes/" + c.scene + ".json", c.overrides);
+    ASSERT_TRUE(s) << s.error().message;
+    render::CameraSide side;
+    const render::GroundTruth gt = ground_truth(*s, &side);
+    ASSERT_EQ(side, c.side) << c.scene;
+    std::set<float> seen(gt.water_mask.begin(), gt.water_mask.end());
+    for (float v : seen) EXPECT_TRUE(c.allowed.count(v)) << c.scene << ": water_mask " << v;
+    for (float v : c.required) EXPECT_TRUE(seen.count(v)) << c.scene << ": no pixel with water_mask " << v;
+    for (size_t i = 0; i < gt.water_mask.size(); ++i) {
+      // Water pixels are the surface: finite depth, a normal that faces the camera's side of it.
+      if (gt.water_mask[i] != 1.0f) continue;
+      ASSERT_TRUE(std::isfinite(gt.depth[i])) << c.scene;
+      ASSERT_EQ(gt.object_id[i], 0.0f) << c.scene;
+    }
+    if (c.side == render::CameraSide::Waterline) {  // the lens cuts the surface: air above, water below
+      EXPECT_EQ(gt.water_mask[gt.width / 2], 0.0f);
+      EXPECT_EQ(gt.water_mask[gt.water_mask.size() - gt.width / 2], 2.0f);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace lagoon::test
