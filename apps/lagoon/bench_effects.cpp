@@ -61,11 +61,12 @@ FlightSummary summarise(const EffectConfig& config, const FlightTimes& t) {
 }
 
 // Flies `path` at `fps` frames per second of path time, continuously as an interactive run would (foam and
-// wakes carry over from frame to frame). Unmeasured first: one frame with the camera taken as above the water,
-// below it and across the waterline, so every pipeline the flight may need is compiled (lavapipe compiles at
-// first use, which would charge hundreds of ms to whichever test first crosses the surface), then the start,
-// whose warm-up is set-up.
-FlightTimes fly(render::OceanRenderer& renderer, scene::Scene scene, const scene::CameraPath& path, double fps) {
+// wakes carry over from frame to frame). Unmeasured first: one frame with the camera taken as above the
+// water, below it and across the waterline, so every pipeline the flight may need is compiled (lavapipe
+// compiles at first use, which would charge hundreds of ms to whichever test first crosses the surface), then
+// the start, whose warm-up is set-up.
+FlightTimes fly(render::OceanRenderer& renderer, scene::Scene scene, const scene::CameraPath& path,
+                double fps) {
   FlightTimes times;
   const float t0 = scene.time_s;
   const scene::Camera lens = scene.camera;
