@@ -1,7 +1,9 @@
 #include "dataset_render.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <set>
 
 #include "exit_codes.h"

@@ -17,7 +17,8 @@
 namespace lagoon::cli {
 
 // The ground truth --aov may ask for (render/ground_truth.h; docs/datasets.md).
-inline const std::vector<std::string> kAovNames = {"depth", "normal", "water_mask", "object_id"};
+inline const std::vector<std::string> kAovNames = {"depth", "normal",       "water_mask", "object_id",
+                                                   "clean", "transmission", "backscatter"};
 
 struct DatasetRun {
   std::string out_png;

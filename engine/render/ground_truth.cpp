@@ -42,4 +42,20 @@ GroundTruth ground_truth(const OceanRenderer::SurfaceAov& aov, const scene::Scen
   return gt;
 }
 
+void add_underwater_terms(GroundTruth& gt, const OceanRenderer::UnderwaterTerms& terms) {
+  const size_t pixels = gt.water_mask.size();
+  gt.clean.assign(3 * pixels, std::numeric_limits<float>::quiet_NaN());
+  gt.transmission.assign(3 * pixels, 1.0f);
+  gt.backscatter.assign(3 * pixels, 0.0f);
+  for (size_t i = 0; i < pixels; ++i) {
+    if (gt.water_mask[i] != 2.0f) continue;
+    const bool hit = terms.clean[i].a > 0.5f;
+    for (int c = 0; c < 3; ++c) {
+      gt.clean[3 * i + c] = hit ? terms.clean[i][c] : 0.0f;
+      gt.transmission[3 * i + c] = hit ? terms.transmission[i][c] : 0.0f;
+      gt.backscatter[3 * i + c] = terms.backscatter[i][c];
+    }
+  }
+}
+
 }  // namespace lagoon::render

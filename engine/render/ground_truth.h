@@ -18,11 +18,15 @@ namespace lagoon::render {
 struct GroundTruth {
   uint32_t width = 0, height = 0;
   std::vector<float> depth, normal, water_mask, object_id;  // normal: 3 per pixel
+  std::vector<float> clean, transmission, backscatter;      // 3 per pixel; empty until add_underwater_terms
 };
 
 // `side`: where the camera was judged to be for the frame; `surface_y`: the water's height above the camera
 // (used when the lens cuts the surface, to tell per pixel on which side its ray starts).
 GroundTruth ground_truth(const OceanRenderer::SurfaceAov& aov, const scene::Scene& scene, CameraSide side,
                          double surface_y);
+
+// Fills clean, transmission and backscatter from `terms` (the same frame's).
+void add_underwater_terms(GroundTruth& gt, const OceanRenderer::UnderwaterTerms& terms);
 
 }  // namespace lagoon::render

@@ -106,6 +106,18 @@ class OceanRenderer {
   };
   SurfaceAov render_surface_aov(const scene::Scene& scene, bool with_objects = false);
 
+  // The underwater view's image formation terms in the frame render() would draw
+  // (shaders/render/underwater_terms.frag, common/underwater_view.glsl): per pixel, rows from the top, the
+  // light leaving what the view ray meets (rgb, a = 1 where it meets something), the share of it the water
+  // lets through to the camera, and the light the water adds along the ray, in linear white units before
+  // exposure and tone mapping, as if the camera were under the water (the surface is not drawn): where it is,
+  // the drawn pixel is backscatter + clean · transmission. render/ground_truth.h keeps them where it is.
+  struct UnderwaterTerms {
+    uint32_t width = 0, height = 0;
+    std::vector<glm::vec4> clean, transmission, backscatter;
+  };
+  UnderwaterTerms render_underwater_terms(const scene::Scene& scene);
+
   // The ocean the frames are drawn from (e.g. for a field check after render()).
   const ocean::GpuOcean& ocean() const { return ocean_step_->ocean(); }
   // The vehicles' tracks, shared by their bodies, wakes and sediment: an order given to one (the demo's helm)

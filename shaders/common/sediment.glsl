@@ -21,22 +21,31 @@ layout(std430, binding = LAGOON_SURFACE_BIND_SEDIMENT) readonly buffer Sediment 
 #undef sed_real2
 #undef sed_real3
 
-// `behind`: the radiance arriving from `len` metres along the ray (white units, scaled by frame.lut.w where
-// the caller's are). `volume`: the water's own attenuation is drawn (render.effects.underwater).
-vec3 sediment_veil(vec3 behind, vec3 origin, vec3 dir, float len, bool volume) {
-  if (!kSediment) return behind;
+// The clouds along `len` metres of the ray: the light they add (rgb, white units scaled by frame.lut.w) and the
+// share of the light from behind them they let through (a). `volume`: the water's own attenuation is drawn
+// (render.effects.underwater).
+vec4 sediment_veil_terms(vec3 origin, vec3 dir, float len, bool volume) {
+  if (!kSediment) return vec4(0.0, 0.0, 0.0, 1.0);
   vec2 sum = vec2(0.0);
   int count = int(sediment.colour.w);
   for (int i = 0; i < count; ++i) {
     vec4 c = sediment_puffs[i].centre_sigma;
     sum += sed_ray(origin, dir, len, c.xyz, c.w, sediment_puffs[i].strength.x);
   }
-  if (sum.x <= 0.0) return behind;
+  if (sum.x <= 0.0) return vec4(0.0, 0.0, 0.0, 1.0);
   float t = sum.y / sum.x;  // where along the ray the clouds' light comes from
   float depth = max(-(origin.y + dir.y * t), 0.0);
   vec3 lit = underwater_target(volume ? t : 0.0, depth).rgb * frame.lut.w;
   float transmitted = exp(-sum.x);
-  return behind * transmitted + (1.0 - transmitted) * sediment.colour.rgb * lit;
+  return vec4((1.0 - transmitted) * sediment.colour.rgb * lit, transmitted);
+}
+
+// `behind`: the radiance arriving from `len` metres along the ray (white units, scaled by frame.lut.w where
+// the caller's are), seen through the clouds.
+vec3 sediment_veil(vec3 behind, vec3 origin, vec3 dir, float len, bool volume) {
+  if (!kSediment) return behind;
+  vec4 veil = sediment_veil_terms(origin, dir, len, volume);
+  return behind * veil.a + veil.rgb;
 }
 
 #endif

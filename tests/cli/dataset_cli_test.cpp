@@ -237,9 +237,9 @@ TEST(DatasetCliAov, GroundTruthIsWrittenBesideEachFrameListedAndChecked) {
   const ProcessResult unknown = lagoon("render --scene " + shell_quote(kHarbour) +
                                        " --aov depth,colour --out " + shell_quote((dir / "g.png").string()));
   EXPECT_EQ(unknown.exit_code, 2) << unknown.output;
-  EXPECT_NE(
-      unknown.output.find("unknown ground truth 'colour'; available: depth, normal, water_mask, object_id"),
-      std::string::npos)
+  EXPECT_NE(unknown.output.find("unknown ground truth 'colour'; available: depth, normal, water_mask, "
+                                "object_id, clean, transmission, backscatter"),
+            std::string::npos)
       << unknown.output;
 }
 

@@ -5,11 +5,13 @@
 // is on. The normal over the water is checked against WaveQuery in surface_normal_test.cpp.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <limits>
 #include <set>
 
+#include "optics/colour.h"
 #include "render/ground_truth.h"
 #include "render/ocean_renderer.h"
 #include "render/pinhole.h"
@@ -162,6 +164,59 @@ TEST_F(GroundTruthRender, TheWaterMaskFollowsTheSideOfTheSurfaceTheCameraIsOn) {
       EXPECT_EQ(gt.water_mask[gt.water_mask.size() - gt.width / 2], 2.0f);
     }
   }
+}
+
+// Under the water the picture is the image formation model of the terms: the PNG's pixel is the display
+// encoding (exposure, the tone curve of optics::tone_map, gamma) of clean · transmission + backscatter,
+// except where the forward-scatter blur mixes in neighbours (edges of objects), so the check is on the bulk.
+TEST_F(GroundTruthRender, UnderTheWaterThePictureIsCleanTimesTransmissionPlusBackscatter) {
+  auto s =
+      scene::load_scene(std::string(LAGOON_SOURCE_DIR) + "/scenes/harbour.json",
+                        std::vector<std::string>{"render.width=128", "render.height=72",
+                                                 "camera.position=[0,-3,0]", "camera.look_at=[4,-3.5,12]"});
+  ASSERT_TRUE(s) << s.error().message;
+  auto renderer = render::OceanRenderer::create(ctx(), *s);
+  ASSERT_TRUE(renderer) << renderer.error().message;
+  const io::Image8 image = (*renderer)->render(*s);
+  render::GroundTruth gt =
+      render::ground_truth((*renderer)->render_surface_aov(*s, true), *s, render::CameraSide::Below, 0.0);
+  render::add_underwater_terms(gt, (*renderer)->render_underwater_terms(*s));
+  optics::ToneMapParams tone;
+  tone.world_adaptation_luminance = s->render.tone_map_adaptation;
+  tone.white_luminance = s->render.tone_map_white;
+  std::vector<double> errors, errors_unattenuated;
+  double t_min = 1, t_max = 0, b_max = 0;
+  for (size_t i = 0; i < gt.water_mask.size(); ++i) {
+    if (gt.water_mask[i] != 2.0f || gt.object_id[i] == 0.0f)
+      continue;  // the floor and objects, through water
+    const glm::dvec3 j(gt.clean[3 * i], gt.clean[3 * i + 1], gt.clean[3 * i + 2]),
+        t(gt.transmission[3 * i], gt.transmission[3 * i + 1], gt.transmission[3 * i + 2]),
+        b(gt.backscatter[3 * i], gt.backscatter[3 * i + 1], gt.backscatter[3 * i + 2]);
+    auto encode = [&](glm::dvec3 radiance) {
+      const glm::dvec3 mapped = optics::tone_map(radiance * double(s->render.exposure), tone);
+      return 255.0 * glm::pow(glm::clamp(mapped, 0.0, 1.0), glm::dvec3(1.0 / s->render.gamma));
+    };
+    const glm::dvec3 drawn(image.rgba[4 * i], image.rgba[4 * i + 1], image.rgba[4 * i + 2]);
+    errors.push_back(glm::length(encode(j * t + b) - drawn));
+    errors_unattenuated.push_back(glm::length(encode(j + b) - drawn));
+    t_min = std::min(t_min, std::min({t.x, t.y, t.z}));
+    t_max = std::max(t_max, std::max({t.x, t.y, t.z}));
+    b_max = std::max(b_max, std::max({b.x, b.y, b.z}));
+  }
+  ASSERT_GT(errors.size(), 2000u);
+  std::sort(errors.begin(), errors.end());
+  std::sort(errors_unattenuated.begin(), errors_unattenuated.end());
+  const double median = errors[errors.size() / 2], p90 = errors[errors.size() * 9 / 10];
+  std::printf(
+      "%zu pixels through water: |encode(J T + B) - PNG| median %.2f, 90th %.2f levels (J + B: median "
+      "%.1f); transmission %.3f..%.3f, backscatter up to %.3f\n",
+      errors.size(), median, p90, errors_unattenuated[errors.size() / 2], t_min, t_max, b_max);
+  EXPECT_LT(median, 1.5);
+  EXPECT_LT(p90, 4.0);
+  // The terms are not trivial: the water takes away and adds visibly.
+  EXPECT_GT(errors_unattenuated[errors.size() / 2], 10.0);
+  EXPECT_LT(t_min, 0.5);
+  EXPECT_GT(b_max, 0.0);
 }
 
 }  // namespace

@@ -31,8 +31,15 @@ class UnderwaterPass {
   // Into `color` and `depth` as attachments; every pixel is written.
   void record(const FrameContext& frame, const Inputs& in, vk::Target color, vk::Target depth) const;
 
+  // The view's image formation terms for the ground truth (shaders/render/underwater_terms.frag), without the
+  // surface: clean, transmission and backscatter into three kTermsFormat targets, and `depth`.
+  static constexpr VkFormat kTermsFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+  void record_terms(const FrameContext& frame, const Inputs& in, const std::array<vk::Target, 3>& terms,
+                    vk::Target depth);
+
  private:
   std::vector<vk::Binding> table_bindings(const FrameContext& frame) const;
+  std::vector<vk::Binding> medium_bindings(const FrameContext& frame, const Inputs& in) const;
 
   const SurfaceFields& fields_;
   const WaterLuts& luts_;
@@ -41,6 +48,11 @@ class UnderwaterPass {
   std::array<vk::GraphicsPipeline, 2> surface_;
   // [shafts][lamps]: also without or with the lamps' light (LAGOON_SURFACE_SPEC_LAMPS).
   std::array<std::array<vk::GraphicsPipeline, 2>, 2> medium_;
+  // The same for record_terms(), made on first use.
+  std::array<std::array<vk::GraphicsPipeline, 2>, 2> terms_;
+  vk::Context& ctx_;
+  VkFormat depth_format_;
+  bool sediment_;
 };
 
 }  // namespace lagoon::render
