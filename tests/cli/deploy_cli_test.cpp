@@ -56,13 +56,20 @@ class DeployCli : public ::testing::Test {
            ":$PATH SCENE=scenes/harbour-quick.json FRAMES=8 FPS=0.5 WIDTH=64 HEIGHT=36 OUT=" + out + " ";
   }
 
-  std::map<std::string, std::string> reference() {
+  // The shards' union in `out` (relative to the working folder) is one process's set, byte for byte, and
+  // verifies.
+  void expect_the_set_of_one_process(const std::string& out) {
     const ProcessResult r = run_process(env("one") +
                                         "lagoon render --scene scenes/harbour-quick.json --path "
                                         "scenes/paths/evaluation.json --frames 8 --fps 0.5 --width 64 "
                                         "--height 36 --out one/frame.png");
-    EXPECT_EQ(r.exit_code, 0) << r.output;
-    return frame_files(dir_ / "one");
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const auto expected = frame_files(dir_ / "one"), sharded = frame_files(dir_ / out);
+    ASSERT_EQ(expected.size(), 16u);  // 8 PNGs and their metadata
+    ASSERT_EQ(sharded.size(), expected.size());
+    for (const auto& [name, bytes] : expected) EXPECT_TRUE(sharded.at(name) == bytes) << name << " differs";
+    const ProcessResult v = run_process(env("") + "lagoon dataset verify " + out);
+    EXPECT_EQ(v.exit_code, 0) << v.output;
   }
 
   TempDir dir_;
@@ -77,13 +84,7 @@ TEST_F(DeployCli, TheSlurmArrayScriptsFourTasksMakeTheSetOfOneProcess) {
                     " SLURM_ARRAY_TASK_COUNT=4 SLURM_SUBMIT_DIR=. bash " + shell_quote(script));
     ASSERT_EQ(r.exit_code, 0) << r.output;
   }
-  const auto expected = reference();
-  ASSERT_EQ(expected.size(), 16u);
-  const auto sharded = frame_files(dir_ / "slurm");
-  ASSERT_EQ(sharded.size(), expected.size());
-  for (const auto& [name, bytes] : expected) EXPECT_TRUE(sharded.at(name) == bytes) << name << " differs";
-  const ProcessResult v = run_process(env("") + "lagoon dataset verify slurm");
-  EXPECT_EQ(v.exit_code, 0) << v.output;
+  expect_the_set_of_one_process("slurm");
 }
 
 TEST_F(DeployCli, TheKubernetesIndexedJobsFourPodsMakeTheSetOfOneProcess) {
@@ -107,12 +108,7 @@ TEST_F(DeployCli, TheKubernetesIndexedJobsFourPodsMakeTheSetOfOneProcess) {
         " CAMERA_PATH=" + "scenes/paths/evaluation.json /bin/sh -c " + shell_quote(command));
     ASSERT_EQ(r.exit_code, 0) << r.output;
   }
-  const auto expected = reference();
-  const auto sharded = frame_files(dir_ / "out/k8s");
-  ASSERT_EQ(sharded.size(), expected.size());
-  for (const auto& [name, bytes] : expected) EXPECT_TRUE(sharded.at(name) == bytes) << name << " differs";
-  const ProcessResult v = run_process(env("") + "lagoon dataset verify out/k8s");
-  EXPECT_EQ(v.exit_code, 0) << v.output;
+  expect_the_set_of_one_process("out/k8s");
 }
 
 TEST(DeployFiles, TheDockerfileBuildsTheCliWithTheProjectsOwnSetUp) {
