@@ -63,8 +63,9 @@ class GpuOcean {
   void record_step(VkCommandBuffer cmd, double time_s, double dt_s, vk::GpuTimer* timer = nullptr,
                    Mips mips = Mips::Rebuild);
 
-  // The next step starts foam (and the springs' grid) from still water again, as the first step does, so
-  // what follows depends only on the steps recorded from here on (a replayed warm-up, docs/datasets.md).
+  // The next step starts foam from none again, as the first step does, so the foam depends only on the steps
+  // recorded from here on (a replayed warm-up, docs/datasets.md). The springs' grid needs no restart: it is
+  // always stepped from t = 0 at its fixed step.
   void restart() { reset_foam_ = true; }
 
   const OceanParams& params() const { return params_; }
