@@ -65,15 +65,24 @@ Result<std::vector<std::string>> write_aovs(const DatasetRun& run, const scene::
                                ? renderer.camera_medium().surface_height(
                                      scene.camera.position.x, scene.camera.position.z, scene.time_s)
                                : 0.0;
-  const render::GroundTruth gt = render::ground_truth(aov, scene, side, surface_y);
+  render::GroundTruth gt = render::ground_truth(aov, scene, side, surface_y);
+  const auto wanted = [&](const std::string& kind) {
+    return std::find(run.aovs.begin(), run.aovs.end(), kind) != run.aovs.end();
+  };
+  if (wanted("clean") || wanted("transmission") || wanted("backscatter"))
+    render::add_underwater_terms(gt, renderer.render_underwater_terms(scene));
   const size_t h = gt.height, w = gt.width;
+  const std::map<std::string, const std::vector<float>*> planes = {{"depth", &gt.depth},
+                                                                   {"normal", &gt.normal},
+                                                                   {"water_mask", &gt.water_mask},
+                                                                   {"object_id", &gt.object_id},
+                                                                   {"clean", &gt.clean},
+                                                                   {"transmission", &gt.transmission},
+                                                                   {"backscatter", &gt.backscatter}};
   for (const std::string& kind : run.aovs) {
-    const std::vector<float>& values = kind == "depth"        ? gt.depth
-                                       : kind == "normal"     ? gt.normal
-                                       : kind == "water_mask" ? gt.water_mask
-                                                              : gt.object_id;
+    const std::vector<float>& values = *planes.at(kind);
     const std::vector<size_t> shape =
-        kind == "normal" ? std::vector<size_t>{h, w, 3} : std::vector<size_t>{h, w};
+        values.size() == 3 * h * w ? std::vector<size_t>{h, w, 3} : std::vector<size_t>{h, w};
     const std::string name = stem.filename().string() + "." + kind + ".npy";
     if (Result<void> ok = io::write_npy(stem.parent_path() / name, values, shape); !ok) return ok.error();
     names.push_back(name);

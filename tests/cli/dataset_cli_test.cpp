@@ -9,10 +9,12 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <thread>
 
 #include "io/npy.h"
+#include "io/png.h"
 #include "support/child_process.h"
 #include "support/run_process.h"
 #include "support/temp_dir.h"
@@ -205,41 +207,85 @@ TEST_F(DatasetCli, TheMetadataStatesAPinholeCameraThatSeesItsAimAtTheCentre) {
   EXPECT_NEAR(enu[2][3].get<double>(), 5, 1e-9);
 }
 
-TEST(DatasetCliAov, GroundTruthIsWrittenBesideEachFrameListedAndChecked) {
+TEST(DatasetCliAov, GroundTruthIsWrittenBesideEachFrameListedCheckedAndPreviewed) {
   TempDir dir;
-  const ProcessResult r = lagoon(
-      "render --scene " + shell_quote(kHarbour) +
-      " --width 48 --height 27 --frames 2 --set wakes.enabled=false --aov depth,normal,water_mask,object_id "
-      "--out " +
-      shell_quote((dir / "f.png").string()));
+  // From under the water, looking along the floor: every kind of ground truth has something to say.
+  const ProcessResult r =
+      lagoon("render --scene " + shell_quote(kHarbour) +
+             " --width 48 --height 27 --frames 2 --set wakes.enabled=false"
+             " --set camera.position=[-2,-2.6,1] --set camera.look_at=[5,-3.6,10]"
+             " --aov depth,normal,water_mask,object_id,clean,transmission,backscatter --out " +
+             shell_quote((dir / "f.png").string()));
   ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::vector<std::pair<std::string, size_t>> kinds = {
+      {"depth", 1}, {"normal", 3},       {"water_mask", 1}, {"object_id", 1},
+      {"clean", 3}, {"transmission", 3}, {"backscatter", 3}};
+  std::map<std::string, io::NpyArray> first;
   for (const char* frame : {"f_0000", "f_0001"}) {
-    for (const auto& [kind, channels] :
-         {std::pair{"depth", 1}, {"normal", 3}, {"water_mask", 1}, {"object_id", 1}}) {
-      const auto npy = io::read_npy(dir / (std::string(frame) + "." + kind + ".npy"));
+    for (const auto& [kind, channels] : kinds) {
+      auto npy = io::read_npy(dir / (std::string(frame) + "." + kind + ".npy"));
       ASSERT_TRUE(npy) << npy.error().message;
       const std::vector<size_t> shape =
           channels == 3 ? std::vector<size_t>{27, 48, 3} : std::vector<size_t>{27, 48};
       EXPECT_EQ(npy->shape, shape) << kind;
+      if (std::string(frame) == "f_0000") first[kind] = std::move(*npy);
     }
     const nlohmann::json meta = nlohmann::json::parse(read(dir / (std::string(frame) + ".json")));
     EXPECT_EQ(meta["aov"]["depth"], std::string(frame) + ".depth.npy");
-    EXPECT_EQ(meta["aov"].size(), 4u);
+    EXPECT_EQ(meta["aov"].size(), kinds.size());
   }
-  // The harbour from the quay: water, sky and the moored boat (objects[1] has id 2) in view.
-  const auto mask = io::read_npy(dir / "f_0000.water_mask.npy");
-  const auto ids = io::read_npy(dir / "f_0000.object_id.npy");
-  EXPECT_NE(std::count(mask->data.begin(), mask->data.end(), 1.0f), 0);
-  EXPECT_NE(std::count(ids->data.begin(), ids->data.end(), 2.0f), 0);
+  // Each file holds its own kind: the water through which the floor is seen (mask 2, id -1), the floor's
+  // light let through in part (0 < T < 1) with light added (B > 0), and the surface above (mask 1, T = 1,
+  // clean NaN).
+  const auto& mask = first["water_mask"].data;
+  const auto& ids = first["object_id"].data;
+  const auto& t = first["transmission"].data;
+  const auto& b = first["backscatter"].data;
+  const auto& clean = first["clean"].data;
+  int floor_seen = 0, floor_through = 0, surface_seen = 0;
+  for (size_t i = 0; i < mask.size(); ++i) {
+    if (mask[i] == 2.0f && ids[i] == -1.0f) {
+      ++floor_seen;
+      // 0 where the floor lies beyond the water's reach (the underwater tables' end: < 1e-3 gets through).
+      EXPECT_TRUE(t[3 * i + 1] >= 0.0f && t[3 * i + 1] < 1.0f) << i;
+      floor_through += t[3 * i + 1] > 0.0f;  // green: red is all but gone within metres
+      EXPECT_GT(b[3 * i + 1], 0.0f) << i;
+      EXPECT_FALSE(std::isnan(clean[3 * i])) << i;
+    }
+    if (mask[i] == 1.0f) {
+      ++surface_seen;
+      EXPECT_EQ(t[3 * i], 1.0f);
+      EXPECT_TRUE(std::isnan(clean[3 * i]));
+    }
+  }
+  EXPECT_GT(floor_seen, 100);
+  EXPECT_GT(floor_through, floor_seen / 2);
+  EXPECT_GT(surface_seen, 20);
   const ProcessResult v = lagoon("dataset verify " + shell_quote(dir.path().string()));
   EXPECT_EQ(v.exit_code, 0) << v.output;
-  EXPECT_NE(v.output.find("2 frames, 12 files"), std::string::npos) << v.output;
+  EXPECT_NE(v.output.find("2 frames, 18 files"), std::string::npos) << v.output;
+  // The preview: the image and the seven AOVs, four panels across, each 48 x 27 under an 18-pixel label.
+  const ProcessResult p = lagoon("dataset preview " + shell_quote((dir / "f_0000.json").string()) +
+                                 " --out " + shell_quote((dir / "preview.png").string()));
+  ASSERT_EQ(p.exit_code, 0) << p.output;
+  const auto sheet = io::read_png(dir / "preview.png");
+  ASSERT_TRUE(sheet) << sheet.error().message;
+  EXPECT_EQ(sheet->width, 4u * 48);
+  EXPECT_EQ(sheet->height, 2u * (27 + 18));
+  // A broken set is named: a missing AOV file.
+  std::filesystem::remove(dir / "f_0001.depth.npy");
+  const ProcessResult broken = lagoon("dataset preview " + shell_quote((dir / "f_0001.json").string()) +
+                                      " --out " + shell_quote((dir / "p1.png").string()));
+  EXPECT_EQ(broken.exit_code, 1) << broken.output;
+  EXPECT_NE(broken.output.find("f_0001.depth.npy"), std::string::npos) << broken.output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "p1.png"));
   const ProcessResult unknown = lagoon("render --scene " + shell_quote(kHarbour) +
                                        " --aov depth,colour --out " + shell_quote((dir / "g.png").string()));
   EXPECT_EQ(unknown.exit_code, 2) << unknown.output;
-  EXPECT_NE(unknown.output.find("unknown ground truth 'colour'; available: depth, normal, water_mask, "
-                                "object_id, clean, transmission, backscatter"),
-            std::string::npos)
+  EXPECT_NE(
+      unknown.output.find("unknown ground truth 'colour'; available: depth, normal, water_mask, object_id, "
+                          "clean, transmission, backscatter"),
+      std::string::npos)
       << unknown.output;
 }
 
