@@ -217,7 +217,8 @@ const Command& render_command() {
                        {"aov", "LIST",
                         "ground truth beside each frame as float32 .npy (OUT_0000.depth.npy, ...): any of "
                         "depth (m along the optical axis), normal (world), water_mask (0 air, 1 surface, 2 "
-                        "under water), object_id (docs/datasets.md)"},
+                        "under water), object_id, and under the water clean, transmission, backscatter "
+                        "(the image formation terms, linear RGB; docs/datasets.md)"},
                        {"path", "PATH.json",
                         "fly the camera along this keyframed path, frame k at its time k/fps "
                         "(scenes/paths/evaluation.json; docs/datasets.md)"},

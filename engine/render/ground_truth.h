@@ -1,10 +1,17 @@
 // A frame's ground truth as the dataset's AOVs (lagoon render --aov; docs/datasets.md), from the ground-truth
 // targets (OceanRenderer::render_surface_aov with objects): per pixel, rows from the top,
-//   depth       metres along the optical axis to the first surface the view ray meets (+inf: none, the sky);
-//   normal      that surface's unit normal in the world frame (3 values; 0 where none);
-//   water_mask  0 the pixel sees through air, 1 the water surface, 2 through the water (the underwater
-//   volume); object_id   0 nothing or the water, -1 the sea floor, k + 1 the scene's objects[k], then
-//               objects.size() + v + 1 its vehicles[v].
+//   depth         metres along the optical axis to the first surface the ray meets (+inf: the sky);
+//   normal        that surface's unit normal in the world frame (3 values; 0 where none);
+//   water_mask    0 the ray runs through air, 1 the water surface, 2 the ray runs through the water;
+//   object_id     0 nothing or the water, -1 the sea floor, k + 1 the scene's objects[k], then
+//                 objects.size() + v + 1 its vehicles[v];
+// and, from the underwater view's terms (OceanRenderer::render_underwater_terms), where the ray runs through
+// the water (water_mask 2) the image formation model, drawn = clean · transmission + backscatter, in linear
+// RGB in the frame's white units before exposure and tone mapping:
+//   clean         the light leaving what the ray meets (0 where it meets nothing within reach);
+//   transmission  the share of it that reaches the camera (0 where the ray meets nothing);
+//   backscatter   the light the water (sediment, light shafts) adds along the ray.
+// Elsewhere no water acts on the ray before its first surface: transmission 1, backscatter 0 and clean NaN.
 #pragma once
 #include <cstdint>
 #include <vector>
