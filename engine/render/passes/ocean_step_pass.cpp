@@ -11,7 +11,10 @@ Result<OceanStepPass> OceanStepPass::create(vk::Context& ctx, const ocean::Ocean
 }
 
 void OceanStepPass::prepare(vk::Context& ctx, double t, bool replay) {
-  if (!replay && time_s_ >= 0 && t >= time_s_ && t - time_s_ <= kWarmupS) return;
+  // Replay re-derives the state for t, unless it already is that (a second frame at the same t, such as the
+  // ground truth's: a step with dt = 0 leaves the foam as it is, max(foam, new) with nothing decayed).
+  if (replay ? replayed_for_ == t && time_s_ == t : time_s_ >= 0 && t >= time_s_ && t - time_s_ <= kWarmupS)
+    return;
   ocean_->restart();
   // A still frame needs the foam a running ocean would have: run the last few seconds first.
   ctx.submit_and_wait([&](VkCommandBuffer cmd) {
@@ -24,6 +27,7 @@ void OceanStepPass::prepare(vk::Context& ctx, double t, bool replay) {
     }
     time_s_ = previous;
   });
+  replayed_for_ = replay ? t : -1;
 }
 
 void OceanStepPass::record(const FrameContext& frame) {
@@ -32,6 +36,7 @@ void OceanStepPass::record(const FrameContext& frame) {
   const double dt = time_s_ < 0 ? 0.0 : std::max(0.0, t - time_s_);
   ocean_->record_step(frame.cmd, t, dt, frame.timer());
   time_s_ = t;
+  if (t != replayed_for_) replayed_for_ = -1;
 }
 
 }  // namespace lagoon::render

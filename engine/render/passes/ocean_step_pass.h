@@ -33,6 +33,8 @@ class OceanStepPass {
   explicit OceanStepPass(std::unique_ptr<ocean::GpuOcean> ocean) : ocean_(std::move(ocean)) {}
   std::unique_ptr<ocean::GpuOcean> ocean_;
   double time_s_ = -1;  // of the last step recorded; < 0 before the first
+  double replayed_for_ =
+      -1;  // the time a replayed warm-up derived the state for, while it still is; else < 0
 };
 
 }  // namespace lagoon::render

@@ -58,7 +58,12 @@ void WakesPass::record_steps(VkCommandBuffer cmd, long long to) {
 void WakesPass::prepare(vk::Context& ctx, const scene::Scene& scene, bool replay) {
   if (!layer_) return;
   const long long target = hulls_.step_at(scene.time_s);
-  if (!replay && steps_done_ >= 0 && target >= steps_done_ && target - steps_done_ <= kStepsPerFrame) return;
+  const glm::ivec2 window = hulls_.window_for(scene.camera);
+  // Replay re-derives the layer for this step and window, unless it already is that (a second frame at the
+  // same time from the same camera, such as the ground truth's).
+  if (replay ? replayed_for_ == target && steps_done_ == target && window == replayed_window_
+             : steps_done_ >= 0 && target >= steps_done_ && target - steps_done_ <= kStepsPerFrame)
+    return;
   follow_camera(scene);
   steps_done_ = hulls_.first_step_for(scene.time_s);
   // The sources ring holds kStepsInFlight steps: a longer history is run in several submissions.
@@ -70,12 +75,15 @@ void WakesPass::prepare(vk::Context& ctx, const scene::Scene& scene, bool replay
     });
     clear = false;
   }
+  replayed_for_ = replay ? target : -1;
+  replayed_window_ = window;
 }
 
 void WakesPass::record(const FrameContext& frame) {
   if (!layer_) return;
   vk::GpuScope scope(frame.timer(), frame.cmd, "wakes");
   record_steps(frame.cmd, std::min(hulls_.step_at(frame.scene.time_s), steps_done_ + kStepsPerFrame));
+  if (steps_done_ != replayed_for_) replayed_for_ = -1;
   // Drawn by the vertex and fragment stages, and read by the caustics' compute pass.
   vk::memory_barrier(frame.cmd, vk::access::kComputeWrite,
                      {vk::access::kGraphicsSampled.stage | vk::access::kComputeRead.stage,

@@ -54,7 +54,9 @@ class WakesPass {
   VehicleWakes hulls_;
   std::unique_ptr<ocean::DynamicLayerGpu> layer_;
   vk::Image idle_;
-  long long steps_done_ = -1;  // the layer is at steps_done_ · step_s; < 0 before the first prepare
+  long long steps_done_ = -1;    // the layer is at steps_done_ · step_s; < 0 before the first prepare
+  long long replayed_for_ = -1;  // the step a replay derived the layer for, while it still is; else < 0
+  glm::ivec2 replayed_window_{0};
 };
 
 }  // namespace lagoon::render
