@@ -32,6 +32,13 @@ glm::dmat3 enu_from_world() {
   return m;
 }
 
+// A change of axes (entries 0 and ±1), row-major, as whole numbers.
+ordered_json axes(const glm::dmat3& m) {
+  ordered_json rows = ordered_json::array();
+  for (int i = 0; i < 3; ++i) rows.push_back({int(m[0][i]), int(m[1][i]), int(m[2][i])});
+  return rows;
+}
+
 }  // namespace
 
 ordered_json frame_metadata(const scene::Scene& scene, long long frame, const FrameFiles& files) {
@@ -67,8 +74,8 @@ ordered_json frame_metadata(const scene::Scene& scene, long long frame, const Fr
       {"frames",
        {{"world", "Lagoon world: right-handed, metres, y up, mean sea level at y = 0; x east, -z north"},
         {"camera", "optical (OpenCV, ROS *_optical_frame): x right, y down, z forward along the view"},
-        {"enu_from_world", {{1, 0, 0}, {0, 0, -1}, {0, 1, 0}}},
-        {"ned_from_enu", {{0, 1, 0}, {1, 0, 0}, {0, 0, -1}}}}},
+        {"enu_from_world", axes(enu)},
+        {"ned_from_enu", axes(ned_from_enu)}}},
       {"sun",
        {{"elevation_deg", scene.sun.elevation_deg},
         {"azimuth_deg", scene.sun.azimuth_deg},
