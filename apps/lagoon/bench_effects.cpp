@@ -12,6 +12,7 @@
 #include "gpu_session.h"
 #include "io/atomic_file.h"
 #include "render/ocean_renderer.h"
+#include "report_text.h"
 #include "scene/camera_path.h"
 #include "scene_args.h"
 
@@ -103,12 +104,6 @@ std::vector<std::string> pass_names(const std::vector<FlightSummary>& rows) {
   return names;
 }
 
-std::string fixed(double v, int digits = 1) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.*f", digits, v);
-  return text;
-}
-
 std::string markdown(const std::vector<FlightSummary>& rows, const std::string& caption) {
   std::string md = "| Test | Description | min. FPS | avg. FPS | max. FPS |\n|---|---|---:|---:|---:|\n";
   for (const FlightSummary& r : rows)
@@ -153,15 +148,6 @@ nlohmann::json json_report(const std::vector<FlightSummary>& rows, nlohmann::jso
                      {"max_fps", r.max_fps},
                      {"gpu_ms_per_pass", r.pass_ms}});
   return {{"context", std::move(context)}, {"tests", tests}};
-}
-
-bool write_text(const fs::path& path, const std::string& text) {
-  if (Result<void> ok = io::write_file_atomic(path, std::as_bytes(std::span(text.data(), text.size())));
-      !ok) {
-    std::fprintf(stderr, "lagoon bench effects: %s\n", ok.error().message.c_str());
-    return false;
-  }
-  return true;
 }
 
 }  // namespace
@@ -263,8 +249,10 @@ int run_bench_effects(const ParsedArgs& args, long long width, long long height)
     std::fprintf(stderr, "lagoon bench effects: %s\n", chart.error().message.c_str());
     return kExitFailure;
   }
-  if (!write_text(out / "effects.json", json_report(rows, context).dump(2) + "\n") ||
-      !write_text(out / "effects.csv", csv(rows)) || !write_text(out / "effects.md", markdown(rows, caption)))
+  constexpr const char* kCommand = "lagoon bench effects";
+  if (!write_report_text(out / "effects.json", json_report(rows, context).dump(2) + "\n", kCommand) ||
+      !write_report_text(out / "effects.csv", csv(rows), kCommand) ||
+      !write_report_text(out / "effects.md", markdown(rows, caption), kCommand))
     return kExitFailure;
   if (Result<void> ok = io::write_png(out / "effects.png", *chart); !ok) {
     std::fprintf(stderr, "lagoon bench effects: %s\n", ok.error().message.c_str());

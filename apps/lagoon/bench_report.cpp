@@ -57,8 +57,7 @@ std::optional<int> rounds_option(const ParsedArgs& args, int fallback) {
 // Writes the --json report atomically (no half-written file); false, with the reason on stderr, on failure.
 bool write_report(const std::string& path, const nlohmann::json& doc) {
   const std::string text = doc.dump(2) + "\n";
-  if (auto written = io::write_file_atomic(path, std::as_bytes(std::span(text.data(), text.size())));
-      !written) {
+  if (auto written = io::write_text_atomic(path, text); !written) {
     std::fprintf(stderr, "lagoon bench: %s\n", written.error().message.c_str());
     return false;
   }

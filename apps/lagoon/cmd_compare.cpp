@@ -114,7 +114,7 @@ void print_json(const std::string& a, const std::string& b, const io::CompareRes
   std::printf("%s\n", doc.dump(2).c_str());
 }
 
-int run_compare(const ParsedArgs& args) {
+int run_compare_images(const ParsedArgs& args) {
   const auto bounds = bounds_from_args(args);
   if (!bounds) return kExitUsage;
   const auto diff = args.get("diff");
@@ -180,7 +180,7 @@ const Command& compare_images_command() {
                    "  1 they do not (the failed bound is printed), or a file is missing, not a PNG or of\n"
                    "  a different size; 2 a bad command line.\n"
                    "example:\n  lagoon compare-images out/a.png out/b.png --diff out/diff.png\n"},
-      .run = run_compare};
+      .run = run_compare_images};
   return command;
 }
 

@@ -14,6 +14,7 @@
 #include "io/atomic_file.h"
 #include "model_comparison.h"
 #include "ocean/ocean_params.h"
+#include "report_text.h"
 #include "scene_args.h"
 #include "staged_output.h"
 
@@ -46,12 +47,6 @@ std::vector<std::string> overrides_for(const std::string& model, std::string& no
     return {"ocean.model=sines", "ocean.choppiness=0"};
   }
   return {"ocean.model=" + model};
-}
-
-std::string fixed(double v, int digits) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.*f", digits, v);
-  return text;
 }
 
 std::string markdown(const std::vector<ModelMeasure>& rows, const std::string& device, int rounds) {
@@ -92,19 +87,13 @@ nlohmann::json json_row(const ModelMeasure& m) {
           {"note", m.note}};
 }
 
-bool write_text(const std::filesystem::path& path, const std::string& text) {
-  auto written = io::write_file_atomic(path, std::as_bytes(std::span(text.data(), text.size())));
-  if (!written) std::fprintf(stderr, "lagoon compare: %s\n", written.error().message.c_str());
-  return bool(written);
-}
-
 bool write_image(const std::filesystem::path& path, const io::Image8& image) {
   auto written = io::write_png(path, image);
   if (!written) std::fprintf(stderr, "lagoon compare: %s\n", written.error().message.c_str());
   return bool(written);
 }
 
-int run_compare(const ParsedArgs& args) {
+int run_compare_models(const ParsedArgs& args) {
   const auto models = parse_models(args.get("models").value_or(kAllModels));
   if (!models) return kExitUsage;
   const auto rounds = integer_option(args, "rounds", 10, 1, 1000);
@@ -157,8 +146,9 @@ int run_compare(const ParsedArgs& args) {
   const nlohmann::json doc{
       {"device", device}, {"rounds", *rounds}, {"time_s", scenes.front().time_s}, {"models", table}};
   if (!write_image(staged->file("contact_sheet.png"), contact_sheet(rows)) ||
-      !write_text(staged->file("compare.md"), markdown(rows, device, int(*rounds))) ||
-      !write_text(staged->file("compare.json"), doc.dump(2) + "\n"))
+      !write_report_text(staged->file("compare.md"), markdown(rows, device, int(*rounds)),
+                         "lagoon compare") ||
+      !write_report_text(staged->file("compare.json"), doc.dump(2) + "\n", "lagoon compare"))
     return kExitFailure;
   if (auto committed = staged->commit(); !committed) {
     std::fprintf(stderr, "lagoon compare: %s\n", committed.error().message.c_str());
@@ -188,7 +178,7 @@ const Command& compare_command() {
                .details =
                    "example:\n  lagoon compare --scene scenes/default.json --models fft,gerstner,springs "
                    "--out /tmp/models\n"},
-      .run = run_compare};
+      .run = run_compare_models};
   return command;
 }
 

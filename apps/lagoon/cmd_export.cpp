@@ -294,10 +294,7 @@ Result<std::vector<CascadeStreams>> open_all_streams(const StagedOutput& staged,
 // meta.json, then every array, then the folder itself: the output appears complete or not at all.
 Result<void> commit_export(StagedOutput& staged, std::vector<CascadeStreams>& streams, WakeExport* wakes,
                            const std::string& meta) {
-  if (auto r =
-          io::write_file_atomic(staged.file("meta.json"), std::as_bytes(std::span(meta.data(), meta.size())));
-      !r)
-    return r;
+  if (auto r = io::write_text_atomic(staged.file("meta.json"), meta); !r) return r;
   if (auto r = commit_streams(streams); !r) return r;
   if (wakes)
     for (io::NpyStreamWriter* w : {&wakes->height, &wakes->foam})

@@ -200,9 +200,7 @@ int write_luts(const optics::LutInputs& inputs, const std::string& out) {
   nlohmann::json meta = lut_meta(lut, inputs);
   meta["underwater"] = *underwater;
   const std::string text = meta.dump(2) + "\n";
-  if (auto w =
-          io::write_file_atomic(staged->file("lut.json"), std::as_bytes(std::span(text.data(), text.size())));
-      !w)
+  if (auto w = io::write_text_atomic(staged->file("lut.json"), text); !w)
     return lut_failure(w.error().message);
   if (auto c = staged->commit(); !c) return lut_failure(c.error().message);
   std::printf(

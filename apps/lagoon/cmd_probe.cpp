@@ -36,10 +36,6 @@ double resolution(double v) {
   return std::nextafter(std::abs(v), HUGE_VAL) - std::abs(v);
 }
 
-nlohmann::json vec(glm::dvec3 v) {
-  return {v.x, v.y, v.z};
-}
-
 // The floating object or vehicle called `name`; prints why there is none.
 std::optional<MovingTarget> find_target(const scene::Scene& scene, const std::string& name) {
   std::string names;
@@ -189,8 +185,8 @@ int run_probe(const ParsedArgs& args) {
                               {"time_s", *time},
                               {"height_m", s.height},
                               {"wake_height_m", wake},
-                              {"normal", vec(s.normal)},
-                              {"velocity_mps", vec(s.velocity)},
+                              {"normal", json_vec3(s.normal)},
+                              {"velocity_mps", json_vec3(s.velocity)},
                               {"rest_position", {s.rest_position.x, s.rest_position.y}},
                               {"error_bound_m", s.error_bound_m},
                               {"converged", s.converged}};

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -19,7 +20,6 @@
 namespace lagoon::cli {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kSpectralStepDeg = 2;  // sky_spectral.npy: one sample every 2° in φ and θ
 
 int sky_failure(const std::string& message) {
@@ -39,8 +39,9 @@ std::vector<float> spectral_grid(const optics::SkyRadiance& sky, int rows, int c
   out.reserve(size_t(rows) * columns * optics::kSamples);
   for (int y = 0; y < rows; ++y)
     for (int x = 0; x < columns; ++x) {
-      const double theta = (y + 0.5) * kSpectralStepDeg * kPi / 180;
-      const double phi = (x + 0.5) * kSpectralStepDeg * kPi / 180 - kPi;  // sun at azimuth 0 in SkyRadiance
+      const double theta = (y + 0.5) * kSpectralStepDeg * std::numbers::pi / 180;
+      const double phi = (x + 0.5) * kSpectralStepDeg * std::numbers::pi / 180 -
+                         std::numbers::pi;  // sun at azimuth 0 in SkyRadiance
       const optics::Spectrum l =
           sky.radiance({std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)});
       for (double v : l) out.push_back(float(v));
@@ -56,12 +57,12 @@ nlohmann::json irradiance_json(const optics::SkyRadiance& sky, const SkyImage& i
   for (int i = 0; i < optics::kSamples; ++i)
     if (model[i] > 0) worst = std::max(worst, std::abs(from_image[i] / model[i] - 1));
   glm::dvec3 rgb(0.0);
-  const double d_theta = kPi / 2 / image.height;
+  const double d_theta = std::numbers::pi / 2 / image.height;
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) {
       const size_t i = size_t(y) * image.width + x;
       rgb += glm::dvec3(image.rgb[i * 3], image.rgb[i * 3 + 1], image.rgb[i * 3 + 2]) *
-             (std::cos((y + 0.5) * d_theta) * image.solid_angle[i] / kPi);
+             (std::cos((y + 0.5) * d_theta) * image.solid_angle[i] / std::numbers::pi);
     }
   return {
       {"e_sky_model_w_m2", band_integral(model)},
@@ -161,9 +162,7 @@ int run_sky(const ParsedArgs& args) {
   if (auto w = io::write_png(staged->file("sky.png"), sky_png(image, light, fit)); !w)
     return sky_failure(w.error().message);
   const std::string text = sky_meta(*scene, sky, image, light, fit).dump(2) + "\n";
-  if (auto w =
-          io::write_file_atomic(staged->file("sky.json"), std::as_bytes(std::span(text.data(), text.size())));
-      !w)
+  if (auto w = io::write_text_atomic(staged->file("sky.json"), text); !w)
     return sky_failure(w.error().message);
   if (auto c = staged->commit(); !c) return sky_failure(c.error().message);
   std::printf(

@@ -38,7 +38,7 @@ std::string figures(const ModelMeasure& m) {
 }
 
 // A perceptual ramp from dark blue through green to yellow (viridis' ends and middle), t in [0, 1].
-io::Rgb8 ramp(double t) {
+io::Rgb8 viridis(double t) {
   static constexpr std::array<std::array<double, 3>, 5> stops{
       {{68, 1, 84}, {59, 82, 139}, {33, 145, 140}, {94, 201, 98}, {253, 231, 37}}};
   t = std::clamp(t, 0.0, 1.0) * (stops.size() - 1);
@@ -85,7 +85,7 @@ io::Image8 spectrum_plot(const ModelMeasure& model) {
       // Column: kx from -n/2 (left) to n/2 - 1; row: kz from n/2 - 1 (top) down to -n/2.
       const uint32_t ix = (col + e.n / 2) % e.n, iz = (e.n - 1 - row + e.n / 2) % e.n;
       const double v = e.energy[size_t{iz} * e.n + ix];
-      const io::Rgb8 c = v > 0 ? ramp((std::log10(v) - floor_log) / 6) : ramp(0);
+      const io::Rgb8 c = v > 0 ? viridis((std::log10(v) - floor_log) / 6) : viridis(0);
       io::fill_rect(plot, int(col * scale), int(top + row * scale), int(scale), int(scale), c);
     }
   io::draw_text(plot, 6, 4, model.model + "  log10 E(kx, kz)", kWhite, 2);

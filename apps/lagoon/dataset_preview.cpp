@@ -20,10 +20,10 @@ namespace {
 namespace fs = std::filesystem;
 using io::Rgb8;
 
-constexpr int kColumns = 4, kLabel = 18;
-constexpr Rgb8 kBack{24, 28, 36}, kText{220, 225, 230}, kSky{10, 20, 70}, kNan{60, 0, 60};
+constexpr int kPanelColumns = 4, kLabel = 18;
+constexpr Rgb8 kSky{10, 20, 70}, kNan{60, 0, 60};
 
-struct Panel {
+struct PreviewPanel {
   std::string label;
   std::vector<Rgb8> pixels;  // W x H
 };
@@ -127,7 +127,7 @@ Result<io::Image8> dataset_preview(const fs::path& frame_json) {
     return Error{(folder / image_name).string() + " is " + std::to_string(w) + "x" + std::to_string(h) +
                  ", the metadata says otherwise"};
   const size_t pixels = size_t{w} * h;
-  std::vector<Panel> panels(1, Panel{"image", std::vector<Rgb8>(pixels)});
+  std::vector<PreviewPanel> panels(1, PreviewPanel{"image", std::vector<Rgb8>(pixels)});
   for (size_t i = 0; i < pixels; ++i)
     panels[0].pixels[i] = {image->rgba[4 * i], image->rgba[4 * i + 1], image->rgba[4 * i + 2]};
   if (meta->contains("aov") && (*meta)["aov"].is_object())
@@ -150,14 +150,14 @@ Result<io::Image8> dataset_preview(const fs::path& frame_json) {
                      std::to_string(w) + (channels->second == 3 ? " x 3" : "") + " like its frame"};
       panels.push_back({kind, colour(kind, *a, pixels)});
     }
-  const int columns = std::min<int>(kColumns, int(panels.size())),
+  const int columns = std::min<int>(kPanelColumns, int(panels.size())),
             rows = (int(panels.size()) + columns - 1) / columns;
   io::Image8 sheet{.width = uint32_t(columns * int(w)), .height = uint32_t(rows * (int(h) + kLabel))};
   sheet.rgba.assign(size_t{sheet.width} * sheet.height * 4, 255);
-  io::fill_rect(sheet, 0, 0, int(sheet.width), int(sheet.height), kBack);
+  io::fill_rect(sheet, 0, 0, int(sheet.width), int(sheet.height), io::chart::kBackground);
   for (size_t p = 0; p < panels.size(); ++p) {
     const int x0 = int(p % columns) * int(w), y0 = int(p / columns) * (int(h) + kLabel);
-    io::draw_text(sheet, x0 + 4, y0 + 4, panels[p].label, kText);
+    io::draw_text(sheet, x0 + 4, y0 + 4, panels[p].label, io::chart::kText);
     for (uint32_t y = 0; y < h; ++y)
       for (uint32_t x = 0; x < w; ++x) {
         const Rgb8 c = panels[p].pixels[size_t{y} * w + x];

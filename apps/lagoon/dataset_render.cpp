@@ -102,10 +102,7 @@ Result<std::vector<io::ManifestFile>> write_frame(const DatasetRun& run, const s
   if (!aovs) return aovs.error();
   const FrameFiles listed{.image = png, .aovs = run.aovs, .aov_files = *aovs};
   const std::string text = frame_metadata(scene, frame, listed).dump(2) + "\n";
-  if (Result<void> ok =
-          io::write_file_atomic(folder / meta, std::as_bytes(std::span(text.data(), text.size())));
-      !ok)
-    return ok.error();
+  if (Result<void> ok = io::write_text_atomic(folder / meta, text); !ok) return ok.error();
   std::vector<io::ManifestFile> files;
   std::vector<std::string> names = {png, meta};
   names.insert(names.end(), aovs->begin(), aovs->end());

@@ -17,10 +17,9 @@ namespace lagoon::cli {
 namespace {
 
 constexpr int kCell = 2;  // pixels per LUT node
-constexpr int kGap = 8, kLabelW = 190, kHeader = 44, kColumnHeader = 16, kLegend = 46;
+constexpr int kGap = 8, kLabelW = 190, kTitleHeight = 44, kColumnHeader = 16, kLegend = 46;
 // The summary covers the nodes where the bottom shows (a >= 2 %): elsewhere all composites are the water.
 constexpr double kMinBottomShare = 0.02;
-constexpr io::Rgb8 kBack{24, 28, 36}, kText{220, 225, 230}, kDim{140, 150, 160};
 
 struct Bottom {
   std::string name;
@@ -37,7 +36,7 @@ std::vector<Bottom> bottoms() {
 }
 
 // ΔE00 to colour: 0 near black, 1 blue, 2 green, 5 yellow, 10 orange, 20 and above red.
-io::Rgb8 ramp(double de) {
+io::Rgb8 delta_e_colour(double de) {
   struct Stop {
     double at;
     double r, g, b;
@@ -70,18 +69,19 @@ void panel(io::Image8& img, int x0, int y0, uint32_t n, Colour colour_of) {
 }
 
 void legend(io::Image8& img, int x0, int y0) {
-  io::draw_text(img, x0, y0, "CIEDE2000 against eq. 20:", kText);
+  io::draw_text(img, x0, y0, "CIEDE2000 against eq. 20:", io::chart::kText);
   const int bar_x = x0 + 170, bar_w = 400;
-  for (int x = 0; x < bar_w; ++x) io::fill_rect(img, bar_x + x, y0, 1, 12, ramp(20.0 * x / (bar_w - 1)));
+  for (int x = 0; x < bar_w; ++x)
+    io::fill_rect(img, bar_x + x, y0, 1, 12, delta_e_colour(20.0 * x / (bar_w - 1)));
   for (double tick : {0.0, 1.0, 2.0, 5.0, 10.0, 20.0}) {
     const int tx = bar_x + int(tick / 20.0 * (bar_w - 1));
-    io::fill_rect(img, tx, y0 + 12, 1, 4, kText);
-    io::draw_text(img, tx - 3, y0 + 18, std::to_string(int(tick)), kText);
+    io::fill_rect(img, tx, y0 + 12, 1, 4, io::chart::kText);
+    io::draw_text(img, tx - 3, y0 + 18, std::to_string(int(tick)), io::chart::kText);
   }
   io::draw_text(img, x0, y0 + 30,
                 "each panel: r (distance under water) to the right, h (depth) down, both from 0 on sqrt axes "
                 "(as T0.png); 1 = just noticeable",
-                kDim);
+                io::chart::kDim);
 }
 
 struct Column {
@@ -99,24 +99,25 @@ Result<io::Image8> sheet(const optics::LutInputs& in, optics::PhiMode mode, cons
     columns.insert(columns.begin() + 2, {"eq. 22, signed tables", optics::Composite::Eq22, false});
   const uint32_t n = std::max(2u, in.params.lut_size);
   const int side = int(n) * kCell;
-  io::Image8 img{.width = uint32_t(kLabelW + (int(columns.size()) + 1) * (side + kGap)),
-                 .height = uint32_t(kHeader + kColumnHeader + int(list.size()) * (side + kGap) + kLegend)};
+  io::Image8 img{
+      .width = uint32_t(kLabelW + (int(columns.size()) + 1) * (side + kGap)),
+      .height = uint32_t(kTitleHeight + kColumnHeader + int(list.size()) * (side + kGap) + kLegend)};
   img.rgba.assign(size_t{img.width} * img.height * 4, 255);
-  io::fill_rect(img, 0, 0, int(img.width), int(img.height), kBack);
-  io::draw_text(img, 8, 6, "eqs. 21, 22, 24 against eq. 20, " + in.params.type, kText, 2);
+  io::fill_rect(img, 0, 0, int(img.width), int(img.height), io::chart::kBackground);
+  io::draw_text(img, 8, 6, "eqs. 21, 22, 24 against eq. 20, " + in.params.type, io::chart::kText, 2);
   char sub[256];
   std::snprintf(sub, sizeof sub, "Phi %s; sun %.0f deg, r 0..%.0f m, h 0..%.0f m, gamma %.2f",
                 mode == optics::PhiMode::Linear ? "linear (Lagoon: one tone map, after compositing)"
                                                 : "tone-mapped per table (the seed's)",
                 in.sky.sun_elevation_deg, in.params.lut_r_max_m, in.params.lut_h_max_m, in.params.lut_gamma);
-  io::draw_text(img, 8, 26, sub, kDim);
-  const int y_columns = kHeader;
-  io::draw_text(img, kLabelW, y_columns, "eq. 20 (exact)", kText);
+  io::draw_text(img, 8, 26, sub, io::chart::kDim);
+  const int y_columns = kTitleHeight;
+  io::draw_text(img, kLabelW, y_columns, "eq. 20 (exact)", io::chart::kText);
   for (size_t c = 0; c < columns.size(); ++c)
-    io::draw_text(img, kLabelW + int(c + 1) * (side + kGap), y_columns, columns[c].title, kText);
+    io::draw_text(img, kLabelW + int(c + 1) * (side + kGap), y_columns, columns[c].title, io::chart::kText);
   for (size_t b = 0; b < list.size(); ++b) {
-    const int y0 = kHeader + kColumnHeader + int(b) * (side + kGap);
-    io::draw_text(img, 8, y0 + side / 2 - 4, list[b].name, kText, 2);
+    const int y0 = kTitleHeight + kColumnHeader + int(b) * (side + kGap);
+    io::draw_text(img, 8, y0 + side / 2 - 4, list[b].name, io::chart::kText, 2);
     auto clipped = optics::composite_errors(in, list[b].reflectance, mode, true);
     if (!clipped) return clipped.error();
     auto signed_tables = optics::composite_errors(in, list[b].reflectance, mode, false);
@@ -125,7 +126,8 @@ Result<io::Image8> sheet(const optics::LutInputs& in, optics::PhiMode mode, cons
     for (size_t c = 0; c < columns.size(); ++c) {
       const optics::CompositeErrors& e = columns[c].clipped_tables ? *clipped : *signed_tables;
       const std::vector<double>& de = e.delta_e[int(columns[c].composite)];
-      panel(img, kLabelW + int(c + 1) * (side + kGap), y0, n, [&](size_t k) { return ramp(de[k]); });
+      panel(img, kLabelW + int(c + 1) * (side + kGap), y0, n,
+            [&](size_t k) { return delta_e_colour(de[k]); });
       const optics::ErrorSummary s = optics::summarise(e, columns[c].composite, kMinBottomShare);
       rows.push_back({{"phi", optics::phi_mode_name(mode)},
                       {"bottom", list[b].name},
@@ -175,10 +177,6 @@ std::string summary_markdown(const nlohmann::json& rows, const optics::LutInputs
   return md;
 }
 
-Result<void> write_text(const std::filesystem::path& path, const std::string& text) {
-  return io::write_file_atomic(path, std::as_bytes(std::span(text.data(), text.size())));
-}
-
 }  // namespace
 
 Result<void> write_error_maps(const optics::LutInputs& in, const std::string& out) {
@@ -192,8 +190,10 @@ Result<void> write_error_maps(const optics::LutInputs& in, const std::string& ou
     const std::string name = std::string("error_maps_") + optics::phi_mode_name(mode) + ".png";
     if (auto w = io::write_png(staged->file(name), *img); !w) return w.error();
   }
-  if (auto w = write_text(staged->file("error_summary.csv"), summary_csv(rows)); !w) return w.error();
-  if (auto w = write_text(staged->file("error_summary.md"), summary_markdown(rows, in)); !w) return w.error();
+  if (auto w = io::write_text_atomic(staged->file("error_summary.csv"), summary_csv(rows)); !w)
+    return w.error();
+  if (auto w = io::write_text_atomic(staged->file("error_summary.md"), summary_markdown(rows, in)); !w)
+    return w.error();
   nlohmann::json bottoms_json = nlohmann::json::array();
   for (const optics::BottomSpectrum& b : optics::bottom_spectra())
     bottoms_json.push_back({{"name", b.name}, {"source", b.description}});
@@ -215,7 +215,7 @@ Result<void> write_error_maps(const optics::LutInputs& in, const std::string& ou
        "at every LUT node (the PNG maps); the summary covers the nodes where the bottom shows (eq. 23's a >= "
        "0.02); tables 'clipped' are clipped at 0 as the LUTs are, 'signed' keep their negative channels "
        "(docs/optics.md)"}};
-  if (auto w = write_text(staged->file("error.json"), meta.dump(2) + "\n"); !w) return w.error();
+  if (auto w = io::write_text_atomic(staged->file("error.json"), meta.dump(2) + "\n"); !w) return w.error();
   return staged->commit();
 }
 

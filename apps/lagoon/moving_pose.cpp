@@ -1,13 +1,9 @@
 #include "moving_pose.h"
 
 namespace lagoon::cli {
-namespace {
-
-nlohmann::json vec(glm::dvec3 v) {
+nlohmann::json json_vec3(glm::dvec3 v) {
   return {v.x, v.y, v.z};
 }
-
-}  // namespace
 
 std::vector<MovingTarget> moving_targets(const scene::Scene& scene) {
   std::vector<MovingTarget> out;
@@ -39,11 +35,11 @@ nlohmann::json moving_pose(const scene::Scene& scene, const render::FloatingObje
   return {{target.vehicle ? "vehicle" : "object",
            target.vehicle ? scene.vehicles[target.index].name : scene.objects[target.index].name},
           {"time_s", time_s},
-          {"origin", vec(origin)},
+          {"origin", json_vec3(origin)},
           {"orientation_wxyz", {q.w, q.x, q.y, q.z}},
-          {"centre_of_mass", vec(centre)},
-          {"velocity_mps", vec(velocity)},
-          {"angular_velocity_radps", vec(angular)}};
+          {"centre_of_mass", json_vec3(centre)},
+          {"velocity_mps", json_vec3(velocity)},
+          {"angular_velocity_radps", json_vec3(angular)}};
 }
 
 }  // namespace lagoon::cli

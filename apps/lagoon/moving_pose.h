@@ -16,6 +16,9 @@ struct MovingTarget {
   size_t index = 0;
 };
 
+// [x, y, z] as a JSON array (the probes' and poses' vectors).
+nlohmann::json json_vec3(glm::dvec3 v);
+
 // Every floating object, then every vehicle, in scene order.
 std::vector<MovingTarget> moving_targets(const scene::Scene& scene);
 

@@ -2,18 +2,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <numeric>
 
 namespace lagoon::cli {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 // The direction of pixel (x, y): φ measured from the sun's azimuth, the sun at φ = 180° (the middle column).
 glm::dvec3 pixel_direction(const render::SkyLight& light, int x, int y, int width, int height) {
-  const double theta = (y + 0.5) / height * kPi / 2;
+  const double theta = (y + 0.5) / height * std::numbers::pi / 2;
   const double sun_azimuth = std::atan2(double(light.sun_direction.z), double(light.sun_direction.x));
-  const double phi = sun_azimuth + (x + 0.5) / width * 2 * kPi - kPi;
+  const double phi = sun_azimuth + (x + 0.5) / width * 2 * std::numbers::pi - std::numbers::pi;
   return {std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)};
 }
 
@@ -25,7 +24,7 @@ SkyImage sky_image(const render::SkyLight& light, int width) {
   image.rgb.resize(n * 3);
   image.sky_luminance.resize(n);
   image.solid_angle.resize(n);
-  const double d_theta = kPi / 2 / image.height, d_phi = 2 * kPi / image.width;
+  const double d_theta = std::numbers::pi / 2 / image.height, d_phi = 2 * std::numbers::pi / image.width;
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) {
       const glm::dvec3 dir = pixel_direction(light, x, y, image.width, image.height);
@@ -72,7 +71,7 @@ io::Image8 sky_png(const SkyImage& image, const render::SkyLight& light,
       glm::dvec3 rgb(image.rgb[i * 3], image.rgb[i * 3 + 1], image.rgb[i * 3 + 2]);
       // The disc is smaller than a pixel: a pixel holds the sun if the sun's centre lies in it.
       const glm::dvec3 dir = pixel_direction(light, x, y, image.width, image.height);
-      const double half_pixel = kPi / image.width;
+      const double half_pixel = std::numbers::pi / image.width;
       if (glm::dot(dir, glm::dvec3(light.sun_direction)) > std::min(cos_disc, std::cos(half_pixel * 1.5)))
         rgb += glm::dvec3(light.sun_disc_radiance);
       const glm::dvec3 shown = optics::encode_srgb(optics::tone_map(rgb, params));

@@ -6,7 +6,6 @@
 namespace lagoon::ocean {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kG = kGravity;
 
 double fetch_m(const SpectrumParams& s) {
@@ -81,7 +80,7 @@ double kitaigorodskii(double omega_h) {
 }
 
 double pierson_moskowitz_peak_omega(double wind_speed_mps) {
-  return 2.0 * kPi * 0.13 * kG / wind_speed_mps;
+  return 2.0 * std::numbers::pi * 0.13 * kG / wind_speed_mps;
 }
 
 double jonswap_alpha(double wind_speed_mps, double fetch_m) {
@@ -110,7 +109,7 @@ double phillips_eq18(double k, double cos_phi, const SpectrumParams& s) {
 }
 
 double cos_power_integral(double p) {
-  return 2.0 * std::sqrt(kPi) * std::tgamma(0.5 * (p + 1.0)) / std::tgamma(0.5 * p + 1.0);
+  return 2.0 * std::sqrt(std::numbers::pi) * std::tgamma(0.5 * (p + 1.0)) / std::tgamma(0.5 * p + 1.0);
 }
 
 double peak_omega(const SpectrumParams& s) {
@@ -141,7 +140,7 @@ DirectionalSpectrum::DirectionalSpectrum(const OceanParams& params)
       spreading_(spreading_for(params.spectrum)),
       alpha_(spectrum_alpha(params.spectrum)),
       peak_omega_(peak_omega(params.spectrum)) {
-  const double phi = params.spectrum.wind_direction_deg * kPi / 180.0;
+  const double phi = params.spectrum.wind_direction_deg * std::numbers::pi / 180.0;
   wind_x_ = std::sin(phi);
   wind_z_ = std::cos(phi);
 }

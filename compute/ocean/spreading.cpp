@@ -11,7 +11,6 @@
 namespace lagoon::ocean {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kMaxSwellExponent = 16.0;  // s_ξ = 16 tanh(ω_p/ω) ξ² <= 16
 constexpr double kMaxBeta = 1e4;
 
@@ -25,7 +24,7 @@ const GaussRule& gauss_rule() {
     GaussRule r;
     const int n = kGaussPoints;
     for (int i = 0; i < n; ++i) {
-      double z = std::cos(kPi * (i + 0.75) / (n + 0.5)), dp = 1.0;
+      double z = std::cos(std::numbers::pi * (i + 0.75) / (n + 0.5)), dp = 1.0;
       for (int iter = 0; iter < 100; ++iter) {
         double p1 = 1.0, p0 = 0.0;
         for (int j = 1; j <= n; ++j) {
@@ -112,10 +111,10 @@ const Table2D& donelan_banner_swell_table() {
     std::array<double, kGaussPoints> log_c{};
     for (int i = 0; i < t.nu(); ++i) {
       const double u = t.u_at(i);
-      const double beta = u > 0.0 ? 1.0 / u : 0.0, top = u > 0.0 ? std::tanh(kPi / u) : 1.0;
+      const double beta = u > 0.0 ? 1.0 / u : 0.0, top = u > 0.0 ? std::tanh(std::numbers::pi / u) : 1.0;
       for (int n = 0; n < kGaussPoints; ++n) {
         const double theta = u > 0.0 ? std::atanh(0.5 * top * (g.x[n] + 1.0)) / beta : 0.0;
-        log_c[n] = 2.0 * std::log(std::cos(0.5 * std::min(theta, kPi)));
+        log_c[n] = 2.0 * std::log(std::cos(0.5 * std::min(theta, std::numbers::pi)));
       }
       for (int j = 0; j < t.ns(); ++j) {
         double sum = 0.0;
@@ -137,9 +136,10 @@ const Table2D& cos2_swell_table() {
     for (int j = 0; j < t.ns(); ++j) {
       double sum = 0.0;
       for (int n = 0; n < kGaussPoints; ++n) {
-        const double theta = 0.25 * kPi * (g.x[n] + 1.0);  // [0, π/2], doubled for the even integrand
+        const double theta =
+            0.25 * std::numbers::pi * (g.x[n] + 1.0);  // [0, π/2], doubled for the even integrand
         const double c = std::cos(theta);
-        sum += 0.25 * kPi * g.w[n] * 2.0 * (2.0 / kPi) * c * c *
+        sum += 0.25 * std::numbers::pi * g.w[n] * 2.0 * (2.0 / std::numbers::pi) * c * c *
                std::pow(std::cos(0.5 * theta), 2.0 * t.s_at(j));
       }
       for (int i = 0; i < t.nu(); ++i) t.at(i, j) = sum;
@@ -179,7 +179,7 @@ double swell_exponent(double omega, double peak_omega, double swell) {
 
 double cos2s_normalisation(double s) {
   // Q(s) = Γ(s+1)/(2√π Γ(s+1/2)) by Legendre's duplication formula; lgamma keeps large s finite.
-  return std::exp(std::lgamma(s + 1.0) - std::lgamma(s + 0.5)) / (2.0 * std::sqrt(kPi));
+  return std::exp(std::lgamma(s + 1.0) - std::lgamma(s + 0.5)) / (2.0 * std::sqrt(std::numbers::pi));
 }
 
 double donelan_banner_beta(double r) {
@@ -197,8 +197,8 @@ double donelan_banner_beta(double r) {
 }
 
 double spreading(const SpreadingModel& model, double omega, double theta) {
-  if (!(omega > 0.0)) return 1.0 / (2.0 * kPi);
-  theta = std::remainder(theta, 2.0 * kPi);  // (-π, π]
+  if (!(omega > 0.0)) return 1.0 / (2.0 * std::numbers::pi);
+  theta = std::remainder(theta, 2.0 * std::numbers::pi);  // (-π, π]
   const double s_swell = swell_exponent(omega, model.peak_omega, model.swell);
   const double half_cos = std::fabs(std::cos(0.5 * theta));
   switch (model.type) {
@@ -207,20 +207,20 @@ double spreading(const SpreadingModel& model, double omega, double theta) {
       return cos2s_normalisation(s) * std::pow(half_cos, 2.0 * s);
     }
     case Spreading::Cos2: {
-      if (std::fabs(theta) >= 0.5 * kPi) return 0.0;
+      if (std::fabs(theta) >= 0.5 * std::numbers::pi) return 0.0;
       const double c = std::cos(theta);
-      const double d = (2.0 / kPi) * c * c;
+      const double d = (2.0 / std::numbers::pi) * c * c;
       if (s_swell == 0.0) return d;
       return d * std::pow(half_cos, 2.0 * s_swell) / cos2_swell_table()(0.0, s_swell);
     }
     case Spreading::DonelanBanner: {
       const double beta = donelan_banner_beta(omega / model.peak_omega);
-      const double d = beta / (2.0 * std::tanh(beta * kPi)) * sech2(beta * theta);
+      const double d = beta / (2.0 * std::tanh(beta * std::numbers::pi)) * sech2(beta * theta);
       if (s_swell == 0.0) return d;
       return d * std::pow(half_cos, 2.0 * s_swell) / donelan_banner_swell_table()(1.0 / beta, s_swell);
     }
   }
-  return 1.0 / (2.0 * kPi);
+  return 1.0 / (2.0 * std::numbers::pi);
 }
 
 double spreading(const SpectrumParams& spectrum, double omega, double theta) {

@@ -2,13 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "optics/colour.h"
 
 namespace lagoon::optics {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 double lab_f(double t) {
   constexpr double delta = 6.0 / 29.0;
@@ -16,10 +15,10 @@ double lab_f(double t) {
 }
 
 double degrees(double rad) {
-  return rad * 180.0 / kPi;
+  return rad * 180.0 / std::numbers::pi;
 }
 double radians(double deg) {
-  return deg * kPi / 180.0;
+  return deg * std::numbers::pi / 180.0;
 }
 
 // Hue angle in degrees, [0, 360); 0 for a neutral colour (Sharma's convention).

@@ -3,14 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <numbers>
 #include <vector>
 
 #include "optics/csv_table.h"
 
 namespace lagoon::optics {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Bird & Riordan (1986) ozone absorption coefficient a_o, cm⁻¹ (SPCTRL2 table, after Leckner 1978), at
 // their wavelengths between 370 and 780 nm (0 from 360 to 440 nm).
@@ -73,7 +72,7 @@ SkyIrradiance clear_sky(double sun_elevation_deg, const SkyParams& p) {
   SkyIrradiance out{{}, {}, sun_elevation_deg};
   const double elevation = std::clamp(sun_elevation_deg, 0.0, 90.0);
   const double zenith_deg = 90.0 - elevation;
-  const double cos_z = std::sin(elevation * kPi / 180.0);
+  const double cos_z = std::sin(elevation * std::numbers::pi / 180.0);
   if (!(cos_z > 0.0)) return out;  // at or below the horizon (or NaN): no sun, no sky
   const double air_mass = 1.0 / (cos_z + 0.50572 * std::pow(96.07995 - zenith_deg, -1.6364));
   const double pressure_air_mass = air_mass * p.surface_pressure_hpa / 1013.25;

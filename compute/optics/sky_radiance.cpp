@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "optics/cie.h"
 #include "optics/csv_table.h"
@@ -9,7 +10,6 @@
 namespace lagoon::optics {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // The grid the per-wavelength scale is computed on; fine enough that coarser images agree within 0.1 %.
 constexpr int kNormalisationTheta = 64;
 constexpr int kShiftGrid = 24;  // the colour shift's grid: the chromaticity converges long before the scale
@@ -126,7 +126,7 @@ gpu::SkyModelGpu preetham_shape(double t, double theta_s) {
 // n × 2n grid of (θ, φ); ∑ f's weights is π.
 template <typename F>
 void for_each_sky_cell(int n, F&& f) {
-  const double d_theta = (kPi / 2) / n, d_phi = 2 * kPi / (2 * n);
+  const double d_theta = (std::numbers::pi / 2) / n, d_phi = 2 * std::numbers::pi / (2 * n);
   for (int i = 0; i < n; ++i) {
     const double theta = (i + 0.5) * d_theta;
     const double weight = std::cos(theta) * std::sin(theta) * d_theta * d_phi;
@@ -160,7 +160,7 @@ glm::vec3 sun_at(double theta_s) {
 
 SkyRadiance::SkyRadiance(double sun_elevation_deg, const SkyParams& params) {
   const double elevation = std::clamp(sun_elevation_deg, 1.0, 90.0);
-  const double theta_s = (90.0 - elevation) * kPi / 180.0;
+  const double theta_s = (90.0 - elevation) * std::numbers::pi / 180.0;
   sun_ = glm::dvec3(sun_at(theta_s));
   irradiance_ = clear_sky(elevation, params);
   turbidity_ = std::clamp(sky_turbidity(params), 2.0, 10.0);

@@ -15,4 +15,9 @@ inline constexpr double wavelength_nm(int index) {
   return kLambdaMinNm + kLambdaStepNm * index;
 }
 
+// The sample of a wavelength on the grid (the inverse of wavelength_nm for whole grid wavelengths).
+inline constexpr int sample_index(int nm) {
+  return (nm - kLambdaMinNm) / kLambdaStepNm;
+}
+
 }  // namespace lagoon::optics

@@ -142,6 +142,10 @@ Result<void> AtomicFile::commit() {
   return {};
 }
 
+Result<void> write_text_atomic(const std::filesystem::path& path, std::string_view text) {
+  return write_file_atomic(path, std::as_bytes(std::span(text.data(), text.size())));
+}
+
 Result<void> write_file_atomic(const std::filesystem::path& path, std::span<const std::byte> bytes) {
   Result<AtomicFile> file = AtomicFile::create(path);
   if (!file) return file.error();

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <span>
+#include <string_view>
 #include <vector>
 
 #include "core/result.h"
@@ -45,6 +46,8 @@ class AtomicFile {
 
 // create() + write() + commit() in one call.
 Result<void> write_file_atomic(const std::filesystem::path& path, std::span<const std::byte> bytes);
+// The same for text (JSON, CSV, Markdown).
+Result<void> write_text_atomic(const std::filesystem::path& path, std::string_view text);
 
 // Reads a whole file; the error names the path and the OS reason.
 Result<std::vector<std::byte>> read_file_bytes(const std::filesystem::path& path);

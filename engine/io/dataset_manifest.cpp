@@ -131,8 +131,7 @@ Result<ManifestFile> describe_file(const std::filesystem::path& path, const std:
 Result<ManifestWriter> ManifestWriter::create(const std::filesystem::path& path, const Manifest& manifest) {
   std::string text = header_json(manifest).dump() + "\n";
   for (const ManifestFrame& f : manifest.entries) text += frame_json(f).dump() + "\n";
-  if (Result<void> ok = write_file_atomic(path, std::as_bytes(std::span(text.data(), text.size()))); !ok)
-    return ok.error();
+  if (Result<void> ok = write_text_atomic(path, text); !ok) return ok.error();
   const int fd = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
   if (fd < 0) return Error{os_error_message("cannot open", path, errno)};
   return ManifestWriter(path, fd);

@@ -1,6 +1,7 @@
 #include "io/text_raster.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,12 @@ std::vector<FontVertex> quads(std::string_view text) {
 }
 
 }  // namespace
+
+void draw_line(Image8& image, int xa, int ya, int xb, int yb, Rgb8 colour) {
+  const int steps = std::max({std::abs(xb - xa), std::abs(yb - ya), 1});
+  for (int s = 0; s <= steps; ++s)
+    fill_rect(image, xa + (xb - xa) * s / steps, ya + (yb - ya) * s / steps, 2, 2, colour);
+}
 
 void fill_rect(Image8& image, int x, int y, int w, int h, Rgb8 colour) {
   const int x0 = std::max(x, 0), y0 = std::max(y, 0);

@@ -2,11 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace lagoon::render {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 double radical_inverse(uint32_t bits) {  // van der Corput, for the Hammersley set
   bits = (bits << 16u) | (bits >> 16u);
@@ -27,7 +26,7 @@ glm::vec2 integrate_dfg(double n_dot_v, double roughness, int samples) {
     // h from the GGX distribution of normals (pdf D(h)(n·h)); l = reflect(−v, h).
     const double u1 = (i + 0.5) / samples, u2 = radical_inverse(uint32_t(i));
     const double cos_h = std::sqrt((1.0 - u1) / (1.0 + (alpha * alpha - 1.0) * u1));
-    const double sin_h = std::sqrt(1.0 - cos_h * cos_h), phi = 2.0 * kPi * u2;
+    const double sin_h = std::sqrt(1.0 - cos_h * cos_h), phi = 2.0 * std::numbers::pi * u2;
     const double hx = sin_h * std::cos(phi), hz = cos_h;  // v has no y part: h.y does not enter
     const double v_dot_h = vx * hx + vz * hz;
     const double lz = 2.0 * v_dot_h * hz - vz;

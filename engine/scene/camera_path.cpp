@@ -17,7 +17,7 @@ void read_key(ObjectReader& r, CameraKey& key) {
          "aim the camera at a point away from where it is");
 }
 
-void read_path(ObjectReader& r, CameraPath& path) {
+void read_camera_path(ObjectReader& r, CameraPath& path) {
   r.array("keyframes", path.keys, 2, 4096, read_key,
           "the flight: keyframes in time order, the first at t = 0; the camera passes through each");
   r.rule("keyframes", r.has("keyframes"), "given (required)", "list at least two keyframes");
@@ -76,7 +76,7 @@ Result<CameraPath> parse_camera_path(const nlohmann::json& document, const std::
   CameraPath path;
   path.keys.clear();
   ObjectReader reader(document, "", diag);
-  read_path(reader, path);
+  read_camera_path(reader, path);
   reader.finish();
   if (!diag.ok()) return diag.to_error();
   path.source = source_name;
@@ -101,7 +101,7 @@ std::vector<FieldInfo> camera_path_fields() {
   std::vector<FieldInfo> catalog;
   ObjectReader describer("", catalog);
   CameraPath path;
-  read_path(describer, path);
+  read_camera_path(describer, path);
   return catalog;
 }
 

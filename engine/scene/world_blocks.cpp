@@ -122,7 +122,7 @@ void read_floating(ObjectReader& r, Floating& f) {
   read_hull_body(r, f);
 }
 
-void read_path(ObjectReader& r, VehiclePath& p) {
+void read_vehicle_path(ObjectReader& r, VehiclePath& p) {
   r.points2("waypoints", p.waypoints, 2, 256, "m",
             "Points (x, z) the vehicle passes through, in order; the path is a smooth curve (Catmull-Rom) "
             "through them.");
@@ -142,7 +142,7 @@ void read_vehicle(ObjectReader& r, Vehicle& v) {
   r.rule("file", !v.file.empty(), "a file name (required)",
          "every vehicle is loaded from a glTF file; add e.g. \"file\": \"assets/boat.gltf\"");
   r.number("scale", v.scale, Bounds::above_up_to(0, 1000), "", "Uniform scale of the model.");
-  r.block("path", v.path, read_path, "Where the vehicle goes; its heading follows the path.");
+  r.block("path", v.path, read_vehicle_path, "Where the vehicle goes; its heading follows the path.");
   r.number(
       "depth_m", v.depth_m, Bounds::between(0, 11000), "m",
       "0 = at the surface: heave, pitch and roll come from buoyancy (`body`), so the mesh must be closed; "

@@ -17,6 +17,10 @@ enum class MemoryUsage {
   Readback,  // host-visible, cached where possible: GPU writes, CPU reads
 };
 
+// The usage of device buffers that shaders read and write and copies fill (uploads, clears).
+inline constexpr VkBufferUsageFlags kStorageUsage =
+    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+
 class Buffer {
  public:
   Buffer() = default;

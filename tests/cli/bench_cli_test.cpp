@@ -18,10 +18,6 @@
 namespace lagoon::test {
 namespace {
 
-ProcessResult lagoon(const std::string& args) {
-  return run_process(shell_quote(LAGOON_BINARY) + " " + args);
-}
-
 TEST(BenchCli, UsageErrorsExit2) {
   for (const char* args : {"bench", "bench nope", "bench compute --rounds 0", "bench render --rounds x"})
     EXPECT_EQ(lagoon(args).exit_code, 2) << args;

@@ -13,15 +13,6 @@
 namespace lagoon::test {
 namespace {
 
-ProcessResult lagoon(const std::string& args) {
-  return run_process(shell_quote(LAGOON_BINARY) + " " + args);
-}
-
-std::string read(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
 TEST(BenchEffectsCli, ATwoSecondFlightWritesEveryOutputForEveryConfiguration) {
   TempDir dir;
   // Above the water, through the surface near the AUV, along the floor.
@@ -36,7 +27,7 @@ TEST(BenchEffectsCli, ATwoSecondFlightWritesEveryOutputForEveryConfiguration) {
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("11 frames per test"), std::string::npos) << r.output;
 
-  const nlohmann::json report = nlohmann::json::parse(read(dir / "fx/effects.json"));
+  const nlohmann::json report = nlohmann::json::parse(read_file(dir / "fx/effects.json"));
   const std::vector<std::string> expected = {"none",     "reflection", "refraction", "foam",
                                              "caustics", "underwater", "particles",  "shafts",
                                              "wakes",    "sediment",   "all"};
@@ -60,10 +51,10 @@ TEST(BenchEffectsCli, ATwoSecondFlightWritesEveryOutputForEveryConfiguration) {
   // The reflection pass draws the objects only when reflection is on.
   EXPECT_GT(tests["reflection"]["reflection"].get<double>(), tests["none"]["reflection"].get<double>());
 
-  const std::string csv = read(dir / "fx/effects.csv");
+  const std::string csv = read_file(dir / "fx/effects.csv");
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 12);
   EXPECT_EQ(csv.rfind("test,min_fps,avg_fps,max_fps,", 0), 0u) << csv;
-  const std::string md = read(dir / "fx/effects.md");
+  const std::string md = read_file(dir / "fx/effects.md");
   EXPECT_NE(md.find("| Test | Description | min. FPS | avg. FPS | max. FPS |"), std::string::npos) << md;
   EXPECT_NE(md.find("| all | every effect above together |"), std::string::npos) << md;
   // The caption names the device the run used, whichever it is.

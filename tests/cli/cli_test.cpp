@@ -14,8 +14,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kScene = std::string(LAGOON_SOURCE_DIR) + "/scenes/default.json";
-
 class Cli : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -63,14 +61,16 @@ TEST_F(Cli, RenderUsageErrorsExit2) {
     std::string args, expected;
     bool prints_usage = true;
   } cases[] = {
-      {"render --scene " + kScene, "missing --out"},
+      {"render --scene " + kDefaultScene, "missing --out"},
       {"render --out " + out("a.png"), "missing --scene"},
-      {"render --scene " + kScene + " --out " + out("a.png") + " --width abc", "--width abc", false},
-      {"render --scene " + kScene + " --out " + out("a.png") + " --time soon", "--time soon", false},
-      {"render --scene " + kScene + " --out " + out("a.txt"), "must name a .png", false},
-      {"render --scene " + kScene + " --out " + out("a.png") + " --colour red", "unknown option --colour"},
-      {"render --scene " + kScene + " --out " + out("a.png") + " stray", "unexpected argument 'stray'"},
-      {"render --scene " + kScene + " --out", "needs a value"},
+      {"render --scene " + kDefaultScene + " --out " + out("a.png") + " --width abc", "--width abc", false},
+      {"render --scene " + kDefaultScene + " --out " + out("a.png") + " --time soon", "--time soon", false},
+      {"render --scene " + kDefaultScene + " --out " + out("a.txt"), "must name a .png", false},
+      {"render --scene " + kDefaultScene + " --out " + out("a.png") + " --colour red",
+       "unknown option --colour"},
+      {"render --scene " + kDefaultScene + " --out " + out("a.png") + " stray",
+       "unexpected argument 'stray'"},
+      {"render --scene " + kDefaultScene + " --out", "needs a value"},
   };
   for (const Case& c : cases) {
     auto r = lagoon(c.args);
@@ -101,13 +101,13 @@ TEST_F(Cli, MalformedSceneExits1WithTheFileAndPosition) {
 }
 
 TEST_F(Cli, OutOfRangeOverrideExits1NamingTheField) {
-  auto r = lagoon("render --scene " + kScene + " --out " + out("x.png") + " --set camera.fov_deg=500");
+  auto r = lagoon("render --scene " + kDefaultScene + " --out " + out("x.png") + " --set camera.fov_deg=500");
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("camera.fov_deg"), std::string::npos) << r.output;
-  auto typo = lagoon("render --scene " + kScene + " --out " + out("x.png") + " --set camera.fov=40");
+  auto typo = lagoon("render --scene " + kDefaultScene + " --out " + out("x.png") + " --set camera.fov=40");
   EXPECT_EQ(typo.exit_code, 1) << typo.output;
   EXPECT_NE(typo.output.find("fov_deg"), std::string::npos) << typo.output;
-  auto tiny = lagoon("render --scene " + kScene + " --out " + out("x.png") + " --width 0");
+  auto tiny = lagoon("render --scene " + kDefaultScene + " --out " + out("x.png") + " --width 0");
   EXPECT_EQ(tiny.exit_code, 1) << tiny.output;
   EXPECT_NE(tiny.output.find("render.width"), std::string::npos) << tiny.output;
   expect_no_files();
@@ -115,7 +115,8 @@ TEST_F(Cli, OutOfRangeOverrideExits1NamingTheField) {
 
 TEST_F(Cli, UnwritableOutputExits1AndLeavesNothing) {
   { std::ofstream(out("file")) << "x"; }
-  auto r = lagoon("render --scene " + kScene + " --out " + out("file") + "/x.png --width 32 --height 32");
+  auto r =
+      lagoon("render --scene " + kDefaultScene + " --out " + out("file") + "/x.png --width 32 --height 32");
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("x.png"), std::string::npos) << r.output;
   int entries = 0;
@@ -142,7 +143,7 @@ std::string device_name_from_info(const std::string& info) {
 }
 
 TEST_F(Cli, RenderWritesThePngAndNamesTheDevice) {
-  auto r = lagoon("render --scene " + kScene + " --out " + out("sub/dir/frame.png") +
+  auto r = lagoon("render --scene " + kDefaultScene + " --out " + out("sub/dir/frame.png") +
                   " --width 96 --height 64 --time 1.5");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("frame.png"), std::string::npos) << r.output;
@@ -180,7 +181,7 @@ TEST_F(Cli, UnknownDeviceOverrideListsDevices) {
 }
 
 TEST_F(Cli, NoVulkanDeviceNamesThePackageToInstall) {
-  auto r = lagoon("render --scene " + kScene + " --out " + out("x.png"),
+  auto r = lagoon("render --scene " + kDefaultScene + " --out " + out("x.png"),
                   "VK_ICD_FILENAMES=/nonexistent/icd.json VK_DRIVER_FILES=/nonexistent/icd.json");
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("mesa-vulkan-drivers"), std::string::npos) << r.output;

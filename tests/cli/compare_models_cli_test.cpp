@@ -17,21 +17,16 @@ namespace lagoon::test {
 namespace {
 
 namespace fs = std::filesystem;
-const std::string kScene = std::string(LAGOON_SOURCE_DIR) + "/scenes/default.json";
 const std::string kSets =
     " --set render.width=160 --set render.height=90 --rounds 2"
     " --set "
     "'ocean.cascades=[{\"patch_size_m\":200,\"resolution\":64},{\"patch_size_m\":23,\"resolution\":64}]'";
 
-ProcessResult lagoon(const std::string& args) {
-  return run_process(shell_quote(LAGOON_BINARY) + " " + args);
-}
-
 TEST(CompareCli, WritesTheSheetTableAndPlotsWithFiguresFromTheField) {
   TempDir dir;
   const fs::path out = dir / "models";
-  auto r =
-      lagoon("compare --scene " + kScene + " --models fft,gerstner,springs --out " + out.string() + kSets);
+  auto r = lagoon("compare --scene " + kDefaultScene + " --models fft,gerstner,springs --out " +
+                  out.string() + kSets);
   ASSERT_EQ(r.exit_code, 0) << r.output;
   for (const char* f : {"contact_sheet.png", "compare.md", "compare.json", "fft.png", "gerstner.png",
                         "springs.png", "fft_spectrum.png", "gerstner_spectrum.png", "springs_spectrum.png"})
@@ -47,7 +42,7 @@ TEST(CompareCli, WritesTheSheetTableAndPlotsWithFiguresFromTheField) {
   const std::string cascades =
       R"(ocean.cascades=[{"patch_size_m":200,"resolution":64},{"patch_size_m":23,"resolution":64}])";
   const std::vector<std::string> gerstner_sets{"ocean.model=gerstner", cascades}, fft_sets{cascades};
-  auto scene = scene::load_scene(kScene, gerstner_sets);
+  auto scene = scene::load_scene(kDefaultScene, gerstner_sets);
   ASSERT_TRUE(scene) << scene.error().message;
   double energy = 0;
   for (const ocean::GerstnerWaveSpec& w : scene->ocean.gerstner.waves)
@@ -57,7 +52,7 @@ TEST(CompareCli, WritesTheSheetTableAndPlotsWithFiguresFromTheField) {
 
   // FFT: the same statistic over WaveQuery's heights at the rest points of the same grid (no inversion:
   // choppiness 0 would change the sea, so the rest positions are sampled through the height fields directly).
-  auto fft_scene = scene::load_scene(kScene, fft_sets);
+  auto fft_scene = scene::load_scene(kDefaultScene, fft_sets);
   ASSERT_TRUE(fft_scene) << fft_scene.error().message;
   fft_scene->ocean.choppiness = 0;  // heights at fixed points are then the rest points' heights
   ocean::WaveQuery query(fft_scene->ocean);
@@ -80,7 +75,7 @@ TEST(CompareCli, WritesTheSheetTableAndPlotsWithFiguresFromTheField) {
 
 TEST(CompareCli, AnUnknownModelIsAUsageErrorAndWritesNothing) {
   TempDir dir;
-  auto r = lagoon("compare --scene " + kScene + " --models fft,waves --out " + (dir / "x").string());
+  auto r = lagoon("compare --scene " + kDefaultScene + " --models fft,waves --out " + (dir / "x").string());
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("\"waves\" is no model"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(dir / "x"));

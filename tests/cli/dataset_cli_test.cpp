@@ -31,21 +31,12 @@ const std::string kArgs = " --scene " + shell_quote(kHarbour) +
                           " --width 96 --height 54 --frames 12 --fps 1 --time 20 --set wakes.enabled=false"
                           " --set ocean.spectrum.wind_speed_mps=12";
 
-ProcessResult lagoon(const std::string& args) {
-  return run_process(shell_quote(LAGOON_BINARY) + " " + args);
-}
-
-std::string read(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
 // The frames' files (PNG and metadata JSON) of a folder, by name.
 std::map<std::string, std::string> frame_files(const fs::path& dir) {
   std::map<std::string, std::string> files;
   for (const auto& item : fs::directory_iterator(dir)) {
     const std::string name = item.path().filename().string();
-    if (name.rfind("f_", 0) == 0) files[name] = read(item.path());
+    if (name.rfind("f_", 0) == 0) files[name] = read_file(item.path());
   }
   return files;
 }
@@ -111,7 +102,7 @@ TEST_F(DatasetCli, AFrameOfASequenceIsTheSingleFrameAtItsTime) {
                              " --set ocean.spectrum.wind_speed_mps=12";
   const ProcessResult r = lagoon("render" + single + " --out " + shell_quote((dir / "alone.png").string()));
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_TRUE(read(dir / "alone.png") == read(reference() / "f_0007.png"));
+  EXPECT_TRUE(read_file(dir / "alone.png") == read_file(reference() / "f_0007.png"));
 }
 
 TEST_F(DatasetCli, AKilledShardResumesAndFinishesWithTheSameFiles) {
@@ -149,7 +140,7 @@ TEST_F(DatasetCli, AKilledShardResumesAndFinishesWithTheSameFiles) {
 TEST_F(DatasetCli, VerifyNamesADamagedFrameAndAnotherRunIsRefused) {
   TempDir dir;
   fs::copy(reference(), dir.path(), fs::copy_options::recursive);
-  std::string png = read(dir / "f_0004.png");
+  std::string png = read_file(dir / "f_0004.png");
   png[png.size() / 2] ^= 0x40;
   std::ofstream(dir / "f_0004.png", std::ios::binary) << png;
   const ProcessResult v = lagoon("dataset verify " + shell_quote(dir.path().string()));
@@ -167,11 +158,11 @@ TEST_F(DatasetCli, VerifyNamesADamagedFrameAndAnotherRunIsRefused) {
       lagoon("render" + kArgs + " --set sun.elevation_deg=20 --out " + shell_quote((dir / "f.png").string()));
   EXPECT_EQ(other.exit_code, 1) << other.output;
   EXPECT_NE(other.output.find("was written by another run"), std::string::npos) << other.output;
-  EXPECT_TRUE(read(dir / "f_0004.png") == read(reference() / "f_0004.png"));
+  EXPECT_TRUE(read_file(dir / "f_0004.png") == read_file(reference() / "f_0004.png"));
 }
 
 TEST_F(DatasetCli, TheMetadataStatesAPinholeCameraThatSeesItsAimAtTheCentre) {
-  const nlohmann::json meta = nlohmann::json::parse(read(reference() / "f_0003.json"));
+  const nlohmann::json meta = nlohmann::json::parse(read_file(reference() / "f_0003.json"));
   EXPECT_EQ(meta["frame"], 3);
   EXPECT_NEAR(meta["time_s"].get<double>(), 23, 1e-6);
   EXPECT_EQ(meta["image"], "f_0003.png");
@@ -230,7 +221,7 @@ TEST(DatasetCliAov, GroundTruthIsWrittenBesideEachFrameListedCheckedAndPreviewed
       EXPECT_EQ(npy->shape, shape) << kind;
       if (std::string(frame) == "f_0000") first[kind] = std::move(*npy);
     }
-    const nlohmann::json meta = nlohmann::json::parse(read(dir / (std::string(frame) + ".json")));
+    const nlohmann::json meta = nlohmann::json::parse(read_file(dir / (std::string(frame) + ".json")));
     EXPECT_EQ(meta["aov"]["depth"], std::string(frame) + ".depth.npy");
     EXPECT_EQ(meta["aov"].size(), kinds.size());
   }

@@ -19,15 +19,10 @@ namespace fs = std::filesystem;
 
 const fs::path kSource = LAGOON_SOURCE_DIR;
 
-std::string read(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
-std::map<std::string, std::string> frame_files(const fs::path& dir) {
+std::map<std::string, std::string> output_files(const fs::path& dir) {
   std::map<std::string, std::string> files;
   for (const auto& item : fs::directory_iterator(dir))
-    if (item.path().extension() != ".jsonl") files[item.path().filename().string()] = read(item.path());
+    if (item.path().extension() != ".jsonl") files[item.path().filename().string()] = read_file(item.path());
   return files;
 }
 
@@ -41,7 +36,7 @@ class DeployCli : public ::testing::Test {
     fs::create_directories(dir_ / "bin");
     fs::create_directory_symlink(kSource / "scenes/assets", dir_ / "scenes/assets");
     fs::create_directory_symlink(kSource / "scenes/paths", dir_ / "scenes/paths");
-    nlohmann::json harbour = nlohmann::json::parse(read(kSource / "scenes/harbour.json"));
+    nlohmann::json harbour = nlohmann::json::parse(read_file(kSource / "scenes/harbour.json"));
     harbour["wakes"] = {{"enabled", false}};
     std::ofstream(dir_ / "scenes/harbour-quick.json") << harbour.dump(2);
     fs::create_symlink(LAGOON_BINARY, dir_ / "bin/lagoon");
@@ -64,7 +59,7 @@ class DeployCli : public ::testing::Test {
                                         "scenes/paths/evaluation.json --frames 8 --fps 0.5 --width 64 "
                                         "--height 36 --out one/frame.png");
     ASSERT_EQ(r.exit_code, 0) << r.output;
-    const auto expected = frame_files(dir_ / "one"), sharded = frame_files(dir_ / out);
+    const auto expected = output_files(dir_ / "one"), sharded = output_files(dir_ / out);
     ASSERT_EQ(expected.size(), 16u);  // 8 PNGs and their metadata
     ASSERT_EQ(sharded.size(), expected.size());
     for (const auto& [name, bytes] : expected) EXPECT_TRUE(sharded.at(name) == bytes) << name << " differs";
@@ -77,7 +72,7 @@ class DeployCli : public ::testing::Test {
 
 TEST_F(DeployCli, TheSlurmArrayScriptsFourTasksMakeTheSetOfOneProcess) {
   const std::string script = (kSource / "deploy/slurm/render-array.sbatch").string();
-  EXPECT_NE(read(script).find("#SBATCH --array=0-3"), std::string::npos);
+  EXPECT_NE(read_file(script).find("#SBATCH --array=0-3"), std::string::npos);
   for (int task = 0; task < 4; ++task) {
     const ProcessResult r =
         run_process(env("slurm") + "SLURM_ARRAY_TASK_ID=" + std::to_string(task) +
@@ -88,7 +83,7 @@ TEST_F(DeployCli, TheSlurmArrayScriptsFourTasksMakeTheSetOfOneProcess) {
 }
 
 TEST_F(DeployCli, TheKubernetesIndexedJobsFourPodsMakeTheSetOfOneProcess) {
-  const std::string yaml = read(kSource / "deploy/k8s/render-indexed-job.yaml");
+  const std::string yaml = read_file(kSource / "deploy/k8s/render-indexed-job.yaml");
   std::smatch m;
   ASSERT_TRUE(std::regex_search(
       yaml, m, std::regex(R"(completionMode: Indexed\s+completions: (\d+)\s+parallelism: (\d+))")));
@@ -114,7 +109,7 @@ TEST_F(DeployCli, TheKubernetesIndexedJobsFourPodsMakeTheSetOfOneProcess) {
 TEST(DeployFiles, TheDockerfileBuildsTheCliWithTheProjectsOwnSetUp) {
   // Docker is not available to the suite; the image's steps are the README's own set-up (checked by the
   // fresh-Debian run), so this pins the file to them.
-  const std::string docker = read(kSource / "deploy/Dockerfile");
+  const std::string docker = read_file(kSource / "deploy/Dockerfile");
   EXPECT_NE(docker.find("FROM debian:12"), std::string::npos);
   EXPECT_NE(docker.find("bash tools/install-deps.sh"), std::string::npos);
   EXPECT_NE(docker.find("-DCMAKE_BUILD_TYPE=Release"), std::string::npos);

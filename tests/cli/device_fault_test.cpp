@@ -11,8 +11,6 @@
 namespace lagoon::test {
 namespace {
 
-const std::string kScene = std::string(LAGOON_SOURCE_DIR) + "/scenes/default.json";
-
 TEST(DeviceFault, OutOfDeviceMemoryExits1WithWhatRanOutAndTheFix) {
 #if defined(__SANITIZE_ADDRESS__)
   GTEST_SKIP() << "AddressSanitizer reserves terabytes of address space, so ulimit -v cannot starve lavapipe";
@@ -25,9 +23,9 @@ TEST(DeviceFault, OutOfDeviceMemoryExits1WithWhatRanOutAndTheFix) {
   const std::string out = (dir / "frame.png").string();
   // 8192² render targets need more than 2 GiB; 3 GB of address space leaves lavapipe a 2 GiB heap, not all
   // of it free.
-  auto r =
-      run_process("ulimit -v 3000000; " + lavapipe + "exec timeout 300 " + shell_quote(LAGOON_BINARY) +
-                  " render --scene " + kScene + " --out " + shell_quote(out) + " --width 8192 --height 8192");
+  auto r = run_process("ulimit -v 3000000; " + lavapipe + "exec timeout 300 " + shell_quote(LAGOON_BINARY) +
+                       " render --scene " + kDefaultScene + " --out " + shell_quote(out) +
+                       " --width 8192 --height 8192");
   EXPECT_EQ(r.exit_code, 1) << r.output;  // not 134 (abort), 139 (crash) or 124 (hang)
   EXPECT_TRUE(r.output.find("out of device memory allocating") != std::string::npos ||
               r.output.find("out of host memory allocating") != std::string::npos)

@@ -17,11 +17,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kScene = std::string(LAGOON_SOURCE_DIR) + "/scenes/default.json";
-
 std::string export_command(const fs::path& out, int frames, int resolution) {
-  return shell_quote(LAGOON_BINARY) + " export --scene " + kScene + " --out " + shell_quote(out.string()) +
-         " --frames " + std::to_string(frames) +
+  return shell_quote(LAGOON_BINARY) + " export --scene " + kDefaultScene + " --out " +
+         shell_quote(out.string()) + " --frames " + std::to_string(frames) +
          " --set 'ocean.cascades=[{\"patch_size_m\":100,\"resolution\":" + std::to_string(resolution) + "}]'";
 }
 

@@ -15,10 +15,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-ProcessResult lagoon(const std::string& args) {
-  return run_process(shell_quote(LAGOON_BINARY) + " " + args);
-}
-
 TEST(LutCli, WritesTablesMetadataAndPreviews) {
   TempDir dir;
   const fs::path out = dir / "lut";

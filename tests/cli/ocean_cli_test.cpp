@@ -25,17 +25,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kScene = std::string(LAGOON_SOURCE_DIR) + "/scenes/default.json";
 const std::string kSmallOcean =
     "--set "
     "'ocean.cascades=[{\"patch_size_m\":300,\"resolution\":64},{\"patch_size_m\":30,\"resolution\":64}]'";
 
 const std::vector<std::string> kSmallOceanOverride{
     "ocean.cascades=[{\"patch_size_m\":300,\"resolution\":64},{\"patch_size_m\":30,\"resolution\":64}]"};
-
-ProcessResult lagoon(const std::string& args) {
-  return run_process(shell_quote(LAGOON_BINARY) + " " + args);
-}
 
 // One JSON object per line, as lagoon probe prints them.
 std::vector<nlohmann::json> json_lines(const std::string& output) {
@@ -48,8 +43,8 @@ std::vector<nlohmann::json> json_lines(const std::string& output) {
 TEST(OceanCli, ExportWritesTheGpuFieldsInTheDocumentedLayout) {
   TempDir dir;
   const fs::path out = dir / "fields";
-  auto r = lagoon("export --scene " + kScene + " --out " + out.string() + " --frames 2 --dt 0.5 --t0 1.25 " +
-                  kSmallOcean);
+  auto r = lagoon("export --scene " + kDefaultScene + " --out " + out.string() +
+                  " --frames 2 --dt 0.5 --t0 1.25 " + kSmallOcean);
   ASSERT_EQ(r.exit_code, 0) << r.output;
   std::ifstream meta_file(out / "meta.json");
   const auto meta = nlohmann::json::parse(meta_file);
@@ -60,7 +55,7 @@ TEST(OceanCli, ExportWritesTheGpuFieldsInTheDocumentedLayout) {
   EXPECT_EQ(meta["cascades"][1]["k_min_rad_per_m"], meta["cascades"][0]["k_max_rad_per_m"]);
 
   // The same scene through the CPU reference: the exported arrays must be its fields, [frame][z][x][c].
-  auto scene = scene::load_scene(kScene, kSmallOceanOverride);
+  auto scene = scene::load_scene(kDefaultScene, kSmallOceanOverride);
   ASSERT_TRUE(scene) << scene.error().message;
   std::vector<ocean::CascadeSpectrum> spectra;
   for (uint32_t c = 0; c < 2; ++c) spectra.push_back(ocean::make_cascade_spectrum(scene->ocean, c));
@@ -114,7 +109,7 @@ TEST(OceanCli, ExportErrorsLeaveNothing) {
       {"--set ocean.spectrum.fetch_km=0", "ocean.spectrum.fetch_km", 1},
   };
   for (const Case& c : cases) {
-    auto r = lagoon("export --scene " + kScene + " --out " + out + " " + c.args);
+    auto r = lagoon("export --scene " + kDefaultScene + " --out " + out + " " + c.args);
     EXPECT_EQ(r.exit_code, c.code) << c.args << "\n" << r.output;
     EXPECT_NE(r.output.find(c.expected), std::string::npos) << c.args << "\n" << r.output;
     if (c.code == 1) {
@@ -123,16 +118,16 @@ TEST(OceanCli, ExportErrorsLeaveNothing) {
   }
   EXPECT_TRUE(fs::is_empty(dir.path()));
   { std::ofstream(dir / "file") << "x"; }
-  auto r = lagoon("export --scene " + kScene + " --out " + (dir / "file").string());
+  auto r = lagoon("export --scene " + kDefaultScene + " --out " + (dir / "file").string());
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("not a folder"), std::string::npos) << r.output;
 }
 
 TEST(OceanCli, ProbePrintsOneJsonObjectPerPointMatchingTheExactSum) {
-  auto r = lagoon("probe --scene " + kScene + " --time 2.5 --at 0,0 --at 17.5,-3.25 " + kSmallOcean +
+  auto r = lagoon("probe --scene " + kDefaultScene + " --time 2.5 --at 0,0 --at 17.5,-3.25 " + kSmallOcean +
                   " --set ocean.choppiness=0");
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  auto scene = scene::load_scene(kScene, kSmallOceanOverride);
+  auto scene = scene::load_scene(kDefaultScene, kSmallOceanOverride);
   std::vector<ocean::CascadeSpectrum> spectra;
   for (uint32_t c = 0; c < 2; ++c) spectra.push_back(ocean::make_cascade_spectrum(scene->ocean, c));
   std::istringstream lines(r.output);
@@ -154,19 +149,19 @@ TEST(OceanCli, ProbePrintsOneJsonObjectPerPointMatchingTheExactSum) {
 
 TEST(OceanCli, ProbeUsageErrors) {
   for (const char* args : {"--time 1 --at 3", "--time soon --at 1,2", "--time 1 --at 1,2,3x", "--at 1,2"}) {
-    auto r = lagoon(std::string("probe --scene ") + kScene + " " + args);
+    auto r = lagoon(std::string("probe --scene ") + kDefaultScene + " " + args);
     EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.output;
   }
   // Positions and times beyond what a double resolves (issue 11: 1e30 answered "converged").
   for (const char* args : {"--time 1 --at 1e30,5", "--time 1 --at 5,-5e9", "--time 1e10 --at 1,2"}) {
-    auto r = lagoon(std::string("probe --scene ") + kScene + " " + args);
+    auto r = lagoon(std::string("probe --scene ") + kDefaultScene + " " + args);
     EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.output;
     EXPECT_NE(r.output.find("is beyond ±4294967296"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("resolved only to"), std::string::npos) << r.output;
   }
-  auto near_limit = lagoon("probe --scene " + kScene + " --time 1e9 --at 4e9,-4e9 " + kSmallOcean);
+  auto near_limit = lagoon("probe --scene " + kDefaultScene + " --time 1e9 --at 4e9,-4e9 " + kSmallOcean);
   EXPECT_EQ(near_limit.exit_code, 0) << near_limit.output;
-  auto r = lagoon("probe --scene " + kScene + " --time 1 --at 1,2 --set ocean.depth_m=-5");
+  auto r = lagoon("probe --scene " + kDefaultScene + " --time 1 --at 1,2 --set ocean.depth_m=-5");
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("ocean.depth_m"), std::string::npos) << r.output;
 }
@@ -177,7 +172,7 @@ const std::string kFloatingBuoy =
 
 TEST(OceanCli, ProbeObjectPrintsAFloatingObjectsPoseFrameByFrame) {
   const std::string command =
-      "probe --scene " + kScene + " --time 2 --object buoy --frames 3" + kFloatingBuoy;
+      "probe --scene " + kDefaultScene + " --time 2 --object buoy --frames 3" + kFloatingBuoy;
   auto r = lagoon(command);
   ASSERT_EQ(r.exit_code, 0) << r.output;
   std::istringstream lines(r.output);
@@ -201,7 +196,7 @@ TEST(OceanCli, ProbeObjectPrintsAFloatingObjectsPoseFrameByFrame) {
 }
 
 TEST(OceanCli, ProbeObjectErrorsNameTheFix) {
-  const std::string scene = "probe --scene " + kScene + " --time 1 ";
+  const std::string scene = "probe --scene " + kDefaultScene + " --time 1 ";
   auto r = lagoon(scene + "--object boat");
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("objects[1] \"boat\" does not float; set objects[1].floating.enabled"),
@@ -270,11 +265,11 @@ TEST(OceanCli, ModelGerstnerThroughProbeAndExport) {
       R"({"amplitude_m":0.05,"wavelength_m":2.3,"direction_deg":75}])"};
   std::string set_args;
   for (const std::string& s : sets) set_args += " --set " + shell_quote(s);
-  auto scene = scene::load_scene(kScene, sets);
+  auto scene = scene::load_scene(kDefaultScene, sets);
   ASSERT_TRUE(scene) << scene.error().message;
   const ocean::GerstnerSurface cpu(ocean::gerstner_params(scene->ocean));
 
-  auto r = lagoon("probe --scene " + kScene + " --time 2.5 --at 3,4 --at -17.5,8.25" + set_args);
+  auto r = lagoon("probe --scene " + kDefaultScene + " --time 2.5 --at 3,4 --at -17.5,8.25" + set_args);
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const std::vector<nlohmann::json> points = json_lines(r.output);
   EXPECT_EQ(points.size(), 2u);
@@ -284,7 +279,7 @@ TEST(OceanCli, ModelGerstnerThroughProbeAndExport) {
   }
 
   TempDir dir;
-  r = lagoon("export --scene " + kScene + " --out " + shell_quote((dir / "g").string()) + " --t0 1.5" +
+  r = lagoon("export --scene " + kDefaultScene + " --out " + shell_quote((dir / "g").string()) + " --t0 1.5" +
              set_args);
   ASSERT_EQ(r.exit_code, 0) << r.output;
   auto big = io::read_npy(dir / "g" / "cascade0_displacement.npy");
@@ -306,9 +301,9 @@ TEST(OceanCli, ModelGerstnerThroughProbeAndExport) {
 // choppiness the scene is refused with the fix.
 TEST(OceanCli, ModelSinesThroughProbe) {
   const std::vector<std::string> sets{"ocean.model=sines", "ocean.choppiness=0"};
-  auto scene = scene::load_scene(kScene, sets);
+  auto scene = scene::load_scene(kDefaultScene, sets);
   ASSERT_TRUE(scene) << scene.error().message;
-  auto r = lagoon("probe --scene " + kScene +
+  auto r = lagoon("probe --scene " + kDefaultScene +
                   " --time 4.5 --at 3,4 --at -17.5,8.25 --set ocean.model=sines "
                   "--set ocean.choppiness=0");
   ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -319,7 +314,7 @@ TEST(OceanCli, ModelSinesThroughProbe) {
                        ocean::sines_height(scene->ocean, 4.5, j["x"].get<double>(), j["z"].get<double>())),
               j["error_bound_m"].get<double>())
         << j;
-  r = lagoon("probe --scene " + kScene + " --time 1 --at 0,0 --set ocean.model=sines");
+  r = lagoon("probe --scene " + kDefaultScene + " --time 1 --at 0,0 --set ocean.model=sines");
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("ocean.choppiness: 0.8 must be 0 for model sines"), std::string::npos) << r.output;
 }
@@ -329,12 +324,12 @@ TEST(OceanCli, ModelSinesThroughProbe) {
 TEST(OceanCli, ModelPerlinThroughProbe) {
   const std::vector<std::string> sets{"ocean.model=perlin", "ocean.choppiness=0", "ocean.perlin.octaves=2",
                                       R"(ocean.cascades=[{"patch_size_m":128,"resolution":64}])"};
-  auto scene = scene::load_scene(kScene, sets);
+  auto scene = scene::load_scene(kDefaultScene, sets);
   ASSERT_TRUE(scene) << scene.error().message;
   double mean = 0;
   for (int j = 0; j < 64; ++j)
     for (int i = 0; i < 64; ++i) mean += ocean::perlin_height(scene->ocean, 2.0 * i, 2.0 * j) / (64 * 64);
-  std::string command = "probe --scene " + kScene + " --time 0 --at 6,10 --at 40,2";
+  std::string command = "probe --scene " + kDefaultScene + " --time 0 --at 6,10 --at 40,2";
   for (const std::string& s : sets) command += " --set " + shell_quote(s);
   auto r = lagoon(command);
   ASSERT_EQ(r.exit_code, 0) << r.output;
@@ -356,12 +351,12 @@ TEST(OceanCli, ModelSpringsThroughProbeAndExport) {
       "ocean.springs.boundary_amplitude_m=0.2"};
   std::string set_args;
   for (const std::string& s : sets) set_args += " --set " + shell_quote(s);
-  auto scene = scene::load_scene(kScene, sets);
+  auto scene = scene::load_scene(kDefaultScene, sets);
   ASSERT_TRUE(scene) << scene.error().message;
   ocean::SpringGrid grid(scene->ocean);
   const std::vector<glm::dvec2> at = grid.surface_at(9.0);
 
-  auto r = lagoon("probe --scene " + kScene + " --time 9 --at 40,40 --at 50,30 --at 4,60" + set_args);
+  auto r = lagoon("probe --scene " + kDefaultScene + " --time 9 --at 40,40 --at 50,30 --at 4,60" + set_args);
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const std::vector<nlohmann::json> points = json_lines(r.output);
   ASSERT_EQ(points.size(), 3u);
@@ -373,7 +368,7 @@ TEST(OceanCli, ModelSpringsThroughProbeAndExport) {
   EXPECT_GT(std::abs(points[0]["height_m"].get<double>()), 0.01) << "the drop's ring should have arrived";
 
   TempDir dir;
-  r = lagoon("export --scene " + kScene + " --out " + shell_quote((dir / "s").string()) + " --t0 9" +
+  r = lagoon("export --scene " + kDefaultScene + " --out " + shell_quote((dir / "s").string()) + " --t0 9" +
              set_args);
   ASSERT_EQ(r.exit_code, 0) << r.output;
   auto heights = io::read_npy(dir / "s" / "cascade0_displacement.npy");
@@ -385,7 +380,7 @@ TEST(OceanCli, ModelSpringsThroughProbeAndExport) {
   }
   EXPECT_LT(std::sqrt(diff / norm), 1e-5);
 
-  r = lagoon("probe --scene " + kScene + " --time 1e6 --at 0,0" + set_args);
+  r = lagoon("probe --scene " + kDefaultScene + " --time 1e6 --at 0,0" + set_args);
   EXPECT_EQ(r.exit_code, 2) << r.output;
   EXPECT_NE(r.output.find("steps of the springs grid"), std::string::npos) << r.output;
 }
@@ -405,7 +400,7 @@ TEST_P(ModelFoam, FollowsTheFoamLawThroughExport) {
           R"(ocean.cascades=[{"patch_size_m":200,"resolution":64},{"patch_size_m":23,"resolution":64}])");
   if (model == "sines") sets += " --set ocean.choppiness=0";
   if (model == "perlin") sets += " --set ocean.perlin.octaves=2";
-  auto r = lagoon("export --scene " + kScene + " --out " + shell_quote((dir / "f").string()) +
+  auto r = lagoon("export --scene " + kDefaultScene + " --out " + shell_quote((dir / "f").string()) +
                   " --frames 2 --dt 0.5 --t0 3" + sets);
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const double kept = std::exp(-0.5 * 0.5);

@@ -13,8 +13,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kScene = std::string(LAGOON_SOURCE_DIR) + "/scenes/default.json";
-
 TEST(SceneCli, BrokenOrHostileModelsAreRefusedWithTheReason) {
   TempDir dir;
   auto write = [&](const std::string& name, const std::string& text) {
@@ -44,7 +42,7 @@ TEST(SceneCli, BrokenOrHostileModelsAreRefusedWithTheReason) {
   };
   const std::string out = (dir / "out" / "x.png").string();
   for (const Case& c : cases) {
-    auto r = run_process(shell_quote(LAGOON_BINARY) + " render --scene " + kScene + " --out " + out +
+    auto r = run_process(shell_quote(LAGOON_BINARY) + " render --scene " + kDefaultScene + " --out " + out +
                          " --width 64 --height 36 --set " +
                          shell_quote("objects=[{\"file\":\"" + c.file + "\"}]"));
     EXPECT_EQ(r.exit_code, 1) << c.file << "\n" << r.output;
@@ -65,7 +63,7 @@ TEST(SceneCli, SceneRuleErrorsNameTheField) {
       {"render.tone_map=aces", "render.tone_map"},
   };
   for (const Case& c : cases) {
-    auto r = run_process(shell_quote(LAGOON_BINARY) + " render --scene " + kScene +
+    auto r = run_process(shell_quote(LAGOON_BINARY) + " render --scene " + kDefaultScene +
                          " --out /tmp/never.png --set " + shell_quote(c.set));
     EXPECT_EQ(r.exit_code, 1) << c.set << "\n" << r.output;
     EXPECT_NE(r.output.find(c.expected), std::string::npos) << c.set << "\n" << r.output;
@@ -74,14 +72,14 @@ TEST(SceneCli, SceneRuleErrorsNameTheField) {
 
 TEST(SceneCli, FramesWriteOneNumberedPngEach) {
   TempDir dir;
-  auto r = run_process(shell_quote(LAGOON_BINARY) + " render --scene " + kScene + " --out " +
+  auto r = run_process(shell_quote(LAGOON_BINARY) + " render --scene " + kDefaultScene + " --out " +
                        (dir / "f.png").string() + " --width 32 --height 18 --frames 3 --fps 10");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   for (const char* name : {"f_0000.png", "f_0001.png", "f_0002.png"})
     EXPECT_TRUE(fs::exists(dir / name)) << name;
   EXPECT_FALSE(fs::exists(dir / "f.png"));
   EXPECT_NE(r.output.find("3/3 frames"), std::string::npos) << r.output;
-  EXPECT_EQ(run_process(shell_quote(LAGOON_BINARY) + " render --scene " + kScene + " --out " +
+  EXPECT_EQ(run_process(shell_quote(LAGOON_BINARY) + " render --scene " + kDefaultScene + " --out " +
                         (dir / "g.png").string() + " --frames 0")
                 .exit_code,
             2);

@@ -16,10 +16,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-ProcessResult lagoon(const std::string& args) {
-  return run_process(shell_quote(LAGOON_BINARY) + " " + args);
-}
-
 TEST(SkyCli, WritesTheFig2SkyWithTheLutsIrradiance) {
   TempDir dir;
   const fs::path out = dir / "sky";

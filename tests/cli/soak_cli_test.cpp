@@ -9,15 +9,9 @@
 namespace lagoon::test {
 namespace {
 
-const std::string kScene = std::string(LAGOON_SOURCE_DIR) + "/scenes/default.json";
-
-ProcessResult lagoon(const std::string& args) {
-  return run_process(shell_quote(LAGOON_BINARY) + " " + args);
-}
-
 TEST(SoakCli, AShortSoakChecksEveryStepAndFrameAndIsHealthy) {
   auto r = lagoon(
-      "soak --scene " + kScene +
+      "soak --scene " + kDefaultScene +
       " --steps 30 --frames 4 --width 64 --height 36 --set "
       "'ocean.cascades=[{\"patch_size_m\":300,\"resolution\":64},{\"patch_size_m\":30,\"resolution\":64}]' "
       // lavapipe keeps ~58 KB per object draw and ~0.4 MiB per frame inside the driver
@@ -35,7 +29,7 @@ TEST(SoakCli, AShortSoakChecksEveryStepAndFrameAndIsHealthy) {
 
 TEST(SoakCli, BadCountsAreUsageErrors) {
   for (const char* args : {"--steps -1", "--frames x", "--width 4", "--max-growth -1"}) {
-    auto r = lagoon("soak --scene " + kScene + " " + args);
+    auto r = lagoon("soak --scene " + kDefaultScene + " " + args);
     EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.output;
   }
 }

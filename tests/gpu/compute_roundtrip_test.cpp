@@ -30,13 +30,6 @@ std::vector<float> random_floats(size_t n, uint32_t seed) {
   return v;
 }
 
-template <typename T>
-std::vector<T> from_bytes(const std::vector<std::byte>& bytes) {
-  std::vector<T> out(bytes.size() / sizeof(T));
-  std::memcpy(out.data(), bytes.data(), out.size() * sizeof(T));
-  return out;
-}
-
 // Whether `got` is a float evaluation of a*x + y. The reference is exact in double (a*x of two floats is
 // exact there). A conformant device may round a*x and then the sum (error <= 0.5 ulp(a*x) + 0.5 ulp(sum))
 // or fuse them into one FMA (error <= 0.5 ulp(sum)), so both lie within 1.5 float epsilons of

@@ -20,13 +20,6 @@
 namespace lagoon::test {
 namespace {
 
-template <typename T>
-std::vector<T> from_bytes(const std::vector<std::byte>& bytes) {
-  std::vector<T> out(bytes.size() / sizeof(T));
-  std::memcpy(out.data(), bytes.data(), out.size() * sizeof(T));
-  return out;
-}
-
 // Preetham et al. (1999) as they print it, in double: Perez F(θ, γ) for Y, x, y (x, y shifted by Lagoon's
 // (Δx, Δy), optics/sky_radiance.h), the CIE daylight M1, M2, and the radiance Σ_k w_k B_k with
 // w = F_Y (1, M1, M2) / (Y0 + M1 Y1 + M2 Y2).

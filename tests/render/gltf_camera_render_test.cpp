@@ -18,10 +18,6 @@ namespace {
 
 using nlohmann::json;
 
-int max_channel_difference(const io::Image8& a, const io::Image8& b) {
-  return compare_images(a, b, {}).max_channel_difference;
-}
-
 class GltfCameraRender : public GpuTest {
  protected:
   TempDir dir_{"lagoon_gltf_camera_render"};

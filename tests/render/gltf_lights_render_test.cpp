@@ -19,10 +19,6 @@ namespace {
 
 using nlohmann::json;
 
-int max_channel_difference(const io::Image8& a, const io::Image8& b) {
-  return compare_images(a, b, {}).max_channel_difference;
-}
-
 constexpr double kCandela = 4.0e6;  // a bright lamp (in white units ~1000 against a 2° sun's light)
 
 class GltfLightsRender : public GpuTest {

@@ -21,13 +21,13 @@ namespace {
 
 class SedimentRender : public GpuTest {};
 
-constexpr uint32_t kWidth = 120, kHeight = 90;
+constexpr uint32_t kSedimentWidth = 120, kSedimentHeight = 90;
 constexpr double kFloorDepth = 8;
 
 // A flat white floor 8 m down; an AUV, shrunk to a speck, holding still 0.3 m above it at (0, 2) for 30 s.
 scene::Scene stirred_bay(std::vector<std::string> more) {
-  std::vector<std::string> overrides{"render.width=" + std::to_string(kWidth),
-                                     "render.height=" + std::to_string(kHeight),
+  std::vector<std::string> overrides{"render.width=" + std::to_string(kSedimentWidth),
+                                     "render.height=" + std::to_string(kSedimentHeight),
                                      "camera.fov_deg=60",
                                      "seafloor.type=slope",
                                      "seafloor.depth_near_m=8",
@@ -54,10 +54,11 @@ const physics::FloorDepth kFlat = [](glm::dvec2) { return kFloorDepth; };
 
 // The ray through pixel (x, y)'s centre.
 glm::dvec3 pixel_ray(const scene::Scene& s, uint32_t x, uint32_t y) {
-  const render::CameraMatrices cam = render::camera_matrices(s.camera, float(kWidth) / float(kHeight));
+  const render::CameraMatrices cam =
+      render::camera_matrices(s.camera, float(kSedimentWidth) / float(kSedimentHeight));
   const glm::mat4 inv = glm::inverse(cam.view_proj);
-  const glm::vec4 far =
-      inv * glm::vec4((x + 0.5f) / (kWidth / 2.f) - 1.f, 1.f - (y + 0.5f) / (kHeight / 2.f), 1.f, 1.f);
+  const glm::vec4 far = inv * glm::vec4((x + 0.5f) / (kSedimentWidth / 2.f) - 1.f,
+                                        1.f - (y + 0.5f) / (kSedimentHeight / 2.f), 1.f, 1.f);
   return glm::normalize(glm::dvec3(far) / double(far.w) - glm::dvec3(s.camera.position));
 }
 
@@ -93,8 +94,8 @@ TEST_F(SedimentRender, UnderTheWaterTheCloudsTransmitExpMinusTheirOpticalDepth) 
   const glm::dvec3 eye(with.camera.position);
   int dense = 0;
   double worst = 0;
-  for (uint32_t y = 5; y < kHeight; y += 6)
-    for (uint32_t x = 5; x < kWidth; x += 6) {
+  for (uint32_t y = 5; y < kSedimentHeight; y += 6)
+    for (uint32_t x = 5; x < kSedimentWidth; x += 6) {
       const glm::dvec3 dir = pixel_ray(with, x, y);
       if (dir.y > -0.15) continue;  // the floor within the tables' reach
       const double tau =
@@ -130,8 +131,8 @@ TEST_F(SedimentRender, FromAboveTheWaterOverTheCloudsChangesColourAndNowhereElse
   const io::Image8 seen = (*a)->render(with), plain = (*b)->render(without), shadowed = (*c)->render(dark);
   const glm::dvec3 eye(with.camera.position);
   int over = 0, brighter = 0, darker = 0, away = 0;
-  for (uint32_t y = 0; y < kHeight; y += 2)
-    for (uint32_t x = 0; x < kWidth; x += 2) {
+  for (uint32_t y = 0; y < kSedimentHeight; y += 2)
+    for (uint32_t x = 0; x < kSedimentWidth; x += 2) {
       // The pixel's ray refracted at a flat surface (the breeze is light), to the floor: how close it passes
       // to a cloud's centre.
       const glm::dvec3 dir = pixel_ray(with, x, y);

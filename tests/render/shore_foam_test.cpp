@@ -19,15 +19,15 @@ namespace {
 
 class ShoreFoam : public GpuTest {};
 
-constexpr uint32_t kWidth = 160, kHeight = 120;
+constexpr uint32_t kFoamWidth = 160, kFoamHeight = 120;
 
 // A gentle beach, 1:50, falling from the waterline at z = -80 (just out of view: the floor mesh would round
 // the slope's kink there) to 4 m at z = 120, seen from 30 m up, almost straight down; a light breeze (few
 // whitecaps), linear display.
 scene::Scene beach(bool shore_foam) {
   const std::vector<std::string> overrides{
-      "render.width=" + std::to_string(kWidth),
-      "render.height=" + std::to_string(kHeight),
+      "render.width=" + std::to_string(kFoamWidth),
+      "render.height=" + std::to_string(kFoamHeight),
       "camera.position=[0,30,-62]",
       "camera.look_at=[0,0,-60]",
       "camera.fov_deg=60",
@@ -51,7 +51,7 @@ scene::Scene beach(bool shore_foam) {
   return s ? *s : scene::Scene{};
 }
 
-double luminance(const io::Image8& image, uint32_t x, uint32_t y) {
+double relative_luminance(const io::Image8& image, uint32_t x, uint32_t y) {
   const uint8_t* p = &image.rgba[(size_t{y} * image.width + x) * 4];
   return (0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]) / 255.0;
 }
@@ -74,7 +74,8 @@ TEST_F(ShoreFoam, TheBandCoversWaterShallowerThanTheWavesBreakIn) {
   RecordProperty("significant_height_m", std::to_string(hs));
 
   // Each pixel's water: where its ray meets the mean level, and the floor's depth there.
-  const render::CameraMatrices cam = render::camera_matrices(on.camera, float(kWidth) / float(kHeight));
+  const render::CameraMatrices cam =
+      render::camera_matrices(on.camera, float(kFoamWidth) / float(kFoamHeight));
   // In double: in float the far plane's point loses metres (the projection spans 0.1 m to 5 km).
   const glm::dmat4 inv = glm::inverse(glm::dmat4(cam.view_proj));
   const glm::dvec3 eye(on.camera.position);
@@ -83,10 +84,10 @@ TEST_F(ShoreFoam, TheBandCoversWaterShallowerThanTheWavesBreakIn) {
     double depth;
   };
   std::vector<Pixel> pixels;
-  for (uint32_t y = 0; y < kHeight; y += 2)
-    for (uint32_t x = 0; x < kWidth; x += 2) {
-      const glm::dvec4 far =
-          inv * glm::dvec4((x + 0.5) / (kWidth / 2.0) - 1.0, 1.0 - (y + 0.5) / (kHeight / 2.0), 1.0, 1.0);
+  for (uint32_t y = 0; y < kFoamHeight; y += 2)
+    for (uint32_t x = 0; x < kFoamWidth; x += 2) {
+      const glm::dvec4 far = inv * glm::dvec4((x + 0.5) / (kFoamWidth / 2.0) - 1.0,
+                                              1.0 - (y + 0.5) / (kFoamHeight / 2.0), 1.0, 1.0);
       const glm::dvec3 dir = glm::normalize(glm::dvec3(far) / far.w - eye);
       const glm::dvec3 at = eye + dir * (eye.y / -dir.y);
       pixels.push_back({x, y, double(render::slope_depth(on.seafloor, glm::vec2(at.x, at.z)))});
@@ -95,7 +96,7 @@ TEST_F(ShoreFoam, TheBandCoversWaterShallowerThanTheWavesBreakIn) {
   double white = 0;
   int solid = 0;
   for (const Pixel& p : pixels)
-    if (p.depth < 0.1) white += luminance(foamy, p.x, p.y), ++solid;
+    if (p.depth < 0.1) white += relative_luminance(foamy, p.x, p.y), ++solid;
   ASSERT_GE(solid, 20);
   white /= solid;
 
@@ -105,11 +106,11 @@ TEST_F(ShoreFoam, TheBandCoversWaterShallowerThanTheWavesBreakIn) {
   std::vector<double> got(kBins, 0), want(kBins, 0);
   std::vector<int> count(kBins, 0);
   for (const Pixel& p : pixels) {
-    const double base = luminance(plain, p.x, p.y);
+    const double base = relative_luminance(plain, p.x, p.y);
     if (white - base < 0.15) continue;  // too close to the foam's brightness to read a coverage
     const int bin = int(p.depth / breaking_depth / 0.05);
     if (bin >= kBins) continue;
-    got[bin] += (luminance(foamy, p.x, p.y) - base) / (white - base);
+    got[bin] += (relative_luminance(foamy, p.x, p.y) - base) / (white - base);
     want[bin] += 1 - smoothstep(0.5, 1.0, p.depth / breaking_depth);
     ++count[bin];
   }

@@ -9,6 +9,7 @@
 #include <functional>
 #include <glm/geometric.hpp>
 #include <map>
+#include <numbers>
 
 #include "ocean/initial_spectrum.h"
 #include "ocean/wave_query.h"
@@ -23,8 +24,6 @@
 
 namespace lagoon::test {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 TEST(CameraMedium, AskTheWavesNotTheMeanLevel) {
   const scene::Scene s = shipped_scene("default", {});
@@ -75,12 +74,12 @@ TEST_F(Underwater, SnellsWindowHasTheCriticalAngle) {
   ASSERT_TRUE(renderer) << renderer.error().message;
   const io::Image8 image = (*renderer)->render(s);
   // Luminance per 0.5° of angle from the optical axis (pixel angle from the pinhole model).
-  const double focal = (size / 2.0) / std::tan(60.0 * kPi / 180.0);
+  const double focal = (size / 2.0) / std::tan(60.0 * std::numbers::pi / 180.0);
   std::vector<std::vector<double>> bins(140);
   for (uint32_t y = 0; y < size; ++y)
     for (uint32_t x = 0; x < size; ++x) {
       const double r = std::hypot(x + 0.5 - size / 2.0, y + 0.5 - size / 2.0);
-      const size_t bin = size_t(std::atan(r / focal) * 180.0 / kPi * 2.0);
+      const size_t bin = size_t(std::atan(r / focal) * 180.0 / std::numbers::pi * 2.0);
       if (bin < bins.size()) bins[bin].push_back(luminance(image, x, y));
     }
   auto median = [&](double from_deg, double to_deg) {
@@ -98,7 +97,7 @@ TEST_F(Underwater, SnellsWindowHasTheCriticalAngle) {
       edge_deg = a + 0.25;
       break;
     }
-  const double critical = std::asin(1.0 / s.water.ior) * 180.0 / kPi;  // 48.6° for 1.333
+  const double critical = std::asin(1.0 / s.water.ior) * 180.0 / std::numbers::pi;  // 48.6° for 1.333
   RecordProperty("edge_deg", std::to_string(edge_deg));
   EXPECT_NEAR(edge_deg, critical, 1.0) << "inside " << inside << ", outside " << outside;
 }
@@ -111,7 +110,7 @@ double top_mark_inner_edge_deg(double dc, double r, double n) {
   const glm::dvec2 centre{r, 1.98};
   const double radius = 0.22;
   for (double deg = 0.0; deg < 48.0; deg += 0.01) {
-    const double tw = deg * kPi / 180.0, ta = std::asin(n * std::sin(tw));
+    const double tw = deg * std::numbers::pi / 180.0, ta = std::asin(n * std::sin(tw));
     const glm::dvec2 start{dc * std::tan(tw), 0.0}, dir{std::sin(ta), std::cos(ta)};
     const glm::dvec2 to_centre = centre - start;
     const double along = glm::dot(to_centre, dir);
@@ -139,14 +138,14 @@ TEST_F(Underwater, ObjectsAboveAreSeenRefractedInTheWindow) {
   // The red pixel nearest the optical axis: the top mark's inner edge. The sky is blue (r < b); the top
   // mark, seen from below on its shaded side, is a dark red; the float's submerged part is seen straight
   // through the water from 38.7° out.
-  const double focal = (size / 2.0) / std::tan(60.0 * kPi / 180.0);
+  const double focal = (size / 2.0) / std::tan(60.0 * std::numbers::pi / 180.0);
   double inner_deg = 90.0;
   for (uint32_t y = 0; y < size; ++y)
     for (uint32_t x = 0; x < size; ++x) {
       const uint8_t* p = &image.rgba[(size_t{y} * size + x) * 4];
       if (p[0] < p[2] + 10) continue;
       const double r = std::hypot(x + 0.5 - size / 2.0, y + 0.5 - size / 2.0);
-      inner_deg = std::min(inner_deg, std::atan(r / focal) * 180.0 / kPi);
+      inner_deg = std::min(inner_deg, std::atan(r / focal) * 180.0 / std::numbers::pi);
     }
   const double expected = top_mark_inner_edge_deg(depth, distance, s.water.ior);
   RecordProperty("inner_edge_deg", std::to_string(inner_deg));
@@ -300,7 +299,7 @@ std::pair<double, double> lamp_above_on_floor(double across, double depth, doubl
   auto landing = [&](double ta) {  // horizontal distance travelled by the ray leaving the lamp at θa
     return height * std::tan(ta) + depth * std::tan(std::asin(std::sin(ta) / n));
   };
-  double lo = 0, hi = kPi / 2 - 1e-9;
+  double lo = 0, hi = std::numbers::pi / 2 - 1e-9;
   for (int i = 0; i < 200; ++i) (landing(0.5 * (lo + hi)) < across ? lo : hi) = 0.5 * (lo + hi);
   const double ta = std::max(0.5 * (lo + hi), 1e-4), tw = std::asin(std::sin(ta) / n);
   const double h = 1e-6, r = landing(ta), dr = (landing(ta + h) - landing(ta - h)) / (2 * h);

@@ -13,13 +13,13 @@ namespace {
 
 class VehicleRender : public GpuTest {};
 
-constexpr uint32_t kWidth = 160, kHeight = 90;
+constexpr uint32_t kBoatWidth = 160, kBoatHeight = 90;
 
 // The default bay seen from (0, 3, -10) toward +z, with a boat on `waypoints` at 5 m/s.
 scene::Scene boat_scene(const std::string& waypoints, float time_s) {
   const std::vector<std::string> overrides{
-      "render.width=" + std::to_string(kWidth),
-      "render.height=" + std::to_string(kHeight),
+      "render.width=" + std::to_string(kBoatWidth),
+      "render.height=" + std::to_string(kBoatHeight),
       "time_s=" + std::to_string(time_s),
       "camera.position=[0,3,-10]",
       "camera.look_at=[0,0,20]",
@@ -36,9 +36,9 @@ scene::Scene boat_scene(const std::string& waypoints, float time_s) {
 // The column where a point on the water at (x, 0, z) appears.
 double column_of(glm::dvec3 p) {
   const glm::dmat4 view = glm::lookAt(glm::dvec3(0, 3, -10), glm::dvec3(0, 0, 20), glm::dvec3(0, 1, 0));
-  const glm::dmat4 proj = glm::perspective(glm::radians(55.0), double(kWidth) / kHeight, 0.1, 1000.0);
+  const glm::dmat4 proj = glm::perspective(glm::radians(55.0), double(kBoatWidth) / kBoatHeight, 0.1, 1000.0);
   const glm::dvec4 clip = proj * view * glm::dvec4(p, 1.0);
-  return (0.5 * clip.x / clip.w + 0.5) * kWidth;
+  return (0.5 * clip.x / clip.w + 0.5) * kBoatWidth;
 }
 
 // Mean column of the pixels that differ from `empty`, and how many there are.

@@ -16,6 +16,11 @@ using io::CompareOptions;
 using io::CompareResult;
 using io::make_diff_image;
 
+// The largest difference of any channel at any pixel (same-size images).
+inline int max_channel_difference(const io::Image8& a, const io::Image8& b) {
+  return compare_images(a, b, {}).max_channel_difference;
+}
+
 // For gtest: compares `actual` with the golden PNG at golden_path. When the environment variable
 // LAGOON_UPDATE_GOLDEN=1 is set, writes actual to golden_path and succeeds (prints that it did). On failure
 // (or missing golden) writes <artifact_dir>/<stem>.actual.png and <stem>.diff.png (diff only when sizes

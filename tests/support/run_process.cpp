@@ -4,6 +4,8 @@
 
 #include <array>
 #include <cstdio>
+#include <fstream>
+#include <iterator>
 
 namespace lagoon::test {
 
@@ -24,6 +26,15 @@ ProcessResult run_process(const std::string& command_line, const std::string& en
   const int status = pclose(pipe);
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
   return result;
+}
+
+ProcessResult lagoon(const std::string& args, const std::string& env) {
+  return run_process(shell_quote(LAGOON_BINARY) + " " + args, env);
+}
+
+std::string read_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
 }  // namespace lagoon::test

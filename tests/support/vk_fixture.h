@@ -3,6 +3,10 @@
 #pragma once
 #include <gtest/gtest.h>
 
+#include <cstddef>
+#include <cstring>
+#include <vector>
+
 #include "vk/context.h"
 
 namespace lagoon::test {
@@ -19,5 +23,13 @@ class GpuTest : public ::testing::Test {
  private:
   uint32_t failures_before_ = 0;
 };
+
+// Read-back bytes as values of T (whole values only).
+template <typename T>
+std::vector<T> from_bytes(const std::vector<std::byte>& bytes) {
+  std::vector<T> out(bytes.size() / sizeof(T));
+  std::memcpy(out.data(), bytes.data(), out.size() * sizeof(T));
+  return out;
+}
 
 }  // namespace lagoon::test

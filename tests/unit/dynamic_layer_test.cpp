@@ -13,11 +13,10 @@
 
 #include "fft/cpu_fft.h"
 #include "ocean/dynamic_layer.h"
+#include "support/reference_math.h"
 
 namespace lagoon::test {
 namespace {
-
-constexpr double kPi = std::numbers::pi, kG = 9.81;
 
 // Σ h² + (dh/dt / ω0)² over cells at least `margin` cells from the window's edges: twice the mean potential
 // energy of a narrow-band wave of frequency ω0 (up to ρ g / 2 per cell area).
@@ -38,7 +37,8 @@ TEST(DynamicLayer, AStandingWaveOscillatesAtAirysFrequency) {
     ocean::DynamicLayerParams p{
         .n = 64, .cell_m = 0.5, .depth_m = depth, .decay_per_s = 0, .sponge_per_s = 0};
     ocean::DynamicLayerCpu layer(p, 1);
-    const double k = 2 * kPi * 3 / (p.n * p.cell_m), amplitude = 0.1;  // 3 wavelengths over the grid
+    const double k = 2 * std::numbers::pi * 3 / (p.n * p.cell_m),
+                 amplitude = 0.1;  // 3 wavelengths over the grid
     for (int b = 0; b < int(p.n); ++b)
       for (int a = 0; a < int(p.n); ++a)
         layer.state()[size_t(b) * p.n + a] = amplitude * std::cos(k * a * p.cell_m);
@@ -62,7 +62,7 @@ TEST(DynamicLayer, AHullAtRestSettlesIntoItsDepression) {
   const ocean::WakeSource hull{.centre = {16, 16}, .sigma = {1.2, 0.5}, .depression = 0.3};
   for (int s = 0; s < 150; ++s) layer.step(0.1, {&hull, 1});  // 15 s: e^{-7.5} of the first response left
   // The Gaussian less its mean over the window (the mean level is not the layer's to move).
-  const double mean = 0.3 * 2 * kPi * 1.2 * 0.5 / ((p.n * p.cell_m) * (p.n * p.cell_m));
+  const double mean = 0.3 * 2 * std::numbers::pi * 1.2 * 0.5 / ((p.n * p.cell_m) * (p.n * p.cell_m));
   EXPECT_NEAR(layer.height(64, 64), -0.3 + mean, 0.003);
   EXPECT_NEAR(layer.height(64 + 4, 64), -0.3 * std::exp(-0.5 * 1.0 / (0.5 * 0.5)) + mean,
               0.003);  // 1 m across
@@ -75,7 +75,7 @@ void launch_packet(ocean::DynamicLayerCpu& layer, double x0, double width, doubl
   const auto& p = layer.params();
   const int n = int(p.n);
   std::vector<std::complex<double>> h(size_t(n) * n);
-  const double k0 = 2 * kPi / wavelength;
+  const double k0 = 2 * std::numbers::pi / wavelength;
   for (int b = 0; b < n; ++b)
     for (int a = 0; a < n; ++a) {
       const double x = a * p.cell_m;
@@ -87,7 +87,7 @@ void launch_packet(ocean::DynamicLayerCpu& layer, double x0, double width, doubl
     for (int a = 0; a < n; ++a) {
       const int f = a < n / 2 ? a : a - n;
       if (f <= 0 || b != 0) continue;  // the packet is uniform across: row 0 of the spectrum holds it all
-      const double k = 2 * kPi * f / (n * p.cell_m), omega = std::sqrt(kG * k);
+      const double k = 2 * std::numbers::pi * f / (n * p.cell_m), omega = std::sqrt(kG * k);
       const std::complex<double> H = 2.0 * h[size_t(a)];  // both halves of the real wave, in one
       // h(x, t) = Re(H e^{i(kx - ωt)}): height H and rate -iωH, packed as h + i dh/dt before the transform.
       z[size_t(a)] = H / (double(n) * n);
@@ -107,7 +107,7 @@ double absorbed_test_energy_ratio(double sponge_per_s) {
       .n = 256, .cell_m = 0.25, .decay_per_s = 0, .sponge_m = 16, .sponge_per_s = sponge_per_s};
   ocean::DynamicLayerCpu layer(p, 2);
   launch_packet(layer, 26.0, 3.0, 4.0);
-  const double omega0 = std::sqrt(kG * 2 * kPi / 4.0);
+  const double omega0 = std::sqrt(kG * 2 * std::numbers::pi / 4.0);
   const int margin = int(p.sponge_m / p.cell_m);
   const double before = interior_energy(layer, omega0, margin);
   // Group velocity 1.25 m/s: the packet's front reaches the border at ~8 s, it has crossed the 16 m border
@@ -156,7 +156,7 @@ double cusp_angle_deg(const ocean::DynamicLayerCpu& layer, glm::dvec2 hull, doub
     }
   }
   const double slope = (count * sxy - sx * sy) / (count * sxx - sx * sx);
-  return std::atan(slope) * 180 / kPi;
+  return std::atan(slope) * 180 / std::numbers::pi;
 }
 
 TEST(DynamicLayer, AHullAtConstantSpeedInDeepWaterDrawsKelvinsWedge) {
@@ -164,8 +164,11 @@ TEST(DynamicLayer, AHullAtConstantSpeedInDeepWaterDrawsKelvinsWedge) {
   ocean::DynamicLayerCpu layer(p, 2);
   // 3 m/s for a 2 x 1 m (sigma) footprint: a length Froude number of about 0.34, where the wake's highest
   // waves lie on the cusps (at higher speeds they move inward, Rabaud & Moisy 2013).
-  ocean::WakeSource hull{
-      .centre = {20, 64}, .velocity = {-3, 0}, .heading = -kPi / 2, .sigma = {2, 1}, .depression = 0.3};
+  ocean::WakeSource hull{.centre = {20, 64},
+                         .velocity = {-3, 0},
+                         .heading = -std::numbers::pi / 2,
+                         .sigma = {2, 1},
+                         .depression = 0.3};
   for (int s = 0; s < 500; ++s) {
     // The window follows the hull, 20 m from its front edge: the wake stays in it for ~95 m, and the waves
     // of the start leave through the back.
@@ -192,7 +195,7 @@ TEST(DynamicLayerFoam, ATrailFadesAsItsLifetimeSays) {
   ocean::DynamicLayerCpu layer(p, 2);
   ocean::WakeSource hull{.centre = {6, 16},
                          .velocity = {4, 0},
-                         .heading = kPi / 2,
+                         .heading = std::numbers::pi / 2,
                          .sigma = {1.2, 0.5},
                          .depression = 0.2,
                          .foam_per_s = 8};
@@ -220,9 +223,17 @@ TEST(DynamicLayerFoam, CrossingTrailsSaturateAndSubmergedHullsLeaveNone) {
   ocean::DynamicLayerParams p{.n = 128, .cell_m = 0.25, .sponge_m = 4, .foam_lifetime_s = 3600};
   ocean::DynamicLayerCpu layer(p, 2);
   std::vector<ocean::WakeSource> hulls{
-      {.centre = {6, 16}, .velocity = {3, 0}, .heading = kPi / 2, .sigma = {1, 0.5}, .foam_per_s = 40},
+      {.centre = {6, 16},
+       .velocity = {3, 0},
+       .heading = std::numbers::pi / 2,
+       .sigma = {1, 0.5},
+       .foam_per_s = 40},
       {.centre = {16, 6}, .velocity = {0, 3}, .heading = 0, .sigma = {1, 0.5}, .foam_per_s = 40},
-      {.centre = {20, 26}, .velocity = {-3, 0}, .heading = -kPi / 2, .sigma = {1, 0.2}, .depth = 4}};
+      {.centre = {20, 26},
+       .velocity = {-3, 0},
+       .heading = -std::numbers::pi / 2,
+       .sigma = {1, 0.2},
+       .depth = 4}};
   for (int s = 0; s < 70; ++s) {
     layer.step(0.1, hulls);
     for (ocean::WakeSource& h : hulls) h.centre += h.velocity * 0.1;

@@ -12,11 +12,12 @@
 #include "physics/hydrostatics.h"
 #include "physics/mass_properties.h"
 #include "support/box_mesh.h"
+#include "support/reference_math.h"
 
 namespace lagoon::test {
 namespace {
 
-constexpr double kRhoWater = 1025.0, kG = 9.81;
+constexpr double kRhoWater = 1025.0;
 
 physics::WaterHeight flat(double level = 0.0) {
   return [level](double, double) { return level; };

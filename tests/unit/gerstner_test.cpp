@@ -3,6 +3,7 @@
 // Σ Q k A <= 1 (and one does beyond), each dispersion law gives its phase speed, eq. 10 makes the surface
 // periodic, and the normal and velocity are the derivatives of the surface.
 #include "ocean/gerstner.h"
+#include "support/reference_math.h"
 
 #include <gtest/gtest.h>
 
@@ -18,8 +19,6 @@ using ocean::GerstnerDispersion;
 using ocean::GerstnerParams;
 using ocean::GerstnerSurface;
 using ocean::GerstnerWave;
-
-constexpr double kPi = std::numbers::pi, g = 9.81;
 
 // The root of a function increasing over [a, b], by bisection.
 double bisect(const std::function<double(double)>& f, double a, double b) {
@@ -57,7 +56,8 @@ GerstnerSurface single(double amplitude, double wavelength, GerstnerDispersion l
 TEST(Gerstner, ASingleWaveIsTheTrochoid) {
   // Along +x: a circle of radius 1/k rolling, the point A from its centre: x = θ/k - A sin θ + const,
   // y = A cos θ. The height above any x: solve for θ (x is increasing in θ while kA < 1).
-  const double a = 0.4, lambda = 10, k = 2 * kPi / lambda, w = std::sqrt(g * k), t = 1.3, phi = 0.2;
+  const double a = 0.4, lambda = 10, k = 2 * std::numbers::pi / lambda, w = std::sqrt(kG * k), t = 1.3,
+               phi = 0.2;
   const GerstnerSurface s = single(a, lambda);
   double worst = 0;
   for (int i = 0; i < 200; ++i) {
@@ -74,7 +74,7 @@ TEST(Gerstner, ASingleWaveIsTheTrochoid) {
 
 TEST(Gerstner, CrestsAreSharperThanTroughsByTheTrochoidsRatio) {
   // y'' = -A k² / (1 - kA)² at a crest, A k² / (1 + kA)² at a trough: 2.78 times sharper at kA = 0.25.
-  const double a = 0.4, lambda = 10, k = 2 * kPi / lambda, t = 0.7;
+  const double a = 0.4, lambda = 10, k = 2 * std::numbers::pi / lambda, t = 0.7;
   const GerstnerSurface s = single(a, lambda);
   const auto height = [&](double x) { return s.sample(t, x, 0).height; };
   const double crest = argmax(height, -2, 8),
@@ -102,7 +102,7 @@ TEST(Gerstner, NoLoopsWhileTheSteepnessSumIsAtMostOne) {
   // Five waves within 12° of each other, each with k A = 0.32: where their crests meet, the map folds.
   const double lambdas[] = {12, 7, 5, 3.3, 2.1}, dirs[] = {0, 8, -6, 12, -10};
   for (int i = 0; i < 5; ++i)
-    p.waves.push_back({.amplitude_m = 0.32 * lambdas[i] / (2 * kPi),
+    p.waves.push_back({.amplitude_m = 0.32 * lambdas[i] / (2 * std::numbers::pi),
                        .wavelength_m = lambdas[i],
                        .direction_deg = dirs[i],
                        .phase_rad = 0.7 * i});
@@ -129,13 +129,13 @@ TEST(Gerstner, EachDispersionLawGivesItsPhaseSpeed) {
     GerstnerDispersion law;
     double lambda, depth, speed;  // c = ω / k from the law, written out here
   };
-  const auto k_of = [](double lambda) { return 2 * kPi / lambda; };
-  const double sigma_over_rho_g = 0.074 / (1000 * g);
+  const auto k_of = [](double lambda) { return 2 * std::numbers::pi / lambda; };
+  const double sigma_over_rho_g = 0.074 / (1000 * kG);
   const Case cases[] = {
-      {GerstnerDispersion::Deep, 30, 1000, std::sqrt(g / k_of(30))},
-      {GerstnerDispersion::FiniteDepth, 20, 2, std::sqrt(g * std::tanh(k_of(20) * 2) / k_of(20))},
+      {GerstnerDispersion::Deep, 30, 1000, std::sqrt(kG / k_of(30))},
+      {GerstnerDispersion::FiniteDepth, 20, 2, std::sqrt(kG * std::tanh(k_of(20) * 2) / k_of(20))},
       {GerstnerDispersion::Capillary, 0.01, 1000,
-       std::sqrt(g / k_of(0.01) * (1 + k_of(0.01) * k_of(0.01) * sigma_over_rho_g))},
+       std::sqrt(kG / k_of(0.01) * (1 + k_of(0.01) * k_of(0.01) * sigma_over_rho_g))},
   };
   for (const Case& c : cases) {
     const double a = 0.05 * c.lambda;
@@ -150,7 +150,7 @@ TEST(Gerstner, EachDispersionLawGivesItsPhaseSpeed) {
     EXPECT_NEAR(measured, c.speed, 1e-4 * c.speed) << "lambda " << c.lambda;
   }
   // Finite depth slows the wave: 2 m of water against deep water for the same 20 m wave.
-  EXPECT_LT(cases[1].speed, 0.8 * std::sqrt(g / k_of(20)));
+  EXPECT_LT(cases[1].speed, 0.8 * std::sqrt(kG / k_of(20)));
 }
 
 TEST(Gerstner, ALoopPeriodMakesTheSurfaceRepeat) {
@@ -159,7 +159,7 @@ TEST(Gerstner, ALoopPeriodMakesTheSurfaceRepeat) {
                    .loop_period_s = 12};
   const GerstnerSurface s(p);
   for (size_t i = 0; i < s.size(); ++i) {
-    const double cycles = s.omega(i) * 12 / (2 * kPi);
+    const double cycles = s.omega(i) * 12 / (2 * std::numbers::pi);
     EXPECT_NEAR(cycles, std::round(cycles), 1e-9);
   }
   for (double x : {0.3, 5.1, -7.7})
@@ -227,12 +227,12 @@ TEST(Gerstner, WavesSampledFromTheSpectrumCarryItsEnergy) {
   glm::dvec2 heading(0.0);
   for (const auto& w : waves) {
     variance += 0.5 * w.amplitude_m * w.amplitude_m;
-    const double a = w.direction_deg * kPi / 180;
+    const double a = w.direction_deg * std::numbers::pi / 180;
     heading += w.amplitude_m * w.amplitude_m * glm::dvec2(std::sin(a), std::cos(a));
   }
-  const double wp = 2 * kPi * 0.13 * g / 9, lo = 0.6 * wp, hi = 4 * wp;
+  const double wp = 2 * std::numbers::pi * 0.13 * kG / 9, lo = 0.6 * wp, hi = 4 * wp;
   const auto pm = [wp](double w) {
-    return 0.0081 * g * g / std::pow(w, 5) * std::exp(-1.25 * std::pow(wp / w, 4));
+    return 0.0081 * kG * kG / std::pow(w, 5) * std::exp(-1.25 * std::pow(wp / w, 4));
   };
   double band = 0;
   const int n = 20000;
@@ -242,12 +242,12 @@ TEST(Gerstner, WavesSampledFromTheSpectrumCarryItsEnergy) {
   }
   band *= (hi - lo) / n / 3;
   const double hs = 4 * std::sqrt(variance), hs_band = 4 * std::sqrt(band),
-               hs_all = 4 * std::sqrt(0.0081 * g * g / (5 * std::pow(wp, 4)));
+               hs_all = 4 * std::sqrt(0.0081 * kG * kG / (5 * std::pow(wp, 4)));
   RecordProperty("hs_sampled_m", std::to_string(hs));
   RecordProperty("hs_of_band_m", std::to_string(hs_band));
   RecordProperty("hs_of_spectrum_m", std::to_string(hs_all));  // PM: m0 = α g² / (5 ω_p⁴)
   EXPECT_NEAR(hs, hs_band, 0.03 * hs_band);
-  EXPECT_NEAR(std::atan2(heading.x, heading.y) * 180 / kPi, 40.0, 5.0);
+  EXPECT_NEAR(std::atan2(heading.x, heading.y) * 180 / std::numbers::pi, 40.0, 5.0);
   EXPECT_EQ(ocean::gerstner_wave_specs(p)[7].phase_deg, waves[7].phase_deg) << "deterministic";
 }
 

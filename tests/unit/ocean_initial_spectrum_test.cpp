@@ -16,8 +16,6 @@
 namespace lagoon::ocean {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 TEST(OceanRandom, SameKeySameNumbersDifferentKeysDiffer) {
   EXPECT_EQ(gaussian_pair(7, 1, -3, 12), gaussian_pair(7, 1, -3, 12));
   const std::complex<double> base = gaussian_pair(7, 1, -3, 12);
@@ -57,14 +55,15 @@ TEST(OceanInitialSpectrum, BandsAreDisjointContiguousAndQuarterNyquist) {
   ASSERT_EQ(bands.size(), 4u);
   EXPECT_EQ(bands[0].k_min, 0.0);
   for (size_t c = 0; c < bands.size(); ++c) {
-    EXPECT_DOUBLE_EQ(bands[c].k_max, kPi * p.cascades[c].resolution / (2.0 * p.cascades[c].patch_size_m));
+    EXPECT_DOUBLE_EQ(bands[c].k_max,
+                     std::numbers::pi * p.cascades[c].resolution / (2.0 * p.cascades[c].patch_size_m));
     EXPECT_LT(bands[c].k_min, bands[c].k_max);
     if (c > 0) {
       EXPECT_EQ(bands[c].k_min, bands[c - 1].k_max);
     }
     // The shortest wave carried spans 4 texels: 2π/k_max = 4 L/N.
-    EXPECT_NEAR(2.0 * kPi / bands[c].k_max, 4.0 * p.cascades[c].patch_size_m / p.cascades[c].resolution,
-                1e-12);
+    EXPECT_NEAR(2.0 * std::numbers::pi / bands[c].k_max,
+                4.0 * p.cascades[c].patch_size_m / p.cascades[c].resolution, 1e-12);
   }
 }
 
@@ -83,7 +82,7 @@ TEST(OceanInitialSpectrum, ZeroOutsideTheBandAndAtTheOrigin) {
     size_t inside = 0;
     for (int mz = -n / 2; mz < n / 2; ++mz)
       for (int mx = -n / 2; mx < n / 2; ++mx) {
-        const double k = 2.0 * kPi / s.patch_size_m * std::hypot(mx, mz);
+        const double k = 2.0 * std::numbers::pi / s.patch_size_m * std::hypot(mx, mz);
         const size_t i = index_of(mx, mz, n);
         if (k == 0.0 || k < s.band.k_min || k >= s.band.k_max) {
           ASSERT_EQ(s.h0[i], std::complex<float>(0.0f, 0.0f)) << c << " " << mx << " " << mz;
@@ -102,7 +101,7 @@ TEST(OceanInitialSpectrum, ZeroOutsideTheBandAndAtTheOrigin) {
 double band_integral(const DirectionalSpectrum& psi, double ka, double kb) {
   ka = std::max(ka, 1e-4);
   const int nk = 1000, nt = 360;
-  const double u0 = std::log(ka), h = (std::log(kb) - u0) / nk, dt = 2.0 * kPi / nt;
+  const double u0 = std::log(ka), h = (std::log(kb) - u0) / nk, dt = 2.0 * std::numbers::pi / nt;
   double sum = 0.0;
   for (int i = 0; i <= nk; ++i) {
     const double k = std::exp(u0 + i * h);
@@ -124,7 +123,7 @@ void check_variance(OceanParams p, uint32_t cascade, double continuum_tolerance)
     p.seed = seed;
     const CascadeSpectrum s = make_cascade_spectrum(p, cascade);
     const int n = static_cast<int>(s.resolution);
-    const double dk = 2.0 * kPi / s.patch_size_m;
+    const double dk = 2.0 * std::numbers::pi / s.patch_size_m;
     double total = 0.0;
     for (int mz = -n / 2 + 1; mz < n / 2; ++mz)
       for (int mx = -n / 2 + 1; mx < n / 2; ++mx) {
@@ -169,7 +168,7 @@ TEST(OceanInitialSpectrum, AmplitudeIsKeyedGaussianTimesHalfSqrtPsiDk) {
   const CascadeSpectrum s = make_cascade_spectrum(p, 1);
   const DirectionalSpectrum psi(p);
   const int n = static_cast<int>(s.resolution);
-  const double dk = 2.0 * kPi / s.patch_size_m;
+  const double dk = 2.0 * std::numbers::pi / s.patch_size_m;
   for (int mz = -n / 2; mz < n / 2; ++mz)
     for (int mx = -n / 2; mx < n / 2; ++mx) {
       const double k = dk * std::hypot(mx, mz);
@@ -194,7 +193,7 @@ TEST(OceanInitialSpectrum, DeterministicAndKeyedByMode) {
   size_t compared = 0;
   for (int mz = -n / 2; mz < n / 2; ++mz)
     for (int mx = -n / 2; mx < n / 2; ++mx) {
-      const double k = 2.0 * kPi / half.patch_size_m * std::hypot(mx, mz);
+      const double k = 2.0 * std::numbers::pi / half.patch_size_m * std::hypot(mx, mz);
       if (k == 0.0 || k >= half.band.k_max) continue;
       ASSERT_EQ(half.h0[index_of(mx, mz, n)], a.h0[index_of(mx, mz, 256)]) << mx << " " << mz;
       ++compared;
@@ -213,13 +212,13 @@ TEST(OceanInitialSpectrum, OmegaFollowsDispersionAndLoopQuantisation) {
   const CascadeSpectrum free = make_cascade_spectrum(p, 1);
   p.loop_period_s = 30.0;
   const CascadeSpectrum looped = make_cascade_spectrum(p, 1);
-  const double step = 2.0 * kPi / 30.0;
+  const double step = 2.0 * std::numbers::pi / 30.0;
   const int n = static_cast<int>(free.resolution);
   for (int mz = -n / 2; mz < n / 2; ++mz)
     for (int mx = -n / 2; mx < n / 2; ++mx) {
       const size_t i = index_of(mx, mz, n);
       if (free.omega[i] == 0.0f) continue;
-      const double k = 2.0 * kPi / free.patch_size_m * std::hypot(mx, mz);
+      const double k = 2.0 * std::numbers::pi / free.patch_size_m * std::hypot(mx, mz);
       const double w0 = std::sqrt(9.81 * k * std::tanh(20.0 * k) * (1.0 + k * k * 0.074 / (1000.0 * 9.81)));
       ASSERT_NEAR(free.omega[i], w0, 1e-6 * w0);
       const double cycles = looped.omega[i] / step;

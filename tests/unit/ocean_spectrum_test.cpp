@@ -7,12 +7,12 @@
 
 #include "ocean/dispersion.h"
 #include "ocean/spectrum.h"
+#include "support/reference_math.h"
 
 namespace lagoon::ocean {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double g = 9.81;
+using test::kG;
 
 // Composite Simpson of f over [a, b] in ln x (f(x) x du), n even: spectra span decades.
 double integrate_log(const std::function<double(double)>& f, double a, double b, int n = 20000) {
@@ -28,7 +28,7 @@ double integrate_log(const std::function<double(double)>& f, double a, double b,
 
 // ∫∫ Ψ dkx dkz over the annulus k in [ka, kb]: Simpson in ln k (k dk = k² du), trapezoid in θ (periodic).
 double integrate_polar(const DirectionalSpectrum& psi, double ka, double kb, int nk = 1000, int nt = 720) {
-  const double dt = 2.0 * kPi / nt;
+  const double dt = 2.0 * std::numbers::pi / nt;
   return integrate_log(
       [&](double k) {
         double ring = 0.0;
@@ -49,11 +49,11 @@ TEST(OceanSpectrum, PiersonMoskowitzVarianceMatchesClosedForm) {
   // ∫ α g² ω⁻⁵ exp(-5/4 (ω_p/ω)⁴) dω = α g² / (5 ω_p⁴) (substitute x = (ω_p/ω)⁴).
   for (double wind : {5.0, 10.0, 20.0}) {
     const SpectrumParams s = spectrum_of(SpectrumType::PiersonMoskowitz, wind);
-    const double wp = 2.0 * kPi * 0.13 * g / wind;  // seed formula 14: f_m = 0.13 g/U
+    const double wp = 2.0 * std::numbers::pi * 0.13 * kG / wind;  // seed formula 14: f_m = 0.13 g/U
     EXPECT_NEAR(peak_omega(s), wp, 1e-12);
     const double m0 =
         integrate_log([&](double w) { return frequency_spectrum(s, 1000.0, w); }, 0.1 * wp, 1e3 * wp);
-    const double closed = 0.0081 * g * g / (5.0 * std::pow(wp, 4.0));
+    const double closed = 0.0081 * kG * kG / (5.0 * std::pow(wp, 4.0));
     EXPECT_NEAR(m0, closed, 1e-6 * closed) << wind;
   }
 }
@@ -82,17 +82,17 @@ TEST(OceanSpectrum, PeaksSitAtPeakOmega) {
     EXPECT_NEAR(arg / peak_omega(s), 1.0, 1e-4) << to_string(type);
   }
   // Phillips' undamped maximum of ω⁻⁵ exp(-(g/(Uω))⁴) is at (4/5)^(1/4) g/U.
-  EXPECT_NEAR(peak_omega(spectrum_of(SpectrumType::Phillips)), std::pow(0.8, 0.25) * g / 10.0, 1e-12);
+  EXPECT_NEAR(peak_omega(spectrum_of(SpectrumType::Phillips)), std::pow(0.8, 0.25) * kG / 10.0, 1e-12);
 }
 
 TEST(OceanSpectrum, JonswapFetchRelationsAndPeakEnhancement) {
   SpectrumParams s = spectrum_of(SpectrumType::Jonswap);
   s.fetch_km = 100.0;
-  const double x = g * 100e3 / 100.0;  // dimensionless fetch gF/U²
-  const double alpha = 0.076 * std::pow(x, -0.22), wp = 22.0 * g / 10.0 * std::pow(x, -1.0 / 3.0);
+  const double x = kG * 100e3 / 100.0;  // dimensionless fetch gF/U²
+  const double alpha = 0.076 * std::pow(x, -0.22), wp = 22.0 * kG / 10.0 * std::pow(x, -1.0 / 3.0);
   EXPECT_NEAR(peak_omega(s), wp, 1e-12);
   const auto pm_shape = [&](double w) {
-    return alpha * g * g * std::pow(w, -5.0) * std::exp(-1.25 * std::pow(wp / w, 4));
+    return alpha * kG * kG * std::pow(w, -5.0) * std::exp(-1.25 * std::pow(wp / w, 4));
   };
   // At the peak r = 1: S_J = γ S_PM-shape.
   EXPECT_NEAR(frequency_spectrum(s, 1000.0, wp) / pm_shape(wp), 3.3, 1e-9);
@@ -111,7 +111,7 @@ TEST(OceanSpectrum, JonswapAtFullDevelopmentMeetsPiersonMoskowitz) {
   // Independent consistency of the two empirical fits: at the fetch where JONSWAP's peak reaches PM's,
   // JONSWAP's α is PM's 0.0081 to within 10 %.
   const double wind = 10.0, wp_pm = pierson_moskowitz_peak_omega(wind);
-  const double fetch = std::pow(22.0 / wp_pm, 3.0) * g * g / wind;  // solves 22 (g²/(UF))^(1/3) = ω_p
+  const double fetch = std::pow(22.0 / wp_pm, 3.0) * kG * kG / wind;  // solves 22 (g²/(UF))^(1/3) = ω_p
   EXPECT_NEAR(jonswap_peak_omega(wind, fetch), wp_pm, 1e-9);
   EXPECT_NEAR(jonswap_alpha(wind, fetch), 0.0081, 0.0008);
 }
@@ -126,14 +126,14 @@ TEST(OceanSpectrum, KitaigorodskiiBranchesAndTma) {
   // the piecewise fit is within a few % of it. k(ω) solved here by bisection on ω² = g k tanh(k h).
   const double h = 10.0;
   for (double wh : {0.3, 0.8, 1.2, 1.7, 2.5}) {
-    const double w = wh * std::sqrt(g / h);
+    const double w = wh * std::sqrt(kG / h);
     double lo = 0.0, hi = 100.0;
     for (int i = 0; i < 200; ++i) {
       const double mid = 0.5 * (lo + hi);
-      (g * mid * std::tanh(mid * h) < w * w ? lo : hi) = mid;
+      (kG * mid * std::tanh(mid * h) < w * w ? lo : hi) = mid;
     }
     const double k = lo, dwdk = domega_dk(DispersionModel{h, false, 0.0}, k);
-    const double k_deep = w * w / g, dwdk_deep = 0.5 * g / w;
+    const double k_deep = w * w / kG, dwdk_deep = 0.5 * kG / w;
     const double exact = (std::pow(k, -3.0) / dwdk) / (std::pow(k_deep, -3.0) / dwdk_deep);
     EXPECT_NEAR(kitaigorodskii(wh), exact, 0.05 * exact + 0.005) << wh;
   }
@@ -143,7 +143,7 @@ TEST(OceanSpectrum, KitaigorodskiiBranchesAndTma) {
     EXPECT_DOUBLE_EQ(frequency_spectrum(tma, 1000.0, w), frequency_spectrum(jonswap, 1000.0, w));
     // 3 m of water: scaled by Φ.
     EXPECT_NEAR(frequency_spectrum(tma, 3.0, w),
-                frequency_spectrum(jonswap, 3.0, w) * kitaigorodskii(w * std::sqrt(3.0 / g)), 1e-15);
+                frequency_spectrum(jonswap, 3.0, w) * kitaigorodskii(w * std::sqrt(3.0 / kG)), 1e-15);
   }
   EXPECT_LT(frequency_spectrum(tma, 3.0, 0.8), 0.3 * frequency_spectrum(jonswap, 3.0, 0.8));
 }
@@ -154,7 +154,7 @@ TEST(OceanSpectrum, PhillipsIsTessendorfsSpectrumInWavenumbers) {
   p.depth_m = 1e4;
   p.spectrum = spectrum_of(SpectrumType::Phillips, 12.0);
   p.spectrum.small_wave_cutoff_m = 0.5;
-  const double big_l = 144.0 / g;
+  const double big_l = 144.0 / kG;
   for (double k : {0.01, 0.07, 0.3, 1.0}) {
     const double expected =
         0.0081 / (2.0 * k * k * k) * std::exp(-1.0 / (k * big_l * k * big_l)) * std::exp(-k * k * 0.25);
@@ -189,8 +189,9 @@ TEST(OceanSpectrum, DirectionalIntegralEqualsFrequencyIntegral) {
     // The omnidirectional spectrum is the ring integral of Ψ.
     const double k = 0.15;
     double ring = 0.0;
-    for (int j = 0; j < 1440; ++j) ring += psi(k * std::cos(j * kPi / 720), k * std::sin(j * kPi / 720));
-    ring *= k * kPi / 720;
+    for (int j = 0; j < 1440; ++j)
+      ring += psi(k * std::cos(j * std::numbers::pi / 720), k * std::sin(j * std::numbers::pi / 720));
+    ring *= k * std::numbers::pi / 720;
     EXPECT_NEAR(psi.omnidirectional(k), ring, 1e-3 * ring);
   }
 }
@@ -201,10 +202,10 @@ TEST(OceanSpectrum, DirectionalIntegralEqualsFrequencyIntegral) {
 // form, its peak and its dispersion.
 TEST(OceanSpectrum, JonswapEq15IntegratesToTheHsOfItsFormula) {
   for (double wind : {6.0, 12.0}) {
-    const double fm = 0.13 * g / wind;
+    const double fm = 0.13 * kG / wind;
     const auto eq15 = [fm](double f) {
-      const double pm =
-          0.0081 * g * g / (16 * std::pow(kPi, 4) * std::pow(f, 5)) * std::exp(-1.25 * std::pow(fm / f, 4));
+      const double pm = 0.0081 * kG * kG / (16 * std::pow(std::numbers::pi, 4) * std::pow(f, 5)) *
+                        std::exp(-1.25 * std::pow(fm / f, 4));
       const double sigma = f <= fm ? 0.07 : 0.09;
       return pm * std::exp(std::log(3.3) * std::exp(-(f - fm) * (f - fm) / (2 * sigma * sigma * fm * fm)));
     };
@@ -212,15 +213,15 @@ TEST(OceanSpectrum, JonswapEq15IntegratesToTheHsOfItsFormula) {
     OceanParams p;
     p.spectrum = spectrum_of(SpectrumType::JonswapEq15, wind);
     const DirectionalSpectrum psi(p);
-    const double kp = std::pow(2 * kPi * fm, 2) / g;
+    const double kp = std::pow(2 * std::numbers::pi * fm, 2) / kG;
     const double hs_plane = 4 * std::sqrt(integrate_polar(psi, 0.05 * kp, 4e4 * kp));
     RecordProperty("hs_formula_m_" + std::to_string(int(wind)), std::to_string(hs_formula));
     RecordProperty("hs_plane_m_" + std::to_string(int(wind)), std::to_string(hs_plane));
     EXPECT_NEAR(hs_plane, hs_formula, 0.03 * hs_formula) << "U = " << wind;
     // And it is JONSWAP's shape on PM's peak: more energy than PM (γ = 3.3 at the peak), the same peak.
     EXPECT_NEAR(peak_omega(p.spectrum), pierson_moskowitz_peak_omega(wind), 1e-12);
-    EXPECT_NEAR(frequency_spectrum(p.spectrum, 1000, 2 * kPi * fm),
-                3.3 * pierson_moskowitz(2 * kPi * fm, 0.0081, 2 * kPi * fm), 1e-9);
+    EXPECT_NEAR(frequency_spectrum(p.spectrum, 1000, 2 * std::numbers::pi * fm),
+                3.3 * pierson_moskowitz(2 * std::numbers::pi * fm, 0.0081, 2 * std::numbers::pi * fm), 1e-9);
   }
 }
 
@@ -230,13 +231,13 @@ TEST(OceanSpectrum, PhillipsEq18IntegratesToTheHsOfItsFormula) {
   struct Case {
     double wind, p, c_p;
   };
-  for (const Case c : {Case{8.0, 2.0, kPi}, Case{15.0, 4.0, 0.75 * kPi}}) {
+  for (const Case c : {Case{8.0, 2.0, std::numbers::pi}, Case{15.0, 4.0, 0.75 * std::numbers::pi}}) {
     OceanParams params;
     params.spectrum = spectrum_of(SpectrumType::PhillipsEq18, c.wind);
     params.spectrum.directional_exponent = c.p;
     params.spectrum.amplitude = 0.002;
     EXPECT_NEAR(cos_power_integral(c.p), c.c_p, 1e-12);
-    const double big_l = c.wind * c.wind / g;
+    const double big_l = c.wind * c.wind / kG;
     const double hs_formula = 4 * std::sqrt(0.002 * c.c_p * big_l * big_l / 2);
     const DirectionalSpectrum psi(params);
     const double hs_plane = 4 * std::sqrt(integrate_polar(psi, 0.02 / big_l, 1e4 / big_l));

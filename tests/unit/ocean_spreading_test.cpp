@@ -9,14 +9,13 @@
 namespace lagoon::ocean {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 // Composite Simpson over θ in [-π, π] with n intervals (fine enough for Donelan-Banner lobes 1e-3 rad wide).
 template <typename F>
 double integrate_theta(F&& f, int n = 1 << 16) {
-  const double h = 2.0 * kPi / n;
+  const double h = 2.0 * std::numbers::pi / n;
   double sum = 0.0;
-  for (int i = 0; i <= n; ++i) sum += ((i == 0 || i == n) ? 1.0 : (i % 2 ? 4.0 : 2.0)) * f(-kPi + i * h);
+  for (int i = 0; i <= n; ++i)
+    sum += ((i == 0 || i == n) ? 1.0 : (i % 2 ? 4.0 : 2.0)) * f(-std::numbers::pi + i * h);
   return sum * h / 3.0;
 }
 
@@ -41,11 +40,11 @@ TEST(OceanSpreading, EveryModelIntegratesToOne) {
 }
 
 TEST(OceanSpreading, Cos2sNormalisationClosedForms) {
-  EXPECT_NEAR(cos2s_normalisation(0.0), 1.0 / (2.0 * kPi), 1e-14);  // isotropic
-  EXPECT_NEAR(cos2s_normalisation(1.0), 1.0 / kPi, 1e-14);          // ∫ cos²(θ/2) dθ = π
-  EXPECT_NEAR(cos2s_normalisation(2.0), 4.0 / (3.0 * kPi), 1e-14);  // ∫ cos⁴(θ/2) dθ = 3π/4
+  EXPECT_NEAR(cos2s_normalisation(0.0), 1.0 / (2.0 * std::numbers::pi), 1e-14);  // isotropic
+  EXPECT_NEAR(cos2s_normalisation(1.0), 1.0 / std::numbers::pi, 1e-14);          // ∫ cos²(θ/2) dθ = π
+  EXPECT_NEAR(cos2s_normalisation(2.0), 4.0 / (3.0 * std::numbers::pi), 1e-14);  // ∫ cos⁴(θ/2) dθ = 3π/4
   // Laplace: cos^(2s)(θ/2) ≈ exp(-sθ²/4) for large s, so Q ≈ sqrt(s/(4π)) (1 + O(1/s)).
-  EXPECT_NEAR(cos2s_normalisation(2000.0) / std::sqrt(2000.0 / (4.0 * kPi)), 1.0, 2e-4);
+  EXPECT_NEAR(cos2s_normalisation(2000.0) / std::sqrt(2000.0 / (4.0 * std::numbers::pi)), 1.0, 2e-4);
   EXPECT_TRUE(std::isfinite(cos2s_normalisation(1e6)));
 }
 
@@ -55,7 +54,7 @@ TEST(OceanSpreading, SymmetricAboutTheWind) {
     for (double w : {0.5, 0.9, 2.0})
       for (double t : {0.1, 0.7, 1.5, 2.5, 3.1}) EXPECT_DOUBLE_EQ(spreading(m, w, t), spreading(m, w, -t));
     // θ wraps: 2π + θ is θ.
-    EXPECT_NEAR(spreading(m, 0.9, 0.3 + 2.0 * kPi), spreading(m, 0.9, 0.3), 1e-12);
+    EXPECT_NEAR(spreading(m, 0.9, 0.3 + 2.0 * std::numbers::pi), spreading(m, 0.9, 0.3), 1e-12);
   }
 }
 
@@ -93,9 +92,9 @@ TEST(OceanSpreading, SwellIncreasesDirectionality) {
 
 TEST(OceanSpreading, Cos2HasNoWavesAgainstTheWind) {
   const SpreadingModel m = model_of(Spreading::Cos2, 0.0);
-  EXPECT_NEAR(spreading(m, 1.0, 0.0), 2.0 / kPi, 1e-14);
-  EXPECT_EQ(spreading(m, 1.0, 0.5 * kPi + 1e-3), 0.0);
-  EXPECT_EQ(spreading(m, 1.0, kPi), 0.0);
+  EXPECT_NEAR(spreading(m, 1.0, 0.0), 2.0 / std::numbers::pi, 1e-14);
+  EXPECT_EQ(spreading(m, 1.0, 0.5 * std::numbers::pi + 1e-3), 0.0);
+  EXPECT_EQ(spreading(m, 1.0, std::numbers::pi), 0.0);
   EXPECT_EQ(spreading(model_of(Spreading::Cos2, 1.0), 1.0, -2.0), 0.0);
 }
 
@@ -105,7 +104,7 @@ TEST(OceanSpreading, MitsuyasuExponent) {
   s.type = SpectrumType::PiersonMoskowitz;
   s.spreading = Spreading::Cos2s;
   const SpreadingModel m = spreading_for(s);
-  EXPECT_NEAR(m.s_peak, 11.5 * std::pow(2.0 * kPi * 0.13, -2.5), 1e-9);
+  EXPECT_NEAR(m.s_peak, 11.5 * std::pow(2.0 * std::numbers::pi * 0.13, -2.5), 1e-9);
   EXPECT_NEAR(m.s_peak, 19.1, 0.05);
   EXPECT_NEAR(cos2s_exponent(m, m.peak_omega), m.s_peak, 1e-12);
   EXPECT_NEAR(cos2s_exponent(m, 0.5 * m.peak_omega), m.s_peak / 32.0, 1e-9);
@@ -129,7 +128,7 @@ TEST(OceanSpreading, DonelanBannerBeta) {
 
 TEST(OceanSpreading, NonPositiveOmegaIsIsotropic) {
   for (Spreading type : {Spreading::Cos2, Spreading::Cos2s, Spreading::DonelanBanner})
-    EXPECT_NEAR(spreading(model_of(type, 0.5), 0.0, 1.0), 1.0 / (2.0 * kPi), 1e-15);
+    EXPECT_NEAR(spreading(model_of(type, 0.5), 0.0, 1.0), 1.0 / (2.0 * std::numbers::pi), 1e-15);
 }
 
 }  // namespace

@@ -12,10 +12,6 @@
 namespace lagoon::optics {
 namespace {
 
-constexpr int index_of(int nm) {
-  return (nm - kLambdaMinNm) / kLambdaStepNm;
-}
-
 glm::dvec3 d65_xyz_unit_y() {
   const glm::dvec3 xyz = spectrum_to_xyz(cie_d65());
   return xyz / xyz.y;
@@ -155,7 +151,7 @@ TEST(OpticsSky, ExtraterrestrialBinsPreserveTheIntegral) {
   double binned = 0.0;  // the end bins are half width
   for (int i = 0; i < kSamples; ++i) binned += h0[i] * (i == 0 || i == kSamples - 1 ? 2.5 : 5.0);
   EXPECT_NEAR(binned, raw, 1e-9 * raw);
-  EXPECT_NEAR(h0[index_of(500)], 1.9, 0.2);  // ~1.9 W m⁻² nm⁻¹ in the green
+  EXPECT_NEAR(h0[sample_index(500)], 1.9, 0.2);  // ~1.9 W m⁻² nm⁻¹ in the green
 }
 
 TEST(OpticsSky, NoSunBelowTheHorizon) {
@@ -196,7 +192,7 @@ TEST(OpticsSky, GlobalIrradianceAt60DegreesIsPlausible) {
 TEST(OpticsSky, TheSkyIsBlue) {
   const SkyIrradiance s = clear_sky(60.0);
   const auto share = [&](int nm) {
-    return s.sky[index_of(nm)] / (s.sun[index_of(nm)] + s.sky[index_of(nm)]);
+    return s.sky[sample_index(nm)] / (s.sun[sample_index(nm)] + s.sky[sample_index(nm)]);
   };
   EXPECT_GT(share(450), 1.5 * share(650));
   const glm::dvec2 sky_xy = chromaticity(spectrum_to_xyz(s.sky));
@@ -215,10 +211,11 @@ TEST(OpticsSky, ParametersActInTheRightDirection) {
   EXPECT_LT(hazy, clean);
   const SkyIrradiance more_ozone = clear_sky(40.0, {.ozone_cm = 0.5});
   const SkyIrradiance base = clear_sky(40.0);
-  EXPECT_LT(more_ozone.sun[index_of(600)], base.sun[index_of(600)]);
-  EXPECT_DOUBLE_EQ(more_ozone.sun[index_of(400)], base.sun[index_of(400)]);  // no Chappuis absorption
+  EXPECT_LT(more_ozone.sun[sample_index(600)], base.sun[sample_index(600)]);
+  EXPECT_DOUBLE_EQ(more_ozone.sun[sample_index(400)], base.sun[sample_index(400)]);  // no Chappuis absorption
   const SkyIrradiance high = clear_sky(40.0, {.surface_pressure_hpa = 700.0});
-  EXPECT_LT(high.sky[index_of(400)], base.sky[index_of(400)]);  // less Rayleigh scattering at altitude
+  EXPECT_LT(high.sky[sample_index(400)],
+            base.sky[sample_index(400)]);  // less Rayleigh scattering at altitude
 }
 
 }  // namespace

@@ -14,10 +14,6 @@
 namespace lagoon::optics {
 namespace {
 
-constexpr int index_of(int nm) {
-  return (nm - kLambdaMinNm) / kLambdaStepNm;
-}
-
 bool contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
 }
@@ -98,9 +94,9 @@ TEST(OpticsCie, D65ChromaticityThroughTheCmfs) {
   const glm::dvec2 xy = chromaticity(spectrum_to_xyz(cie_d65()));
   EXPECT_NEAR(xy.x, 0.3127, 2e-4);
   EXPECT_NEAR(xy.y, 0.3290, 2e-4);
-  EXPECT_DOUBLE_EQ(cie_y_bar()[index_of(555)], 1.0);
-  EXPECT_DOUBLE_EQ(cie_x_bar()[index_of(600)], 1.0622);
-  EXPECT_DOUBLE_EQ(cie_d65()[index_of(560)], 100.0);
+  EXPECT_DOUBLE_EQ(cie_y_bar()[sample_index(555)], 1.0);
+  EXPECT_DOUBLE_EQ(cie_x_bar()[sample_index(600)], 1.0622);
+  EXPECT_DOUBLE_EQ(cie_d65()[sample_index(560)], 100.0);
   EXPECT_EQ(chromaticity(glm::dvec3(0.0)), glm::dvec2(0.0));
 }
 
@@ -120,27 +116,27 @@ TEST(OpticsWater, JerlovSpotValuesMatchTheTables) {
   auto one = water_type("jerlov-I");
   ASSERT_TRUE(one.ok()) << one.error().message;
   EXPECT_EQ(one->name, "jerlov-I");
-  EXPECT_DOUBLE_EQ(one->absorption_per_m[index_of(400)], 0.022);   // jerlov_sm2015_a.csv, 400 nm
-  EXPECT_DOUBLE_EQ(one->scattering_per_m[index_of(400)], 0.0062);  // jerlov_sm2015_b.csv, 400 nm
+  EXPECT_DOUBLE_EQ(one->absorption_per_m[sample_index(400)], 0.022);   // jerlov_sm2015_a.csv, 400 nm
+  EXPECT_DOUBLE_EQ(one->scattering_per_m[sample_index(400)], 0.0062);  // jerlov_sm2015_b.csv, 400 nm
   // 380 nm lies between the 375 and 400 nm rows: linear interpolation.
-  EXPECT_NEAR(one->absorption_per_m[index_of(380)], 0.03 + (0.022 - 0.03) * 5.0 / 25.0, 1e-12);
-  EXPECT_NEAR(one->absorption_per_m[index_of(410)], 0.022 + (0.017 - 0.022) * 10.0 / 25.0, 1e-12);
+  EXPECT_NEAR(one->absorption_per_m[sample_index(380)], 0.03 + (0.022 - 0.03) * 5.0 / 25.0, 1e-12);
+  EXPECT_NEAR(one->absorption_per_m[sample_index(410)], 0.022 + (0.017 - 0.022) * 10.0 / 25.0, 1e-12);
 
   auto three_c = water_type("jerlov-3C");
   ASSERT_TRUE(three_c.ok());
-  EXPECT_DOUBLE_EQ(three_c->absorption_per_m[index_of(700)], 0.592);  // Williamson & Hollins gap fill
-  EXPECT_DOUBLE_EQ(three_c->scattering_per_m[index_of(675)], 0.745);
+  EXPECT_DOUBLE_EQ(three_c->absorption_per_m[sample_index(700)], 0.592);  // Williamson & Hollins gap fill
+  EXPECT_DOUBLE_EQ(three_c->scattering_per_m[sample_index(675)], 0.745);
   auto five_c = water_type("jerlov-5C");
   ASSERT_TRUE(five_c.ok());
-  EXPECT_DOUBLE_EQ(five_c->scattering_per_m[index_of(600)], 1.147);
-  EXPECT_DOUBLE_EQ(five_c->absorption_per_m[index_of(650)], 0.367);
-  EXPECT_DOUBLE_EQ(five_c->absorption_per_m[index_of(575)], 0.119);  // a published cell, not a fill
+  EXPECT_DOUBLE_EQ(five_c->scattering_per_m[sample_index(600)], 1.147);
+  EXPECT_DOUBLE_EQ(five_c->absorption_per_m[sample_index(650)], 0.367);
+  EXPECT_DOUBLE_EQ(five_c->absorption_per_m[sample_index(575)], 0.119);  // a published cell, not a fill
 }
 
 TEST(OpticsWater, EveryTypeIsPositiveAndFiniteOnTheGrid) {
   ASSERT_EQ(water_type_names().size(), 10u);
   const Spectrum& a_w = pure_water_absorption();
-  EXPECT_DOUBLE_EQ(a_w[index_of(750)], 2.8484);  // Kou et al. (1993) via the pure-water table
+  EXPECT_DOUBLE_EQ(a_w[sample_index(750)], 2.8484);  // Kou et al. (1993) via the pure-water table
   for (const std::string& name : water_type_names()) {
     auto w = water_type(name);
     ASSERT_TRUE(w.ok()) << w.error().message;
@@ -150,8 +146,8 @@ TEST(OpticsWater, EveryTypeIsPositiveAndFiniteOnTheGrid) {
       EXPECT_TRUE(std::isfinite(w->scattering_per_m[i]) && w->scattering_per_m[i] > 0.0) << name << " " << i;
     }
     for (int nm = 705; nm <= kLambdaMaxNm; nm += 5) {
-      EXPECT_GE(w->absorption_per_m[index_of(nm)], a_w[index_of(nm)]) << name << " " << nm;
-      EXPECT_GE(w->scattering_per_m[index_of(nm)], pure_seawater_scattering()[index_of(nm)])
+      EXPECT_GE(w->absorption_per_m[sample_index(nm)], a_w[sample_index(nm)]) << name << " " << nm;
+      EXPECT_GE(w->scattering_per_m[sample_index(nm)], pure_seawater_scattering()[sample_index(nm)])
           << name << " " << nm;
     }
   }
@@ -163,23 +159,23 @@ TEST(OpticsWater, ExtensionBeyond700nm) {
   auto nine_c = water_type("jerlov-9C");
   ASSERT_TRUE(nine_c.ok());
   // a(700) = 0.651 > a_w(700) = 0.624: the non-water part decays with the CDOM slope 0.014 nm⁻¹.
-  EXPECT_NEAR(nine_c->absorption_per_m[index_of(750)], a_w[index_of(750)] + (0.651 - 0.624) * std::exp(-0.7),
-              1e-12);
-  EXPECT_NEAR(nine_c->scattering_per_m[index_of(780)],
-              b_sw[index_of(780)] + (2.07 - b_sw[index_of(700)]) * 700.0 / 780.0, 1e-12);
+  EXPECT_NEAR(nine_c->absorption_per_m[sample_index(750)],
+              a_w[sample_index(750)] + (0.651 - 0.624) * std::exp(-0.7), 1e-12);
+  EXPECT_NEAR(nine_c->scattering_per_m[sample_index(780)],
+              b_sw[sample_index(780)] + (2.07 - b_sw[sample_index(700)]) * 700.0 / 780.0, 1e-12);
   // Type I: a(700) = 0.582 is below a_w(700), so beyond 700 nm it is pure water.
   auto one = water_type("jerlov-I");
   ASSERT_TRUE(one.ok());
-  EXPECT_DOUBLE_EQ(one->absorption_per_m[index_of(705)], a_w[index_of(705)]);
-  EXPECT_DOUBLE_EQ(one->scattering_per_m[index_of(705)], b_sw[index_of(705)]);
+  EXPECT_DOUBLE_EQ(one->absorption_per_m[sample_index(705)], a_w[sample_index(705)]);
+  EXPECT_DOUBLE_EQ(one->scattering_per_m[sample_index(705)], b_sw[sample_index(705)]);
 }
 
 TEST(OpticsWater, TurbidWaterAbsorbsMoreInTheBlue) {
   auto one = water_type("jerlov-I");
   auto nine_c = water_type("jerlov-9C");
   ASSERT_TRUE(one.ok() && nine_c.ok());
-  EXPECT_GT(nine_c->absorption_per_m[index_of(450)], 10.0 * one->absorption_per_m[index_of(450)]);
-  EXPECT_GT(nine_c->scattering_per_m[index_of(450)], one->scattering_per_m[index_of(450)]);
+  EXPECT_GT(nine_c->absorption_per_m[sample_index(450)], 10.0 * one->absorption_per_m[sample_index(450)]);
+  EXPECT_GT(nine_c->scattering_per_m[sample_index(450)], one->scattering_per_m[sample_index(450)]);
 }
 
 TEST(OpticsWater, UnknownTypeListsNamesAndSuggests) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "optics/cie.h"
 #include "optics/sky_radiance.h"
@@ -10,10 +11,8 @@
 namespace lagoon::optics {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 glm::dvec3 towards(double zenith_deg, double azimuth_deg) {
-  const double t = zenith_deg * kPi / 180, p = azimuth_deg * kPi / 180;
+  const double t = zenith_deg * std::numbers::pi / 180, p = azimuth_deg * std::numbers::pi / 180;
   return {std::sin(t) * std::cos(p), std::cos(t), std::sin(t) * std::sin(p)};
 }
 

@@ -12,7 +12,6 @@ namespace lagoon::optics {
 namespace {
 
 constexpr double kWater = 1.333;
-constexpr double kPi = std::numbers::pi;
 
 // ∫0^1 R(μ) 2μ dμ by composite Simpson. From the dense side R = 1 up to the critical cosine μc and then falls
 // like sqrt(μ − μc): integrate [μc, 1] in t with μ = μc + (1 − μc) t², which makes the integrand smooth.
@@ -62,7 +61,7 @@ TEST(SurfaceFresnel, HemisphericalMatchesBruteForce) {
 
 TEST(SurfaceCoefficientsTest, RangesAndEnergySums) {
   for (double zenith_deg = 0; zenith_deg <= 100; zenith_deg += 2.5) {
-    const SurfaceCoefficients c = surface_coefficients(kWater, zenith_deg * kPi / 180);
+    const SurfaceCoefficients c = surface_coefficients(kWater, zenith_deg * std::numbers::pi / 180);
     for (double v : {c.t_dd, c.r_dd, c.t_df, c.r_df, c.t_ff, c.r_ff, c.rw_dd, c.rw_df, c.rw_ff, c.tw_ff}) {
       EXPECT_GE(v, 0.0) << zenith_deg;
       EXPECT_LE(v, 1.0) << zenith_deg;
@@ -77,7 +76,7 @@ TEST(SurfaceCoefficientsTest, RangesAndEnergySums) {
     // r_dd (evaluated from below it is ill-conditioned near the critical angle, i.e. for a low sun).
     EXPECT_EQ(c.rw_dd, c.r_dd);
     if (zenith_deg < 89) {
-      const double mu_t = refracted_cos(1.0, kWater, std::cos(zenith_deg * kPi / 180));
+      const double mu_t = refracted_cos(1.0, kWater, std::cos(zenith_deg * std::numbers::pi / 180));
       EXPECT_NEAR(c.rw_dd, fresnel_reflectance(kWater, 1.0, mu_t), 1e-9) << zenith_deg;
     }
   }
@@ -94,14 +93,15 @@ TEST(SurfaceCoefficientsTest, ValuesForWater) {
 }
 
 TEST(SurfaceCoefficientsTest, SunAtAndBelowHorizon) {
-  EXPECT_NEAR(surface_coefficients(kWater, kPi / 2).t_dd, 0.0, 1e-12);
-  EXPECT_LT(surface_coefficients(kWater, kPi / 2 - 1e-3).t_dd, 0.01);  // t_dd ∝ cos θ near grazing
+  EXPECT_NEAR(surface_coefficients(kWater, std::numbers::pi / 2).t_dd, 0.0, 1e-12);
+  EXPECT_LT(surface_coefficients(kWater, std::numbers::pi / 2 - 1e-3).t_dd,
+            0.01);  // t_dd ∝ cos θ near grazing
   const SurfaceCoefficients below = surface_coefficients(kWater, 1.7);
   EXPECT_EQ(below.t_dd, 0.0);
   EXPECT_EQ(below.r_dd, 1.0);
   // t_dd falls monotonically with the zenith angle.
   double previous = 2.0;
-  for (double z = 0; z < kPi / 2; z += 0.01) {
+  for (double z = 0; z < std::numbers::pi / 2; z += 0.01) {
     const double t = surface_coefficients(kWater, z).t_dd;
     EXPECT_LE(t, previous);
     previous = t;

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <random>
 
 #include "render/dfg_table.h"
@@ -18,12 +19,11 @@ namespace {
 
 using glm::dvec3;
 using glm::vec3;
-constexpr double kPi = 3.14159265358979323846;
 
 // ---- The independent reference (double) ----
 double d_ref(double cos_h, double alpha) {
   const double c2 = cos_h * cos_h, t2 = (1 - c2) / c2, a2 = alpha * alpha;
-  return a2 / (kPi * c2 * c2 * (a2 + t2) * (a2 + t2));  // Walter et al. 2007, eq. 33
+  return a2 / (std::numbers::pi * c2 * c2 * (a2 + t2) * (a2 + t2));  // Walter et al. 2007, eq. 33
 }
 double lambda_ref(double cos_t, double alpha) {  // Smith Λ of GGX (Heitz 2014, eq. 72)
   const double t2 = (1 - cos_t * cos_t) / (cos_t * cos_t);
@@ -44,8 +44,8 @@ dvec3 brdf_cos_ref(dvec3 n, dvec3 v, dvec3 l, dvec3 base, double metallic, doubl
   const double ems = 1 - ab.x - ab.y;
   const dvec3 f_avg = f0 + (1.0 - f0) / 21.0;
   const dvec3 fms_ems = fss_ess * f_avg * ems / (1.0 - ems * f_avg);
-  const dvec3 diffuse = (1 - metallic) * base * (1.0 - fss_ess - fms_ems) / kPi;
-  return (spec + diffuse + fms_ems / kPi) * nl;
+  const dvec3 diffuse = (1 - metallic) * base * (1.0 - fss_ess - fms_ems) / std::numbers::pi;
+  return (spec + diffuse + fms_ems / std::numbers::pi) * nl;
 }
 
 glm::vec2 ab_at(vec3 n, vec3 v, float roughness) {
@@ -60,7 +60,7 @@ vec3 in_plane(double theta) {  // a direction at polar angle theta from +y, in t
 template <typename F>
 dvec3 hemisphere(F g, int n_theta = 256, int n_phi = 512) {
   dvec3 sum(0);
-  const double dt = 0.5 * kPi / n_theta, dp = 2 * kPi / n_phi;
+  const double dt = 0.5 * std::numbers::pi / n_theta, dp = 2 * std::numbers::pi / n_phi;
   for (int i = 0; i < n_theta; ++i) {
     const double t = (i + 0.5) * dt;
     for (int j = 0; j < n_phi; ++j) {

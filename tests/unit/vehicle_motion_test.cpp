@@ -11,15 +11,10 @@
 #include "physics/vehicle_motion.h"
 #include "physics/waypoint_path.h"
 #include "support/box_mesh.h"
+#include "support/reference_math.h"
 
 namespace lagoon::test {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
-
-double wrap(double a) {
-  return a - 2 * kPi * std::round(a / (2 * kPi));
-}
 
 // The angle of the rotation between two orientations.
 double angle_between(const glm::dquat& a, const glm::dquat& b) {
@@ -57,7 +52,7 @@ TEST(WaypointPath, ClosedLoopPassesEveryWaypointAtConstantSpeedWithASmoothHeadin
   // A curve through the corners of a 40 m square is longer than the square's diagonal tour and shorter than
   // a circle around it.
   EXPECT_GT(path.length(), 150.0);
-  EXPECT_LT(path.length(), kPi * 40.0 * std::sqrt(2.0));
+  EXPECT_LT(path.length(), std::numbers::pi * 40.0 * std::sqrt(2.0));
   const double period = path.length() / speed;
   double nearest[4] = {1e9, 1e9, 1e9, 1e9};
   const glm::dvec2 corners[4] = {{0, 0}, {40, 0}, {40, 40}, {0, 40}};
@@ -69,11 +64,12 @@ TEST(WaypointPath, ClosedLoopPassesEveryWaypointAtConstantSpeedWithASmoothHeadin
     ASSERT_NEAR(glm::length(moved) / dt, speed, 0.01 * speed) << "t = " << t;
     // The heading is the direction of travel, and it turns without jumps (also where the loop closes).
     const double travel = std::atan2(moved.x, moved.y);
-    ASSERT_LT(std::abs(wrap(travel - last.heading - 0.5 * wrap(p.heading - last.heading))), 0.02)
+    ASSERT_LT(std::abs(wrap_angle(travel - last.heading - 0.5 * wrap_angle(p.heading - last.heading))), 0.02)
         << "t = " << t;
-    ASSERT_LT(std::abs(wrap(p.heading - last.heading)), 0.05) << "t = " << t;
+    ASSERT_LT(std::abs(wrap_angle(p.heading - last.heading)), 0.05) << "t = " << t;
     // The yaw rate is the heading's rate of change.
-    ASSERT_NEAR(0.5 * (p.yaw_rate + last.yaw_rate), wrap(p.heading - last.heading) / dt, 0.05) << "t = " << t;
+    ASSERT_NEAR(0.5 * (p.yaw_rate + last.yaw_rate), wrap_angle(p.heading - last.heading) / dt, 0.05)
+        << "t = " << t;
     last = p;
   }
   for (int c = 0; c < 4; ++c) EXPECT_LT(nearest[c], speed * dt) << "corner " << c;

@@ -2,6 +2,7 @@
 // speed and rate of turn, checked against a fine Runge-Kutta integration of dp/dt = v (sin h, cos h),
 // dh/dt = w; continuous at each order, and the same past after a replay from an earlier time.
 #include "physics/vehicle_track.h"
+#include "support/reference_math.h"
 
 #include <gtest/gtest.h>
 
@@ -12,12 +13,6 @@
 
 namespace lagoon::test {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
-
-double wrap(double a) {
-  return a - 2 * kPi * std::round(a / (2 * kPi));
-}
 
 physics::WaypointPath square_loop() {
   return physics::WaypointPath({{0, 0}, {40, 0}, {40, 40}, {0, 40}}, true, 4.0, 0.0);
@@ -53,12 +48,12 @@ TEST(VehicleTrack, OnItsPathUntilOrderedThenTheOrderedArcs) {
   s = integrate(s, 5.0, 0.3, 7.0);
   const physics::TrackPoint at12 = track.at(12.0);
   EXPECT_NEAR(glm::distance(at12.position, glm::dvec2(s.x, s.y)), 0.0, 1e-6);
-  EXPECT_NEAR(wrap(at12.heading - s.z), 0.0, 1e-9);
+  EXPECT_NEAR(wrap_angle(at12.heading - s.z), 0.0, 1e-9);
   s = integrate(s, 2.0, 0.0, 3.0);
   s = integrate(s, 3.0, -0.5, 6.5);
   const physics::TrackPoint at215 = track.at(21.5);
   EXPECT_NEAR(glm::distance(at215.position, glm::dvec2(s.x, s.y)), 0.0, 1e-6);
-  EXPECT_NEAR(wrap(at215.heading - s.z), 0.0, 1e-9);
+  EXPECT_NEAR(wrap_angle(at215.heading - s.z), 0.0, 1e-9);
   EXPECT_NEAR(glm::length(at215.velocity), 3.0, 1e-12);
   EXPECT_NEAR(at215.yaw_rate, -0.5, 1e-12);
   // Its velocity is the derivative of its position between orders, and it does not jump at them (its speed
@@ -90,12 +85,12 @@ TEST(VehicleTrack, AFullCircleComesBackToItsStart) {
   physics::VehicleTrack track(physics::WaypointPath({{3, 4}, {3, 50}}, false, 2.0, 0.0));
   track.order(1.0, {6.0, -0.4});
   const physics::TrackPoint start = track.at(1.0);
-  const physics::TrackPoint end = track.at(1.0 + 2 * kPi / 0.4);
+  const physics::TrackPoint end = track.at(1.0 + 2 * std::numbers::pi / 0.4);
   EXPECT_NEAR(glm::distance(start.position, end.position), 0.0, 1e-9);
-  EXPECT_NEAR(wrap(start.heading - end.heading), 0.0, 1e-9);
+  EXPECT_NEAR(wrap_angle(start.heading - end.heading), 0.0, 1e-9);
   // Half way round it is a diameter, 2 v / w, away; turning to starboard from heading +z (-0.4 rad/s) it
   // went towards -x.
-  const physics::TrackPoint half = track.at(1.0 + kPi / 0.4);
+  const physics::TrackPoint half = track.at(1.0 + std::numbers::pi / 0.4);
   EXPECT_NEAR(glm::distance(start.position, half.position), 2 * 6.0 / 0.4, 1e-9);
   EXPECT_LT(half.position.x, start.position.x - 29.0);
 }

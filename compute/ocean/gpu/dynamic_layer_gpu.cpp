@@ -12,9 +12,6 @@
 namespace lagoon::ocean {
 namespace {
 
-constexpr VkBufferUsageFlags kStorage =
-    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
-
 gpu::DynamicSource to_gpu(const WakeSource& s, double period) {
   // A whole period changes no phase of the grid's modes; within one, float phases stay accurate.
   const glm::dvec2 centre = s.centre - period * glm::floor(s.centre / period);
@@ -36,9 +33,12 @@ DynamicLayerGpu::DynamicLayerGpu(vk::Context& ctx, const DynamicLayerParams& par
       evolve_(vk::ComputePipeline::create(ctx, shaders::ocean_dynamic_evolve_comp)),
       sponge_(vk::ComputePipeline::create(ctx, shaders::ocean_dynamic_sponge_comp)) {
   const VkDeviceSize bytes = VkDeviceSize(params.n) * params.n * 2 * sizeof(float);
-  state_ = vk::Buffer::create(ctx, bytes, kStorage, vk::MemoryUsage::Device, "dynamic layer state");
-  scratch_ = vk::Buffer::create(ctx, bytes, kStorage, vk::MemoryUsage::Device, "dynamic layer scratch");
-  foam_ = vk::Buffer::create(ctx, bytes / 2, kStorage, vk::MemoryUsage::Device, "dynamic layer foam");
+  state_ = vk::Buffer::create(ctx, bytes, (vk::kStorageUsage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT),
+                              vk::MemoryUsage::Device, "dynamic layer state");
+  scratch_ = vk::Buffer::create(ctx, bytes, (vk::kStorageUsage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT),
+                                vk::MemoryUsage::Device, "dynamic layer scratch");
+  foam_ = vk::Buffer::create(ctx, bytes / 2, (vk::kStorageUsage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT),
+                             vk::MemoryUsage::Device, "dynamic layer foam");
   sources_ = vk::Buffer::create(ctx, sizeof(gpu::DynamicSource) * LAGOON_DYNAMIC_MAX_SOURCES * kStepsInFlight,
                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUsage::Upload,
                                 "dynamic layer sources");

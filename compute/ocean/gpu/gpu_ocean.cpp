@@ -35,8 +35,6 @@ struct GpuOcean::Group {
 
 namespace {
 
-constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
-
 // One cascade's layer of the spectrum buffers: `pairs` gets (h0(k), conj(h0(-k))) per texel, so the
 // evolution reads both halves of the Hermitian pair at once; `omegas` gets ω(k).
 void pack_spectrum(const CascadeSpectrum& s, uint32_t n, float* pairs, float* omegas) {
@@ -60,8 +58,10 @@ void GpuOcean::Group::upload_spectra(vk::Context& ctx, const std::vector<Cascade
   std::vector<float> pairs(texels * 4 * cascades.size()), omegas(texels * cascades.size());
   for (size_t layer = 0; layer < cascades.size(); ++layer)
     pack_spectrum(spectra[cascades[layer]], n, &pairs[layer * texels * 4], &omegas[layer * texels]);
-  spectrum = vk::Buffer::create(ctx, pairs.size() * 4, kStorage, vk::MemoryUsage::Device, "ocean h0");
-  omega = vk::Buffer::create(ctx, omegas.size() * 4, kStorage, vk::MemoryUsage::Device, "ocean omega");
+  spectrum =
+      vk::Buffer::create(ctx, pairs.size() * 4, vk::kStorageUsage, vk::MemoryUsage::Device, "ocean h0");
+  omega =
+      vk::Buffer::create(ctx, omegas.size() * 4, vk::kStorageUsage, vk::MemoryUsage::Device, "ocean omega");
   vk::upload_buffer(ctx, spectrum, vk::as_bytes_of(pairs));
   vk::upload_buffer(ctx, omega, vk::as_bytes_of(omegas));
 }

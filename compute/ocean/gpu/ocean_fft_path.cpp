@@ -15,8 +15,6 @@
 namespace lagoon::ocean {
 namespace {
 
-constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
-
 vk::ImageRef storage(const vk::Image& image) {
   return {image.mip_view(0), VK_IMAGE_LAYOUT_GENERAL};
 }
@@ -35,8 +33,8 @@ class StockhamPath : public OceanFftPath {
   StockhamPath(vk::Context& ctx, uint32_t n, uint32_t cascades)
       : n_(n), fft_(ctx, n, /*inverse=*/true, /*fields=*/4, fft::GpuFft2d::Ends::Fused) {
     const VkDeviceSize bytes = VkDeviceSize(n) * n * 8 * 4 * cascades;
-    ping_ = vk::Buffer::create(ctx, bytes, kStorage, vk::MemoryUsage::Device, "ocean fft ping");
-    pong_ = vk::Buffer::create(ctx, bytes, kStorage, vk::MemoryUsage::Device, "ocean fft pong");
+    ping_ = vk::Buffer::create(ctx, bytes, vk::kStorageUsage, vk::MemoryUsage::Device, "ocean fft ping");
+    pong_ = vk::Buffer::create(ctx, bytes, vk::kStorageUsage, vk::MemoryUsage::Device, "ocean fft pong");
     const auto first = fft_.pass(0), last = fft_.pass(fft_.pass_count() - 1);
     evolve_ =
         vk::ComputePipeline::create(ctx, shaders::ocean_evolve_fft_comp,
@@ -81,10 +79,10 @@ class WorkgroupPath : public OceanFftPath {
  public:
   WorkgroupPath(vk::Context& ctx, uint32_t n, uint32_t cascades) : n_(n), lines_(std::max(1u, 1024u / n)) {
     const VkDeviceSize bytes = VkDeviceSize(n) * n * 8 * 4 * cascades;
-    fields_ = vk::Buffer::create(ctx, bytes, kStorage, vk::MemoryUsage::Device, "ocean fields");
+    fields_ = vk::Buffer::create(ctx, bytes, vk::kStorageUsage, vk::MemoryUsage::Device, "ocean fields");
     const std::vector<float> table = fft::twiddle_table(n);
-    twiddles_ =
-        vk::Buffer::create(ctx, table.size() * 4, kStorage, vk::MemoryUsage::Device, "ocean twiddles");
+    twiddles_ = vk::Buffer::create(ctx, table.size() * 4, vk::kStorageUsage, vk::MemoryUsage::Device,
+                                   "ocean twiddles");
     vk::upload_buffer(ctx, twiddles_, vk::as_bytes_of(table));
     // As many lines per workgroup as fit 32 KiB of shared memory (4 fields x N complex floats each): every
     // workgroup is then 64 invocations.

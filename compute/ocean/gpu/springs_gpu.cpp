@@ -14,9 +14,6 @@
 namespace lagoon::ocean {
 namespace {
 
-constexpr VkBufferUsageFlags kStorage =
-    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
-
 // Why a time cannot be reached in one call, with the numbers and the fix.
 std::string springs_catch_up_message(const SpringsParams& p, double time_s, uint64_t steps) {
   char text[320];
@@ -37,15 +34,18 @@ SpringsGpu::SpringsGpu(vk::Context& ctx, const OceanParams& params)
       step_(vk::ComputePipeline::create(ctx, shaders::ocean_springs_step_comp)),
       assemble_(vk::ComputePipeline::create(ctx, shaders::ocean_springs_assemble_comp)) {
   const VkDeviceSize bytes = VkDeviceSize(n_) * n_ * 2 * sizeof(float);
-  state_[0] = vk::Buffer::create(ctx, bytes, kStorage, vk::MemoryUsage::Device, "springs state 0");
-  state_[1] = vk::Buffer::create(ctx, bytes, kStorage, vk::MemoryUsage::Device, "springs state 1");
+  state_[0] = vk::Buffer::create(ctx, bytes, (vk::kStorageUsage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT),
+                                 vk::MemoryUsage::Device, "springs state 0");
+  state_[1] = vk::Buffer::create(ctx, bytes, (vk::kStorageUsage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT),
+                                 vk::MemoryUsage::Device, "springs state 1");
   std::vector<gpu::SpringExcitation> excitations = springs_excitations(params);
   if (excitations.size() > LAGOON_SPRINGS_MAX_EXCITATIONS)
     vk::throw_usage_error("SpringsGpu: more than " + std::to_string(LAGOON_SPRINGS_MAX_EXCITATIONS) +
                           " drops and gusts");
   excitation_count_ = uint32_t(excitations.size());
   excitations.resize(std::max<size_t>(excitations.size(), 1));  // a buffer cannot be empty
-  excitations_ = vk::Buffer::create(ctx, excitations.size() * sizeof(gpu::SpringExcitation), kStorage,
+  excitations_ = vk::Buffer::create(ctx, excitations.size() * sizeof(gpu::SpringExcitation),
+                                    (vk::kStorageUsage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT),
                                     vk::MemoryUsage::Device, "springs excitations");
   vk::upload_buffer(ctx, excitations_, vk::as_bytes_of(excitations));
   ctx.submit_and_wait([&](VkCommandBuffer cmd) { record_clear(cmd); });
