@@ -55,7 +55,7 @@ void GpuFft2d::record_pass(VkCommandBuffer cmd, size_t index, const vk::Buffer& 
                            uint32_t batches) const {
   const Pass p = pass(index);
   const vk::ComputePipeline& pipeline = pipelines_.at(index);
-  if (pipeline.pipeline() == VK_NULL_HANDLE)
+  if (pipeline.empty())
     vk::throw_usage_error("GpuFft2d: pass " + std::to_string(index) +
                           " is fused by the caller (Ends::Fused)");
   if (batches % fields_ != 0)
@@ -75,7 +75,7 @@ void GpuFft2d::record_pass(VkCommandBuffer cmd, size_t index, const vk::Buffer& 
 
 size_t GpuFft2d::pipeline_count() const {
   return size_t(std::count_if(pipelines_.begin(), pipelines_.end(),
-                              [](const vk::ComputePipeline& p) { return p.pipeline() != VK_NULL_HANDLE; }));
+                              [](const vk::ComputePipeline& p) { return !p.empty(); }));
 }
 
 const vk::Buffer& GpuFft2d::record(VkCommandBuffer cmd, const vk::Buffer& a, const vk::Buffer& b,

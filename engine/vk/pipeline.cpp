@@ -308,28 +308,48 @@ void PipelineInterface::bind(VkCommandBuffer cmd, VkPipelineBindPoint point,
   if (push_size_ > 0) vkCmdPushConstants(cmd, layout_, push_stages_, 0, push_size_, push);
 }
 
+DeferredPipeline::DeferredPipeline(VkDevice device, std::function<VkPipeline()> make)
+    : state_(std::make_unique<State>()) {
+  state_->device = device;
+  state_->make = std::move(make);
+}
+
+VkPipeline DeferredPipeline::get() const {
+  std::lock_guard lock(state_->mutex);
+  if (state_->make) {
+    state_->pipeline = Unique<VkPipeline>(state_->device, state_->make());
+    state_->make = nullptr;  // frees what the recipe captured
+  }
+  return state_->pipeline;
+}
+
 ComputePipeline ComputePipeline::create(const Context& ctx, const ShaderCode& shader,
                                         std::span<const SpecConstant> spec) {
   ComputePipeline p;
-  const std::pair<const ShaderCode*, ShaderReflection> stage{&shader, reflect_or_throw(shader)};
-  if (stage.second.stage != VK_SHADER_STAGE_COMPUTE_BIT)
+  auto stage = std::make_shared<const std::pair<const ShaderCode*, ShaderReflection>>(
+      &shader, reflect_or_throw(shader));
+  if (stage->second.stage != VK_SHADER_STAGE_COMPUTE_BIT)
     throw_usage_error("shader " + std::string(shader.name) + " is not a compute shader");
-  p.interface_ = make_interface(ctx, std::span(&stage, 1));
-  p.local_size_ = stage.second.local_size;
+  p.interface_ = make_interface(ctx, std::span(stage.get(), 1));
+  p.local_size_ = stage->second.local_size;
   for (int axis = 0; axis < 3; ++axis)
     for (const SpecConstant& s : spec)
-      if (stage.second.local_size_spec_ids[axis] == static_cast<int32_t>(s.id)) p.local_size_[axis] = s.value;
+      if (stage->second.local_size_spec_ids[axis] == static_cast<int32_t>(s.id))
+        p.local_size_[axis] = s.value;
 
-  Unique<VkShaderModule> module = make_module(ctx, shader);
-  const SpecInfo spec_info(spec);
-  const VkComputePipelineCreateInfo info{
-      .sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO,
-      .stage = shader_stage(VK_SHADER_STAGE_COMPUTE_BIT, module, stage.second, spec_info),
-      .layout = p.interface_.layout()};
-  VkPipeline pipeline;
-  VK_CHECK(vkCreateComputePipelines(ctx.device(), ctx.pipeline_cache(), 1, &info, nullptr, &pipeline));
-  p.pipeline_ = Unique<VkPipeline>(ctx.device(), pipeline);
-  ctx.set_name(pipeline, VK_OBJECT_TYPE_PIPELINE, std::string(shader.name).c_str());
+  p.pipeline_ = DeferredPipeline(ctx.device(), [&ctx, stage, layout = p.interface_.layout(),
+                                                spec = std::vector<SpecConstant>(spec.begin(), spec.end())] {
+    Unique<VkShaderModule> module = make_module(ctx, *stage->first);
+    const SpecInfo spec_info(spec);
+    const VkComputePipelineCreateInfo info{
+        .sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO,
+        .stage = shader_stage(VK_SHADER_STAGE_COMPUTE_BIT, module, stage->second, spec_info),
+        .layout = layout};
+    VkPipeline pipeline;
+    VK_CHECK(vkCreateComputePipelines(ctx.device(), ctx.pipeline_cache(), 1, &info, nullptr, &pipeline));
+    ctx.set_name(pipeline, VK_OBJECT_TYPE_PIPELINE, std::string(stage->first->name).c_str());
+    return pipeline;
+  });
   return p;
 }
 
@@ -351,18 +371,22 @@ GraphicsPipeline GraphicsPipeline::create(const Context& ctx, const GraphicsDesc
   if (!desc.vertex || !desc.fragment)
     throw_usage_error("GraphicsPipeline needs a vertex and a fragment shader");
   GraphicsPipeline p;
-  const std::pair<const ShaderCode*, ShaderReflection> stages[] = {
-      {desc.vertex, reflect_or_throw(*desc.vertex)}, {desc.fragment, reflect_or_throw(*desc.fragment)}};
-  p.interface_ = make_interface(ctx, stages);
+  using Stages = std::array<std::pair<const ShaderCode*, ShaderReflection>, 2>;
+  auto stages = std::make_shared<const Stages>(Stages{
+      {{desc.vertex, reflect_or_throw(*desc.vertex)}, {desc.fragment, reflect_or_throw(*desc.fragment)}}});
+  p.interface_ = make_interface(ctx, *stages);
 
-  Unique<VkShaderModule> vs = make_module(ctx, *desc.vertex), fs = make_module(ctx, *desc.fragment);
-  const SpecInfo spec_info(desc.spec);
-  const VkPipelineShaderStageCreateInfo shader_stages[] = {
-      shader_stage(VK_SHADER_STAGE_VERTEX_BIT, vs, stages[0].second, spec_info),
-      shader_stage(VK_SHADER_STAGE_FRAGMENT_BIT, fs, stages[1].second, spec_info)};
-  const VkPipeline pipeline = create_graphics_pipeline(ctx, desc, shader_stages, p.interface_.layout());
-  p.pipeline_ = Unique<VkPipeline>(ctx.device(), pipeline);
-  ctx.set_name(pipeline, VK_OBJECT_TYPE_PIPELINE, p.interface_.name().c_str());
+  p.pipeline_ = DeferredPipeline(
+      ctx.device(), [&ctx, stages, desc, layout = p.interface_.layout(), name = p.interface_.name()] {
+        Unique<VkShaderModule> vs = make_module(ctx, *desc.vertex), fs = make_module(ctx, *desc.fragment);
+        const SpecInfo spec_info(desc.spec);
+        const VkPipelineShaderStageCreateInfo shader_stages[] = {
+            shader_stage(VK_SHADER_STAGE_VERTEX_BIT, vs, (*stages)[0].second, spec_info),
+            shader_stage(VK_SHADER_STAGE_FRAGMENT_BIT, fs, (*stages)[1].second, spec_info)};
+        const VkPipeline pipeline = create_graphics_pipeline(ctx, desc, shader_stages, layout);
+        ctx.set_name(pipeline, VK_OBJECT_TYPE_PIPELINE, name.c_str());
+        return pipeline;
+      });
   return p;
 }
 

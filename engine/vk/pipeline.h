@@ -6,7 +6,10 @@
 #include <vulkan/vulkan.h>
 
 #include <array>
+#include <functional>
 #include <initializer_list>
+#include <memory>
+#include <mutex>
 #include <span>
 #include <string>
 #include <variant>
@@ -94,20 +97,44 @@ class PipelineInterface {
   Unique<VkPipelineLayout> layout_;
 };
 
+// A VkPipeline made on first use: creating a renderer's passes compiles nothing for the pipelines its scene
+// never draws with (the underwater ones above the water, the waterline's, the classic shading modes), and
+// on lavapipe a pipeline's creation alone costs tens of milliseconds. get() is thread-safe, so a worker may
+// make one ahead of its first use (make_now()).
+class DeferredPipeline {
+ public:
+  DeferredPipeline() = default;
+  DeferredPipeline(VkDevice device, std::function<VkPipeline()> make);
+  VkPipeline get() const;
+  bool empty() const { return !state_; }
+
+ private:
+  struct State {
+    std::mutex mutex;
+    VkDevice device = VK_NULL_HANDLE;
+    std::function<VkPipeline()> make;
+    Unique<VkPipeline> pipeline;
+  };
+  std::unique_ptr<State> state_;
+};
+
 class ComputePipeline {
  public:
   ComputePipeline() = default;
+  // Reflects the shader and makes its layout now; the pipeline itself on first use.
   static ComputePipeline create(const Context& ctx, const ShaderCode& shader,
                                 std::span<const SpecConstant> spec = {});
 
-  VkPipeline pipeline() const { return pipeline_; }
+  // Made here on the first call (VK_NULL_HANDLE for a default-constructed one).
+  VkPipeline pipeline() const { return pipeline_.empty() ? VK_NULL_HANDLE : pipeline_.get(); }
+  bool empty() const { return pipeline_.empty(); }
   const PipelineInterface& interface() const { return interface_; }
   // Workgroup size, with specialisation constants applied.
   const std::array<uint32_t, 3>& local_size() const { return local_size_; }
 
  private:
   PipelineInterface interface_;
-  Unique<VkPipeline> pipeline_;
+  DeferredPipeline pipeline_;
   std::array<uint32_t, 3> local_size_{1, 1, 1};
 };
 
@@ -148,14 +175,17 @@ struct GraphicsDesc {
 class GraphicsPipeline {
  public:
   GraphicsPipeline() = default;
+  // Reflects the shaders and makes the layout now; the pipeline itself on first use.
   static GraphicsPipeline create(const Context& ctx, const GraphicsDesc& desc);
 
-  VkPipeline pipeline() const { return pipeline_; }
+  // Made here on the first call (VK_NULL_HANDLE for a default-constructed one).
+  VkPipeline pipeline() const { return pipeline_.empty() ? VK_NULL_HANDLE : pipeline_.get(); }
+  bool empty() const { return pipeline_.empty(); }
   const PipelineInterface& interface() const { return interface_; }
 
  private:
   PipelineInterface interface_;
-  Unique<VkPipeline> pipeline_;
+  DeferredPipeline pipeline_;
 };
 
 void draw(VkCommandBuffer cmd, const GraphicsPipeline& pipeline, std::span<const Binding> bindings,

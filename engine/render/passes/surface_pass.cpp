@@ -72,7 +72,7 @@ void SurfacePass::record(const FrameContext& frame, const Inputs& in, vk::Target
 const vk::GraphicsPipeline& SurfacePass::classic(scene::Shading shading) const {
   const uint32_t mode = uint32_t(shading);  // 1 blinn-phong, 2 gouraud, 3 flat (shared/surface.h)
   vk::GraphicsPipeline& p = classic_[mode - 1];
-  if (p.pipeline() == VK_NULL_HANDLE)
+  if (p.empty())
     p = vk::GraphicsPipeline::create(
         ctx_, {.vertex = &shaders::render_ocean_surface_classic_vert,
                .fragment = &shaders::render_ocean_surface_classic_frag,
@@ -86,7 +86,7 @@ const vk::GraphicsPipeline& SurfacePass::classic(scene::Shading shading) const {
 
 void SurfacePass::record_aov(const FrameContext& frame, vk::Target normal_foam, vk::Target world,
                              vk::Target depth) {
-  if (aov_.pipeline() == VK_NULL_HANDLE)
+  if (aov_.empty())
     aov_ = vk::GraphicsPipeline::create(ctx_, {.vertex = &shaders::render_ocean_surface_vert,
                                                .fragment = &shaders::render_ocean_surface_aov_frag,
                                                .color_formats = {kAovFormat, kAovFormat},

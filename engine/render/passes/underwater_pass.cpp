@@ -66,7 +66,7 @@ void UnderwaterPass::record_terms(const FrameContext& frame, const Inputs& in,
                                   const std::array<vk::Target, 3>& terms, vk::Target depth) {
   const size_t shafts = frame.scene.render.effects.shafts ? 1 : 0, lamps = frame.light_count > 0 ? 1 : 0;
   vk::GraphicsPipeline& pipeline = terms_[shafts][lamps];
-  if (pipeline.pipeline() == VK_NULL_HANDLE)
+  if (pipeline.empty())
     pipeline =
         vk::GraphicsPipeline::create(ctx_, {.vertex = &shaders::render_fullscreen_vert,
                                             .fragment = &shaders::render_underwater_terms_frag,
