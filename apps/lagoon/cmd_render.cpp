@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "core/stage_times.h"
 #include "dataset_render.h"
 #include "frame_sequence.h"
 #include "gpu_session.h"
@@ -162,10 +163,14 @@ int run_render(const ParsedArgs& args) {
   if (!aovs) return kExitUsage;
   const auto path = camera_path_option(args, *sequence);
   if (!path) return kExitFailure;
+  StageTimer t_scene("scene");
   auto scene = load_scene_from_args(args, "render", *overrides);
   if (!scene) return kExitFailure;
+  t_scene.end();
+  StageTimer t_device("device");
   auto ctx = open_context();
   if (!ctx) return kExitFailure;
+  t_device.end();
 
   auto renderer = render::OceanRenderer::create(*ctx, *scene);
   if (!renderer) {
@@ -184,6 +189,7 @@ int run_render(const ParsedArgs& args) {
   const io::Image8 image = (*renderer)->render(*scene, &timings);
   // A frame rendered with validation errors is not written: it cannot be trusted.
   if (int status = validation_status(*ctx); status != kExitOk) return status;
+  StageTimer t_png("PNG");
   if (auto written = io::write_png(out_path, image); !written) {
     std::fprintf(stderr, "lagoon render: %s\n", written.error().message.c_str());
     return kExitFailure;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "core/stage_times.h"
 #include "render/camera.h"
 #include "render/sky_light.h"
 #include "render/surface_grid.h"
@@ -45,16 +46,23 @@ Result<std::unique_ptr<OceanRenderer>> OceanRenderer::create(vk::Context& ctx, c
 }
 
 Result<void> OceanRenderer::init(const scene::Scene& scene) {
+  StageTimer t_ocean("ocean spectra and pipelines");
   auto ocean_step = OceanStepPass::create(ctx_, scene.ocean);
   if (!ocean_step) return make_error("ocean: " + ocean_step.error().message);
   ocean_step_.emplace(std::move(*ocean_step));
   shading_ = ocean_shading(ocean());
+  t_ocean.end();
+  StageTimer t_luts("water LUTs");
   auto luts = upload_water_luts(ctx_, scene, &ocean().spectra());  // the spectra the ocean step built
   if (!luts) return luts.error();
   luts_ = std::move(*luts);
+  t_luts.end();
+  StageTimer t_objects("scene objects");
   auto objects = SceneObjects::load(ctx_, scene, samplers_, kColorFormat, kHdrFormat, kDepthFormat);
   if (!objects) return objects.error();
   objects_ = std::move(*objects);
+  t_objects.end();
+  StageTimer t_world("bodies, wakes, sediment");
   auto floating = FloatingObjects::create(scene, ocean().params(), ocean().spectra(), tracks_);
   if (!floating) return floating.error();
   floating_ = std::move(*floating);
@@ -64,6 +72,8 @@ Result<void> OceanRenderer::init(const scene::Scene& scene) {
   auto sediment = VehicleSediment::create(scene, tracks_);
   if (!sediment) return sediment.error();
   sediment_ = std::move(*sediment);
+  t_world.end();
+  StageTimer t_passes("passes");
   fields_.emplace(SurfaceFields{ocean(), *wakes_, !sediment_.empty()});
   refraction_ = std::make_unique<RefractionPass>(ctx_, *objects_, kHdrFormat, kDepthFormat);
   reflection_ = std::make_unique<ObjectsPass>(ctx_, *objects_, gpu::MeshMode::Mirrored, "reflection",
@@ -131,6 +141,7 @@ void OceanRenderer::record_frame(const FrameContext& f, const CausticsWindow& ca
 }
 
 void OceanRenderer::prepare(const scene::Scene& scene) {
+  StageTimer t("warm-up (foam, wakes)");
   ocean_step_->prepare(ctx_, scene.time_s, history_ == History::Replay);
   wakes_->prepare(ctx_, scene, history_ == History::Replay);
 }
@@ -267,6 +278,7 @@ io::Image8 OceanRenderer::render(const scene::Scene& scene, std::vector<vk::Pass
   const VkExtent2D extent{scene.render.width, scene.render.height};
   prepare(scene);
   const OwnTargets& own = own_targets(extent);
+  StageTimer t("frame");
   ctx_.submit_and_wait([&](VkCommandBuffer cmd) {
     record(cmd, scene, extent, 0);
     vk::record_readback(cmd, own.color, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
