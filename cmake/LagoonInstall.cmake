@@ -22,7 +22,7 @@ set(LAGOON_INSTALL_INCLUDEDIR ${CMAKE_INSTALL_INCLUDEDIR}/lagoon)
 #               an imported libstb that LagoonConfig.cmake defines.
 set(LAGOON_BUILD_ONLY_TARGETS lagoon_warnings lagoon_stb)
 # Imported targets an exported interface may name: LagoonConfig.cmake finds each of them.
-set(LAGOON_KNOWN_DEPENDENCIES Threads::Threads glm::glm Vulkan::Vulkan nlohmann_json::nlohmann_json)
+set(LAGOON_KNOWN_DEPENDENCIES Threads::Threads glm::glm Vulkan::Vulkan nlohmann_json::nlohmann_json PNG::PNG)
 
 # Appends to `out_var` every lagoon target `target` links, transitively (INTERFACE_LINK_LIBRARIES holds a
 # static library's PRIVATE links too, as $<LINK_ONLY:...>). Stops the configure on a dependency that
@@ -92,7 +92,7 @@ if(LAGOON_BUILD_SHARED)
   set_target_properties(lagoon_shared PROPERTIES OUTPUT_NAME lagoon LINKER_LANGUAGE CXX
                         VERSION ${PROJECT_VERSION} SOVERSION ${PROJECT_VERSION_MAJOR}.${PROJECT_VERSION_MINOR})
   # What the objects call (private: resolved inside liblagoon.so) and what its headers need (interface).
-  target_link_libraries(lagoon_shared PRIVATE lagoon_stb Vulkan::Vulkan Threads::Threads
+  target_link_libraries(lagoon_shared PRIVATE lagoon_stb PNG::PNG Vulkan::Vulkan Threads::Threads
                         INTERFACE ${header_targets} glm::glm nlohmann_json::nlohmann_json Threads::Threads)
   list(APPEND LAGOON_VULKAN_TARGETS lagoon_shared)
 endif()
@@ -236,5 +236,5 @@ _lagoon_pkg_config(lagoon-optics "Lagoon's spectral water-colour model, plain C+
                    "-llagoon_optics")
 _lagoon_pkg_config(lagoon-physics "Lagoon's floating bodies, plain C++ (no Vulkan)" "glm" "-llagoon_physics")
 _lagoon_pkg_config(lagoon "Lagoon: ocean simulation and rendering on Vulkan (every module)"
-                   "lagoon-ocean lagoon-optics lagoon-physics vulkan nlohmann_json"
+                   "lagoon-ocean lagoon-optics lagoon-physics vulkan nlohmann_json libpng"
                    "-llagoon_render -llagoon_ocean_gpu -llagoon_fft -llagoon_gltf -llagoon_scene -llagoon_io -llagoon_shaders -llagoon_vk -lstb -pthread")

@@ -1,20 +1,36 @@
 #!/usr/bin/env bash
-# Installs Lagoon's build and test dependencies from Debian 12 packages.
+# Installs Lagoon's dependencies from Debian 12 packages.
+#   install-deps.sh run    what building and running the `lagoon` command needs (make run)
+#   install-deps.sh [all]  that, plus the demo, the tests, the fuzz targets and the style check (make test)
 # Idempotent: apt-get runs only when a package is missing. Works as root or through sudo.
 set -euo pipefail
 
+profile=${1:-all}
+case $profile in
+  run | all) ;;
+  *) echo "install-deps: unknown profile '$profile' (use 'run' or 'all')" >&2; exit 2 ;;
+esac
+
 packages=(
   # toolchain (a minimal Debian has none of it)
-  g++ cmake make pkg-config ca-certificates clang-format
-  # Vulkan: loader, lavapipe (CPU device), validation layer, shader compiler and tools
-  libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools spirv-tools
-  # libraries
-  libglfw3-dev libglm-dev libtinygltf-dev libimgui-dev libstb-dev nlohmann-json3-dev
-  # tests and benchmarks; clang-14 with libFuzzer's runtime builds the fuzz targets (tests/fuzz)
-  libgtest-dev libbenchmark-dev libfftw3-dev clang-14 libclang-rt-14-dev
-  # headless window tests
-  xvfb xauth
+  g++ cmake make ninja-build pkg-config ca-certificates
+  # Vulkan: loader and lavapipe (a CPU device), the shader compiler
+  libvulkan-dev mesa-vulkan-drivers glslang-tools
+  # header and small libraries the command uses; FFTW is the CPU baseline of `lagoon bench compute`
+  libglm-dev libtinygltf-dev libstb-dev libpng-dev nlohmann-json3-dev libfftw3-dev
 )
+if [[ $profile == all ]]; then
+  packages+=(
+    # the validation layer every Vulkan test runs with, SPIR-V tools, the style check
+    vulkan-validationlayers spirv-tools clang-format
+    # the demo: window and panel
+    libglfw3-dev libimgui-dev
+    # tests and benchmarks; clang-14 with libFuzzer's runtime builds the fuzz targets (tests/fuzz)
+    libgtest-dev libbenchmark-dev clang-14 libclang-rt-14-dev
+    # headless window tests
+    xvfb xauth
+  )
+fi
 
 missing=()
 for p in "${packages[@]}"; do
@@ -26,10 +42,12 @@ done
 # a dpkg path-exclude for docs (Docker's Debian) leave out; then they are taken from the same .deb.
 backends=/usr/share/doc/libimgui-dev/examples/backends
 extracted=/usr/local/share/lagoon/imgui-backends
-need_backends() { [[ ! -f $backends/imgui_impl_vulkan.cpp && ! -f $extracted/imgui_impl_vulkan.cpp ]]; }
+need_backends() {
+  [[ $profile == all && ! -f $backends/imgui_impl_vulkan.cpp && ! -f $extracted/imgui_impl_vulkan.cpp ]]
+}
 
 if [[ ${#missing[@]} -eq 0 ]] && ! need_backends; then
-  echo "install-deps: all ${#packages[@]} packages present"
+  echo "install-deps: all ${#packages[@]} packages of '$profile' present"
   exit 0
 fi
 
@@ -41,7 +59,7 @@ fi
 
 export DEBIAN_FRONTEND=noninteractive
 if [[ ${#missing[@]} -gt 0 ]]; then
-  echo "install-deps: installing ${missing[*]}"
+  echo "install-deps: installing ${#missing[@]} packages for '$profile' (and what they need): ${missing[*]}"
   "${sudo_cmd[@]}" apt-get update -q
   "${sudo_cmd[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
 fi
