@@ -18,6 +18,32 @@ layout(rgba32f, binding = LAGOON_OCEAN_BIND_NORMAL_JACOBIAN) writeonly uniform i
 layout(rgba16f, binding = LAGOON_OCEAN_BIND_JACOBIAN_TERMS) writeonly uniform image2DArray jacobian_terms;
 layout(push_constant) uniform Push { OceanPush p; };
 #include "common/ocean_assemble.glsl"
+layout(constant_id = LAGOON_OCEAN_SPEC_FOAM_ONLY) const bool kFoamOnly = false;
+
+// A foam-only step's last pass (warm-ups): F2 and F3, fields 0 and 1 of two per cascade; the foam alone.
+void assemble_foam(int column, int j, int cascade) {
+  const int n = FFT_N;
+  int plane = n * n;
+  int base = cascade * 2 * plane + column;
+  vec2 w[FFT_RADIX];
+  FFT_LOAD_TWIDDLES(twiddles, j, w);
+  vec2 a2[FFT_RADIX], a3[FFT_RADIX], b2[FFT_RADIX], b3[FFT_RADIX];
+  for (int r = 0; r < FFT_RADIX; ++r) {
+    int at = (base + fft_source_index(j, r) * n) / 2;
+    vec4 p2 = src[at], p3 = src[at + plane / 2];
+    a2[r] = cmul(p2.xy, w[r]), b2[r] = cmul(p2.zw, w[r]);
+    a3[r] = cmul(p3.xy, w[r]), b3[r] = cmul(p3.zw, w[r]);
+  }
+  fft_radix(a2);
+  fft_radix(a3);
+  fft_radix(b2);
+  fft_radix(b3);
+  for (int r = 0; r < FFT_RADIX; ++r) {
+    int z = fft_dest_index(j, r);
+    ocean_assemble_foam(ivec3(column, z, cascade), a2[r], a3[r]);
+    ocean_assemble_foam(ivec3(column + 1, z, cascade), b2[r], b3[r]);
+  }
+}
 
 // One invocation: the same butterfly of two neighbouring columns (loads move two complex values).
 void main() {
@@ -26,6 +52,10 @@ void main() {
   int j = int(gl_GlobalInvocationID.y);
   int cascade = int(gl_GlobalInvocationID.z);
   if (j >= n / FFT_RADIX || column >= n || cascade >= int(p.cascades)) return;
+  if (kFoamOnly) {
+    assemble_foam(column, j, cascade);
+    return;
+  }
 
   int plane = n * n;
   int base = cascade * 4 * plane + column;

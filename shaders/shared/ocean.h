@@ -16,6 +16,11 @@
 #define LAGOON_OCEAN_BIND_DISPLACEMENT 2     // image2DArray (λDx, h, λDz, foam)
 #define LAGOON_OCEAN_BIND_NORMAL_JACOBIAN 3  // image2DArray (n, J)
 #define LAGOON_OCEAN_BIND_JACOBIAN_TERMS 4   // image2DArray (λ∂Dx/∂x, λ∂Dz/∂z, λ∂Dx/∂z, foam)
+// The fused passes of a warm-up step bring only the foam to the step's time (compute/ocean/gpu/gpu_ocean.h,
+// Outputs::FoamOnly): the two packed fields the Jacobian needs instead of four (specialisation constant,
+// after the FFT's own IDs in shared/fft.h).
+#define LAGOON_OCEAN_SPEC_FOAM_ONLY 9
+
 // A mip level from the one above (mips.comp): three sources, then the three destinations.
 #define LAGOON_MIPS_BIND_SRC 0  // + 0, 1, 2: displacement, normal_jacobian, jacobian_terms
 #define LAGOON_MIPS_BIND_DST 3  // + 0, 1, 2

@@ -93,6 +93,34 @@ TEST_P(OceanGpuVariant, EveryFieldMatchesTheCpuReference) {
   EXPECT_GT(foam, 0.0);
 }
 
+// A still frame's warm-up (GpuOcean::Step::WarmUp) brings only the foam to its time, skipping what nobody
+// samples: the foam after warm-up steps and a full one is the CPU reference's after the same steps.
+TEST_P(OceanGpuVariant, WarmUpStepsGiveTheFoamOfFullSteps) {
+  const OceanParams params = test_params();
+  ocean::GpuOcean gpu_ocean(ctx(), params, GetParam());
+  ocean::CpuOceanStep cpu(params, gpu_ocean.spectra(), fftw_inverse());
+  double previous = 0;
+  for (double t : {1.25, 1.75, 2.0}) {
+    ctx().submit_and_wait([&](VkCommandBuffer cmd) {
+      gpu_ocean.record_step(cmd, t, t - previous, nullptr, ocean::GpuOcean::Step::WarmUp);
+    });
+    cpu.step(t, t - previous), previous = t;
+  }
+  ctx().submit_and_wait([&](VkCommandBuffer cmd) { gpu_ocean.record_step(cmd, 2.5, 0.5); });
+  cpu.step(2.5, 0.5);
+  std::vector<ocean::CascadeReadback> gpu;
+  for (uint32_t c = 0; c < gpu_ocean.cascade_count(); ++c) gpu.push_back(gpu_ocean.read_cascade(c));
+  double foam = 0;
+  for (size_t c = 0; c < gpu.size(); ++c) {
+    EXPECT_LT(component_error(gpu[c].displacement, cpu.cascades()[c].displacement, 3), 1e-5)
+        << "cascade " << c << " foam";
+    EXPECT_LT(component_error(gpu[c].jacobian_terms, cpu.cascades()[c].jacobian_terms, 3), 1e-3)
+        << "cascade " << c << " foam (half floats)";
+    for (size_t i = 3; i < gpu[c].displacement.size(); i += 4) foam += gpu[c].displacement[i];
+  }
+  EXPECT_GT(foam, 0.0);
+}
+
 INSTANTIATE_TEST_SUITE_P(Variants, OceanGpuVariant,
                          ::testing::Values(ocean::FftVariant::Stockham, ocean::FftVariant::Workgroup),
                          [](const auto& info) {

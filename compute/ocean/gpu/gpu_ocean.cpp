@@ -155,7 +155,7 @@ void GpuOcean::build(std::vector<CascadeSpectrum> spectra) {
   springs_ = params_.model == SurfaceModel::Springs ? std::make_unique<SpringsGpu>(ctx_, params_) : nullptr;
 }
 
-void GpuOcean::record_step(VkCommandBuffer cmd, double time_s, double dt_s, vk::GpuTimer* timer, Mips mips) {
+void GpuOcean::record_step(VkCommandBuffer cmd, double time_s, double dt_s, vk::GpuTimer* timer, Step step) {
   // Readers of last step's textures (graphics sampling, readback) must finish before they are rewritten.
   const vk::Access readers{vk::access::kGraphicsSampled.stage | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT |
                                VK_PIPELINE_STAGE_2_TRANSFER_BIT,
@@ -187,9 +187,9 @@ void GpuOcean::record_step(VkCommandBuffer cmd, double time_s, double dt_s, vk::
     } else {
       g->fft->record(cmd,
                      {&g->spectrum, &g->omega, &g->displacement, &g->normal_jacobian, &g->jacobian_terms},
-                     push, timer);
+                     push, timer, step == Step::WarmUp ? StepOutputs::FoamOnly : StepOutputs::All);
     }
-    if (mips == Mips::Rebuild) {
+    if (step == Step::Full) {
       vk::GpuScope scope(timer, cmd, "ocean mips " + std::to_string(n));
       // Level by level, each from the one above; the three textures in one dispatch per level.
       for (uint32_t mip = 1; mip < g->displacement.mip_levels(); ++mip) {

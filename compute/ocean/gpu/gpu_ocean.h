@@ -56,12 +56,14 @@ class GpuOcean {
   GpuOcean& operator=(const GpuOcean&) = delete;
 
   // Records the step to `time_s`; `dt_s` is the time since the previous step (foam decay). The first step
-  // after construction starts foam from zero. Textures are ready for fragment/vertex/compute
-  // sampling (GENERAL layout) when the command buffer completes. Mip levels above 0 are only rebuilt with
-  // `mips` (steps whose textures nobody samples, such as a foam warm-up, can leave them stale).
-  enum class Mips { Rebuild, Skip };
+  // after construction starts foam from zero. Textures are ready for fragment/vertex/compute sampling
+  // (GENERAL layout) when the command buffer completes. A WarmUp step brings only the foam to its time (the
+  // FFT may transform just the two fields the Jacobian needs: half the work on lavapipe) and leaves the mip
+  // levels, the rest of the displacement and the other textures for the next Full step, which rewrites them:
+  // for steps nobody samples, such as a foam warm-up. Full and warm-up steps give the same foam.
+  enum class Step { Full, WarmUp };
   void record_step(VkCommandBuffer cmd, double time_s, double dt_s, vk::GpuTimer* timer = nullptr,
-                   Mips mips = Mips::Rebuild);
+                   Step step = Step::Full);
 
   // The next step starts foam from none again, as the first step does, so the foam depends only on the steps
   // recorded from here on (a replayed warm-up, docs/datasets.md). The springs' grid needs no restart: it is

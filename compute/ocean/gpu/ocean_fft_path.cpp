@@ -8,6 +8,7 @@
 #include "fft/gpu_fft.h"
 #include "lagoon_shaders/shaders.h"
 #include "shared/fft.h"
+#include "shared/ocean.h"
 #include "vk/barriers.h"
 #include "vk/pipeline.h"
 #include "vk/transfer.h"
@@ -36,43 +37,52 @@ class StockhamPath : public OceanFftPath {
     ping_ = vk::Buffer::create(ctx, bytes, vk::kStorageUsage, vk::MemoryUsage::Device, "ocean fft ping");
     pong_ = vk::Buffer::create(ctx, bytes, vk::kStorageUsage, vk::MemoryUsage::Device, "ocean fft pong");
     const auto first = fft_.pass(0), last = fft_.pass(fft_.pass_count() - 1);
-    evolve_ =
-        vk::ComputePipeline::create(ctx, shaders::ocean_evolve_fft_comp,
-                                    fft::GpuFft2d::specialisation(n, first.ns, first.radix, false, true));
-    assemble_ =
-        vk::ComputePipeline::create(ctx, shaders::ocean_fft_assemble_comp,
-                                    fft::GpuFft2d::specialisation(n, last.ns, last.radix, true, true));
+    auto evolve_spec = fft::GpuFft2d::specialisation(n, first.ns, first.radix, false, true);
+    auto assemble_spec = fft::GpuFft2d::specialisation(n, last.ns, last.radix, true, true);
+    evolve_ = vk::ComputePipeline::create(ctx, shaders::ocean_evolve_fft_comp, evolve_spec);
+    assemble_ = vk::ComputePipeline::create(ctx, shaders::ocean_fft_assemble_comp, assemble_spec);
+    // The warm-up's variants: made (compiled) only when a warm-up runs.
+    evolve_spec.push_back({LAGOON_OCEAN_SPEC_FOAM_ONLY, 1});
+    assemble_spec.push_back({LAGOON_OCEAN_SPEC_FOAM_ONLY, 1});
+    evolve_foam_ = vk::ComputePipeline::create(ctx, shaders::ocean_evolve_fft_comp, evolve_spec);
+    assemble_foam_ = vk::ComputePipeline::create(ctx, shaders::ocean_fft_assemble_comp, assemble_spec);
   }
 
-  void record(VkCommandBuffer cmd, const OceanFftBindings& b, const gpu::OceanPush& push,
-              vk::GpuTimer* timer) const override {
+  void record(VkCommandBuffer cmd, const OceanFftBindings& b, const gpu::OceanPush& push, vk::GpuTimer* timer,
+              StepOutputs outputs) const override {
+    const bool foam_only = outputs == StepOutputs::FoamOnly;
+    const vk::ComputePipeline& evolve = foam_only ? evolve_foam_ : evolve_;
+    const vk::ComputePipeline& assemble = foam_only ? assemble_foam_ : assemble_;
     const uint32_t count = push.cascades, passes = uint32_t(fft_.pass_count());
+    // The plain passes take the fields four at a time: a foam-only step's 2 per cascade are rounded up (the
+    // buffers hold 4 per cascade, and the extra arrays are never read back).
+    const uint32_t arrays = foam_only ? (2 * count + 3) / 4 * 4 : 4 * count;
     const auto first = fft_.pass(0), last = fft_.pass(passes - 1);
     const vk::Buffer* src = &ping_;
     const vk::Buffer* dst = &pong_;
     {
       vk::GpuScope s(timer, cmd, "ocean evolve+rows " + std::to_string(n_));
-      vk::dispatch(cmd, evolve_,
+      vk::dispatch(cmd, evolve,
                    {vk::bind(LAGOON_OCEAN_BIND_SPECTRUM, *b.spectrum),
                     vk::bind(LAGOON_OCEAN_BIND_OMEGA, *b.omega), vk::bind(LAGOON_OCEAN_BIND_EVOLVED, ping_)},
-                   push, vk::groups_for(evolve_, {n_ / first.radix, n_, count}));
+                   push, vk::groups_for(evolve, {n_ / first.radix, n_, count}));
       vk::memory_barrier(cmd, vk::access::kComputeReadWrite, vk::access::kComputeReadWrite);
       for (uint32_t i = 1; i + 1 < passes; ++i) {
-        fft_.record_pass(cmd, i, *src, *dst, 4 * count);
+        fft_.record_pass(cmd, i, *src, *dst, arrays);
         std::swap(src, dst);
       }
     }
     vk::GpuScope s(timer, cmd, "ocean columns+assemble " + std::to_string(n_));
     const auto bindings = assembly_bindings(*src, fft_.twiddles(), b);
-    vk::dispatch(cmd, assemble_, bindings, &push, sizeof(push),
-                 vk::groups_for(assemble_, {n_ / 2, n_ / last.radix, count}));
+    vk::dispatch(cmd, assemble, bindings, &push, sizeof(push),
+                 vk::groups_for(assemble, {n_ / 2, n_ / last.radix, count}));
   }
 
  private:
   uint32_t n_;
   fft::GpuFft2d fft_;
   vk::Buffer ping_, pong_;
-  vk::ComputePipeline evolve_, assemble_;
+  vk::ComputePipeline evolve_, assemble_, evolve_foam_, assemble_foam_;
 };
 
 class WorkgroupPath : public OceanFftPath {
@@ -101,8 +111,9 @@ class WorkgroupPath : public OceanFftPath {
     columns_ = vk::ComputePipeline::create(ctx, shaders::ocean_columns_assemble_comp, columns_spec);
   }
 
-  void record(VkCommandBuffer cmd, const OceanFftBindings& b, const gpu::OceanPush& push,
-              vk::GpuTimer* timer) const override {
+  // A foam-only step is a full one here: on a GPU the whole step costs a few tens of microseconds.
+  void record(VkCommandBuffer cmd, const OceanFftBindings& b, const gpu::OceanPush& push, vk::GpuTimer* timer,
+              StepOutputs) const override {
     const uint32_t count = push.cascades;
     {
       vk::GpuScope s(timer, cmd, "ocean evolve+rows " + std::to_string(n_));

@@ -25,12 +25,17 @@ struct OceanFftBindings {
   const vk::Image* jacobian_terms = nullptr;
 };
 
+// What a step brings to its time: everything, or (a warm-up's steps) only the foam in displacement.w; the
+// displacement's other channels and the other images are then left for the next full step.
+enum class StepOutputs { All, FoamOnly };
+
 class OceanFftPath {
  public:
   virtual ~OceanFftPath() = default;
   // Records evolve -> inverse 2-D FFT of the 4 packed fields -> assembly into mip 0 of the images (GENERAL).
+  // FoamOnly: the 2 fields the Jacobian needs (a path may do the full step instead).
   virtual void record(VkCommandBuffer cmd, const OceanFftBindings& bindings, const gpu::OceanPush& push,
-                      vk::GpuTimer* timer) const = 0;
+                      vk::GpuTimer* timer, StepOutputs outputs = StepOutputs::All) const = 0;
 };
 
 // Auto picks Stockham on CPU devices and Workgroup elsewhere.

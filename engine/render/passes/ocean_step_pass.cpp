@@ -19,10 +19,10 @@ void OceanStepPass::prepare(vk::Context& ctx, double t, bool replay) {
   // A still frame needs the foam a running ocean would have: run the last few seconds first.
   ctx.submit_and_wait([&](VkCommandBuffer cmd) {
     double previous = t - kWarmupS;
-    // The warm-up's textures are not drawn: only the frame's own step rebuilds the mips.
-    ocean_->record_step(cmd, previous, 0.0, nullptr, ocean::GpuOcean::Mips::Skip);
+    // The warm-up's textures are not drawn: its steps bring the foam alone to their time (GpuOcean::Step).
+    ocean_->record_step(cmd, previous, 0.0, nullptr, ocean::GpuOcean::Step::WarmUp);
     for (double step = previous + kWarmupStep; step < t - 1e-9; step += kWarmupStep) {
-      ocean_->record_step(cmd, step, step - previous, nullptr, ocean::GpuOcean::Mips::Skip);
+      ocean_->record_step(cmd, step, step - previous, nullptr, ocean::GpuOcean::Step::WarmUp);
       previous = step;
     }
     time_s_ = previous;
