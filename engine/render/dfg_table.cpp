@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <vector>
+
+#include "render/cached_tables.h"
 
 namespace lagoon::render {
 namespace {
@@ -42,13 +45,28 @@ glm::vec2 integrate_dfg(double n_dot_v, double roughness, int samples) {
 }
 
 const DfgTable& dfg_table() {
+  // Once per process, and once per build on a machine (render/cached_tables.h): 1M samples take ~70 ms.
   static const DfgTable table = [] {
+    constexpr int n = LAGOON_DFG_SIZE, kSamples = 1024;
+    io::ResultKey key = table_key("dfg");
+    key.add("size", n).add("samples", kSamples);
+    const io::ResultCache cache = io::ResultCache::from_environment();
     DfgTable t;
-    constexpr int n = LAGOON_DFG_SIZE;
+    if (auto bytes = cache.load(key)) {
+      io::ByteReader in(*bytes);
+      const std::vector<glm::vec2> ab = in.get_vector<glm::vec2>(t.ab.size());
+      if (in.complete() && ab.size() == t.ab.size()) {
+        std::copy(ab.begin(), ab.end(), t.ab.begin());
+        return t;
+      }
+    }
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i)
         t.ab[size_t(j * n + i)] =
-            integrate_dfg(std::max(double(i) / (n - 1), 1e-3), double(j) / (n - 1), 1024);
+            integrate_dfg(std::max(double(i) / (n - 1), 1e-3), double(j) / (n - 1), kSamples);
+    io::ByteWriter out;
+    out.put_vector(std::vector<glm::vec2>(t.ab.begin(), t.ab.end()));
+    cache.store(key, out.bytes());
     return t;
   }();
   return table;

@@ -2,9 +2,9 @@
 
 #include <cmath>
 #include <cstring>
-
 #include <span>
 
+#include "render/cached_tables.h"
 #include "vk/barriers.h"
 #include "vk/transfer.h"
 
@@ -107,7 +107,7 @@ void EnvironmentMap::update(const SkyLight& light) {
     return;
   sky_ = light.sky_model;
   sun_ = light.sun_direction;
-  const EnvironmentLayers layers = prefilter_environment(sky_, sun_, kWidth, kHeight);
+  const EnvironmentLayers layers = cached_environment(sky_, sun_, kWidth, kHeight);
   if (valid_) ctx_.wait_idle();  // frames in flight may still sample the old layers
   vk::upload_image(ctx_, image_, std::as_bytes(std::span(layers.texels)), VK_IMAGE_LAYOUT_GENERAL,
                    vk::access::kGraphicsSampled);

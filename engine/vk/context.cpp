@@ -5,6 +5,7 @@
 #include <cstring>
 #include <string_view>
 
+#include "core/cache_dir.h"
 #include "vk/check.h"
 #include "vk/device_requirements.h"
 #include "vk/device_select.h"
@@ -51,17 +52,10 @@ VkDebugUtilsMessengerCreateInfoEXT messenger_create_info(ValidationLog* log) {
           .pUserData = log};
 }
 
-std::filesystem::path default_cache_dir() {
-  if (std::string dir = env("LAGOON_PIPELINE_CACHE"); !dir.empty()) return dir == "off" ? "" : dir;
-  if (std::string xdg = env("XDG_CACHE_HOME"); !xdg.empty()) return std::filesystem::path(xdg) / "lagoon";
-  if (std::string home = env("HOME"); !home.empty()) return std::filesystem::path(home) / ".cache" / "lagoon";
-  return "";
-}
-
 }  // namespace
 
 AdoptOptions AdoptOptions::from_environment() {
-  return {.pipeline_cache_dir = default_cache_dir()};
+  return {.pipeline_cache_dir = cache_dir_from_environment()};
 }
 
 ContextOptions ContextOptions::from_environment() {
@@ -69,7 +63,7 @@ ContextOptions ContextOptions::from_environment() {
   const std::string v = env("LAGOON_VALIDATION");
   options.validation = !v.empty() && v != "0";
   options.device_override = env("LAGOON_DEVICE");
-  options.pipeline_cache_dir = default_cache_dir();
+  options.pipeline_cache_dir = cache_dir_from_environment();
   return options;
 }
 

@@ -243,4 +243,44 @@ CascadeReadback GpuOcean::read_cascade(uint32_t index) const {
   return out;
 }
 
+std::vector<float> GpuOcean::read_foam() const {
+  const vk::Access writer{VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT};
+  std::vector<float> foam;
+  std::vector<std::vector<float>> texels(groups_.size());  // each group's layers, read once
+  for (size_t g = 0; g < groups_.size(); ++g) {
+    const std::vector<std::byte> bytes =
+        vk::readback_image(ctx_, groups_[g]->displacement, VK_IMAGE_LAYOUT_GENERAL, writer);
+    texels[g].resize(bytes.size() / sizeof(float));
+    std::memcpy(texels[g].data(), bytes.data(), texels[g].size() * sizeof(float));
+  }
+  for (const auto& [group, layer] : cascade_slots_) {
+    const size_t n2 = size_t{groups_[group]->n} * groups_[group]->n;
+    const float* rgba = texels[group].data() + 4 * n2 * layer;
+    for (size_t i = 0; i < n2; ++i) foam.push_back(rgba[4 * i + 3]);
+  }
+  return foam;
+}
+
+bool GpuOcean::write_foam(std::span<const float> foam) {
+  size_t total = 0;
+  for (const auto& [group, layer] : cascade_slots_) total += size_t{groups_[group]->n} * groups_[group]->n;
+  if (springs_ || foam.size() != total) return false;
+  std::vector<std::vector<float>> texels(groups_.size());
+  for (size_t g = 0; g < groups_.size(); ++g)
+    texels[g].assign(4 * size_t{groups_[g]->n} * groups_[g]->n * groups_[g]->cascades.size(), 0.0f);
+  size_t at = 0;
+  for (const auto& [group, layer] : cascade_slots_) {
+    const size_t n2 = size_t{groups_[group]->n} * groups_[group]->n;
+    float* rgba = texels[group].data() + 4 * n2 * layer;
+    for (size_t i = 0; i < n2; ++i) rgba[4 * i + 3] = foam[at++];
+  }
+  const vk::Access next{VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                        VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT};
+  for (size_t g = 0; g < groups_.size(); ++g)
+    vk::upload_image(ctx_, groups_[g]->displacement, std::as_bytes(std::span(texels[g])),
+                     VK_IMAGE_LAYOUT_GENERAL, next);
+  reset_foam_ = false;
+  return true;
+}
+
 }  // namespace lagoon::ocean

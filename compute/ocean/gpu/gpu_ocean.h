@@ -6,6 +6,7 @@
 // caller submits.
 #pragma once
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "core/result.h"
@@ -71,12 +72,22 @@ class GpuOcean {
   void restart() { reset_foam_ = true; }
 
   const OceanParams& params() const { return params_; }
+  FftVariant variant() const { return variant_; }  // as asked for (Auto: the device kind decides)
   const std::vector<CascadeSpectrum>& spectra() const { return spectra_; }
   CascadeTextures cascade(uint32_t index) const;
   uint32_t cascade_count() const { return uint32_t(params_.cascades.size()); }
 
   // Reads back mip 0 of one cascade (submits and waits; for tests, export and probes).
   CascadeReadback read_cascade(uint32_t index) const;
+
+  // The foam the next step decays (displacement.w), every cascade's N² texels in cascade order; submits and
+  // waits. With write_foam, lets a renderer keep a warm-up's result between runs (render/foam_cache.h).
+  std::vector<float> read_foam() const;
+  // Makes `foam` (laid out as read_foam gives it) the previous step's foam, as if the steps that made it had
+  // just run: the next step decays it instead of starting from none. The displacement's other channels and
+  // the mips are left for the next Full step, which rewrites them. False, changing nothing, when the size
+  // does not fit the cascades (or for model springs, whose state is its grid).
+  bool write_foam(std::span<const float> foam);
 
  private:
   struct Group;

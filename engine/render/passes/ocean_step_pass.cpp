@@ -1,6 +1,9 @@
 #include "render/passes/ocean_step_pass.h"
 
 #include <algorithm>
+#include <vector>
+
+#include "render/foam_cache.h"
 
 namespace lagoon::render {
 
@@ -16,17 +19,27 @@ void OceanStepPass::prepare(vk::Context& ctx, double t, bool replay) {
   if (replay ? replayed_for_ == t && time_s_ == t : time_s_ >= 0 && t >= time_s_ && t - time_s_ <= kWarmupS)
     return;
   ocean_->restart();
-  // A still frame needs the foam a running ocean would have: run the last few seconds first.
-  ctx.submit_and_wait([&](VkCommandBuffer cmd) {
-    double previous = t - kWarmupS;
-    // The warm-up's textures are not drawn: its steps bring the foam alone to their time (GpuOcean::Step).
-    ocean_->record_step(cmd, previous, 0.0, nullptr, ocean::GpuOcean::Step::WarmUp);
-    for (double step = previous + kWarmupStep; step < t - 1e-9; step += kWarmupStep) {
-      ocean_->record_step(cmd, step, step - previous, nullptr, ocean::GpuOcean::Step::WarmUp);
-      previous = step;
-    }
-    time_s_ = previous;
-  });
+  // A still frame needs the foam a running ocean would have: run the last few seconds first, or take what
+  // an earlier run's identical warm-up left (render/foam_cache.h).
+  std::vector<double> steps = {t - kWarmupS};
+  for (double step = steps.back() + kWarmupStep; step < t - 1e-9; step += kWarmupStep) steps.push_back(step);
+  if (spectra_digest_.empty()) spectra_digest_ = spectra_digest(*ocean_);
+  const io::ResultKey key =
+      foam_key(ctx, *ocean_, spectra_digest_, {.time_s = t, .length_s = kWarmupS, .step_s = kWarmupStep});
+  if (auto foam = load_foam(key, *ocean_); foam && ocean_->write_foam(*foam)) {
+    time_s_ = steps.back();
+  } else {
+    ctx.submit_and_wait([&](VkCommandBuffer cmd) {
+      double previous = steps.front();
+      // The warm-up's textures are not drawn: its steps bring the foam alone to their time (GpuOcean::Step).
+      for (double step : steps) {
+        ocean_->record_step(cmd, step, step - previous, nullptr, ocean::GpuOcean::Step::WarmUp);
+        previous = step;
+      }
+    });
+    time_s_ = steps.back();
+    if (ocean_->params().model != ocean::SurfaceModel::Springs) store_foam(key, ocean_->read_foam());
+  }
   replayed_for_ = replay ? t : -1;
 }
 

@@ -3,6 +3,7 @@
 // (GpuOcean::record_step's own barriers).
 #pragma once
 #include <memory>
+#include <string>
 
 #include "core/result.h"
 #include "ocean/gpu/gpu_ocean.h"
@@ -22,7 +23,8 @@ class OceanStepPass {
 
   // Set-up work outside the frame: when `time_s` jumps (first frame, backwards, or more than kWarmupS ahead),
   // or always with `replay`, runs the warm-up from still water in its own submission and waits, so the frame
-  // depends on `time_s` alone. Call before recording the frame for `time_s`.
+  // depends on `time_s` alone; or takes the foam an identical warm-up of an earlier run left (foam_cache.h).
+  // Call before recording the frame for `time_s`.
   void prepare(vk::Context& ctx, double time_s, bool replay = false);
   // Steps to frame.scene.time_s (from wherever prepare() or the last frame left the ocean).
   void record(const FrameContext& frame);
@@ -35,6 +37,7 @@ class OceanStepPass {
   double time_s_ = -1;  // of the last step recorded; < 0 before the first
   double replayed_for_ =
       -1;  // the time a replayed warm-up derived the state for, while it still is; else < 0
+  std::string spectra_digest_;  // of the ocean's spectra, for the foam cache's key (render/foam_cache.h)
 };
 
 }  // namespace lagoon::render

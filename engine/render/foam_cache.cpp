@@ -1,0 +1,57 @@
+#include "render/foam_cache.h"
+
+#include <span>
+
+#include "io/sha256.h"
+#include "render/cached_tables.h"
+
+namespace lagoon::render {
+
+std::string spectra_digest(const ocean::GpuOcean& ocean) {
+  std::string all;
+  for (const ocean::CascadeSpectrum& s : ocean.spectra()) {
+    all += io::sha256_hex(std::as_bytes(std::span(s.h0))) + "\n";
+    all += io::sha256_hex(std::as_bytes(std::span(s.omega))) + "\n";
+  }
+  return io::sha256_hex(std::as_bytes(std::span(all.data(), all.size())));
+}
+
+io::ResultKey foam_key(const vk::Context& ctx, const ocean::GpuOcean& ocean,
+                       const std::string& spectra_digest, const WarmUp& warm_up) {
+  const vk::DeviceInfo& device = ctx.device_info();
+  const ocean::OceanParams& p = ocean.params();
+  io::ResultKey key = table_key("foam");
+  key.add("device", device.name)
+      .add("driver", device.driver_info)
+      .add("driver_version", device.driver_version);
+  key.add("variant", double(int(ocean.variant()))).add("model", double(int(p.model)));
+  key.add("choppiness", float(p.choppiness)).add("foam_threshold", float(p.foam.threshold));
+  key.add("foam_decay", float(p.foam.decay_per_s));
+  for (const ocean::CascadeSpectrum& s : ocean.spectra())
+    key.add("resolution", s.resolution).add("patch_size", float(s.patch_size_m));
+  key.add("spectra", spectra_digest);
+  key.add("time", warm_up.time_s).add("length", warm_up.length_s).add("step", warm_up.step_s);
+  return key;
+}
+
+std::optional<std::vector<float>> load_foam(const io::ResultKey& key, const ocean::GpuOcean& ocean) {
+  size_t texels = 0;
+  for (const ocean::CascadeSpectrum& s : ocean.spectra()) texels += size_t{s.resolution} * s.resolution;
+  auto bytes = io::ResultCache::from_environment().load(key);
+  if (!bytes) return std::nullopt;
+  io::ByteReader in(*bytes);
+  std::vector<float> foam = in.get_vector<float>(texels);
+  if (!in.complete() || foam.size() != texels) return std::nullopt;
+  return foam;
+}
+
+void store_foam(const io::ResultKey& key, const std::vector<float>& foam) {
+  // Fewer than the other kinds: 0.8 MB each at the shipped cascades (25 MB in all), and every frame of a
+  // dataset is another time.
+  constexpr size_t kKept = 32;
+  io::ByteWriter out;
+  out.put_vector(foam);
+  io::ResultCache::from_environment().store(key, out.bytes(), kKept);
+}
+
+}  // namespace lagoon::render

@@ -1,0 +1,99 @@
+// What a renderer keeps between runs (render/cached_tables.h: the water LUTs, the environment map;
+// render/foam_cache.h: the warm-up's foam): a renderer that read them from the cache draws the picture, byte
+// for byte, that one which computed them draws, and a scene with other water gets its own tables, not the
+// cached ones.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <nlohmann/json.hpp>
+#include <optional>
+
+#include "render/ocean_renderer.h"
+#include "support/edited_scene.h"
+#include "support/image_compare.h"
+#include "support/temp_dir.h"
+#include "support/vk_fixture.h"
+
+namespace lagoon::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+// LAGOON_PIPELINE_CACHE (core/cache_dir.h) for the lifetime of the object, then what it was.
+class CacheFolder {
+ public:
+  explicit CacheFolder(const std::string& value) {
+    if (const char* old = std::getenv("LAGOON_PIPELINE_CACHE")) old_ = old;
+    setenv("LAGOON_PIPELINE_CACHE", value.c_str(), 1);
+  }
+  ~CacheFolder() {
+    if (old_)
+      setenv("LAGOON_PIPELINE_CACHE", old_->c_str(), 1);
+    else
+      unsetenv("LAGOON_PIPELINE_CACHE");
+  }
+  CacheFolder(const CacheFolder&) = delete;
+  CacheFolder& operator=(const CacheFolder&) = delete;
+
+ private:
+  std::optional<std::string> old_;
+};
+
+class CachedTablesRender : public GpuTest {
+ protected:
+  TempDir dir_{"lagoon_cached_tables"};
+
+  void SetUp() override {
+    GpuTest::SetUp();
+    fs::create_directory_symlink(fs::path(LAGOON_SOURCE_DIR) / "scenes/assets", dir_ / "assets");
+  }
+
+  scene::Scene small(const std::string& water_type) {
+    nlohmann::json s = shipped_scene_json("default");
+    s["render"].update({{"width", 64}, {"height", 36}});
+    s["water"]["type"] = water_type;
+    // A strong wind, so that the warm-up's foam shows: a cached foam that were not the computed one would.
+    s["ocean"]["spectrum"]["wind_speed_mps"] = 14;
+    s["ocean"]["choppiness"] = 1.5;
+    use_small_cascades(s);
+    return write_and_load(s, dir_ / "scene.json");
+  }
+
+  io::Image8 render(const scene::Scene& s, const std::string& cache) {
+    const CacheFolder folder(cache);
+    auto renderer = render::OceanRenderer::create(ctx(), s);
+    EXPECT_TRUE(renderer) << renderer.error().message;
+    return renderer ? (*renderer)->render(s) : io::Image8{};
+  }
+
+  size_t files_of(const std::string& kind) const {
+    size_t n = 0;
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(dir_ / "cache/results", ec))
+      n += entry.path().filename().string().rfind(kind + "-", 0) == 0;
+    return n;
+  }
+};
+
+TEST_F(CachedTablesRender, TablesFromTheCacheDrawTheSamePictureAndOtherWaterGetsItsOwn) {
+  const std::string cache = (dir_ / "cache").string();
+  const scene::Scene coastal = small("jerlov-1C"), ocean = small("jerlov-IA");
+  const io::Image8 computed = render(coastal, "off");
+  const io::Image8 cold = render(coastal, cache);  // computes the tables and files them
+  EXPECT_EQ(files_of("water"), 1u);
+  EXPECT_EQ(files_of("environment"), 1u);
+  EXPECT_EQ(files_of("foam"), 1u);                 // the still frame's warm-up (render/foam_cache.h)
+  const io::Image8 warm = render(coastal, cache);  // reads them
+  EXPECT_EQ(files_of("water"), 1u);
+  EXPECT_EQ(max_channel_difference(computed, cold), 0);
+  EXPECT_EQ(max_channel_difference(computed, warm), 0);
+
+  const io::Image8 other_computed = render(ocean, "off");
+  const io::Image8 other_warm = render(ocean, cache);
+  EXPECT_EQ(files_of("water"), 2u);
+  EXPECT_EQ(max_channel_difference(other_computed, other_warm), 0);
+  EXPECT_GT(max_channel_difference(other_warm, warm), 10) << "other water drew the cached water's colour";
+}
+
+}  // namespace
+}  // namespace lagoon::test
