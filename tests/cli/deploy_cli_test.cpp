@@ -9,7 +9,9 @@
 #include <nlohmann/json.hpp>
 #include <regex>
 
+#include "support/edited_scene.h"
 #include "support/run_process.h"
+#include "support/shared_output.h"
 #include "support/temp_dir.h"
 
 namespace lagoon::test {
@@ -27,39 +29,50 @@ std::map<std::string, std::string> output_files(const fs::path& dir) {
 }
 
 // A working folder as a cluster node sees the checkout: scenes/ with the shipped assets and path, and a
-// harbour without wakes (quick; the wakes replay like the foam), a `lagoon` and a pass-through `srun` on
-// PATH.
+// harbour without wakes and with 64² cascades (quick: every frame replays the foam, and the wakes like it),
+// a `lagoon` and a pass-through `srun` on PATH.
+void make_working_folder(const fs::path& dir) {
+  fs::create_directories(dir / "scenes");
+  fs::create_directories(dir / "bin");
+  fs::create_directory_symlink(kSource / "scenes/assets", dir / "scenes/assets");
+  fs::create_directory_symlink(kSource / "scenes/paths", dir / "scenes/paths");
+  nlohmann::json harbour = nlohmann::json::parse(read_file(kSource / "scenes/harbour.json"));
+  harbour["wakes"] = {{"enabled", false}};
+  use_small_cascades(harbour);
+  std::ofstream(dir / "scenes/harbour-quick.json") << harbour.dump(2);
+  fs::create_symlink(LAGOON_BINARY, dir / "bin/lagoon");
+  std::ofstream(dir / "bin/srun") << "#!/bin/sh\nexec \"$@\"\n";
+  fs::permissions(dir / "bin/srun", fs::perms::owner_all);
+}
+
+// The variables both files read, for a small set: 8 frames 2 s apart along the evaluation flight (above
+// the water, through the surface and below it), run in the working folder `dir`.
+std::string env(const fs::path& dir, const std::string& out) {
+  return "cd " + shell_quote(dir.string()) + " && PATH=" + shell_quote((dir / "bin").string()) +
+         ":$PATH SCENE=scenes/harbour-quick.json FRAMES=8 FPS=0.5 WIDTH=64 HEIGHT=36 OUT=" + out + " ";
+}
+
 class DeployCli : public ::testing::Test {
  protected:
-  void SetUp() override {
-    fs::create_directories(dir_ / "scenes");
-    fs::create_directories(dir_ / "bin");
-    fs::create_directory_symlink(kSource / "scenes/assets", dir_ / "scenes/assets");
-    fs::create_directory_symlink(kSource / "scenes/paths", dir_ / "scenes/paths");
-    nlohmann::json harbour = nlohmann::json::parse(read_file(kSource / "scenes/harbour.json"));
-    harbour["wakes"] = {{"enabled", false}};
-    std::ofstream(dir_ / "scenes/harbour-quick.json") << harbour.dump(2);
-    fs::create_symlink(LAGOON_BINARY, dir_ / "bin/lagoon");
-    std::ofstream(dir_ / "bin/srun") << "#!/bin/sh\nexec \"$@\"\n";
-    fs::permissions(dir_ / "bin/srun", fs::perms::owner_all);
-  }
+  void SetUp() override { make_working_folder(dir_.path()); }
 
-  // The variables both files read, for a small set: 8 frames 2 s apart along the evaluation flight (above
-  // the water, through the surface and below it).
-  std::string env(const std::string& out) const {
-    return "cd " + shell_quote(dir_.path().string()) + " && PATH=" + shell_quote((dir_ / "bin").string()) +
-           ":$PATH SCENE=scenes/harbour-quick.json FRAMES=8 FPS=0.5 WIDTH=64 HEIGHT=36 OUT=" + out + " ";
-  }
+  std::string env(const std::string& out) const { return test::env(dir_.path(), out); }
 
   // The shards' union in `out` (relative to the working folder) is one process's set, byte for byte, and
-  // verifies.
+  // verifies. One process's set is made once for both tests (support/shared_output.h), in a working folder
+  // of its own laid out as this one (every path in the files is relative to it).
   void expect_the_set_of_one_process(const std::string& out) {
-    const ProcessResult r = run_process(env("one") +
-                                        "lagoon render --scene scenes/harbour-quick.json --path "
-                                        "scenes/paths/evaluation.json --frames 8 --fps 0.5 --width 64 "
-                                        "--height 36 --out one/frame.png");
-    ASSERT_EQ(r.exit_code, 0) << r.output;
-    const auto expected = output_files(dir_ / "one"), sharded = output_files(dir_ / out);
+    const fs::path one = shared_output("deploy: one process's set", [](const fs::path& dir) {
+      make_working_folder(dir);
+      const ProcessResult r = run_process(test::env(dir, "one") +
+                                          "lagoon render --scene scenes/harbour-quick.json --path "
+                                          "scenes/paths/evaluation.json --frames 8 --fps 0.5 --width 64 "
+                                          "--height 36 --out one/frame.png");
+      EXPECT_EQ(r.exit_code, 0) << r.output;
+      return r.exit_code == 0;
+    });
+    ASSERT_FALSE(one.empty());
+    const auto expected = output_files(one / "one"), sharded = output_files(dir_ / out);
     ASSERT_EQ(expected.size(), 16u);  // 8 PNGs and their metadata
     ASSERT_EQ(sharded.size(), expected.size());
     for (const auto& [name, bytes] : expected) EXPECT_TRUE(sharded.at(name) == bytes) << name << " differs";

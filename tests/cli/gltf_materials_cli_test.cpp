@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/png.h"
+#include "support/edited_scene.h"
 #include "support/gltf_quads.h"
 #include "support/run_process.h"
 #include "support/temp_dir.h"
@@ -37,6 +38,7 @@ class GltfMaterialsCli : public ::testing::Test {
     s["camera"] = {{"position", {0, 3, 0}}, {"look_at", {0, 3, 20}}};
     s["render"].update({{"width", 64}, {"height", 36}});
     s["seafloor"] = {{"type", "none"}};
+    use_small_cascades(s);  // the model's materials are checked, not the sea
     s["objects"] = json::array({json{{"file", "model.gltf"}, {"position", {0, 3, 20}}}});
     std::ofstream(dir_ / "scene.json") << s.dump();
     return run_process(shell_quote(LAGOON_BINARY) + " render --scene " +
