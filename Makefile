@@ -32,7 +32,7 @@ test: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
 
 build: configure
-	$(call say,"building everything: the command, the demo, the tests and the fuzz targets")
+	$(call say,"building everything: the command + the demo + the tests + the fuzz targets")
 	cmake --build $(BUILD_DIR) -j $(JOBS)
 
 deps:
