@@ -2,8 +2,9 @@
 // cascades) kept between runs in the result cache (io/result_cache.h): a second render of the same sea at the
 // same time on the same device starts from the foam the first one built, bit for bit the state its own
 // warm-up would have left. The key holds everything the steps compute from: the code's fingerprint, the
-// device and driver (another device rounds differently), the FFT variant, each cascade's h0(k) and ω(k), the
-// step's parameters, the frame's time and the warm-up's steps.
+// device and driver (another device rounds differently; on a CPU device, the host's instruction set too),
+// the FFT variant, each cascade's h0(k) and ω(k), the step's parameters, the frame's time and the warm-up's
+// steps.
 #pragma once
 #include <optional>
 #include <string>
