@@ -35,24 +35,6 @@ class ResultKey {
   std::string kind_, text_;
 };
 
-class ResultCache {
- public:
-  // In `dir`; an empty dir caches nothing.
-  explicit ResultCache(std::filesystem::path dir) : dir_(std::move(dir)) {}
-  // The folder from the environment (LAGOON_PIPELINE_CACHE etc.) plus "results".
-  static ResultCache from_environment();
-
-  std::optional<std::vector<std::byte>> load(const ResultKey& key) const;
-  // Best effort: a failure to write is not an error (the result was computed anyway). Keeps at most
-  // `max_kept` results of the key's kind, the least recently used going first.
-  void store(const ResultKey& key, std::span<const std::byte> bytes,
-             size_t max_kept = kMaxResultsPerKind) const;
-  std::filesystem::path file(const ResultKey& key) const;
-
- private:
-  std::filesystem::path dir_;
-};
-
 // Plain values and arrays to bytes and back, for the results' own formats.
 class ByteWriter {
  public:
@@ -110,6 +92,43 @@ class ByteReader {
   std::span<const std::byte> bytes_;
   size_t at_ = 0;
   bool ok_ = true;
+};
+
+class ResultCache {
+ public:
+  // In `dir`; an empty dir caches nothing.
+  explicit ResultCache(std::filesystem::path dir) : dir_(std::move(dir)) {}
+  // The folder from the environment (LAGOON_PIPELINE_CACHE etc.) plus "results".
+  static ResultCache from_environment();
+
+  std::optional<std::vector<std::byte>> load(const ResultKey& key) const;
+  // Best effort: a failure to write is not an error (the result was computed anyway). Keeps at most
+  // `max_kept` results of the key's kind, the least recently used going first.
+  void store(const ResultKey& key, std::span<const std::byte> bytes,
+             size_t max_kept = kMaxResultsPerKind) const;
+  std::filesystem::path file(const ResultKey& key) const;
+
+  // The commonest result: one array of exactly `count` plain values (a table, a texture's texels). A file
+  // holding another count, or anything more, is a miss.
+  template <typename T>
+  std::optional<std::vector<T>> load_vector(const ResultKey& key, size_t count) const {
+    auto bytes = load(key);
+    if (!bytes) return std::nullopt;
+    ByteReader in(*bytes);
+    std::vector<T> values = in.get_vector<T>(count);
+    if (!in.complete() || values.size() != count) return std::nullopt;
+    return values;
+  }
+  template <typename T>
+  void store_vector(const ResultKey& key, const std::vector<T>& values,
+                    size_t max_kept = kMaxResultsPerKind) const {
+    ByteWriter out;
+    out.put_vector(values);
+    store(key, out.bytes(), max_kept);
+  }
+
+ private:
+  std::filesystem::path dir_;
 };
 
 }  // namespace lagoon::io

@@ -25,17 +25,11 @@ EnvironmentLayers cached_environment(const gpu::SkyModelGpu& sky, glm::vec3 sun_
       .add("width", width)
       .add("height", height);
   const io::ResultCache cache = io::ResultCache::from_environment();
-  const size_t texels = size_t{width} * height * LAGOON_ENV_LAYERS;
-  if (auto bytes = cache.load(key)) {
-    io::ByteReader in(*bytes);
-    EnvironmentLayers layers{.width = width, .height = height};
-    layers.texels = in.get_vector<glm::vec4>(texels);
-    if (in.complete() && layers.texels.size() == texels) return layers;
-  }
+  const size_t texels_count = size_t{width} * height * LAGOON_ENV_LAYERS;
+  if (auto texels = cache.load_vector<glm::vec4>(key, texels_count))
+    return EnvironmentLayers{.width = width, .height = height, .texels = std::move(*texels)};
   EnvironmentLayers layers = prefilter_environment(sky, sun_dir, width, height);
-  io::ByteWriter out;
-  out.put_vector(layers.texels);
-  cache.store(key, out.bytes());
+  cache.store_vector(key, layers.texels);
   return layers;
 }
 

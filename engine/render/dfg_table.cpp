@@ -52,21 +52,15 @@ const DfgTable& dfg_table() {
     key.add("size", n).add("samples", kSamples);
     const io::ResultCache cache = io::ResultCache::from_environment();
     DfgTable t;
-    if (auto bytes = cache.load(key)) {
-      io::ByteReader in(*bytes);
-      const std::vector<glm::vec2> ab = in.get_vector<glm::vec2>(t.ab.size());
-      if (in.complete() && ab.size() == t.ab.size()) {
-        std::copy(ab.begin(), ab.end(), t.ab.begin());
-        return t;
-      }
+    if (auto ab = cache.load_vector<glm::vec2>(key, t.ab.size())) {
+      std::copy(ab->begin(), ab->end(), t.ab.begin());
+      return t;
     }
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i)
         t.ab[size_t(j * n + i)] =
             integrate_dfg(std::max(double(i) / (n - 1), 1e-3), double(j) / (n - 1), kSamples);
-    io::ByteWriter out;
-    out.put_vector(std::vector<glm::vec2>(t.ab.begin(), t.ab.end()));
-    cache.store(key, out.bytes());
+    cache.store_vector(key, std::vector<glm::vec2>(t.ab.begin(), t.ab.end()));
     return t;
   }();
   return table;

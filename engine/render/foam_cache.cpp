@@ -57,21 +57,14 @@ io::ResultKey foam_key(const vk::Context& ctx, const ocean::GpuOcean& ocean,
 std::optional<std::vector<float>> load_foam(const io::ResultKey& key, const ocean::GpuOcean& ocean) {
   size_t texels = 0;
   for (const ocean::CascadeSpectrum& s : ocean.spectra()) texels += size_t{s.resolution} * s.resolution;
-  auto bytes = io::ResultCache::from_environment().load(key);
-  if (!bytes) return std::nullopt;
-  io::ByteReader in(*bytes);
-  std::vector<float> foam = in.get_vector<float>(texels);
-  if (!in.complete() || foam.size() != texels) return std::nullopt;
-  return foam;
+  return io::ResultCache::from_environment().load_vector<float>(key, texels);
 }
 
 void store_foam(const io::ResultKey& key, const std::vector<float>& foam) {
   // Fewer than the other kinds: 0.8 MB each at the shipped cascades (25 MB in all), and every frame of a
   // dataset is another time.
   constexpr size_t kKept = 32;
-  io::ByteWriter out;
-  out.put_vector(foam);
-  io::ResultCache::from_environment().store(key, out.bytes(), kKept);
+  io::ResultCache::from_environment().store_vector(key, foam, kKept);
 }
 
 }  // namespace lagoon::render

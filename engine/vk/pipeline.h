@@ -99,8 +99,8 @@ class PipelineInterface {
 
 // A VkPipeline made on first use: creating a renderer's passes compiles nothing for the pipelines its scene
 // never draws with (the underwater ones above the water, the waterline's, the classic shading modes), and
-// on lavapipe a pipeline's creation alone costs tens of milliseconds. get() is thread-safe, so a worker may
-// make one ahead of its first use (make_now()).
+// on lavapipe a pipeline's creation alone costs tens of milliseconds. get() is thread-safe (a lock), as a
+// made pipeline was to read from several threads.
 class DeferredPipeline {
  public:
   DeferredPipeline() = default;

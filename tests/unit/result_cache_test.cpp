@@ -41,6 +41,12 @@ TEST(ResultCache, WhatWasStoredComesBackUnderItsKeyOnly) {
   io::ResultKey other_kind("dfg");
   other_kind.add("type", "jerlov-II").add("sun_elevation", 30.0);
   EXPECT_FALSE(cache.load(other_kind));
+  // An array of plain values (the tables' form) comes back only with the count asked for.
+  const std::vector<float> table = {0.5f, 1.5f, -2.0f};
+  cache.store_vector(water_key(31), table);
+  EXPECT_EQ(cache.load_vector<float>(water_key(31), 3), table);
+  EXPECT_FALSE(cache.load_vector<float>(water_key(31), 2));
+  EXPECT_FALSE(cache.load_vector<float>(water_key(31), 4));
 }
 
 TEST(ResultCache, NamesAndTextsCannotRunIntoEachOther) {
