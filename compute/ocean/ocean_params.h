@@ -28,6 +28,9 @@ struct SpectrumParams {
   // (m⁴, so amplitude is dimensionless); the default gives the ω⁻⁵ tail of the other spectra at p = 2.
   double amplitude = 0.0081 / (2 * 3.14159265358979323846);
   double directional_exponent = 2.0;
+  // JONSWAP and TMA: end fetch-limited growth at full development (ocean/spectrum.h, sea_development). false
+  // applies the fetch laws at any fetch, as before issue 33: only `lagoon validate --broken` asks for it.
+  bool cap_at_full_development = true;
 };
 
 // Which surface model makes the sea (issue 15, docs/models.md): the FFT ocean's random spectrum, or an

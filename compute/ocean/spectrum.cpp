@@ -1,5 +1,6 @@
 #include "ocean/spectrum.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -12,6 +13,15 @@ double fetch_m(const SpectrumParams& s) {
   return s.fetch_km * 1000.0;
 }
 
+SeaDevelopment development(const SpectrumParams& s) {
+  return sea_development(s.wind_speed_mps, fetch_m(s), s.gamma, s.cap_at_full_development);
+}
+
+// γ as the sea has developed: the scene's below a tenth of full development, 1 at it.
+double peak_enhancement(const SpectrumParams& s) {
+  return s.type == SpectrumType::Jonswap || s.type == SpectrumType::Tma ? development(s).gamma : s.gamma;
+}
+
 // α of the ω⁻⁵ range for each type.
 double spectrum_alpha(const SpectrumParams& s) {
   switch (s.type) {
@@ -21,7 +31,7 @@ double spectrum_alpha(const SpectrumParams& s) {
       return kPiersonMoskowitzAlpha;
     case SpectrumType::Jonswap:
     case SpectrumType::Tma:
-      return jonswap_alpha(s.wind_speed_mps, fetch_m(s));
+      return development(s).alpha;
     case SpectrumType::JonswapEq15:
       return kPiersonMoskowitzAlpha;  // eq. 14's 0.0081
     case SpectrumType::PhillipsEq18:
@@ -30,23 +40,29 @@ double spectrum_alpha(const SpectrumParams& s) {
   return 0.0;
 }
 
+// Everything of S(ω) that does not depend on ω, once.
+SeaDevelopment shape_of(const SpectrumParams& s) {
+  return {spectrum_alpha(s), peak_omega(s), peak_enhancement(s)};
+}
+
 // Eq. 18's omnidirectional density in k, ∫ P dφ · k (m³).
 double phillips_eq18_omnidirectional(double k, const SpectrumParams& s) {
   return phillips_eq18(k, 1.0, s) * cos_power_integral(s.directional_exponent) * k;
 }
 
-// S(ω) with α and ω_p already known.
-double evaluate(const SpectrumParams& s, double alpha, double peak, double depth_m, double omega) {
+// S(ω) with α, ω_p and γ already known.
+double evaluate(const SpectrumParams& s, const SeaDevelopment& shape, double depth_m, double omega) {
   if (!(omega > 0.0)) return 0.0;
+  const double alpha = shape.alpha, peak = shape.peak_omega;
   switch (s.type) {
     case SpectrumType::Phillips:
       return phillips(omega, s.wind_speed_mps, s.small_wave_cutoff_m);
     case SpectrumType::PiersonMoskowitz:
       return pierson_moskowitz(omega, alpha, peak);
     case SpectrumType::Jonswap:
-      return jonswap(omega, alpha, peak, s.gamma);
+      return jonswap(omega, alpha, peak, shape.gamma);
     case SpectrumType::Tma:
-      return jonswap(omega, alpha, peak, s.gamma) * kitaigorodskii(omega * std::sqrt(depth_m / kG));
+      return jonswap(omega, alpha, peak, shape.gamma) * kitaigorodskii(omega * std::sqrt(depth_m / kG));
     case SpectrumType::JonswapEq15:
       return jonswap(omega, alpha, peak, 3.3);  // eq. 15's ln(3.3): γ fixed at 3.3
     case SpectrumType::PhillipsEq18: {
@@ -91,6 +107,23 @@ double jonswap_peak_omega(double wind_speed_mps, double fetch_m) {
   return 22.0 * std::cbrt(kG * kG / (wind_speed_mps * fetch_m));
 }
 
+double fully_developed_fetch() {
+  const double r = 22.0 / (2.0 * std::numbers::pi * 0.13);
+  return r * r * r;
+}
+
+SeaDevelopment sea_development(double wind_speed_mps, double fetch_m, double gamma, bool cap) {
+  const double u2_g = wind_speed_mps * wind_speed_mps / kG;
+  const double chi = fetch_m / u2_g, chi_full = fully_developed_fetch();
+  if (!cap || chi <= 0.1 * chi_full)
+    return {jonswap_alpha(wind_speed_mps, fetch_m), jonswap_peak_omega(wind_speed_mps, fetch_m), gamma};
+  const double grown = std::min(std::log10(chi / chi_full) + 1.0, 1.0);  // 0 at χ_full/10, 1 at χ_full
+  const double fetch = std::min(chi, chi_full) * u2_g;
+  const double alpha_full = jonswap_alpha(wind_speed_mps, chi_full * u2_g);
+  return {jonswap_alpha(wind_speed_mps, fetch) * std::pow(kPiersonMoskowitzAlpha / alpha_full, grown),
+          jonswap_peak_omega(wind_speed_mps, fetch), std::pow(gamma, 1.0 - grown)};
+}
+
 double phillips(double omega, double wind_speed_mps, double small_wave_cutoff_m) {
   if (!(omega > 0.0)) return 0.0;
   const double k = omega * omega / kG;
@@ -120,7 +153,7 @@ double peak_omega(const SpectrumParams& s) {
       return pierson_moskowitz_peak_omega(s.wind_speed_mps);
     case SpectrumType::Jonswap:
     case SpectrumType::Tma:
-      return jonswap_peak_omega(s.wind_speed_mps, fetch_m(s));
+      return development(s).peak_omega;
     case SpectrumType::JonswapEq15:
       return pierson_moskowitz_peak_omega(s.wind_speed_mps);  // eq. 14's f_m = 0.13 g / U10
     case SpectrumType::PhillipsEq18:  // the maximum of k⁻³ exp(-1/(kL)²): k = sqrt(2/3) / L
@@ -130,7 +163,7 @@ double peak_omega(const SpectrumParams& s) {
 }
 
 double frequency_spectrum(const SpectrumParams& s, double depth_m, double omega) {
-  return evaluate(s, spectrum_alpha(s), peak_omega(s), depth_m, omega);
+  return evaluate(s, shape_of(s), depth_m, omega);
 }
 
 DirectionalSpectrum::DirectionalSpectrum(const OceanParams& params)
@@ -138,15 +171,14 @@ DirectionalSpectrum::DirectionalSpectrum(const OceanParams& params)
       depth_m_(params.depth_m),
       dispersion_{params.depth_m, true, 0.0},
       spreading_(spreading_for(params.spectrum)),
-      alpha_(spectrum_alpha(params.spectrum)),
-      peak_omega_(peak_omega(params.spectrum)) {
+      shape_(shape_of(params.spectrum)) {
   const double phi = params.spectrum.wind_direction_deg * std::numbers::pi / 180.0;
   wind_x_ = std::sin(phi);
   wind_z_ = std::cos(phi);
 }
 
 double DirectionalSpectrum::frequency(double omega) const {
-  return evaluate(spectrum_, alpha_, peak_omega_, depth_m_, omega);
+  return evaluate(spectrum_, shape_, depth_m_, omega);
 }
 
 double DirectionalSpectrum::omnidirectional(double k) const {

@@ -21,9 +21,24 @@ double kitaigorodskii(double omega_h);
 // PM peak (seed 14): ω_p = 2π · 0.13 g/U, rad/s.
 double pierson_moskowitz_peak_omega(double wind_speed_mps);
 // Fetch-limited JONSWAP (Horvath eq. 28-29): α = 0.076 (U²/(F g))^0.22, ω_p = 22 (g²/(U F))^(1/3).
-// Not clamped at full development: fetches beyond a few thousand km give a peak below PM's.
+// The raw laws, valid below full development only: sea_development() is what the spectra use.
 double jonswap_alpha(double wind_speed_mps, double fetch_m);
 double jonswap_peak_omega(double wind_speed_mps, double fetch_m);
+
+// The dimensionless fetch gF/U² at which JONSWAP's peak reaches Pierson–Moskowitz's, 22 χ^(-1/3) =
+// 2π·0.13: χ = (22 / (2π·0.13))³ ≈ 1.95e4. A sea this developed no longer grows with fetch.
+double fully_developed_fetch();
+
+// JONSWAP's α, ω_p and γ at a fetch, growing into Pierson–Moskowitz's sea at full development (issue 33):
+// below a tenth of the fully developed fetch the fetch laws above with the given γ; from there to full
+// development γ falls to 1 and α to PM's 0.0081, both log-linearly in χ, while ω_p follows its fetch law
+// to PM's peak; beyond it the PM sea. Continuous, and the height never falls as the fetch grows (the
+// α ω_p⁻⁴ growth, χ^1.11, outpaces the loss of the peak enhancement, at most 1.63x for γ = 3.3, over the
+// decade). `cap` false: the raw fetch laws at any fetch.
+struct SeaDevelopment {
+  double alpha = 0, peak_omega = 0, gamma = 1;
+};
+SeaDevelopment sea_development(double wind_speed_mps, double fetch_m, double gamma, bool cap = true);
 
 // Phillips as a frequency spectrum with PM's saturation range (our choice, so all four spectra share the
 // ω⁻⁵ tail and α): S(ω) = α g² ω⁻⁵ exp(-1/(kL)²) exp(-k²l²), k = ω²/g (deep water), L = U²/g,
@@ -60,7 +75,7 @@ class DirectionalSpectrum {
   double depth_m_;
   DispersionModel dispersion_;  // loop period 0: the spectrum uses the physical ω
   SpreadingModel spreading_;
-  double alpha_ = 0, peak_omega_ = 0;
+  SeaDevelopment shape_;  // α, ω_p and γ
   double wind_x_ = 0, wind_z_ = 1;
 };
 

@@ -87,8 +87,8 @@ TEST(OceanSpectrum, PeaksSitAtPeakOmega) {
 
 TEST(OceanSpectrum, JonswapFetchRelationsAndPeakEnhancement) {
   SpectrumParams s = spectrum_of(SpectrumType::Jonswap);
-  s.fetch_km = 100.0;
-  const double x = kG * 100e3 / 100.0;  // dimensionless fetch gF/U²
+  s.fetch_km = 10.0;  // fetch-limited: a twentieth of full development, where the fetch laws hold unchanged
+  const double x = kG * 10e3 / 100.0;  // dimensionless fetch gF/U²
   const double alpha = 0.076 * std::pow(x, -0.22), wp = 22.0 * kG / 10.0 * std::pow(x, -1.0 / 3.0);
   EXPECT_NEAR(peak_omega(s), wp, 1e-12);
   const auto pm_shape = [&](double w) {
@@ -114,6 +114,44 @@ TEST(OceanSpectrum, JonswapAtFullDevelopmentMeetsPiersonMoskowitz) {
   const double fetch = std::pow(22.0 / wp_pm, 3.0) * kG * kG / wind;  // solves 22 (g²/(UF))^(1/3) = ω_p
   EXPECT_NEAR(jonswap_peak_omega(wind, fetch), wp_pm, 1e-9);
   EXPECT_NEAR(jonswap_alpha(wind, fetch), 0.0081, 0.0008);
+}
+
+// Hs = 4 sqrt(∫S dω) of the JONSWAP scene spectrum at a fetch, by quadrature.
+double jonswap_hs(double wind, double fetch_km, bool cap = true) {
+  SpectrumParams s;
+  s.type = SpectrumType::Jonswap;
+  s.wind_speed_mps = wind;
+  s.fetch_km = fetch_km;
+  s.cap_at_full_development = cap;
+  return 4.0 * std::sqrt(integrate_log([&](double w) { return frequency_spectrum(s, 1000.0, w); }, 0.01, 60.0, 4000));
+}
+
+TEST(OceanSpectrum, ALongerFetchNeverRaisesTheSeaBeyondPiersonMoskowitz) {
+  // Issue 33: beyond full development the sea is PM's (closed form Hs = 4 sqrt(α g² / (5 ω_p⁴))), whatever
+  // the fetch, and on the way there Hs grows continuously and never falls. The raw fetch laws (cap off)
+  // make a storm of a long fetch: 1000 km at 6 m/s was 4.6 m against PM's 0.89 m.
+  for (double wind : {6.0, 10.0, 18.0}) {
+    const double wp = pierson_moskowitz_peak_omega(wind);
+    const double pm = 4.0 * std::sqrt(0.0081 * kG * kG / (5.0 * std::pow(wp, 4.0)));
+    EXPECT_NEAR(jonswap_hs(wind, 1e5), pm, 0.005 * pm) << wind;
+    EXPECT_GT(jonswap_hs(wind, 1e5, false), 1.5 * pm) << "the broken variant must differ: " << wind;
+    double last = 0.0;
+    for (double f = 1.0; f < 3e4; f *= 1.08) {  // 1 km to 30 000 km
+      const double hs = jonswap_hs(wind, f);
+      EXPECT_GE(hs, last * (1.0 - 1e-9)) << wind << " m/s at " << f << " km";
+      if (last > 0) {
+        EXPECT_LE(hs, last * 1.1) << "jump at " << f << " km";
+      }  // continuous: no step between samples
+      last = hs;
+    }
+  }
+  // Below a tenth of the fully developed fetch the fetch laws hold unchanged (γ = 3.3).
+  const double fetch_km = 0.05 * fully_developed_fetch() * 100.0 / kG / 1000.0;
+  EXPECT_NEAR(jonswap_hs(10.0, fetch_km), jonswap_hs(10.0, fetch_km, false), 1e-12);
+  const SeaDevelopment d = sea_development(10.0, 2.0 * fully_developed_fetch() * 100.0 / kG, 3.3);
+  EXPECT_NEAR(d.gamma, 1.0, 1e-12);
+  EXPECT_NEAR(d.alpha, 0.0081, 1e-12);
+  EXPECT_NEAR(d.peak_omega, pierson_moskowitz_peak_omega(10.0), 1e-9);
 }
 
 TEST(OceanSpectrum, KitaigorodskiiBranchesAndTma) {
