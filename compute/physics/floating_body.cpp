@@ -7,10 +7,12 @@
 namespace lagoon::physics {
 
 FloatingBody::FloatingBody(const TriangleMesh& hull, const MassProperties& mass, Damping damping,
-                           WaterProperties water)
-    : indices_(hull.indices), mass_(mass), damping_(damping), water_(water) {
-  hull_.reserve(hull.vertices.size());
-  for (const glm::dvec3& v : hull.vertices) hull_.push_back(v - mass.centre);
+                           WaterProperties water, BodyOptions options)
+    : mass_(mass), damping_(damping), water_(water), options_(std::move(options)) {
+  TriangleMesh sampled = refine_hull(hull, options_.sampling);
+  indices_ = std::move(sampled.indices);
+  hull_.reserve(sampled.vertices.size());
+  for (const glm::dvec3& v : sampled.vertices) hull_.push_back(v - mass.centre);
   for (size_t t = 0; t + 2 < indices_.size(); t += 3)
     hull_area_ += 0.5 * glm::length(glm::cross(hull_[indices_[t + 1]] - hull_[indices_[t]],
                                                hull_[indices_[t + 2]] - hull_[indices_[t]]));
@@ -20,6 +22,7 @@ FloatingBody::FloatingBody(const TriangleMesh& hull, const MassProperties& mass,
 
 void FloatingBody::place(glm::dvec3 origin, glm::dquat orientation) {
   state_ = BodyState{};
+  has_level_ = false;
   state_.orientation = glm::normalize(orientation);
   state_.position = origin + state_.orientation * mass_.centre;
 }
@@ -69,15 +72,50 @@ void FloatingBody::step(double dt, const WaterHeight& water) {
   force -= wet * (damping_.linear + damping_.quadratic * glm::length(v)) * mass_.mass * v;
   glm::dvec3 torque = wrench_.torque;
   torque -= wet * (damping_.angular + damping_.angular_quadratic * glm::length(w)) * (inertia * w);
-
-  // Semi-implicit Euler: velocities first, then positions with the new velocities.
-  state_.velocity += dt * force / mass_.mass;
+  torque -= glm::cross(w, inertia * w);  // gyroscopic
   const glm::dmat3 inverse_inertia = r * inverse_inertia_ * glm::transpose(r);
-  state_.angular_velocity += dt * (inverse_inertia * (torque - glm::cross(w, inertia * w)));
+  const double added_mass = add_heave_radiation(dt, water, force);
+  add_floor(dt, inverse_inertia, force, torque);
+
+  // Semi-implicit Euler: velocities first, then positions with the new velocities. The water's added mass
+  // slows the heave only.
+  glm::dvec3 dv = dt * force / mass_.mass;
+  dv.y = dt * force.y / (mass_.mass + added_mass);
+  state_.velocity += dv;
+  state_.angular_velocity += dt * (inverse_inertia * torque);
   state_.position += dt * state_.velocity;
   const glm::dvec3 wn = state_.angular_velocity;
   state_.orientation =
       glm::normalize(state_.orientation + 0.5 * dt * glm::dquat(0.0, wn.x, wn.y, wn.z) * state_.orientation);
+}
+
+double FloatingBody::add_heave_radiation(double dt, const WaterHeight& water, glm::dvec3& force) {
+  if (!options_.radiation.enabled) return 0.0;
+  // The water's vertical velocity at the body, from its height under the centre a step ago.
+  const double level = water(state_.position.x, state_.position.z);
+  const double rise = has_level_ ? (level - last_level_) / dt : 0.0;
+  last_level_ = level;
+  has_level_ = true;
+  const double displaced = std::max(wrench_.force.y, 0.0) / (water_.density * water_.gravity);
+  const HeaveTerms terms = heave_terms(options_.radiation, displaced, water_.density, water_.gravity);
+  force.y -= terms.damping_n_s_per_m * (state_.velocity.y - rise);
+  return terms.added_mass_kg;
+}
+
+void FloatingBody::add_floor(double dt, const glm::dmat3& inverse_inertia, glm::dvec3& force,
+                             glm::dvec3& torque) {
+  floor_push_ = {};
+  if (!options_.floor) return;
+  const RigidMotion motion{state_.position, state_.velocity, state_.angular_velocity};
+  floor_push_ = floor_push(world_, motion, mass_.mass, options_.floor, options_.contact, water_.gravity);
+  if (floor_push_.points == 0) return;
+  force += floor_push_.force;
+  torque += floor_push_.torque;
+  // Friction last: it holds the body against everything else the step applies.
+  const glm::dvec3 friction =
+      floor_friction(floor_push_, motion, mass_.mass, inverse_inertia, force, torque, dt, options_.contact);
+  force += friction;
+  torque += glm::cross(floor_push_.at - state_.position, friction);
 }
 
 }  // namespace lagoon::physics

@@ -1,12 +1,19 @@
 // A rigid body with six degrees of freedom floating on the water (issue 14): gravity, the water's pressure on
 // its hull (physics/hydrostatics.h) and damping, integrated with a fixed time step (semi-implicit Euler with
 // a unit-quaternion attitude), so the same inputs give the same motion whatever the frame rate.
+// The pressure is integrated over a refined copy of the hull (physics/hull_sampling.h): its heave in a wave
+// follows the wave, not the model's tessellation. With a floor (physics/floor_contact.h) a body denser than
+// water comes to rest on it, and a lighter one rises off it. Heave added mass and radiation damping are
+// opt-in (physics/heave_radiation.h).
 // Deterministic: no threads, no clocks.
 #pragma once
 #include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
 #include <vector>
 
+#include "physics/floor_contact.h"
+#include "physics/heave_radiation.h"
+#include "physics/hull_sampling.h"
 #include "physics/hydrostatics.h"
 #include "physics/mass_properties.h"
 
@@ -34,10 +41,19 @@ struct WaterProperties {
   double gravity = 9.81;    // m/s²
 };
 
+struct BodyOptions {
+  HullSampling sampling;  // the points the water's height is sampled at
+  FloorHeight floor;      // none: nothing under the body (it sinks for ever if it cannot float)
+  FloorContactParams contact;
+  HeaveRadiation radiation;  // off: the hydrostatic pressure alone
+};
+
 class FloatingBody {
  public:
-  // `hull` in body coordinates (the model's); `mass` from solid_mass_properties or given by the scene.
-  FloatingBody(const TriangleMesh& hull, const MassProperties& mass, Damping damping, WaterProperties water);
+  // `hull` in body coordinates (the model's); `mass` from solid_mass_properties or given by the scene (of
+  // the model's own mesh: refining it for the pressure changes no mass property).
+  FloatingBody(const TriangleMesh& hull, const MassProperties& mass, Damping damping, WaterProperties water,
+               BodyOptions options = {});
 
   // Places the body's model origin at `origin` with `orientation`, at rest.
   void place(glm::dvec3 origin, glm::dquat orientation);
@@ -46,6 +62,8 @@ class FloatingBody {
   bool settle_vertically(double level);
   // One step of dt seconds with the water's height as it is at the step's start.
   void step(double dt, const WaterHeight& water);
+  // Puts a floor under the body (or takes it away with an empty function).
+  void set_floor(FloorHeight floor) { options_.floor = std::move(floor); }
 
   const BodyState& state() const { return state_; }
   BodyState& state() { return state_; }
@@ -54,18 +72,31 @@ class FloatingBody {
   const MassProperties& mass() const { return mass_; }
   // The last step's water wrench about the centre of mass.
   const Wrench& last_wrench() const { return wrench_; }
+  // The last step's push of the floor (no points when it did not touch it).
+  const FloorPush& last_floor_push() const { return floor_push_; }
+  // How many points the water's height is sampled at (the refined hull's vertices).
+  size_t sample_points() const { return hull_.size(); }
   double kinetic_energy() const;
 
  private:
-  std::vector<glm::dvec3> hull_;  // relative to the centre of mass
+  // The floor's push and friction for this step, added to the step's force and torque (about the centre).
+  void add_floor(double dt, const glm::dmat3& inverse_inertia, glm::dvec3& force, glm::dvec3& torque);
+  // With options_.radiation: adds the radiation damping to `force`, returns the heave's added mass (kg).
+  double add_heave_radiation(double dt, const WaterHeight& water, glm::dvec3& force);
+
+  std::vector<glm::dvec3> hull_;  // the refined hull, relative to the centre of mass
   std::vector<uint32_t> indices_;
   double hull_area_ = 0;
   MassProperties mass_;
   glm::dmat3 inverse_inertia_{1.0};
   Damping damping_;
   WaterProperties water_;
+  BodyOptions options_;
   BodyState state_;
   Wrench wrench_;
+  FloorPush floor_push_;
+  double last_level_ = 0;  // the water's height under the centre a step ago (radiation only)
+  bool has_level_ = false;
   std::vector<glm::dvec3> world_;  // scratch: the hull in world coordinates
 };
 

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "gltf/gltf_loader.h"
+#include "render/floor_height.h"
 #include "render/object_pose.h"
 #include "render/vehicle_tracks.h"
 
@@ -42,13 +43,15 @@ physics::MassProperties body_mass(const physics::TriangleMesh& hull, const scene
   return m;
 }
 
-physics::FloatingBody make_body(const physics::TriangleMesh& hull, const scene::HullBody& f) {
+// `floor`: what it rests on if it sinks (none for the vehicles, which follow their tracks).
+physics::FloatingBody make_body(const physics::TriangleMesh& hull, const scene::HullBody& f,
+                                physics::FloorHeight floor = {}) {
   return physics::FloatingBody(hull, body_mass(hull, f),
                                {.linear = f.linear_damping,
                                 .quadratic = f.quadratic_damping,
                                 .angular = f.angular_damping,
                                 .angular_quadratic = f.angular_damping},
-                               {});
+                               {}, {.floor = std::move(floor)});
 }
 
 // A closed hull with a positive volume, or an error naming `field`.
@@ -90,6 +93,11 @@ Result<std::unique_ptr<FloatingObjects>> FloatingObjects::create(
     if (!hull) return make_error(hull.error().message + ", or set floating.enabled to false");
     out->hulls_.push_back(std::move(*hull));
   }
+  if (!out->hulls_.empty()) {
+    auto floor = floor_height(scene);
+    if (!floor) return floor.error();
+    out->floor_ = std::move(*floor);
+  }
   for (size_t v = 0; v < scene.vehicles.size(); ++v) {
     const scene::Vehicle& vehicle = scene.vehicles[v];
     if (vehicle.depth_m > 0) continue;
@@ -120,7 +128,7 @@ void FloatingObjects::reset() {
     if (!object.floating.enabled) continue;
     const physics::TriangleMesh& hull = hulls_[h++];
     const scene::Floating& f = object.floating;
-    physics::FloatingBody body = make_body(hull, f);
+    physics::FloatingBody body = make_body(hull, f, floor_);
     body.place(glm::dvec3(object.position), object_orientation(object));
     body.settle_vertically(0.0);  // at its draught on the mean level, so it does not start with a bounce
     bodies_.push_back({o, double(object.scale), std::move(body),

@@ -1,7 +1,8 @@
 // What moves in the scene (docs/physics.md): the floating objects (objects[].floating), each a rigid body
 // (physics/floating_body.h) on the sea's heights around it (ocean/local_heights.h), and the vehicles
 // (vehicles[], physics/vehicle_motion.h), stepped together at a fixed 120 Hz from time 0, when they are at
-// rest where the scene puts them. With wakes.felt_by_bodies they ride the vehicles' wakes too
+// rest where the scene puts them. The floating objects rest on the scene's sea floor (render/floor_height.h)
+// when they sink. With wakes.felt_by_bodies they ride the vehicles' wakes too
 // (render/wake_heights.h), a vehicle every wake but its own. advance() brings them to a frame's time,
 // simulating again from 0 when asked for an earlier one, so a frame at time t shows the same poses however it
 // was reached.
@@ -26,8 +27,9 @@ class FloatingObjects {
  public:
   static constexpr double kStepS = 1.0 / 120.0;
 
-  // Loads the hull of every floating object and surface vehicle (its glTF mesh, scaled). Fails naming the
-  // field when a hull is not a closed surface with a positive volume.
+  // Loads the hull of every floating object and surface vehicle (its glTF mesh, scaled), and the floor under
+  // them. Fails naming the field when a hull is not a closed surface with a positive volume, or a glTF floor
+  // cannot be read.
   // The vehicles follow `tracks` (one per scene vehicle; fresh ones on the scene's paths when not given).
   static Result<std::unique_ptr<FloatingObjects>> create(const scene::Scene& scene,
                                                          const ocean::OceanParams& ocean,
@@ -73,6 +75,7 @@ class FloatingObjects {
   std::vector<ocean::CascadeSpectrum> spectra_;
   std::vector<physics::TriangleMesh> hulls_;          // floating objects', in scene order
   std::vector<physics::TriangleMesh> vehicle_hulls_;  // surface vehicles', in scene order
+  physics::FloorHeight floor_;                        // world y of the sea floor the floating objects rest on
   std::shared_ptr<ocean::WaveQuery> sea_;  // shared by every body's LocalHeights: one evaluation per knot
   std::vector<Body> bodies_;
   std::vector<Vehicle> vehicles_;

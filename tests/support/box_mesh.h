@@ -19,4 +19,29 @@ inline physics::TriangleMesh box(glm::dvec3 h, glm::dvec3 c = glm::dvec3(0.0)) {
   return m;
 }
 
+// The same box with every face split into n x n quads (2n² triangles): a finer model of the same solid.
+inline physics::TriangleMesh tessellated_box(glm::dvec3 h, int n, glm::dvec3 c = glm::dvec3(0.0)) {
+  physics::TriangleMesh m;
+  // Each face from a corner along two edges u, v with u × v pointing out of the box.
+  auto face = [&](glm::dvec3 corner, glm::dvec3 u, glm::dvec3 v) {
+    const uint32_t base = uint32_t(m.vertices.size());
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i)
+        m.vertices.push_back(c + corner + (double(i) / n) * u + (double(j) / n) * v);
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const uint32_t a = base + uint32_t(j * (n + 1) + i), b = a + 1, d = a + uint32_t(n + 1), e = d + 1;
+        m.indices.insert(m.indices.end(), {a, b, e, a, e, d});
+      }
+  };
+  const glm::dvec3 x(2 * h.x, 0, 0), y(0, 2 * h.y, 0), z(0, 0, 2 * h.z);
+  face(-h, x, z);                           // bottom, −y
+  face(glm::dvec3(-h.x, h.y, -h.z), z, x);  // top, +y
+  face(-h, y, x);                           // −z
+  face(glm::dvec3(-h.x, -h.y, h.z), x, y);  // +z
+  face(-h, z, y);                           // −x
+  face(glm::dvec3(h.x, -h.y, -h.z), y, z);  // +x
+  return m;
+}
+
 }  // namespace lagoon::test

@@ -1,16 +1,21 @@
 // Floating bodies (compute/physics, issue 14): mass properties against a box's closed form, the water's
 // pressure against Archimedes, and the motion: a half-density box floats at half its height and settles, a
-// drop comes to rest, an hour stays finite, and a small body heaves with a long regular wave.
+// drop comes to rest, an hour stays finite, and a small body heaves with a long regular wave. Issue 33: the
+// heave in a wave as long as the body follows Froude–Krylov's sinc law whatever the model's tessellation,
+// and bodies rest on a floor (flat or sloping) or rise off it.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/gtc/quaternion.hpp>
+#include <limits>
 #include <numbers>
+#include <utility>
 
 #include "physics/floating_body.h"
 #include "physics/hydrostatics.h"
 #include "physics/mass_properties.h"
+#include "physics/mesh_floor.h"
 #include "support/box_mesh.h"
 #include "support/reference_math.h"
 
@@ -62,10 +67,11 @@ TEST(Hydrostatics, ArchimedesAndTheCentreOfBuoyancy) {
   EXPECT_NEAR(w.force.y, kRhoWater * kG * (0.15 * 2.0) * 1.0, 1e-6 * kRhoWater * kG);
 }
 
-physics::FloatingBody half_density_box(glm::dvec3 h, physics::Damping damping = {}) {
+physics::FloatingBody half_density_box(glm::dvec3 h, physics::Damping damping = {},
+                                       physics::HullSampling sampling = {}) {
   const physics::TriangleMesh hull = box(h);
   return physics::FloatingBody(hull, physics::solid_mass_properties(hull, kRhoWater / 2), damping,
-                               physics::WaterProperties{kRhoWater, kG});
+                               physics::WaterProperties{kRhoWater, kG}, {.sampling = sampling});
 }
 
 TEST(FloatingBody, HalfDensityBoxFloatsAtHalfItsHeightAndSettles) {
@@ -118,8 +124,11 @@ TEST(FloatingBody, ADropFromOneMetreComesToRest) {
 
 TEST(FloatingBody, AnHourStaysFiniteAndItsEnergyBounded) {
   const glm::dvec3 h(0.5, 0.3, 0.5);
+  // Sampled every 0.25 m (not the default 1/16 of its size): the swell is 63 m long, and an hour at the
+  // default's 3000 triangles would take a minute.
   physics::FloatingBody body =
-      half_density_box(h, {.linear = 0.05, .quadratic = 0.05, .angular = 0.05, .angular_quadratic = 0.05});
+      half_density_box(h, {.linear = 0.05, .quadratic = 0.05, .angular = 0.05, .angular_quadratic = 0.05},
+                       {.spacing_m = 0.25});
   body.place(glm::dvec3(0, 1.0, 0), glm::angleAxis(0.6, glm::normalize(glm::dvec3(1, 0.2, 1))));
   const double bound = body.mass().mass * kG * (1.0 + 2 * h.y);  // all the potential energy it can release
   double most = 0;
@@ -165,6 +174,238 @@ TEST(FloatingBody, HeavesWithALongRegularWave) {
   RecordProperty("phase_deg", std::to_string(phase_deg));
   EXPECT_NEAR(heave, amplitude, 0.1 * amplitude);
   EXPECT_NEAR(phase_deg, 0.0, 15.0);
+}
+
+// Heave amplitude (m) of a body in the regular wave h = a·cos(kx − ωt), deep water (ω² = gk), fitted at the
+// wave's frequency over `measure` periods after `settle` periods of transients.
+double heave_in_wave(physics::FloatingBody& body, double amplitude, double length_m, int settle = 10,
+                     int measure = 6) {
+  const double k = 2 * std::numbers::pi / length_m, omega = std::sqrt(kG * k);
+  const double dt = 1.0 / 120, period = 2 * std::numbers::pi / omega;
+  const int first = int(settle * period / dt), steps = first + int(measure * period / dt);
+  std::vector<std::pair<double, double>> samples;  // (body y, wave phase at the body)
+  double mean = 0;
+  for (int i = 0; i < steps; ++i) {
+    const double t = i * dt;
+    body.step(dt, [&](double x, double) { return amplitude * std::cos(k * x - omega * t); });
+    if (i < first) continue;
+    samples.push_back({body.state().position.y, k * body.state().position.x - omega * (t + dt)});
+    mean += body.state().position.y / double(steps - first);
+  }
+  double a = 0, b = 0;
+  for (const auto& [y, theta] : samples) {
+    a += 2.0 * (y - mean) * std::cos(theta) / double(samples.size());
+    b += 2.0 * (y - mean) * std::sin(theta) / double(samples.size());
+  }
+  return std::hypot(a, b);
+}
+
+// A box 2h long (x), of half water's density, with n x n quads a face, floating level in still water.
+physics::FloatingBody tessellated_half_density_box(glm::dvec3 h, int n, physics::HullSampling sampling = {}) {
+  const physics::TriangleMesh hull = tessellated_box(h, n);
+  physics::FloatingBody body(hull, physics::solid_mass_properties(hull, kRhoWater / 2), {},
+                             physics::WaterProperties{kRhoWater, kG}, {.sampling = sampling});
+  body.place(glm::dvec3(0.0), glm::dquat(1, 0, 0, 0));
+  return body;
+}
+
+TEST(HullSampling, RefiningKeepsTheSurfaceAndItsBuoyancy) {
+  const glm::dvec3 h(5.0, 0.1, 1.0);
+  const physics::TriangleMesh hull = box(h);
+  const physics::TriangleMesh fine = physics::refine_hull(hull, {});
+  const double spacing = physics::sample_spacing(hull, {});
+  EXPECT_NEAR(spacing, 10.0 / 16, 1e-12);
+  double longest = 0;
+  for (size_t t = 0; t < fine.indices.size(); t += 3)
+    for (int k = 0; k < 3; ++k)
+      longest = std::max(longest, glm::distance(fine.vertices[fine.indices[t + k]],
+                                                fine.vertices[fine.indices[t + (k + 1) % 3]]));
+  EXPECT_LE(longest, spacing + 1e-12);
+  EXPECT_NEAR(physics::solid_mass_properties(fine, 1.0).volume, 8 * h.x * h.y * h.z, 1e-9);
+  const physics::Wrench w =
+      physics::hydrostatic_wrench(fine.vertices, fine.indices, flat(), {}, kRhoWater, kG);
+  EXPECT_NEAR(w.force.y, kRhoWater * kG * 4 * h.x * h.y * h.z, 1e-6 * kRhoWater * kG);
+  // The cap raises the spacing; a negative spacing keeps the model's own triangles.
+  EXPECT_LE(physics::refine_hull(hull, {.max_triangles = 500}).indices.size() / 3, 500u);
+  EXPECT_EQ(physics::refine_hull(hull, {.spacing_m = -1}).indices.size(), hull.indices.size());
+  RecordProperty("refined_triangles", std::to_string(fine.indices.size() / 3));
+}
+
+// A 10 m x 2 m x 0.2 m box of half water's density in a 20 m wave 5 cm high. Quasi-static Froude–Krylov:
+// the pressure averaged over its length is sinc(kL/2) of the wave's (0.637 at kL/2 = π/2), and its heave
+// resonance (ω_n² = ρgA_wp/m = g/draught, no added mass) lifts that by 1/(1 − (ω/ω_n)²): 0.657 of the wave.
+// The model's tessellation (2 or 800 triangles a face) must not matter.
+TEST(FloatingBody, HeaveFollowsTheSincLawWhateverTheTessellation) {
+  const glm::dvec3 h(5.0, 0.1, 1.0);
+  const double amplitude = 0.05, length = 20.0, k = 2 * std::numbers::pi / length;
+  const double omega2 = kG * k, omega_n2 = kG / h.y;  // draught h.y at half density
+  const double expected = std::sin(k * h.x) / (k * h.x) / (1 - omega2 / omega_n2);
+  physics::FloatingBody coarse = tessellated_half_density_box(h, 1);
+  physics::FloatingBody fine = tessellated_half_density_box(h, 20);
+  const double coarse_ratio = heave_in_wave(coarse, amplitude, length) / amplitude;
+  const double fine_ratio = heave_in_wave(fine, amplitude, length) / amplitude;
+  RecordProperty("expected", std::to_string(expected));
+  RecordProperty("coarse_heave_over_amplitude", std::to_string(coarse_ratio));
+  RecordProperty("fine_heave_over_amplitude", std::to_string(fine_ratio));
+  EXPECT_NEAR(coarse_ratio, expected, 0.1 * expected);
+  EXPECT_NEAR(fine_ratio, expected, 0.1 * expected);
+  EXPECT_NEAR(coarse_ratio, fine_ratio, 0.02 * fine_ratio);
+}
+
+// As long as the wave (kL/2 = π): the wave's pressure cancels along it, so it hardly heaves.
+TEST(FloatingBody, ABoxAsLongAsTheWaveHardlyHeaves) {
+  const glm::dvec3 h(10.0, 0.1, 1.0);
+  const double amplitude = 0.05;
+  for (int n : {1, 20}) {
+    physics::FloatingBody body = tessellated_half_density_box(h, n);
+    const double ratio = heave_in_wave(body, amplitude, 20.0) / amplitude;
+    RecordProperty("heave_over_amplitude_n" + std::to_string(n), std::to_string(ratio));
+    EXPECT_LT(ratio, 0.1) << n << " x " << n << " quads a face";
+  }
+}
+
+// Without refinement (the water sampled at the model's vertices only) the same box heaves as its modeller
+// tessellated it: the two-triangle box sees the wave at its ends only, in antiphase.
+TEST(FloatingBody, AtTheModelsVerticesOnlyTheHeaveDependsOnTessellation) {
+  const glm::dvec3 h(5.0, 0.1, 1.0);
+  const double amplitude = 0.05;
+  physics::FloatingBody coarse = tessellated_half_density_box(h, 1, {.spacing_m = -1});
+  physics::FloatingBody fine = tessellated_half_density_box(h, 20, {.spacing_m = -1});
+  const double coarse_ratio = heave_in_wave(coarse, amplitude, 20.0) / amplitude;
+  const double fine_ratio = heave_in_wave(fine, amplitude, 20.0) / amplitude;
+  RecordProperty("coarse_heave_over_amplitude", std::to_string(coarse_ratio));
+  RecordProperty("fine_heave_over_amplitude", std::to_string(fine_ratio));
+  EXPECT_LT(coarse_ratio, 0.5 * fine_ratio);
+}
+
+// A body on a floor at y_floor(x, z), released level at `y` and run `seconds`.
+physics::FloatingBody on_floor(double density, physics::FloorHeight floor, glm::dvec3 at, double seconds,
+                               glm::dquat orientation = glm::dquat(1, 0, 0, 0)) {
+  const physics::TriangleMesh hull = box(glm::dvec3(0.5, 0.3, 0.5));
+  physics::FloatingBody body(hull, physics::solid_mass_properties(hull, density), {},
+                             physics::WaterProperties{kRhoWater, kG}, {.floor = std::move(floor)});
+  body.place(at, orientation);
+  for (int i = 0; i < int(seconds * 120); ++i) body.step(1.0 / 120, flat());
+  return body;
+}
+
+// The lowest of the box's corners above the floor under it (negative: pressed into it).
+double clearance(const physics::FloatingBody& body, const physics::FloorHeight& floor) {
+  double least = 1e30;
+  for (int k = 0; k < 8; ++k) {
+    const glm::dvec3 corner(k & 1 ? 0.5 : -0.5, k & 2 ? 0.3 : -0.3, k & 4 ? 0.5 : -0.5);
+    const glm::dvec3 p = body.state().position + body.state().orientation * corner;
+    least = std::min(least, p.y - floor(p.x, p.z));
+  }
+  return least;
+}
+
+TEST(FloatingBody, ADenseBodyComesToRestOnAFlatFloor) {
+  const physics::FloorHeight floor = [](double, double) { return -5.0; };
+  for (double density : {2 * kRhoWater, 20000.0}) {
+    const physics::FloatingBody body =
+        on_floor(density, floor, glm::dvec3(0, 0, 0), 20, glm::angleAxis(0.4, glm::dvec3(1, 0, 0)));
+    const double gap = clearance(body, floor);
+    RecordProperty("clearance_m_" + std::to_string(int(density)), std::to_string(gap));
+    EXPECT_LT(gap, 0.0) << "it should press into the floor a little";
+    EXPECT_GT(gap, -0.03) << density << " kg/m^3";
+    EXPECT_LT(glm::length(body.state().velocity), 1e-3) << density << " kg/m^3";
+    EXPECT_LT(glm::length(body.state().angular_velocity), 1e-2) << density << " kg/m^3";
+    EXPECT_GT((body.state().orientation * glm::dvec3(0, 1, 0)).y, 0.999) << "it lies flat";
+  }
+}
+
+TEST(FloatingBody, ADenseBodyStaysPutOnASlope) {
+  // 11° (tan = 0.2), less than friction's 0.6: it lands, and once it rests it does not creep.
+  const physics::FloorHeight floor = [](double x, double) { return -5.0 + 0.2 * x; };
+  physics::FloatingBody body = on_floor(20000.0, floor, glm::dvec3(0, 0, 0), 10);
+  const glm::dvec3 rested = body.state().position;
+  for (int i = 0; i < 10 * 120; ++i) body.step(1.0 / 120, flat());
+  const double gap = clearance(body, floor);
+  RecordProperty("clearance_m", std::to_string(gap));
+  RecordProperty("crept_m", std::to_string(glm::distance(body.state().position, rested)));
+  EXPECT_GT(gap, -0.03);
+  EXPECT_LT(gap, 0.01);
+  EXPECT_LT(glm::distance(body.state().position, rested), 0.005);
+  EXPECT_LT(glm::length(body.state().velocity), 1e-3);
+  // On a slope steeper than friction holds (tan 31° = 0.6 < 1), it slides down (−x).
+  const physics::FloorHeight steep = [](double x, double) { return -5.0 + 1.0 * x; };
+  const physics::FloatingBody slider = on_floor(20000.0, steep, glm::dvec3(0, 0, 0), 5);
+  EXPECT_LT(slider.state().position.x, -1.0);
+}
+
+TEST(FloatingBody, ALightBodyReleasedOnTheFloorRisesAndFloats) {
+  const physics::FloorHeight floor = [](double, double) { return -5.0; };
+  // Half water's density, its bottom on the floor: it rises and floats at half its height.
+  const physics::FloatingBody body = on_floor(kRhoWater / 2, floor, glm::dvec3(0, -4.7, 0), 60);
+  EXPECT_NEAR(body.state().position.y, 0.0, 0.02 * 0.6);
+  EXPECT_EQ(body.last_floor_push().points, 0);
+}
+
+// A sphere of radius r, `rings` from pole to pole, counter-clockwise from outside.
+physics::TriangleMesh sphere(double r, int rings) {
+  physics::TriangleMesh m;
+  const int sectors = 2 * rings;
+  for (int i = 0; i <= rings; ++i)
+    for (int j = 0; j <= sectors; ++j) {
+      const double theta = std::numbers::pi * i / rings, phi = 2 * std::numbers::pi * j / sectors;
+      m.vertices.push_back(
+          r * glm::dvec3(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)));
+    }
+  for (int i = 0; i < rings; ++i)
+    for (int j = 0; j < sectors; ++j) {
+      const uint32_t a = uint32_t(i * (sectors + 1) + j), b = a + 1, d = a + uint32_t(sectors + 1), c = d + 1;
+      m.indices.insert(m.indices.end(), {a, b, c, a, c, d});
+    }
+  return m;
+}
+
+// The time between the first `count` downward crossings of the centre through y = 0 (s), stepping at 120 Hz.
+double decay_period(physics::FloatingBody& body, int count) {
+  std::vector<double> crossings;
+  double last = body.state().position.y;
+  for (int i = 1; i < 120 * 60 && int(crossings.size()) < count + 1; ++i) {
+    body.step(1.0 / 120, flat());
+    const double y = body.state().position.y;
+    if (last > 0 && y <= 0) crossings.push_back((i - 1 + last / (last - y)) / 120.0);
+    last = y;
+  }
+  return crossings.size() > 1 ? (crossings.back() - crossings.front()) / double(crossings.size() - 1) : 0.0;
+}
+
+// The IEA OES Task 10 floating sphere: R = 5 m, half submerged in fresh water (m = ρ·2/3·πR³ = 261.8 t),
+// released 1 m above its rest. Its heave decays with the period 2π·sqrt((m + a)/K), K = ρgπR², a the
+// hemisphere's added mass near resonance (Hulme 1982: μ ≈ 0.45 at kR ≈ 1): 4.41 s. The pressure alone gives
+// 2π·sqrt(m/K) = 3.66 s.
+TEST(FloatingBody, TheTask10SphereDecaysWithItsAddedMassPeriod) {
+  const double rho = 1000.0, radius = 5.0;
+  const physics::TriangleMesh hull = sphere(radius, 32);
+  const physics::MassProperties mass = physics::solid_mass_properties(hull, rho / 2);
+  ASSERT_NEAR(mass.mass, 261.8e3, 0.01 * 261.8e3);
+  auto released = [&](bool radiation) {
+    physics::FloatingBody body(hull, mass, {0, 0, 0, 0}, {rho, kG}, {.radiation = {.enabled = radiation}});
+    body.place(glm::dvec3(0, 1.0, 0), glm::dquat(1, 0, 0, 0));
+    return body;
+  };
+  const double expected = 2 * std::numbers::pi * std::sqrt(2 * radius * 1.45 / (3 * kG));
+  physics::FloatingBody with = released(true), without = released(false);
+  const double period = decay_period(with, 3), bare = decay_period(without, 3);
+  RecordProperty("period_s", std::to_string(period));
+  RecordProperty("period_without_radiation_s", std::to_string(bare));
+  EXPECT_NEAR(period, expected, 0.1 * expected);
+  EXPECT_NEAR(bare, 2 * std::numbers::pi * std::sqrt(2 * radius / (3 * kG)), 0.05 * expected);
+  // Radiation damping: the swing decays (ζ = ν/(2(1 + μ)) ≈ 0.07 a period: to about 0.65 per period).
+  EXPECT_LT(std::abs(with.state().position.y), 0.5);
+}
+
+TEST(MeshFloor, TheHighestTriangleOverAPointAndNothingBeyond) {
+  // Two triangles of the plane y = -3 + 0.5x over [0, 4] x [0, 2], and a ledge at y = -1 over x < 1.
+  const physics::MeshFloor floor(
+      {{0, -3, 0}, {4, -1, 0}, {4, -1, 2}, {0, -3, 2}, {0, -1, 0}, {1, -1, 0}, {0, -1, 2}},
+      {0, 1, 2, 0, 2, 3, 4, 5, 6});
+  EXPECT_NEAR(floor.height(3.0, 1.0), -1.5, 1e-12);
+  EXPECT_NEAR(floor.height(0.2, 0.2), -1.0, 1e-12);  // under the ledge: the ledge
+  EXPECT_EQ(floor.height(5.0, 1.0), -std::numeric_limits<double>::infinity());
 }
 
 }  // namespace

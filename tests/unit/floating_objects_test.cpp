@@ -1,6 +1,7 @@
 // Floating objects in scenes (objects[].floating; engine/render/floating_objects.h): the shipped buoy rides
-// the default scene's sea, a frame's time gives the same poses however it is reached, and a mesh that
-// encloses nothing is refused with the field named.
+// the default scene's sea, a frame's time gives the same poses however it is reached, a mesh that
+// encloses nothing is refused with the field named, and a buoy too dense to float rests on the harbour's
+// floor (issue 33).
 #include "render/floating_objects.h"
 
 #include <gtest/gtest.h>
@@ -8,11 +9,14 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <limits>
 
 #include "ocean/wave_query.h"
+#include "render/floor_height.h"
 #include "render/vehicle_sediment.h"
 #include "render/vehicle_tracks.h"
 #include "render/vehicle_wakes.h"
+#include "support/gltf_quads.h"
 #include "support/shipped_scene.h"
 #include "support/temp_dir.h"
 
@@ -110,6 +114,60 @@ TEST(FloatingObjects, AnEarlierTimeIsSimulatedAgainFromZero) {
   const auto pa = (*a)->poses(), pb = (*b)->poses();
   ASSERT_EQ(pa.size(), 1u);
   EXPECT_EQ(0, std::memcmp(&pa[0].model_to_world, &pb[0].model_to_world, sizeof(glm::mat4)));
+}
+
+// The harbour's buoy at 20000 kg/m³ sinks to the slope floor (6 m down where it is) and stays there. The
+// scene is cut to that one body, without the vehicles.
+TEST(FloatingObjects, ABuoyTooDenseToFloatRestsOnTheHarbourFloor) {
+  const scene::Scene s =
+      shipped_scene("harbour", {R"(objects=[{"file":"assets/buoy.gltf","position":[2,0,12],)"
+                                R"("floating":{"enabled":true,"density_kg_m3":20000}}])",
+                                "vehicles=[]"});
+  auto floating = render::FloatingObjects::create(s, s.ocean, ocean::make_cascade_spectra(s.ocean));
+  ASSERT_TRUE(floating) << floating.error().message;
+  auto floor = render::floor_height(s);
+  ASSERT_TRUE(floor);
+  (*floating)->advance(60.0);
+  const physics::FloatingBody* body = (*floating)->body(0);
+  ASSERT_NE(body, nullptr);
+  // The buoy's model spans y from -0.8 m (tools/gen_assets.py): its bottom's depth against the floor's.
+  const glm::dvec3 origin = body->model_origin();
+  const double floor_y = (*floor)(origin.x, origin.z);
+  RecordProperty("origin_y", std::to_string(origin.y));
+  RecordProperty("floor_y", std::to_string(floor_y));
+  EXPECT_LT(floor_y, -5.0);
+  EXPECT_GT(origin.y - 0.8, floor_y - 0.05) << "it went through the floor";
+  // Upright on the 1:8 slope its disc (radius 0.6 m) touches at its low rim: its centre 0.075 m higher.
+  EXPECT_LT(origin.y - 0.8, floor_y + 0.15) << "it does not rest on the floor";
+  EXPECT_LT(glm::length(body->state().velocity), 0.01);
+  EXPECT_GT(body->last_floor_push().points, 0);
+}
+
+// What bodies rest on, for each kind of floor: the slope's closed form, a glTF floor's triangles (a 4 m
+// square laid flat 7 m down; nothing beyond it), and with none the sea's depth.
+TEST(FloatingObjects, TheFloorIsKnownOnTheCpuForEveryKindOfFloor) {
+  scene::Scene s = shipped_scene("harbour", {});
+  auto slope = render::floor_height(s);
+  ASSERT_TRUE(slope);
+  EXPECT_NEAR((*slope)(0.0, -30.0), -0.8, 1e-6);
+  EXPECT_NEAR((*slope)(5.0, 200.0), -30.0, 1e-5);
+
+  TempDir dir;
+  write_quads(dir / "floor.gltf", {{.material = nlohmann::json::object(),
+                                    .translation = {1, -7, 0},
+                                    .rotation = {-0.70710678, 0, 0, 0.70710678}}});
+  s.seafloor.type = scene::SeafloorType::Gltf;
+  s.seafloor.file = (dir / "floor.gltf").string();
+  auto mesh = render::floor_height(s);
+  ASSERT_TRUE(mesh) << mesh.error().message;
+  EXPECT_NEAR((*mesh)(0.5, 1.5), -7.0, 1e-5);
+  EXPECT_NEAR((*mesh)(-0.9, -1.9), -7.0, 1e-5);
+  EXPECT_EQ((*mesh)(3.5, 0.0), -std::numeric_limits<double>::infinity());
+
+  s.seafloor.type = scene::SeafloorType::None;
+  auto none = render::floor_height(s);
+  ASSERT_TRUE(none);
+  EXPECT_EQ((*none)(3.0, 4.0), -s.ocean.depth_m);
 }
 
 TEST(FloatingObjects, AMeshThatEnclosesNothingIsRefusedNamingTheField) {
