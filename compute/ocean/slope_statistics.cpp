@@ -5,6 +5,7 @@
 #include <numbers>
 #include <vector>
 
+#include "ocean/short_waves.h"
 #include "ocean/spectrum.h"
 
 namespace lagoon::ocean {
@@ -95,8 +96,7 @@ SlopeMoments sea_slope_moments(const OceanParams& params, const std::vector<Casc
     m.xx += one.xx, m.zz += one.zz, m.xz += one.xz;
   }
   if (params.model == SurfaceModel::Fft) {
-    const SlopeMoments rest =
-        spectrum_slope_moments(params, cascade_bands(params).back().k_max, kCapillaryCutoffK);
+    const SlopeMoments rest = short_wave_slope_moments(params, cascade_bands(params).back().k_max);
     m.xx += rest.xx, m.zz += rest.zz, m.xz += rest.xz;
   }
   return m;

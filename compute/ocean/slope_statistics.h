@@ -29,8 +29,9 @@ struct SlopeMoments {
 SlopeMoments slope_moments(const CascadeSpectrum& spectrum);
 // The continuous directional spectrum's over k_from <= |k| < k_to (no sampling).
 SlopeMoments spectrum_slope_moments(const OceanParams& params, double k_from, double k_to);
-// The whole sea's: every cascade's, plus the spectrum's from the last cascade's band to 1 cm for the FFT
-// ocean (the waves the glint also counts; the other models have no waves beyond their cascades).
+// The whole sea's: every cascade's, plus for the FFT ocean the capillary-gravity waves beyond the last
+// cascade's band (ocean/short_waves.h, Elfouhaily et al. 1997: the waves the glint also counts; the other
+// models have no waves beyond their cascades).
 SlopeMoments sea_slope_moments(const OceanParams& params);
 // The same from cascade spectra already built for `params` (make_cascade_spectra), without building them
 // again.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ocean/short_waves.h"
 #include "ocean/slope_statistics.h"
 #include "optics/colour.h"
 #include "render/seafloor.h"
@@ -37,8 +38,15 @@ OceanShading ocean_shading(const ocean::GpuOcean& ocean) {
   out.bound = {.horizontal_m = float(6.0 * sigma * ocean.params().choppiness + 1.0),
                .vertical_m = float(6.0 * sigma + 1.0)};
   const double last_k = ocean::cascade_bands(ocean.params())[drawn - 1].k_max;
-  out.subgrid_mss =
-      float(ocean::spectrum_mean_square_slope(ocean.params(), last_k, ocean::kCapillaryCutoffK));
+  // The FFT sea's short waves are Elfouhaily's capillary-gravity spectrum (ocean/short_waves.h), as in the
+  // water LUTs' roughness (ocean::sea_slope_moments); the classic models keep their spectrum's tail.
+  if (ocean.params().model == ocean::SurfaceModel::Fft) {
+    const ocean::SlopeMoments rest = ocean::short_wave_slope_moments(ocean.params(), last_k);
+    out.subgrid_mss = float(rest.xx + rest.zz);
+  } else {
+    out.subgrid_mss =
+        float(ocean::spectrum_mean_square_slope(ocean.params(), last_k, ocean::kCapillaryCutoffK));
+  }
   return out;
 }
 
