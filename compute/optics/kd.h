@@ -9,4 +9,8 @@ namespace lagoon::optics {
 // At grid wavelength i, with the "mixed" phase function of the inputs' water and the sun of their sky.
 double model_kd(const LutInputs& inputs, int i, double diffuse_path_factor);
 
+// The irradiance reflectance just below the surface, E_u/E_d = (G− + F−)/(G+ + F+) at depth 0, of the same
+// deep water (the water's own colour, against which a Secchi disk is seen).
+double model_reflectance(const LutInputs& inputs, int i, double diffuse_path_factor);
+
 }  // namespace lagoon::optics
