@@ -24,5 +24,6 @@ const Command& compare_command();
 const Command& soak_command();
 const Command& sky_command();
 const Command& dataset_command();
+const Command& validate_command();
 
 }  // namespace lagoon::cli

@@ -25,6 +25,7 @@ const std::vector<const Command*>& commands() {
       &lagoon::cli::soak_command(),
       &lagoon::cli::sky_command(),
       &lagoon::cli::dataset_command(),
+      &lagoon::cli::validate_command(),
   };
   return list;
 }
