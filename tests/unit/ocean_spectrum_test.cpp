@@ -123,7 +123,8 @@ double jonswap_hs(double wind, double fetch_km, bool cap = true) {
   s.wind_speed_mps = wind;
   s.fetch_km = fetch_km;
   s.cap_at_full_development = cap;
-  return 4.0 * std::sqrt(integrate_log([&](double w) { return frequency_spectrum(s, 1000.0, w); }, 0.01, 60.0, 4000));
+  return 4.0 * std::sqrt(integrate_log([&](double w) { return frequency_spectrum(s, 1000.0, w); }, 0.01, 60.0,
+                                       4000));
 }
 
 TEST(OceanSpectrum, ALongerFetchNeverRaisesTheSeaBeyondPiersonMoskowitz) {
