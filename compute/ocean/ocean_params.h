@@ -128,10 +128,16 @@ struct CascadeParams {
   uint32_t resolution = 256;     // N: samples per side, a power of two in [64, 1024]
 };
 
+// How much of the sea the whitecaps cover (ocean/whitecaps.h): as Monahan & O'Muircheartaigh (1980)
+// observed for the wind, or where the Jacobian falls below foam.threshold (the seed's rule).
+enum class FoamCoverage { Monahan, Threshold };
+
 struct FoamParams {
-  // Foam builds where the Jacobian of the horizontal displacement J < threshold (J = 1 on undisturbed
-  // water, < 1 where the surface is compressed, <= 0 where it folds over): new foam = clamp(threshold - J, 0,
-  // 1).
+  FoamCoverage coverage = FoamCoverage::Monahan;
+  // Each cascade's foam builds where its Jacobian of the horizontal displacement J < threshold (J = 1 on
+  // undisturbed water, < 1 where the surface is compressed, <= 0 where it folds over): new foam =
+  // clamp(threshold - J, 0, 1), persisting as it decays. With coverage threshold the whole sea's Jacobian
+  // whitens by the same rule; with monahan by ocean/whitecaps.h's.
   double threshold = 0.5;
   double decay_per_s = 0.5;  // existing foam decays as exp(-decay_per_s · dt) (persistence)
 };

@@ -27,8 +27,8 @@ struct FrameUniforms {
   vec4 cascade_texel;  // L/N (m) of cascades 0..3
   vec4 cascade_mss;    // mean square slope (ocean/slope_statistics.h) of cascades 0..3
   vec4 glint;          // x = mean square slope of the waves shorter than the last cascade (to 1 cm),
-                       // y = foam threshold on the whole sea's Jacobian, z = significant wave height m
-                       // for the shore foam (0 = none), w unused
+                       // y = foam onset on the whole sea's Jacobian, z = significant wave height m
+                       // for the shore foam (0 = none), w = foam width (ocean/whitecaps.h)
   vec4 post;           // x = exposure, y = display gamma, z = tone-map m, w = tone-map exponent
   vec4 post2;          // x = tone-map white, y = tone-map world adaptation, z = tone map on (1) / clamp (0)
   vec4 lut;            // x = r_max m, y = h_max m of the colour LUTs, z = refraction on, w = light scale

@@ -130,6 +130,7 @@ GpuOcean::~GpuOcean() = default;
 
 void GpuOcean::build(std::vector<CascadeSpectrum> spectra) {
   spectra_ = std::move(spectra);
+  foam_rule_ = ocean::foam_rule(params_, spectra_);
   groups_.clear();
   cascade_slots_.assign(spectra_.size(), {0, 0});
   reset_foam_ = true;

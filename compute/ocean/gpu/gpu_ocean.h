@@ -14,6 +14,7 @@
 #include "ocean/gpu/springs_gpu.h"
 #include "ocean/initial_spectrum.h"
 #include "ocean/ocean_params.h"
+#include "ocean/whitecaps.h"
 #include "vk/context.h"
 #include "vk/gpu_timer.h"
 #include "vk/image.h"
@@ -74,6 +75,9 @@ class GpuOcean {
   const OceanParams& params() const { return params_; }
   FftVariant variant() const { return variant_; }  // as asked for (Auto: the device kind decides)
   const std::vector<CascadeSpectrum>& spectra() const { return spectra_; }
+  // Where the whole sea's Jacobian whitens (ocean/whitecaps.h), from the parameters and the spectra: what
+  // the surface shader applies. The steps' own per-cascade foam keeps foam.threshold.
+  const FoamRule& foam_rule() const { return foam_rule_; }
   CascadeTextures cascade(uint32_t index) const;
   uint32_t cascade_count() const { return uint32_t(params_.cascades.size()); }
 
@@ -97,6 +101,7 @@ class GpuOcean {
   OceanParams params_;
   FftVariant variant_;
   std::vector<CascadeSpectrum> spectra_;
+  FoamRule foam_rule_;
   std::vector<std::unique_ptr<Group>> groups_;
   std::vector<std::pair<uint32_t, uint32_t>> cascade_slots_;  // cascade -> (group, layer)
   bool reset_foam_ = true;
