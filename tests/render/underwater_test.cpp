@@ -129,7 +129,11 @@ TEST_F(Underwater, ObjectsAboveAreSeenRefractedInTheWindow) {
   const scene::Scene s = shipped_scene(
       "default", {"camera.position=[0,-3,0]", "camera.look_at=[0,10,0.001]", "camera.fov_deg=120",
                   "render.width=" + std::to_string(size), "render.height=" + std::to_string(size),
-                  "ocean.spectrum.wind_speed_mps=0.5", "water.type=jerlov-I", "seafloor.type=none",
+                  // A flat sea, as the reference assumes (a fully developed 0.5 m/s sea has ripples as steep
+                  // as any sea's, which bend the line of sight to the small mark): Phillips at a breeze with
+                  // every wave shorter than ~60 m damped away.
+                  "ocean.spectrum.type=phillips", "ocean.spectrum.wind_speed_mps=0.05",
+                  "ocean.spectrum.small_wave_cutoff_m=10", "water.type=jerlov-I", "seafloor.type=none",
                   "objects=[{\"file\":\"assets/buoy.gltf\",\"position\":[3,0,0]}]", "sun.elevation_deg=80",
                   "render.effects.particles=false"});
   auto renderer = render::OceanRenderer::create(ctx(), s);
@@ -143,7 +147,10 @@ TEST_F(Underwater, ObjectsAboveAreSeenRefractedInTheWindow) {
   for (uint32_t y = 0; y < size; ++y)
     for (uint32_t x = 0; x < size; ++x) {
       const uint8_t* p = &image.rgba[(size_t{y} * size + x) * 4];
-      if (p[0] < p[2] + 10) continue;
+      // The mark's shaded side is barely red ((39, 21, 26) at its middle under a flat sea): a margin of 10
+      // missed its rim, and the test passed only while the ripples of the 0.5 m/s sea it used happened to
+      // bend the rim inwards (issue 33 made that sea fully developed, and flat seas expose it: 26.5°).
+      if (p[0] < p[2] + 3) continue;
       const double r = std::hypot(x + 0.5 - size / 2.0, y + 0.5 - size / 2.0);
       inner_deg = std::min(inner_deg, std::atan(r / focal) * 180.0 / std::numbers::pi);
     }
