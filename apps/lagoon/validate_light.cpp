@@ -12,7 +12,9 @@
 #include "optics/kd.h"
 #include "optics/lut.h"
 #include "render/ocean_renderer.h"
+#include "render/passes/caustics_pass.h"
 #include "scene/scene.h"
+#include "shared/caustics.h"
 
 namespace lagoon::cli {
 namespace {
@@ -186,6 +188,98 @@ Result<Law> secchi(const ValidateOptions& o) {
   return law;
 }
 
+// Caustics under a 7 m/s sea, jerlov-I, a sloping floor 3-6 m down, the sun 60° up: the caustic map's
+// slices (irradiance relative to a flat sea at 1, 2.5, 6 and 15 m) over the inner 80 % of the window, where
+// the floor's shading uses them at full weight.
+struct CausticSlices {
+  std::vector<double> depth, mean, contrast;
+};
+
+Result<CausticSlices> caustic_slices(vk::Context& ctx, bool from_above, const ValidateOptions& o) {
+  const nlohmann::json camera = from_above
+                                    ? nlohmann::json{{"position", {0, 3, 0}}, {"look_at", {0, -3, 6}}}
+                                    : nlohmann::json{{"position", {0, -1.5, 0}}, {"look_at", {0, -4, 10}}};
+  nlohmann::json doc{{"camera", camera},
+                     {"sun", {{"elevation_deg", 60}, {"azimuth_deg", 160}}},
+                     {"ocean", {{"spectrum", {{"wind_speed_mps", 7.0}}}}},
+                     {"water", {{"type", "jerlov-I"}}},
+                     {"seafloor", {{"type", "slope"}, {"depth_near_m", 3}, {"depth_far_m", 6}}},
+                     {"objects", nlohmann::json::array()},
+                     {"render", {{"width", 64}, {"height", 48}, {"effects", {{"particles", false}}}}},
+                     {"time_s", 10}};
+  auto s = scene::parse_scene(doc, "lagoon validate (caustics)");
+  if (!s) return s.error();
+  auto renderer = render::OceanRenderer::create(ctx, *s);
+  if (!renderer) return renderer.error();
+  // Energy is conserved over the whole floor, not over a 25 m window: waves of 40 m focus light across its
+  // edges. The window's mean is averaged over frames 3.7 s apart (uncorrelated patterns), the contrast too.
+  const glm::vec4 depths = render::CausticsWindow{}.depths;  // the slices' depths (fixed)
+  const int frames = o.quick ? 6 : 16;
+  const size_t n = LAGOON_CAUSTICS_CELLS, lo = n / 10, hi = n - n / 10;
+  CausticSlices out;
+  out.mean.assign(LAGOON_CAUSTICS_SLICES, 0.0), out.contrast.assign(LAGOON_CAUSTICS_SLICES, 0.0);
+  for (int f = 0; f < frames; ++f) {
+    s->time_s = float(10.0 + 3.7 * f);
+    (*renderer)->render(*s);
+    const std::vector<float> map = (*renderer)->caustics().read_map(ctx);
+    for (size_t k = 0; k < LAGOON_CAUSTICS_SLICES; ++k) {
+      double sum = 0, square = 0, count = 0;
+      for (size_t z = lo; z < hi; ++z)
+        for (size_t x = lo; x < hi; ++x) {
+          const double v = map[(k * n + z) * n + x];
+          sum += v, square += v * v, ++count;
+        }
+      const double mean = sum / count;
+      out.mean[k] += mean / frames;
+      out.contrast[k] += std::sqrt(std::max(square / count - mean * mean, 0.0)) / mean / frames;
+    }
+  }
+  for (size_t k = 0; k < LAGOON_CAUSTICS_SLICES; ++k)
+    out.depth.push_back(depths[int(k)]), out.mean[k] *= o.scale();
+  return out;
+}
+
+Result<std::vector<Law>> caustics(vk::Context& ctx, const ValidateOptions& o) {
+  Law contrast{.id = "light.caustics-contrast",
+               .title = "Caustic contrast fades past the focus",
+               .source = "geometric optics of a random surface (focusing, then mixing)",
+               .measured_on = "device: the caustic map read back",
+               .x_label = "depth (m)",
+               .y_label = "contrast std/mean, at most the shallower slice's",
+               .tolerance = "≤ previous past the deepest focus",
+               .note =
+                   "From above; the contrast at 15 m must not exceed that at 6 m (the caustics of a sea of "
+                   "many wavelengths blur with depth beyond their focal zone)."};
+  std::vector<Law> laws;
+  for (bool above : {true, false}) {
+    auto slices = caustic_slices(ctx, above, o);
+    if (!slices) return slices.error();
+    Law law{
+        .id = above ? "light.caustics-mean-above" : "light.caustics-mean-below",
+        .title = above ? "Caustics keep the floor's mean light (from above)"
+                       : "Caustics keep the floor's mean light (from below)",
+        .source = "conservation of energy",
+        .measured_on = "device: the caustic map read back",
+        .x_label = "depth (m)",
+        .y_label = "mean irradiance / flat sea's",
+        .tolerance = "±1 %",
+        .note =
+            "7 m/s sea, jerlov-I, sloping floor 3-6 m, sun 60° up, 64x48 frame; the map's mean over the "
+            "inner 80 % of its 32 m window at each slice depth, averaged over 16 frames 3.7 s apart (6 in "
+            "--quick): energy is conserved over the whole floor, and waves longer than the window carry "
+            "light across its edges in any one frame."};
+    for (size_t k = 0; k < slices->depth.size(); ++k) {
+      law.points.push_back(relative_point(slices->depth[k], 1.0, slices->mean[k], 0.01));
+      if (above && k + 1 == slices->depth.size())
+        contrast.points.push_back(
+            at_most_point(slices->depth[k], slices->contrast[k - 1], slices->contrast[k] * o.scale(), 0.0));
+    }
+    laws.push_back(std::move(law));
+  }
+  laws.push_back(std::move(contrast));
+  return laws;
+}
+
 }  // namespace
 
 std::vector<Law> light_laws(vk::Context& ctx, const ValidateOptions& o) {
@@ -194,6 +288,13 @@ std::vector<Law> light_laws(vk::Context& ctx, const ValidateOptions& o) {
   if (o.wants("light.snell-window")) measured.push_back(snell_window(ctx, o));
   if (o.wants("light.kd-jerlov")) measured.push_back(kd_jerlov(o));
   if (o.wants("light.secchi")) measured.push_back(secchi(o));
+  if (o.wants("light.caustics")) {
+    if (auto c = caustics(ctx, o); c) {
+      for (Law& law : *c) measured.push_back(std::move(law));
+    } else {
+      measured.push_back(c.error());
+    }
+  }
   for (auto& law : measured) {
     if (law) {
       laws.push_back(std::move(*law));
