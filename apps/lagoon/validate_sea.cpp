@@ -427,7 +427,9 @@ Law whitecaps(vk::Context& ctx, const ValidateOptions& o) {
           "peak wavelengths. Reference W = 3.84e-6 U10^3.41."};
   const std::vector<double> us = winds(o);
   for (size_t i = 0; i < us.size(); ++i) {
-    const double w = foam_coverage(ctx, sea(us[i], 5000.0, o)) * o.scale();
+    ocean::OceanParams p = sea(us[i], 5000.0, o);
+    if (o.broken == "seed-foam") p.foam.coverage = ocean::FoamCoverage::Threshold;
+    const double w = foam_coverage(ctx, p) * o.scale();
     law.points.push_back(factor_point(us[i], monahan(us[i]), std::max(w, 1e-6), 2.0));
     sea_progress("whitecaps", i + 1, us.size());
   }
