@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <string>
+#include <utility>
 
 #include "io/text_raster.h"
 
@@ -38,6 +40,17 @@ Axis fit(const std::vector<double>& values, bool log, int from, int to) {
     a.lo -= pad, a.hi += pad;
   }
   return a;
+}
+
+// The chart font is plain ASCII: the symbols the laws' texts use, spelled out.
+std::string ascii(std::string text) {
+  const std::pair<const char*, const char*> symbols[] = {{"±", "+/-"},  {"°", " deg"}, {"≤", "<="},
+                                                         {"√", "sqrt"}, {"²", "^2"},   {"³", "^3"},
+                                                         {"ω", "w"},    {"χ", "chi"}};
+  for (const auto& [from, to] : symbols)
+    for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + std::strlen(to)))
+      text.replace(at, std::strlen(from), to);
+  return text;
 }
 
 std::string label(double v) {
@@ -94,12 +107,12 @@ io::Image8 law_plot(const Law& law) {
     io::fill_rect(img, x.pixel(p.x) - 1, y.pixel(p.reference) - 1, 3, 3, kReference);
     io::fill_rect(img, x.pixel(p.x) - 3, y.pixel(p.measured) - 3, 7, 7, p.holds() ? kHolds : kFails);
   }
-  io::draw_text(img, 8, 6, law.title, io::chart::kText, 2);
-  int at = io::draw_text(img, 8, 28, "law (line): " + law.source + "   ", kReference);
+  io::draw_text(img, 8, 6, ascii(law.title), io::chart::kText, 2);
+  int at = io::draw_text(img, 8, 28, "law (line): " + ascii(law.source) + "   ", kReference);
   at += io::draw_text(img, 8 + at, 28, "Lagoon (dots)  ", kHolds);
-  io::draw_text(img, 8 + at, 28, "tolerance " + law.tolerance + " (band)", io::chart::kDim);
-  io::draw_text(img, kLeft, kHeight - 16, law.x_label + (law.log_x ? " (log)" : ""), io::chart::kText);
-  const std::string y_text = "y: " + law.y_label + (law.log_y ? " (log)" : "");
+  io::draw_text(img, 8 + at, 28, "tolerance " + ascii(law.tolerance) + " (band)", io::chart::kDim);
+  io::draw_text(img, kLeft, kHeight - 16, ascii(law.x_label) + (law.log_x ? " (log)" : ""), io::chart::kText);
+  const std::string y_text = "y: " + ascii(law.y_label) + (law.log_y ? " (log)" : "");
   io::draw_text(img, kWidth - 8 - io::text_size(y_text).at(0), kHeight - 16, y_text, io::chart::kText);
   return img;
 }
