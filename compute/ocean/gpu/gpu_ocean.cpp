@@ -128,9 +128,14 @@ GpuOcean::GpuOcean(vk::Context& ctx, const OceanParams& params, std::vector<Casc
 
 GpuOcean::~GpuOcean() = default;
 
+const FoamRule& GpuOcean::foam_rule() const {
+  if (!foam_rule_) foam_rule_ = ocean::foam_rule(params_, spectra_);
+  return *foam_rule_;
+}
+
 void GpuOcean::build(std::vector<CascadeSpectrum> spectra) {
   spectra_ = std::move(spectra);
-  foam_rule_ = ocean::foam_rule(params_, spectra_);
+  foam_rule_.reset();
   groups_.clear();
   cascade_slots_.assign(spectra_.size(), {0, 0});
   reset_foam_ = true;

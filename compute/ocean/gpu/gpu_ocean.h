@@ -6,6 +6,7 @@
 // caller submits.
 #pragma once
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -76,8 +77,9 @@ class GpuOcean {
   FftVariant variant() const { return variant_; }  // as asked for (Auto: the device kind decides)
   const std::vector<CascadeSpectrum>& spectra() const { return spectra_; }
   // Where the whole sea's Jacobian whitens (ocean/whitecaps.h), from the parameters and the spectra: what
-  // the surface shader applies. The steps' own per-cascade foam keeps foam.threshold.
-  const FoamRule& foam_rule() const { return foam_rule_; }
+  // the surface shader applies. The steps' own per-cascade foam keeps foam.threshold. Computed on first
+  // use (CPU FFTs of every cascade, ~50 ms at 3 x 256²): an ocean that is only stepped never pays for it.
+  const FoamRule& foam_rule() const;
   CascadeTextures cascade(uint32_t index) const;
   uint32_t cascade_count() const { return uint32_t(params_.cascades.size()); }
 
@@ -101,7 +103,7 @@ class GpuOcean {
   OceanParams params_;
   FftVariant variant_;
   std::vector<CascadeSpectrum> spectra_;
-  FoamRule foam_rule_;
+  mutable std::optional<FoamRule> foam_rule_;
   std::vector<std::unique_ptr<Group>> groups_;
   std::vector<std::pair<uint32_t, uint32_t>> cascade_slots_;  // cascade -> (group, layer)
   bool reset_foam_ = true;
