@@ -10,9 +10,11 @@
 #include "gpu_session.h"
 #include "staged_output.h"
 #include "validate_bodies.h"
+#include "validate_foam.h"
 #include "validate_light.h"
 #include "validate_report.h"
 #include "validate_sea.h"
+#include "validate_wakes.h"
 
 namespace lagoon::cli {
 namespace {
@@ -22,7 +24,7 @@ const std::vector<std::pair<std::string, std::string>>& broken_variants() {
   static const std::vector<std::pair<std::string, std::string>> variants{
       {"scale",
        "every measurement ×√2 (heights, slopes, draughts, angles...): every law but "
-       "foam.whitecap-coverage (its band is a factor 2)"},
+       "foam.whitecap-coverage and foam.lifetime (their bands are factors of 2 and 4)"},
       {"uncapped-fetch", "JONSWAP's fetch laws beyond full development: sea-state.pm-*, sea-state.fetch-cap"},
       {"deep-tma", "TMA without its depth factor: sea-state.tma-depth"},
       {"regular-sea", "one wave instead of the spectrum: sea-state.rayleigh"},
@@ -33,7 +35,11 @@ const std::vector<std::pair<std::string, std::string>>& broken_variants() {
       {"no-floor", "no floor contact: bodies.floor"},
       {"no-refraction", "water of index 1: light.snell-window"},
       {"seed-kd", "the seed's diffuse path-length factor D = 1: light.kd-jerlov"},
-      {"beam-secchi", "Secchi depth from the beam attenuation alone: light.secchi"}};
+      {"beam-secchi", "Secchi depth from the beam attenuation alone: light.secchi"},
+      {"no-radiation", "the heave added mass and radiation damping left out: bodies.sphere-decay"},
+      {"shallow-wakes",
+       "the wakes in water of depth Froude number 0.9 instead of deep water: wakes.kelvin-angle, "
+       "wakes.transverse-wavelength"}};
   return variants;
 }
 
@@ -66,6 +72,8 @@ int run_validate(const ParsedArgs& args) {
   add(sea_state_laws(*ctx, options));
   add(body_laws(options));
   add(light_laws(*ctx, options));
+  add(wake_laws(options));
+  add(foam_laws(*ctx, options));
   if (laws.empty()) {
     std::fprintf(stderr,
                  "lagoon validate: --only matches no law (the ids are listed in docs/validation.md)\n");

@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <numbers>
+#include <string>
 
 #include "physics/floating_body.h"
+#include "physics/hydrostatics.h"
 
 namespace lagoon::cli {
 namespace {
@@ -198,6 +201,169 @@ Law floor_contact(const ValidateOptions& o) {
   return law;
 }
 
+// The IEA OES Task 10 floating sphere (Wendt et al. 2019): R = 5 m, half immersed (m = 261.8 t in fresh
+// water), heaving only, with the heave added mass and radiation damping (physics/heave_radiation.h) and no
+// hand-tuned damping.
+constexpr double kSphereRadius = 5.0, kFresh = 1000.0;
+
+physics::TriangleMesh sphere(double r, int rings) {
+  physics::TriangleMesh m;
+  const int sectors = 2 * rings;
+  for (int i = 0; i <= rings; ++i)
+    for (int j = 0; j <= sectors; ++j) {
+      const double theta = kPi * i / rings, phi = 2 * kPi * j / sectors;
+      m.vertices.push_back(
+          r * glm::dvec3(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)));
+    }
+  for (int i = 0; i < rings; ++i)
+    for (int j = 0; j < sectors; ++j) {
+      const uint32_t a = uint32_t(i * (sectors + 1) + j), b = a + 1, d = a + uint32_t(sectors + 1), c = d + 1;
+      m.indices.insert(m.indices.end(), {a, b, c, a, c, d});
+    }
+  return m;
+}
+
+physics::FloatingBody task10_sphere(const ValidateOptions& o) {
+  const physics::TriangleMesh hull = sphere(kSphereRadius, 32);
+  physics::BodyOptions options = body_options(o);
+  options.radiation.enabled = o.broken != "no-radiation";
+  physics::FloatingBody body(hull, physics::solid_mass_properties(hull, 0.5 * kFresh),
+                             physics::Damping{0, 0, 0, 0}, physics::WaterProperties{kFresh, kG},
+                             std::move(options));
+  body.place({0, 0, 0}, glm::dquat(1, 0, 0, 0));
+  return body;
+}
+
+// Hulme (1982) for the floating hemisphere in heave, deep water: μ = A / (ρ ⅔πa³) and ν = B / (ρ ⅔πa³ ω)
+// against ka = ω²a/g (transcribed in LHEEA/Hulme_Heaving_Sphere, comparison/HulmeResult.dat).
+struct HulmeRow {
+  double ka, mu, nu;
+};
+constexpr HulmeRow kHulme[] = {
+    {0.0, 0.8310, 0.0},    {0.05, 0.8764, 0.1036}, {0.1, 0.8627, 0.1816}, {0.2, 0.7938, 0.2793},
+    {0.3, 0.7157, 0.3254}, {0.4, 0.6452, 0.3410},  {0.5, 0.5861, 0.3391}, {0.6, 0.5381, 0.3271},
+    {0.7, 0.4999, 0.3098}, {0.8, 0.4698, 0.2899},  {0.9, 0.4464, 0.2691}, {1.0, 0.4284, 0.2484},
+    {1.2, 0.4047, 0.2096}, {1.4, 0.3924, 0.1756},  {1.6, 0.3871, 0.1469}, {1.8, 0.3864, 0.1229},
+    {2.0, 0.3884, 0.1031}, {2.5, 0.3988, 0.0674},  {3.0, 0.4111, 0.0452}, {4.0, 0.4322, 0.0219},
+    {5.0, 0.4471, 0.0116}, {6.0, 0.4574, 0.0066},  {7.0, 0.4647, 0.0040}, {8.0, 0.4700, 0.0026},
+    {9.0, 0.4740, 0.0017}, {10.0, 0.4771, 0.0012}};
+
+HulmeRow hulme(double ka) {
+  for (size_t i = 1; i < std::size(kHulme); ++i)
+    if (ka <= kHulme[i].ka) {
+      const HulmeRow &a = kHulme[i - 1], &b = kHulme[i];
+      const double f = (ka - a.ka) / (b.ka - a.ka);
+      return {ka, a.mu + f * (b.mu - a.mu), a.nu + f * (b.nu - a.nu)};
+    }
+  return kHulme[std::size(kHulme) - 1];
+}
+
+// Linear potential theory's heave RAO of the sphere at wave period T: Hulme's added mass and damping, the
+// excitation from the damping by the Haskind relation (deep water, axisymmetric: |X|² = 2ρg³B/ω³).
+double linear_rao(double period) {
+  const double w = 2 * kPi / period, a = kSphereRadius, volume = 2.0 / 3.0 * kPi * a * a * a;
+  const HulmeRow h = hulme(w * w * a / kG);
+  const double m = kFresh * volume, added = h.mu * kFresh * volume, damping = h.nu * kFresh * volume * w;
+  const double c = kFresh * kG * kPi * a * a;
+  const double excitation = std::sqrt(2 * kFresh * kG * kG * kG * damping / (w * w * w));
+  const double re = c - w * w * (m + added), im = w * damping;
+  return excitation / std::sqrt(re * re + im * im);
+}
+
+// The heave amplitude over the wave's in a regular wave of 0.2 % steepness (the OES runs'), after the
+// start-up: the wave grows in over 3 periods, the last 6 of 20 are measured.
+double sphere_rao(double period, const ValidateOptions& o) {
+  physics::FloatingBody body = task10_sphere(o);
+  const double w = 2 * kPi / period, k = w * w / kG, amp = 0.002 * kPi / k;
+  double lo = 1e300, hi = -1e300;
+  for (double t = 0; t < 20 * period; t += 1.0 / 120) {
+    const double ramp = std::min(t / (3 * period), 1.0);
+    body.step(1.0 / 120, [&](double x, double) { return ramp * amp * std::cos(k * x - w * t); });
+    if (t > 14 * period)
+      lo = std::min(lo, body.state().position.y), hi = std::max(hi, body.state().position.y);
+  }
+  return 0.5 * (hi - lo) / amp * o.scale();
+}
+
+// The free-decay period from 1 m above equilibrium: the mean time between downward crossings of the
+// still-water level over the first three swings.
+double sphere_decay_period(const ValidateOptions& o) {
+  physics::FloatingBody body = task10_sphere(o);
+  body.place({0, 1.0, 0}, glm::dquat(1, 0, 0, 0));
+  std::vector<double> crossings;
+  double last = 1.0;
+  const auto still = [](double, double) { return 0.0; };
+  for (int i = 1; i < 120 * 60 && crossings.size() < 4; ++i) {
+    body.step(1.0 / 120, still);
+    const double y = body.state().position.y;
+    if (last > 0 && y <= 0) crossings.push_back((i - 1 + last / (last - y)) / 120.0);
+    last = y;
+  }
+  if (crossings.size() < 2) return 0.0;  // it never swung back: the law fails
+  return (crossings.back() - crossings.front()) / double(crossings.size() - 1) * o.scale();
+}
+
+std::vector<Law> task10(const ValidateOptions& o) {
+  const std::string source = "IEA OES Task 10 (Wendt et al. 2019); Hulme 1982";
+  Law stiffness{.id = "bodies.sphere-stiffness",
+                .title = "Heave stiffness of the Task 10 sphere",
+                .source = "hydrostatics: rho g pi R^2 (Wendt et al. 2019's K33)",
+                .measured_on = "cpu: physics/hydrostatics.h on the sphere's mesh",
+                .x_label = "displacement from equilibrium (m)",
+                .y_label = "stiffness (MN/m)",
+                .tolerance = "±1 %",
+                .note =
+                    "R = 5 m, 32 rings x 64 sectors; the change in buoyancy over a small displacement "
+                    "from the half-immersed equilibrium, in fresh water."};
+  const physics::TriangleMesh hull = sphere(kSphereRadius, 32);
+  const auto still = [](double, double) { return 0.0; };
+  auto buoyancy = [&](double dy) {
+    std::vector<glm::dvec3> at = hull.vertices;
+    for (glm::dvec3& v : at) v.y += dy;
+    return physics::hydrostatic_wrench(at, hull.indices, still, {0, dy, 0}, kFresh, kG).force.y;
+  };
+  const double exact = kFresh * kG * kPi * kSphereRadius * kSphereRadius;
+  for (double d : {0.01, 0.05, 0.1}) {
+    const double k = (buoyancy(-d) - buoyancy(d)) / (2 * d);
+    stiffness.points.push_back(relative_point(d, exact / 1e6, k / 1e6 * o.scale(), 0.01));
+  }
+  // The linear heave oscillator with Hulme's coefficients at resonance: ka = 3 / (2 (1 + μ(ka))).
+  double ka = 1.0;
+  for (int i = 0; i < 50; ++i) ka = 1.5 / (1.0 + hulme(ka).mu);
+  const double natural = 2 * kPi / std::sqrt(ka * kG / kSphereRadius);
+  Law decay{.id = "bodies.sphere-decay",
+            .title = "Free-decay period of the Task 10 sphere",
+            .source = source,
+            .measured_on = "cpu: physics/floating_body.h with physics/heave_radiation.h",
+            .x_label = "release height (m)",
+            .y_label = "period (s)",
+            .tolerance = "±10 %",
+            .note =
+                "Released from 1 m above equilibrium in still fresh water (the OES decay case), no "
+                "hand-tuned damping; the mean time between downward crossings over three swings. "
+                "Reference: the natural period of linear theory with Hulme's added mass at its own "
+                "frequency, " +
+                std::to_string(natural).substr(0, 4) +
+                " s (the OES codes' decay curves swing at about 4.4 s)."};
+  decay.points.push_back(relative_point(1.0, natural, sphere_decay_period(o), 0.10));
+  Law rao{.id = "bodies.sphere-rao",
+          .title = "Heave RAO of the Task 10 sphere",
+          .source = source,
+          .measured_on = decay.measured_on,
+          .x_label = "wave period (s)",
+          .y_label = "heave amplitude / wave amplitude",
+          .tolerance = "±20 %",
+          .note =
+              "Regular waves of 0.2 % steepness in deep fresh water, the last 6 of 20 periods. "
+              "Reference: linear potential theory, Hulme's added mass and damping at each frequency "
+              "and the excitation from the damping by the Haskind relation, |X|^2 = 2 rho g^3 B / "
+              "omega^3 (it reproduces the OES codes' RAO: 0.11 at 3 s, 1.86 at 4.4 s, 1.03 at 8 s)."};
+  for (double period : o.quick ? std::vector<double>{4.4}
+                               : std::vector<double>{3.0, 3.5, 4.0, 4.4, 5.0, 6.0, 7.0, 8.0, 9.0, 11.0})
+    rao.points.push_back(relative_point(period, linear_rao(period), sphere_rao(period, o), 0.20));
+  return {stiffness, decay, rao};
+}
+
 }  // namespace
 
 std::vector<Law> body_laws(const ValidateOptions& o) {
@@ -206,6 +372,8 @@ std::vector<Law> body_laws(const ValidateOptions& o) {
   if (o.wants("bodies.box-heave") || o.wants("bodies.tessellation"))
     for (Law& law : heave(o)) laws.push_back(std::move(law));
   if (o.wants("bodies.floor")) laws.push_back(floor_contact(o));
+  if (o.wants("bodies.sphere"))
+    for (Law& law : task10(o)) laws.push_back(std::move(law));
   return laws;
 }
 

@@ -47,4 +47,8 @@ LawPoint at_most_point(double x, double reference, double measured, double slack
   return {x, reference, measured, -1e300, reference * (1.0 + slack)};
 }
 
+LawPoint at_least_point(double x, double reference, double measured) {
+  return {x, reference, measured, reference, 1e300};
+}
+
 }  // namespace lagoon::cli

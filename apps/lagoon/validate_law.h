@@ -41,6 +41,8 @@ LawPoint factor_point(double x, double reference, double measured, double factor
 LawPoint absolute_point(double x, double reference, double measured, double tolerance);
 // A one-sided bound: measured <= reference·(1 + slack) (a longer fetch never raises the sea, ...).
 LawPoint at_most_point(double x, double reference, double measured, double slack);
+// The other side: measured >= reference (foam streaks at least so long, ...).
+LawPoint at_least_point(double x, double reference, double measured);
 
 // What `lagoon validate` runs with: the short set for `make test` or the full ranges.
 struct ValidateOptions {

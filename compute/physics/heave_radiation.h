@@ -4,17 +4,20 @@
 // 2π·sqrt(m/K) of its mass on the waterplane's stiffness K = ρgA_wp, 17 % short of its true one.
 // The model: the floating hemisphere of the same displaced volume V (radius r = (3V/2π)^⅓), with Hulme's
 // (1982, J. Fluid Mech. 121) coefficients a = μ·ρV and b = ν·ρV·ω taken at the heave resonance
-// ω_n² = 3g/(2r(1 + μ)), where kr ≈ 1 in deep water: μ ≈ 0.45, ν ≈ 0.20. One frequency only (no memory
-// kernel): right for free decay and for waves near resonance, a fair guess elsewhere. V is the volume under
-// the water now, so a body in the air gets neither.
+// ω_n² = 3g/(2r(1 + μ)), where kr = 1.055 in deep water: μ = 0.422, ν = 0.238 (Hulme's table, as
+// transcribed in LHEEA/Hulme_Heaving_Sphere, interpolated there; `lagoon validate`'s bodies.sphere-* laws
+// use the whole table). One frequency only (no memory kernel): right for free decay (the Task 10 sphere's
+// period within 2 %); in waves the excitation is the hydrostatic pressure under the wave's height, without
+// the wave's dynamic pressure, so the heave RAO is far from linear theory's (bodies.sphere-rao, an open
+// finding of docs/validation.md). V is the volume under the water now, so a body in the air gets neither.
 #pragma once
 
 namespace lagoon::physics {
 
 struct HeaveRadiation {
   bool enabled = false;
-  double added_mass = 0.45;  // μ = a / (ρV)
-  double damping = 0.20;     // ν = b / (ρVω)
+  double added_mass = 0.422;  // μ = a / (ρV)
+  double damping = 0.238;     // ν = b / (ρVω)
 };
 
 struct HeaveTerms {

@@ -3,11 +3,14 @@
 // the deliberately broken variant named for it: the laws can tell a broken Lagoon from a working one.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <ostream>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "support/run_process.h"
 #include "support/temp_dir.h"
@@ -19,7 +22,8 @@ namespace fs = std::filesystem;
 
 // Laws Lagoon does not meet yet, each a finding of the report (docs/validation.md, "Open findings"): they
 // are measured and reported, and must be taken off this list when fixed.
-const std::set<std::string> kOpenFindings{"light.secchi", "light.caustics-contrast"};
+const std::set<std::string> kOpenFindings{"light.secchi", "light.caustics-contrast", "bodies.sphere-rao",
+                                          "foam.lifetime", "foam.streaks"};
 
 std::map<std::string, bool> verdicts(const fs::path& report) {
   const nlohmann::json j = nlohmann::json::parse(read_file(report));
@@ -35,7 +39,7 @@ TEST(ValidateCli, TheQuickRunWritesTheReportAndTheLawsHold) {
   ASSERT_TRUE(r.exit_code == 0 || r.exit_code == 1) << r.output;
   ASSERT_TRUE(fs::exists(out / "report.md")) << r.output;
   const auto laws = verdicts(out / "report.json");
-  EXPECT_GE(laws.size(), 20u);
+  EXPECT_GE(laws.size(), 28u);
   bool all = true;
   for (const auto& [id, holds] : laws) {
     all = all && holds;
@@ -51,36 +55,57 @@ TEST(ValidateCli, TheQuickRunWritesTheReportAndTheLawsHold) {
   }
 }
 
-// Each variant with the laws it must break (cmd_validate.cpp lists them for --help).
-TEST(ValidateCli, EveryLawFailsOnItsBrokenVariant) {
-  const std::map<std::string, std::vector<std::string>> variants{
-      {"uncapped-fetch", {"sea-state.pm-hs", "sea-state.fetch-cap"}},
-      {"deep-tma", {"sea-state.tma-depth"}},
-      {"regular-sea", {"sea-state.rayleigh"}},
-      {"vertex-buoyancy", {"bodies.box-heave", "bodies.tessellation"}},
-      {"no-floor", {"bodies.floor"}},
-      {"no-refraction", {"light.snell-window"}},
-      {"seed-kd", {"light.kd-jerlov"}},
-      {"resolved-slopes", {"slopes.cox-munk-upwind", "slopes.cox-munk-crosswind"}},
-      {"scale",
-       {"sea-state.pm-hs", "sea-state.pm-tp", "sea-state.jonswap-hs", "sea-state.tma-depth",
-        "bodies.archimedes", "bodies.box-heave", "bodies.tessellation", "bodies.floor", "light.snell-window",
-        "light.kd-jerlov", "sea-state.fetch-cap", "sea-state.rayleigh", "light.caustics-mean-above",
-        "light.caustics-mean-below"}},
-      {"seed-foam", {"foam.whitecap-coverage"}}};
-  for (const auto& [variant, must_fail] : variants) {
-    TempDir dir("lagoon_validate_broken");
-    std::string only;
-    for (const std::string& id : must_fail) only += " --only " + id;
-    auto r = lagoon("validate --quick --broken " + variant + only + " --out " + (dir.path() / "r").string());
-    EXPECT_EQ(r.exit_code, 1) << variant << "\n" << r.output;
-    const auto laws = verdicts(dir.path() / "r" / "report.json");
-    for (const std::string& id : must_fail) {
-      ASSERT_TRUE(laws.count(id)) << variant << ": " << id;
-      EXPECT_FALSE(laws.at(id)) << variant << " must break " << id;
-    }
+// Each variant with the laws it must break (cmd_validate.cpp lists them for --help); one test per variant,
+// so that ctest spreads them over its jobs.
+struct BrokenVariant {
+  std::string name;
+  std::vector<std::string> must_fail;
+};
+
+void PrintTo(const BrokenVariant& v, std::ostream* os) {
+  *os << v.name;
+}
+
+class ValidateBroken : public ::testing::TestWithParam<BrokenVariant> {};
+
+TEST_P(ValidateBroken, EveryLawFailsOnItsBrokenVariant) {
+  const BrokenVariant& v = GetParam();
+  TempDir dir("lagoon_validate_broken");
+  std::string only;
+  for (const std::string& id : v.must_fail) only += " --only " + id;
+  auto r = lagoon("validate --quick --broken " + v.name + only + " --out " + (dir.path() / "r").string());
+  EXPECT_EQ(r.exit_code, 1) << v.name << "\n" << r.output;
+  const auto laws = verdicts(dir.path() / "r" / "report.json");
+  for (const std::string& id : v.must_fail) {
+    ASSERT_TRUE(laws.count(id)) << v.name << ": " << id;
+    EXPECT_FALSE(laws.at(id)) << v.name << " must break " << id;
   }
 }
+
+INSTANTIATE_TEST_SUITE_P(
+    Variants, ValidateBroken,
+    ::testing::Values(
+        BrokenVariant{"uncapped-fetch", {"sea-state.pm-hs", "sea-state.fetch-cap"}},
+        BrokenVariant{"deep-tma", {"sea-state.tma-depth"}},
+        BrokenVariant{"regular-sea", {"sea-state.rayleigh"}},
+        BrokenVariant{"vertex-buoyancy", {"bodies.box-heave", "bodies.tessellation"}},
+        BrokenVariant{"no-floor", {"bodies.floor"}}, BrokenVariant{"no-refraction", {"light.snell-window"}},
+        BrokenVariant{"seed-kd", {"light.kd-jerlov"}},
+        BrokenVariant{"resolved-slopes", {"slopes.cox-munk-upwind", "slopes.cox-munk-crosswind"}},
+        BrokenVariant{"scale",
+                      {"sea-state.pm-hs", "sea-state.pm-tp", "sea-state.jonswap-hs", "sea-state.tma-depth",
+                       "bodies.archimedes", "bodies.box-heave", "bodies.tessellation", "bodies.floor",
+                       "light.snell-window", "light.kd-jerlov", "sea-state.fetch-cap", "sea-state.rayleigh",
+                       "light.caustics-mean-above", "light.caustics-mean-below", "wakes.narrowing",
+                       "bodies.sphere-stiffness"}},
+        BrokenVariant{"seed-foam", {"foam.whitecap-coverage"}},
+        BrokenVariant{"no-radiation", {"bodies.sphere-decay"}},
+        BrokenVariant{"shallow-wakes", {"wakes.kelvin-angle", "wakes.transverse-wavelength"}}),
+    [](const ::testing::TestParamInfo<BrokenVariant>& info) {
+      std::string name = info.param.name;
+      std::replace(name.begin(), name.end(), '-', '_');
+      return name;
+    });
 
 TEST(ValidateCli, UnknownVariantsAndLawsAreUsageErrors) {
   TempDir dir("lagoon_validate_usage");
