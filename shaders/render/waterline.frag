@@ -6,7 +6,8 @@
 // A lens cutting the water surface: the frame drawn from above is already in the target; here every pixel
 // whose point on the near plane lies below the displaced surface takes the frame drawn from below instead,
 // so the image splits along the surface as it crosses the lens, not along a horizontal line. A thin dark
-// meniscus (water clinging to the lens) marks the split on the water's side.
+// meniscus (water clinging to the lens) marks the split on the water's side; the pixels the line crosses
+// on the water's side blend by how much of them is under it.
 layout(std140, binding = LAGOON_SURFACE_BIND_FRAME) uniform Frame { FrameUniforms frame; };
 layout(binding = LAGOON_SURFACE_BIND_DISPLACEMENT) uniform sampler2DArray displacement[LAGOON_MAX_CASCADES];
 layout(binding = LAGOON_SURFACE_BIND_BELOW_COLOR) uniform sampler2D below_colour;
@@ -49,11 +50,16 @@ void main() {
   vec3 lens = n.xyz / n.w;
   float below = water_height(lens.xz) - lens.y;  // > 0 under the water
   float pixel = max(length(dFdy(lens)), length(dFdx(lens)));  // a pixel's size on the near plane
+  float across = fwidth(below);  // how much `below` changes over a pixel (before any lane discards)
   if (below <= 0.0) discard;
+  // The share of the pixel under the water, blended over the frame from above. Only the wet side blends (a
+  // pixel whose centre is dry keeps the view from above and its depth), so where two devices round `below`
+  // differently a pixel on the line changes by half its contrast at most, not all of it.
+  float coverage = clamp(0.5 + below / max(across, 1e-9), 0.5, 1.0);
   ivec2 texel = ivec2(gl_FragCoord.xy);
   vec3 colour = texelFetch(below_colour, texel, 0).rgb;
   // The meniscus: 1.5 pixels of darkened water along the line.
   float meniscus = 1.0 - smoothstep(0.5 * pixel, 1.5 * pixel, below);
-  out_colour = vec4(colour * (1.0 - 0.6 * meniscus), 1.0);
+  out_colour = vec4(colour * (1.0 - 0.6 * meniscus), coverage);
   gl_FragDepth = texelFetch(below_depth, texel, 0).r;
 }

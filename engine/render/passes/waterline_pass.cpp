@@ -21,6 +21,7 @@ WaterlinePass::WaterlinePass(vk::Context& ctx, const SurfaceFields& fields, cons
                                                     .depth_test = true,
                                                     .depth_write = true,
                                                     .depth_compare = VK_COMPARE_OP_ALWAYS,
+                                                    .alpha_blend = true,
                                                     .spec = with_surface_field_specs({}, fields)})) {}
 
 void WaterlinePass::resize(VkExtent2D extent) {
