@@ -58,6 +58,10 @@ void LocalHeights::update(double time_s, glm::dvec2 centre) {
   for (int m = 0; m < 4; ++m) at[m] = &knot(k - 1 + m);
   for (size_t i = 0; i < now_.size(); ++i)
     now_[i] = w[0] * (*at[0])[i] + w[1] * (*at[1])[i] + w[2] * (*at[2])[i] + w[3] * (*at[3])[i];
+  // Catmull-Rom's weights sum to 1 with negative lobes of at most 1/8 per axis, so a value lies at most
+  // (1 + 1/8)² + (1/8)² - 1 = 0.28 of the range above the highest point it interpolates.
+  const auto [lo_it, hi_it] = std::minmax_element(now_.begin(), now_.end());
+  highest_ = *hi_it + 0.3 * (*hi_it - *lo_it);
 }
 
 double LocalHeights::height(double x, double z) const {

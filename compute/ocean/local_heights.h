@@ -39,6 +39,9 @@ class LocalHeights {
   void update(double time_s, glm::dvec2 centre);
   // The displaced surface's height at (x, z) at the last update's time. Outside the lattice: its edge value.
   double height(double x, double z) const;
+  // No height() at the last update's time is above this: the lattice's highest point plus the most the
+  // bicubic interpolation can overshoot it (0.28 of the lattice's range).
+  double highest() const { return highest_; }
 
   // How many knots were sampled from WaveQuery so far (each costs one evaluation of the sea's fields).
   int knots_sampled() const { return knots_sampled_; }
@@ -55,6 +58,7 @@ class LocalHeights {
   // The knots k - 1 .. k + 2 around the last update's time (index, heights on the lattice).
   std::vector<std::pair<long long, std::vector<double>>> knots_;
   std::vector<double> now_;  // the lattice at the last update's time
+  double highest_ = 0;
   int knots_sampled_ = 0;
 };
 

@@ -60,10 +60,11 @@ double FloatingBody::kinetic_energy() const {
          0.5 * glm::dot(w, r * mass_.inertia * glm::transpose(r) * w);
 }
 
-void FloatingBody::step(double dt, const WaterHeight& water) {
+void FloatingBody::step(double dt, const WaterHeight& water, double water_top) {
   const glm::dmat3 r = glm::mat3_cast(state_.orientation);
   for (size_t i = 0; i < hull_.size(); ++i) world_[i] = state_.position + r * hull_[i];
-  wrench_ = hydrostatic_wrench(world_, indices_, water, state_.position, water_.density, water_.gravity);
+  wrench_ =
+      hydrostatic_wrench(world_, indices_, water, state_.position, water_.density, water_.gravity, water_top);
   const double wet = hull_area_ > 0 ? std::min(wrench_.wetted_area / hull_area_, 1.0) : 0.0;
 
   const glm::dvec3 v = state_.velocity, w = state_.angular_velocity;

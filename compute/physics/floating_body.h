@@ -9,6 +9,7 @@
 #pragma once
 #include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
+#include <limits>
 #include <vector>
 
 #include "physics/floor_contact.h"
@@ -60,8 +61,9 @@ class FloatingBody {
   // Moves it vertically, keeping its orientation, to where the water's pressure in still water at height
   // `level` carries its weight (bisection). False, unmoved, when it cannot float (it sinks even submerged).
   bool settle_vertically(double level);
-  // One step of dt seconds with the water's height as it is at the step's start.
-  void step(double dt, const WaterHeight& water);
+  // One step of dt seconds with the water's height as it is at the step's start; `water_top` bounds it
+  // from above (physics/hydrostatics.h: the hull's dry part is then not looked up).
+  void step(double dt, const WaterHeight& water, double water_top = std::numeric_limits<double>::infinity());
   // Puts a floor under the body (or takes it away with an empty function).
   void set_floor(FloorHeight floor) { options_.floor = std::move(floor); }
 

@@ -1,7 +1,9 @@
 #include "physics/hydrostatics.h"
 
 #include <array>
+#include <cmath>
 #include <glm/geometric.hpp>
+#include <limits>
 #include <vector>
 
 namespace lagoon::physics {
@@ -29,18 +31,26 @@ void add_triangle(const Point& a, const Point& b, const Point& c, glm::dvec3 abo
 }  // namespace
 
 Wrench hydrostatic_wrench(std::span<const glm::dvec3> vertices, std::span<const uint32_t> indices,
-                          const WaterHeight& water, glm::dvec3 about, double density, double gravity) {
+                          const WaterHeight& water, glm::dvec3 about, double density, double gravity,
+                          double water_top) {
   Wrench out;
   const double rho_g = density * gravity;
   // The water's height once per vertex (a closed mesh has about half as many vertices as triangles, and
-  // each is a corner of about six): the lookup is the step's dearest part.
-  std::vector<double> depth(vertices.size());
-  for (size_t v = 0; v < vertices.size(); ++v) depth[v] = water(vertices[v].x, vertices[v].z) - vertices[v].y;
+  // each is a corner of about six), and only for the triangles that can reach the water: the lookup is the
+  // step's dearest part. NaN: not looked up yet.
+  std::vector<double> depth(vertices.size(), std::numeric_limits<double>::quiet_NaN());
+  auto depth_at = [&](uint32_t v) {
+    if (std::isnan(depth[v])) depth[v] = water(vertices[v].x, vertices[v].z) - vertices[v].y;
+    return depth[v];
+  };
   for (size_t t = 0; t + 2 < indices.size(); t += 3) {
+    if (vertices[indices[t]].y > water_top && vertices[indices[t + 1]].y > water_top &&
+        vertices[indices[t + 2]].y > water_top)
+      continue;  // dry whatever the water does
     std::array<Point, 3> corner;
     int under = 0;
     for (int k = 0; k < 3; ++k) {
-      corner[k] = {vertices[indices[t + k]], depth[indices[t + k]]};
+      corner[k] = {vertices[indices[t + k]], depth_at(indices[t + k])};
       under += corner[k].depth > 0 ? 1 : 0;
     }
     if (under == 0) continue;

@@ -6,6 +6,7 @@
 #pragma once
 #include <functional>
 #include <glm/vec3.hpp>
+#include <limits>
 #include <span>
 
 namespace lagoon::physics {
@@ -20,7 +21,10 @@ struct Wrench {
 };
 
 // `vertices` in world coordinates; `indices` three per triangle, counter-clockwise from outside.
+// `water_top`: no height `water` gives is above it (+inf when unknown). Triangles wholly above it are dry
+// without asking `water`, which is the step's dearest part: a hull's deck and superstructure cost nothing.
 Wrench hydrostatic_wrench(std::span<const glm::dvec3> vertices, std::span<const uint32_t> indices,
-                          const WaterHeight& water, glm::dvec3 about, double density, double gravity);
+                          const WaterHeight& water, glm::dvec3 about, double density, double gravity,
+                          double water_top = std::numeric_limits<double>::infinity());
 
 }  // namespace lagoon::physics

@@ -48,7 +48,7 @@ void VehicleMotion::hold_on(const TrackPoint& track) {
   s.angular_velocity.y = track.yaw_rate;
 }
 
-void VehicleMotion::step(double t, double dt, const WaterHeight& water) {
+void VehicleMotion::step(double t, double dt, const WaterHeight& water, double water_top) {
   track_ = route_->at(t + dt);
   if (!hull_) return;
   // The path sets the horizontal motion and the heading; the water only what is left: the step sees the
@@ -56,7 +56,7 @@ void VehicleMotion::step(double t, double dt, const WaterHeight& water) {
   BodyState& s = hull_->state();
   s.velocity.x = s.velocity.z = 0;
   s.angular_velocity.y = 0;
-  hull_->step(dt, water);
+  hull_->step(dt, water, water_top);
   hold_on(track_);
 }
 

@@ -32,7 +32,8 @@ class VehicleMotion {
   // To time 0: on the path's start, at rest at its still-water draught (surface) or at its depth.
   void reset();
   // From time t to t + dt; `water` is the sea's height at t (unused when submerged).
-  void step(double t, double dt, const WaterHeight& water);
+  void step(double t, double dt, const WaterHeight& water,
+            double water_top = std::numeric_limits<double>::infinity());
 
   glm::dvec3 model_origin() const;
   glm::dquat orientation() const;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
+#include <limits>
 #include <string>
 
 #include "gltf/gltf_loader.h"
@@ -162,9 +163,12 @@ void FloatingObjects::advance(double time_s) {
       const glm::dvec3 at = b.body.state().position;
       b.heights->update(t, glm::dvec2(at.x, at.z));
       const ocean::LocalHeights& heights = *b.heights;
-      b.body.step(kStepS, [&heights, wakes](double x, double z) {
-        return heights.height(x, z) + (wakes ? wakes->height({x, z}) : 0.0);
-      });
+      b.body.step(
+          kStepS,
+          [&heights, wakes](double x, double z) {
+            return heights.height(x, z) + (wakes ? wakes->height({x, z}) : 0.0);
+          },
+          heights.highest() + (wakes ? wakes->highest() : 0.0));
     }
     for (size_t i = 0; i < vehicles_.size(); ++i) {
       Vehicle& v = vehicles_[i];
@@ -173,9 +177,13 @@ void FloatingObjects::advance(double time_s) {
         v.heights->update(t, glm::dvec2(at.x, at.z));
       }
       const ocean::LocalHeights* heights = v.heights.get();
-      v.motion.step(t, kStepS, [heights, wakes, i](double x, double z) {
-        return heights->height(x, z) + (wakes ? wakes->height({x, z}, i) : 0.0);
-      });
+      v.motion.step(
+          t, kStepS,
+          [heights, wakes, i](double x, double z) {
+            return heights->height(x, z) + (wakes ? wakes->height({x, z}, i) : 0.0);
+          },
+          heights ? heights->highest() + (wakes ? wakes->highest(i) : 0.0)
+                  : std::numeric_limits<double>::infinity());
     }
   }
 }

@@ -86,6 +86,17 @@ void WakeHeights::advance(double t, glm::dvec2 centre, long long first_step) {
       }
     }
   }
+  // A lookup weighs 16 cells by Catmull-Rom weights whose magnitudes add up to at most 1.25² (fewer
+  // near the window's edge, where the cells outside count as 0).
+  for (View& v : views_) {
+    double largest = 0;
+    for (double h : v.height) largest = std::max(largest, std::abs(h));
+    v.highest = 1.5625 * largest;
+  }
+}
+
+double WakeHeights::highest(size_t skip_vehicle) const {
+  return layers_.empty() ? 0.0 : view(skip_vehicle).highest;
 }
 
 const WakeHeights::View& WakeHeights::view(size_t skip) const {

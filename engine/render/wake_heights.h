@@ -36,6 +36,8 @@ class WakeHeights {
   // At the last advance's time: the wakes' height at (x, z), leaving out vehicles[skip_vehicle]'s own; its
   // slopes (dh/dx, dh/dz) and its rate dh/dt. Zero outside the window.
   double height(glm::dvec2 p, size_t skip_vehicle = kNoVehicle) const;
+  // No height(p, skip_vehicle) is above this (0 without wakes).
+  double highest(size_t skip_vehicle = kNoVehicle) const;
   glm::dvec2 slope(glm::dvec2 p) const;
   double rate(glm::dvec2 p) const;
 
@@ -53,6 +55,7 @@ class WakeHeights {
   struct View {
     size_t skip;
     std::vector<double> height, rate;
+    double highest = 0;  // bounds lookup(height, ·) from above
   };
   void restart(long long first_step);
   void step_all(glm::dvec2 centre);

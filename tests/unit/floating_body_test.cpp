@@ -67,6 +67,34 @@ TEST(Hydrostatics, ArchimedesAndTheCentreOfBuoyancy) {
   EXPECT_NEAR(w.force.y, kRhoWater * kG * (0.15 * 2.0) * 1.0, 1e-6 * kRhoWater * kG);
 }
 
+// The water's upper bound only spares lookups: a hull poking out of a wavy surface gets the same wrench
+// with a true bound, asks for fewer heights, and a bound below the real water (a wrong one) changes it, so
+// the comparison can fail.
+TEST(Hydrostatics, ABoundOnTheWaterSparesTheDryHullsLookupsAndNothingElse) {
+  const physics::TriangleMesh fine = physics::refine_hull(box({1.0, 2.0, 0.5}), {.spacing_m = 0.1});
+  int lookups = 0;
+  const physics::WaterHeight wavy = [&lookups](double x, double z) {
+    ++lookups;
+    return 0.2 * std::sin(1.3 * x) + 0.1 * std::cos(2.1 * z);  // at most 0.3
+  };
+  const physics::Wrench all =
+      physics::hydrostatic_wrench(fine.vertices, fine.indices, wavy, {}, kRhoWater, kG);
+  const int every = lookups;
+  lookups = 0;
+  const physics::Wrench bounded =
+      physics::hydrostatic_wrench(fine.vertices, fine.indices, wavy, {}, kRhoWater, kG, 0.3);
+  EXPECT_EQ(bounded.force, all.force);
+  EXPECT_EQ(bounded.torque, all.torque);
+  EXPECT_EQ(bounded.wetted_area, all.wetted_area);
+  EXPECT_LT(lookups, 0.7 * every) << "the hull's top 1.7 m is dry";
+  RecordProperty("lookups", std::to_string(lookups) + " of " + std::to_string(every));
+  const physics::Wrench wrong =
+      physics::hydrostatic_wrench(fine.vertices, fine.indices, wavy, {}, kRhoWater, kG, -0.1);
+  // The skipped wet strip is on the vertical sides: it carries no vertical force, but its area and its
+  // horizontal pressure go missing.
+  EXPECT_LT(wrong.wetted_area, all.wetted_area - 0.1);
+}
+
 physics::FloatingBody half_density_box(glm::dvec3 h, physics::Damping damping = {},
                                        physics::HullSampling sampling = {}) {
   const physics::TriangleMesh hull = box(h);

@@ -57,6 +57,22 @@ TEST(LocalHeights, FollowWaveQueryBetweenKnots) {
   EXPECT_LE(local.knots_sampled(), 12) << "knots are sampled again and again";
 }
 
+// highest() bounds every height() at the last update's time (the bodies skip their dry triangles by it),
+// and not by much: within the lattice's range of its highest point.
+TEST(LocalHeights, NoHeightIsAboveTheHighest) {
+  const scene::Scene s = shipped_scene("default");
+  ocean::LocalHeights local(s.ocean, ocean::make_cascade_spectra(s.ocean), {});
+  for (int step = 0; step < 5; ++step) {
+    const double t = 3.0 + 0.37 * step;
+    local.update(t, {1.0, 2.0});
+    double top = -1e9;
+    for (double x = -4.0; x <= 6.0; x += 0.05)
+      for (double z = -3.0; z <= 7.0; z += 0.05) top = std::max(top, local.height(x, z));
+    EXPECT_LE(top, local.highest()) << "t = " << t;
+    EXPECT_GT(top, local.highest() - 0.5) << "a bound far above the water spares nothing";
+  }
+}
+
 TEST(LocalHeights, ABoxRidesTheScenesSea) {
   const scene::Scene s = shipped_scene("default");
   const auto spectra = ocean::make_cascade_spectra(s.ocean);
