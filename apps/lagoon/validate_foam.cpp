@@ -25,31 +25,6 @@ ocean::OceanParams foam_sea(double u10, uint32_t n) {
   return p;
 }
 
-// The foam drawn at each of grid² points over `side` metres (whitened where >= 0.5), as the surface shader
-// combines each cascade's foam and the whole sea's Jacobian's (nearest texel of each cascade).
-std::vector<uint8_t> drawn_foam(const ocean::GpuOcean& gpu, const ocean::OceanParams& p,
-                                const ocean::FoamRule& rule, uint32_t grid, double side) {
-  std::vector<ocean::CascadeReadback> cascades;
-  for (uint32_t c = 0; c < gpu.cascade_count(); ++c) cascades.push_back(gpu.read_cascade(c));
-  std::vector<uint8_t> out(size_t(grid) * grid);
-  for (uint32_t j = 0; j < grid; ++j)
-    for (uint32_t i = 0; i < grid; ++i) {
-      double foam = 0, tx = 0, tz = 0, txz = 0;
-      for (uint32_t c = 0; c < cascades.size(); ++c) {
-        const uint32_t n = cascades[c].resolution;
-        const double scale = n / p.cascades[c].patch_size_m;
-        const size_t x = size_t(std::floor((i + 0.5) * side / grid * scale)) % n;
-        const size_t z = size_t(std::floor((j + 0.5) * side / grid * scale)) % n;
-        const float* t = &cascades[c].jacobian_terms[4 * (z * n + x)];
-        tx += t[0], tz += t[1], txz += t[2], foam = std::max(foam, double(t[3]));
-      }
-      const double jacobian = (1 + tx) * (1 + tz) - txz * txz;
-      foam = std::max(foam, std::clamp((rule.onset - jacobian) / rule.width, 0.0, 1.0));
-      out[size_t(j) * grid + i] = foam >= 0.5 ? 1 : 0;
-    }
-  return out;
-}
-
 // Where a correlation, sampled at lags 0, step, 2 step..., first falls to 1/e (linear between samples).
 double e_folding(const std::vector<double>& r, double step) {
   for (size_t k = 1; k < r.size(); ++k)
@@ -68,7 +43,6 @@ struct FoamStats {
 FoamStats measure_foam(vk::Context& ctx, double u10, const ValidateOptions& o) {
   const ocean::OceanParams p = foam_sea(u10, o.quick ? 128 : 256);
   ocean::GpuOcean gpu(ctx, p);
-  const ocean::FoamRule rule = gpu.foam_rule();
   const double dt = 0.1;
   const int warm = 150, frames = 100;
   ctx.submit_and_wait([&](VkCommandBuffer cmd) {
@@ -80,7 +54,7 @@ FoamStats measure_foam(vk::Context& ctx, double u10, const ValidateOptions& o) {
   std::vector<std::vector<uint8_t>> series;
   for (int f = 0; f < frames; ++f) {
     ctx.submit_and_wait([&](VkCommandBuffer cmd) { gpu.record_step(cmd, 100.0 + (warm + f) * dt, dt); });
-    series.push_back(drawn_foam(gpu, p, rule, grid, side));
+    series.push_back(drawn_foam(gpu, p, grid, side));
   }
   FoamStats s;
   double on = 0;
@@ -118,6 +92,30 @@ FoamStats measure_foam(vk::Context& ctx, double u10, const ValidateOptions& o) {
 }
 
 }  // namespace
+
+std::vector<uint8_t> drawn_foam(const ocean::GpuOcean& gpu, const ocean::OceanParams& p, uint32_t grid,
+                                double side) {
+  const ocean::FoamRule& rule = gpu.foam_rule();
+  std::vector<ocean::CascadeReadback> cascades;
+  for (uint32_t c = 0; c < gpu.cascade_count(); ++c) cascades.push_back(gpu.read_cascade(c));
+  std::vector<uint8_t> out(size_t(grid) * grid);
+  for (uint32_t j = 0; j < grid; ++j)
+    for (uint32_t i = 0; i < grid; ++i) {
+      double foam = 0, tx = 0, tz = 0, txz = 0;
+      for (uint32_t c = 0; c < cascades.size(); ++c) {
+        const uint32_t n = cascades[c].resolution;
+        const double scale = n / p.cascades[c].patch_size_m;
+        const size_t x = size_t(std::floor((i + 0.5) * side / grid * scale)) % n;
+        const size_t z = size_t(std::floor((j + 0.5) * side / grid * scale)) % n;
+        const float* t = &cascades[c].jacobian_terms[4 * (z * n + x)];
+        tx += t[0], tz += t[1], txz += t[2], foam = std::max(foam, double(t[3]));
+      }
+      const double jacobian = (1 + tx) * (1 + tz) - txz * txz;
+      foam = std::max(foam, std::clamp((rule.onset - jacobian) / rule.width, 0.0, 1.0));
+      out[size_t(j) * grid + i] = foam >= 0.5 ? 1 : 0;
+    }
+  return out;
+}
 
 std::vector<Law> foam_laws(vk::Context& ctx, const ValidateOptions& o) {
   const bool lifetime_wanted = o.wants("foam.lifetime"), streaks_wanted = o.wants("foam.streaks");

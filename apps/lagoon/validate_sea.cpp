@@ -13,6 +13,7 @@
 #include "ocean/initial_spectrum.h"
 #include "ocean/slope_statistics.h"
 #include "ocean/spectrum.h"
+#include "validate_foam.h"
 
 namespace lagoon::cli {
 namespace {
@@ -375,10 +376,9 @@ double monahan(double u10) {
   return 3.84e-6 * std::pow(u10, 3.41);
 }
 
-// The share of the sea's area where the foam Lagoon draws is at least 0.5, after 30 s of steps at 10 Hz
-// (15 s in --quick: the foam's decay of 0.5/s forgets its start to e^-7.5 by then): per point the largest
-// cascade foam and the whole sea's Jacobian's, as shaders/common/surface_normal.glsl combines them, over a
-// 512² grid spanning the largest patch (nearest texel of each cascade).
+// The share of the sea's area where the foam Lagoon draws is at least 0.5 (drawn_foam, validate_foam.h) on
+// a 512² grid over the largest patch, after 30 s of steps at 10 Hz (15 s in --quick: the foam's decay of
+// 0.5/s forgets its start to e^-7.5 by then).
 double foam_coverage(vk::Context& ctx, const ocean::OceanParams& p, const ValidateOptions& o) {
   ocean::GpuOcean gpu(ctx, p);
   const double dt = 0.1;
@@ -388,27 +388,9 @@ double foam_coverage(vk::Context& ctx, const ocean::OceanParams& p, const Valida
       gpu.record_step(cmd, 100.0 + i * dt, i == 0 ? 0.0 : dt, nullptr,
                       i + 1 < steps ? ocean::GpuOcean::Step::WarmUp : ocean::GpuOcean::Step::Full);
   });
-  const ocean::FoamRule rule = gpu.foam_rule();
-  std::vector<ocean::CascadeReadback> cascades;
-  for (uint32_t c = 0; c < gpu.cascade_count(); ++c) cascades.push_back(gpu.read_cascade(c));
   const uint32_t grid = 512;
-  const double side = p.cascades[0].patch_size_m;
-  size_t foamy = 0;
-  for (uint32_t j = 0; j < grid; ++j)
-    for (uint32_t i = 0; i < grid; ++i) {
-      double foam = 0, tx = 0, tz = 0, txz = 0;
-      for (uint32_t c = 0; c < cascades.size(); ++c) {
-        const uint32_t n = cascades[c].resolution;
-        const double scale = n / p.cascades[c].patch_size_m;
-        const size_t x = size_t(std::floor((i + 0.5) * side / grid * scale)) % n;
-        const size_t z = size_t(std::floor((j + 0.5) * side / grid * scale)) % n;
-        const float* t = &cascades[c].jacobian_terms[4 * (z * n + x)];
-        tx += t[0], tz += t[1], txz += t[2], foam = std::max(foam, double(t[3]));
-      }
-      const double jacobian = (1 + tx) * (1 + tz) - txz * txz;
-      foam = std::max(foam, std::clamp((rule.onset - jacobian) / rule.width, 0.0, 1.0));
-      foamy += foam >= 0.5 ? 1 : 0;
-    }
+  const std::vector<uint8_t> drawn = drawn_foam(gpu, p, grid, p.cascades[0].patch_size_m);
+  const size_t foamy = size_t(std::count(drawn.begin(), drawn.end(), uint8_t{1}));
   return double(foamy) / (double(grid) * grid);
 }
 
