@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "ocean/gpu/gpu_ocean.h"
 #include "ocean/spectrum.h"
@@ -158,8 +157,7 @@ std::vector<Law> foam_laws(vk::Context& ctx, const ValidateOptions& o) {
     if (winds[i] >= 14)  // Beaufort 7 starts at 13.9 m/s
       streaks.points.push_back(
           at_least_point(winds[i], 1.5, s.along_m / std::max(s.across_m, 1e-9) * o.scale()));
-    std::fprintf(stderr, "\rlagoon validate: foam in time %zu/%zu%s", i + 1, winds.size(),
-                 i + 1 == winds.size() ? "\n" : "");
+    validate_progress("foam in time", i + 1, winds.size());
   }
   return {lifetime, streaks};
 }

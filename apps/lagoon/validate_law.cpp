@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace lagoon::cli {
 
@@ -49,6 +50,10 @@ LawPoint at_most_point(double x, double reference, double measured, double slack
 
 LawPoint at_least_point(double x, double reference, double measured) {
   return {x, reference, measured, reference, 1e300};
+}
+
+void validate_progress(const char* what, size_t done, size_t total) {
+  std::fprintf(stderr, "\rlagoon validate: %s %zu/%zu%s", what, done, total, done == total ? "\n" : "");
 }
 
 }  // namespace lagoon::cli

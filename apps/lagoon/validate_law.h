@@ -2,6 +2,7 @@
 // the same quantity over a range of conditions, and a tolerance at every point. A law holds when every point
 // does; its curve is drawn by validate_plot.h and written to the report by validate_report.h.
 #pragma once
+#include <cstddef>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -43,6 +44,10 @@ LawPoint absolute_point(double x, double reference, double measured, double tole
 LawPoint at_most_point(double x, double reference, double measured, double slack);
 // The other side: measured >= reference (foam streaks at least so long, ...).
 LawPoint at_least_point(double x, double reference, double measured);
+
+// "lagoon validate: <what> done/total" on stderr, on one line that each call rewrites; a newline after the
+// last.
+void validate_progress(const char* what, size_t done, size_t total);
 
 // What `lagoon validate` runs with: the short set for `make test` or the full ranges.
 struct ValidateOptions {

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <functional>
 #include <numbers>
 
@@ -156,11 +155,6 @@ std::vector<double> winds(const ValidateOptions& o) {
   return o.quick ? std::vector<double>{6, 12, 20} : std::vector<double>{6, 8, 10, 12, 14, 16, 18, 20};
 }
 
-void sea_progress(const char* what, size_t done, size_t total) {
-  std::fprintf(stderr, "\rlagoon validate: %s %zu/%zu", what, done, total);
-  if (done == total) std::fprintf(stderr, "\n");
-}
-
 // Pierson–Moskowitz at full development: a fetch of 5000 km, far beyond it at every wind.
 std::vector<Law> full_development(vk::Context& ctx, const ValidateOptions& o) {
   Law hs{.id = "sea-state.pm-hs",
@@ -183,7 +177,7 @@ std::vector<Law> full_development(vk::Context& ctx, const ValidateOptions& o) {
     const SeaMeasurement m = measure_averaged(ctx, sea(us[i], 5000.0, o), o);
     hs.points.push_back(relative_point(us[i], pm_hs(us[i]), m.hs, 0.10));
     tp.points.push_back(relative_point(us[i], 2 * kPi / pm_peak_omega(us[i]), 2 * kPi / m.peak_omega, 0.10));
-    sea_progress("full development", i + 1, us.size());
+    validate_progress("full development", i + 1, us.size());
   }
   return {hs, tp};
 }
@@ -215,7 +209,7 @@ std::vector<Law> fetch_limited(vk::Context& ctx, const ValidateOptions& o) {
     hs.points.push_back(relative_point(chis[i], jonswap_law_hs(u, fetch_m), m.hs, 0.10));
     tp.points.push_back(
         relative_point(chis[i], 2 * kPi / jonswap_law_peak(u, fetch_m), 2 * kPi / m.peak_omega, 0.10));
-    sea_progress("fetch-limited seas", i + 1, chis.size());
+    validate_progress("fetch-limited seas", i + 1, chis.size());
   }
   return {hs, tp};
 }
@@ -281,7 +275,7 @@ Law tma_depth(vk::Context& ctx, const ValidateOptions& o) {
                 [&](double w) { return jonswap_density(w, alpha, wp, 3.3) * depth_factor(w, h); }, 0.05 * wp,
                 50 * wp));
     law.points.push_back(relative_point(h, reference, measure_averaged(ctx, p, o).hs, 0.10));
-    sea_progress("depth-limited seas", i + 1, depths.size());
+    validate_progress("depth-limited seas", i + 1, depths.size());
   }
   return law;
 }
@@ -415,7 +409,7 @@ Law whitecaps(vk::Context& ctx, const ValidateOptions& o) {
     if (o.broken == "seed-foam") p.foam.coverage = ocean::FoamCoverage::Threshold;
     const double w = foam_coverage(ctx, p, o) * o.scale();
     law.points.push_back(factor_point(us[i], monahan(us[i]), std::max(w, 1e-6), 2.0));
-    sea_progress("whitecaps", i + 1, us.size());
+    validate_progress("whitecaps", i + 1, us.size());
   }
   return law;
 }

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "ocean/dynamic_layer.h"
 
@@ -120,10 +119,6 @@ WakeShot run_wake(double froude, uint32_t n, double cell, double from_m, double 
   return shot;
 }
 
-void wake_progress(const char* what, size_t done, size_t total) {
-  std::fprintf(stderr, "\rlagoon validate: %s %zu/%zu%s", what, done, total, done == total ? "\n" : "");
-}
-
 }  // namespace
 
 std::vector<Law> wake_laws(const ValidateOptions& o) {
@@ -182,14 +177,14 @@ std::vector<Law> wake_laws(const ValidateOptions& o) {
         absolute_point(fr, std::asin(1.0 / 3.0) * 180 / kPi, shot.cusp_deg * o.scale(), 2.0));
     transverse.points.push_back(
         relative_point(speed, 2 * kPi * speed * speed / kG, shot.transverse_m * o.scale(), 0.10));
-    wake_progress("wakes", ++done, total);
+    validate_progress("wakes", ++done, total);
   }
   for (double fr : fast) {
     const WakeShot shot = o.quick ? run_wake(fr, 256, 1.0, 40, 200, o) : run_wake(fr, 512, 0.5, 40, 200, o);
     const double speed = fr * std::sqrt(kG * kHullLength);
     const double darmon = 0.4729 * std::sqrt(kG * kSigmaAcross) / speed * 180 / kPi;
     narrowing.points.push_back(relative_point(fr, darmon, shot.peak_deg * o.scale(), 0.15));
-    wake_progress("wakes", ++done, total);
+    validate_progress("wakes", ++done, total);
   }
   return {kelvin, transverse, narrowing};
 }
