@@ -37,6 +37,9 @@ const std::vector<std::pair<std::string, std::string>>& broken_variants() {
       {"seed-kd", "the seed's diffuse path-length factor D = 1: light.kd-jerlov"},
       {"beam-secchi", "Secchi depth from the beam attenuation alone: light.secchi"},
       {"no-radiation", "the heave added mass and radiation damping left out: bodies.sphere-decay"},
+      {"quasi-static",
+       "the sphere feels the height above each point, not linear theory's pressure under the wave: "
+       "bodies.sphere-rao"},
       {"shallow-wakes",
        "the wakes in water of depth Froude number 0.9 instead of deep water: wakes.kelvin-angle, "
        "wakes.transverse-wavelength"}};

@@ -6,6 +6,7 @@
 #include <numbers>
 #include <string>
 
+#include "physics/airy_wave.h"
 #include "physics/floating_body.h"
 #include "physics/hydrostatics.h"
 
@@ -274,11 +275,17 @@ double linear_rao(double period) {
 // start-up: the wave grows in over 3 periods, the last 6 of 20 are measured.
 double sphere_rao(double period, const ValidateOptions& o) {
   physics::FloatingBody body = task10_sphere(o);
-  const double w = 2 * kPi / period, k = w * w / kG, amp = 0.002 * kPi / k;
+  const double w = 2 * kPi / period, k = w * w / kG;
+  physics::AiryWave wave{.amplitude = 0.002 * kPi / k, .wavenumber = k, .gravity = kG};
+  const double amp = wave.amplitude;
   double lo = 1e300, hi = -1e300;
+  const bool dynamic = o.broken != "quasi-static";
   for (double t = 0; t < 20 * period; t += 1.0 / 120) {
-    const double ramp = std::min(t / (3 * period), 1.0);
-    body.step(1.0 / 120, [&](double x, double) { return ramp * amp * std::cos(k * x - w * t); });
+    wave.amplitude = std::min(t / (3 * period), 1.0) * amp;
+    const auto height = [&](double x, double z) { return wave.height(x, z, t); };
+    const auto head = [&](double x, double y, double z) { return wave.pressure_head(x, y, z, t); };
+    body.step(1.0 / 120, height, std::numeric_limits<double>::infinity(),
+              dynamic ? physics::PressureHead(head) : physics::PressureHead());
     if (t > 14 * period)
       lo = std::min(lo, body.state().position.y), hi = std::max(hi, body.state().position.y);
   }

@@ -22,7 +22,7 @@ FloatingBody::FloatingBody(const TriangleMesh& hull, const MassProperties& mass,
 
 void FloatingBody::place(glm::dvec3 origin, glm::dquat orientation) {
   state_ = BodyState{};
-  has_level_ = false;
+  head_steps_ = 0;
   state_.orientation = glm::normalize(orientation);
   state_.position = origin + state_.orientation * mass_.centre;
 }
@@ -60,11 +60,11 @@ double FloatingBody::kinetic_energy() const {
          0.5 * glm::dot(w, r * mass_.inertia * glm::transpose(r) * w);
 }
 
-void FloatingBody::step(double dt, const WaterHeight& water, double water_top) {
+void FloatingBody::step(double dt, const WaterHeight& water, double water_top, const PressureHead& head) {
   const glm::dmat3 r = glm::mat3_cast(state_.orientation);
   for (size_t i = 0; i < hull_.size(); ++i) world_[i] = state_.position + r * hull_[i];
-  wrench_ =
-      hydrostatic_wrench(world_, indices_, water, state_.position, water_.density, water_.gravity, water_top);
+  wrench_ = hydrostatic_wrench(world_, indices_, water, state_.position, water_.density, water_.gravity,
+                               water_top, head);
   const double wet = hull_area_ > 0 ? std::min(wrench_.wetted_area / hull_area_, 1.0) : 0.0;
 
   const glm::dvec3 v = state_.velocity, w = state_.angular_velocity;
@@ -75,7 +75,7 @@ void FloatingBody::step(double dt, const WaterHeight& water, double water_top) {
   torque -= wet * (damping_.angular + damping_.angular_quadratic * glm::length(w)) * (inertia * w);
   torque -= glm::cross(w, inertia * w);  // gyroscopic
   const glm::dmat3 inverse_inertia = r * inverse_inertia_ * glm::transpose(r);
-  const double added_mass = add_heave_radiation(dt, water, force);
+  const double added_mass = add_heave_radiation(dt, water, head, force);
   add_floor(dt, inverse_inertia, force, torque);
 
   // Semi-implicit Euler: velocities first, then positions with the new velocities. The water's added mass
@@ -90,16 +90,24 @@ void FloatingBody::step(double dt, const WaterHeight& water, double water_top) {
       glm::normalize(state_.orientation + 0.5 * dt * glm::dquat(0.0, wn.x, wn.y, wn.z) * state_.orientation);
 }
 
-double FloatingBody::add_heave_radiation(double dt, const WaterHeight& water, glm::dvec3& force) {
+double FloatingBody::add_heave_radiation(double dt, const WaterHeight& water, const PressureHead& head,
+                                         glm::dvec3& force) {
   if (!options_.radiation.enabled) return 0.0;
-  // The water's vertical velocity at the body, from its height under the centre a step ago.
-  const double level = water(state_.position.x, state_.position.z);
-  const double rise = has_level_ ? (level - last_level_) / dt : 0.0;
-  last_level_ = level;
-  has_level_ = true;
   const double displaced = std::max(wrench_.force.y, 0.0) / (water_.density * water_.gravity);
   const HeaveTerms terms = heave_terms(options_.radiation, displaced, water_.density, water_.gravity);
-  force.y -= terms.damping_n_s_per_m * (state_.velocity.y - rise);
+  // The water's vertical motion where the hull displaces it: the pressure head at the centre of buoyancy's
+  // depth, differenced over steps (linear theory: ∂H/∂t is the vertical velocity there). Without a head,
+  // the surface's.
+  const double level = water(state_.position.x, state_.position.z);
+  const double at = level - terms.buoyancy_depth_m;
+  const double sample = head ? head(state_.position.x, at, state_.position.z) : level;
+  const double rise = head_steps_ > 0 ? (sample - last_head_) / dt : 0.0;
+  const double lift = head_steps_ > 1 ? (rise - last_rise_) / dt : 0.0;
+  last_head_ = sample, last_rise_ = rise;
+  head_steps_ = std::min(head_steps_ + 1, 2);
+  // Radiation and diffraction together, in relative motion: the body feels the added mass and damping
+  // against its motion relative to the water's (the long-wave approximation of the diffraction force).
+  force.y += terms.damping_n_s_per_m * (rise - state_.velocity.y) + terms.added_mass_kg * lift;
   return terms.added_mass_kg;
 }
 

@@ -62,8 +62,11 @@ class FloatingBody {
   // `level` carries its weight (bisection). False, unmoved, when it cannot float (it sinks even submerged).
   bool settle_vertically(double level);
   // One step of dt seconds with the water's height as it is at the step's start; `water_top` bounds it
-  // from above (physics/hydrostatics.h: the hull's dry part is then not looked up).
-  void step(double dt, const WaterHeight& water, double water_top = std::numeric_limits<double>::infinity());
+  // from above (physics/hydrostatics.h: the hull's dry part is then not looked up). With `head` the hull
+  // feels the pressure under the waves as linear theory has it, and the heave radiation the water's motion
+  // at the hull's depth (physics/heave_radiation.h); without it, the height above each point.
+  void step(double dt, const WaterHeight& water, double water_top = std::numeric_limits<double>::infinity(),
+            const PressureHead& head = {});
   // Puts a floor under the body (or takes it away with an empty function).
   void set_floor(FloorHeight floor) { options_.floor = std::move(floor); }
 
@@ -83,8 +86,10 @@ class FloatingBody {
  private:
   // The floor's push and friction for this step, added to the step's force and torque (about the centre).
   void add_floor(double dt, const glm::dmat3& inverse_inertia, glm::dvec3& force, glm::dvec3& torque);
-  // With options_.radiation: adds the radiation damping to `force`, returns the heave's added mass (kg).
-  double add_heave_radiation(double dt, const WaterHeight& water, glm::dvec3& force);
+  // With options_.radiation: adds the radiation and diffraction forces to `force`, returns the heave's
+  // added mass (kg).
+  double add_heave_radiation(double dt, const WaterHeight& water, const PressureHead& head,
+                             glm::dvec3& force);
 
   std::vector<glm::dvec3> hull_;  // the refined hull, relative to the centre of mass
   std::vector<uint32_t> indices_;
@@ -97,8 +102,10 @@ class FloatingBody {
   BodyState state_;
   Wrench wrench_;
   FloorPush floor_push_;
-  double last_level_ = 0;  // the water's height under the centre a step ago (radiation only)
-  bool has_level_ = false;
+  // The water's pressure head at the hull's depth under the centre, and its rate, a step ago (radiation
+  // only).
+  double last_head_ = 0, last_rise_ = 0;
+  int head_steps_ = 0;             // how many of them are known (0 to 2)
   std::vector<glm::dvec3> world_;  // scratch: the hull in world coordinates
 };
 

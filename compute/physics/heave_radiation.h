@@ -7,9 +7,10 @@
 // ω_n² = 3g/(2r(1 + μ)), where kr = 1.055 in deep water: μ = 0.422, ν = 0.238 (Hulme's table, as
 // transcribed in LHEEA/Hulme_Heaving_Sphere, interpolated there; `lagoon validate`'s bodies.sphere-* laws
 // use the whole table). One frequency only (no memory kernel): right for free decay (the Task 10 sphere's
-// period within 2 %); in waves the excitation is the hydrostatic pressure under the wave's height, without
-// the wave's dynamic pressure, so the heave RAO is far from linear theory's (bodies.sphere-rao, an open
-// finding of docs/validation.md). V is the volume under the water now, so a body in the air gets neither.
+// period within 2 %). In waves they act on the heave relative to the water's motion at the hemisphere's
+// centre of buoyancy (physics/floating_body.cpp), the long-wave approximation of the diffraction force:
+// the Task 10 RAO within 14 % of linear theory from 4.4 to 11 s, not below 4 s (docs/validation.md).
+// V is the volume under the water now, so a body in the air gets neither.
 #pragma once
 
 namespace lagoon::physics {
@@ -23,6 +24,7 @@ struct HeaveRadiation {
 struct HeaveTerms {
   double added_mass_kg = 0;
   double damping_n_s_per_m = 0;  // against the body's vertical velocity relative to the water's
+  double buoyancy_depth_m = 0;   // of the hemisphere's centre of buoyancy, 3r/8 below the waterline
 };
 
 // For `displaced_m3` of water of `density` under `gravity`; zero when disabled or dry.

@@ -32,7 +32,7 @@ void add_triangle(const Point& a, const Point& b, const Point& c, glm::dvec3 abo
 
 Wrench hydrostatic_wrench(std::span<const glm::dvec3> vertices, std::span<const uint32_t> indices,
                           const WaterHeight& water, glm::dvec3 about, double density, double gravity,
-                          double water_top) {
+                          double water_top, const PressureHead& head) {
   Wrench out;
   const double rho_g = density * gravity;
   // The water's height once per vertex (a closed mesh has about half as many vertices as triangles, and
@@ -40,7 +40,9 @@ Wrench hydrostatic_wrench(std::span<const glm::dvec3> vertices, std::span<const 
   // step's dearest part. NaN: not looked up yet.
   std::vector<double> depth(vertices.size(), std::numeric_limits<double>::quiet_NaN());
   auto depth_at = [&](uint32_t v) {
-    if (std::isnan(depth[v])) depth[v] = water(vertices[v].x, vertices[v].z) - vertices[v].y;
+    if (!std::isnan(depth[v])) return depth[v];
+    const glm::dvec3& p = vertices[v];
+    depth[v] = (head ? head(p.x, p.y, p.z) : water(p.x, p.z)) - p.y;
     return depth[v];
   };
   for (size_t t = 0; t + 2 < indices.size(); t += 3) {

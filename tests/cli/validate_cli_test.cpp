@@ -20,10 +20,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Laws Lagoon does not meet yet, each a finding of the report (docs/validation.md, "Open findings"): they
-// are measured and reported, and must be taken off this list when fixed.
-const std::set<std::string> kOpenFindings{"light.secchi", "light.caustics-contrast", "bodies.sphere-rao",
-                                          "foam.lifetime", "foam.streaks"};
+// Laws Lagoon does not meet yet in the quick run, each a finding of the report (docs/validation.md, "Open
+// findings"): they are measured and reported, and must be taken off this list when fixed. bodies.sphere-rao
+// holds at the resonance the quick run measures (its finding is at 3-4 s, in the full run only).
+const std::set<std::string> kOpenFindings{"light.secchi", "light.caustics-contrast", "foam.lifetime",
+                                          "foam.streaks"};
 
 std::map<std::string, bool> verdicts(const fs::path& report) {
   const nlohmann::json j = nlohmann::json::parse(read_file(report));
@@ -97,9 +98,10 @@ INSTANTIATE_TEST_SUITE_P(
                        "bodies.archimedes", "bodies.box-heave", "bodies.tessellation", "bodies.floor",
                        "light.snell-window", "light.kd-jerlov", "sea-state.fetch-cap", "sea-state.rayleigh",
                        "light.caustics-mean-above", "light.caustics-mean-below", "wakes.narrowing",
-                       "bodies.sphere-stiffness"}},
+                       "bodies.sphere-stiffness", "bodies.sphere-rao"}},
         BrokenVariant{"seed-foam", {"foam.whitecap-coverage"}},
         BrokenVariant{"no-radiation", {"bodies.sphere-decay"}},
+        BrokenVariant{"quasi-static", {"bodies.sphere-rao"}},
         BrokenVariant{"shallow-wakes", {"wakes.kelvin-angle", "wakes.transverse-wavelength"}}),
     [](const ::testing::TestParamInfo<BrokenVariant>& info) {
       std::string name = info.param.name;

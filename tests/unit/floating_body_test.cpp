@@ -18,6 +18,7 @@
 #include "physics/mesh_floor.h"
 #include "support/box_mesh.h"
 #include "support/reference_math.h"
+#include "support/sphere_mesh.h"
 
 namespace lagoon::test {
 namespace {
@@ -368,24 +369,6 @@ TEST(FloatingBody, ALightBodyReleasedOnTheFloorRisesAndFloats) {
   const physics::FloatingBody body = on_floor(kRhoWater / 2, floor, glm::dvec3(0, -4.7, 0), 60);
   EXPECT_NEAR(body.state().position.y, 0.0, 0.02 * 0.6);
   EXPECT_EQ(body.last_floor_push().points, 0);
-}
-
-// A sphere of radius r, `rings` from pole to pole, counter-clockwise from outside.
-physics::TriangleMesh sphere(double r, int rings) {
-  physics::TriangleMesh m;
-  const int sectors = 2 * rings;
-  for (int i = 0; i <= rings; ++i)
-    for (int j = 0; j <= sectors; ++j) {
-      const double theta = std::numbers::pi * i / rings, phi = 2 * std::numbers::pi * j / sectors;
-      m.vertices.push_back(
-          r * glm::dvec3(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)));
-    }
-  for (int i = 0; i < rings; ++i)
-    for (int j = 0; j < sectors; ++j) {
-      const uint32_t a = uint32_t(i * (sectors + 1) + j), b = a + 1, d = a + uint32_t(sectors + 1), c = d + 1;
-      m.indices.insert(m.indices.end(), {a, b, c, a, c, d});
-    }
-  return m;
 }
 
 // The time between the first `count` downward crossings of the centre through y = 0 (s), stepping at 120 Hz.
