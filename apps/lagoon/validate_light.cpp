@@ -11,8 +11,10 @@
 #include "optics/csv_table.h"
 #include "optics/kd.h"
 #include "optics/lut.h"
+#include "optics/underwater.h"
 #include "render/ocean_renderer.h"
 #include "render/passes/caustics_pass.h"
+#include "render/water_luts.h"
 #include "scene/scene.h"
 #include "shared/caustics.h"
 
@@ -190,7 +192,9 @@ Result<Law> secchi(const ValidateOptions& o) {
 
 // Caustics under a 7 m/s sea, jerlov-I, a sloping floor 3-6 m down, the sun 60° up: the caustic map's
 // slices (irradiance relative to a flat sea at 1, 2.5, 6 and 15 m) over the inner 80 % of the window, where
-// the floor's shading uses them at full weight.
+// the floor's shading uses them at full weight. The mean is the map's (the sun's direct light, focused);
+// the contrast is the floor's light's, as common/caustics.glsl draws it: the direct share s(z) of the
+// light focused, the diffuse rest not, gain = 1 + s·(map − 1).
 struct CausticSlices {
   std::vector<double> depth, mean, contrast;
 };
@@ -211,6 +215,8 @@ Result<CausticSlices> caustic_slices(vk::Context& ctx, bool from_above, const Va
   if (!s) return s.error();
   auto renderer = render::OceanRenderer::create(ctx, *s);
   if (!renderer) return renderer.error();
+  auto inputs = render::scene_lut_inputs(*s);
+  if (!inputs) return inputs.error();
   // Energy is conserved over the whole floor, not over a 25 m window: waves of 40 m focus light across its
   // edges. The window's mean is averaged over frames 3.7 s apart (uncorrelated patterns), the contrast too.
   const glm::vec4 depths = render::CausticsWindow{}.depths;  // the slices' depths (fixed)
@@ -223,14 +229,17 @@ Result<CausticSlices> caustic_slices(vk::Context& ctx, bool from_above, const Va
     (*renderer)->render(*s);
     const std::vector<float> map = (*renderer)->caustics().read_map(ctx);
     for (size_t k = 0; k < LAGOON_CAUSTICS_SLICES; ++k) {
-      double sum = 0, square = 0, count = 0;
+      auto sample = optics::underwater_sample(*inputs, 0.0, depths[int(k)]);
+      if (!sample) return sample.error();
+      const double share = sample->direct_share;
+      double sum = 0, gain = 0, square = 0, count = 0;
       for (size_t z = lo; z < hi; ++z)
         for (size_t x = lo; x < hi; ++x) {
-          const double v = map[(k * n + z) * n + x];
-          sum += v, square += v * v, ++count;
+          const double v = map[(k * n + z) * n + x], g = 1.0 + share * (v - 1.0);
+          sum += v, gain += g, square += g * g, ++count;
         }
-      const double mean = sum / count;
-      out.mean[k] += mean / frames;
+      out.mean[k] += sum / count / frames;
+      const double mean = gain / count;
       out.contrast[k] += std::sqrt(std::max(square / count - mean * mean, 0.0)) / mean / frames;
     }
   }
@@ -243,13 +252,16 @@ Result<std::vector<Law>> caustics(vk::Context& ctx, const ValidateOptions& o) {
   Law contrast{.id = "light.caustics-contrast",
                .title = "Caustic contrast fades past the focus",
                .source = "geometric optics of a random surface (focusing, then mixing)",
-               .measured_on = "device: the caustic map read back",
+               .measured_on = "device: the caustic map read back, as the floor's shading applies it",
                .x_label = "depth (m)",
-               .y_label = "contrast std/mean, at most the shallower slice's",
+               .y_label = "floor light's contrast std/mean, at most the shallower slice's",
                .tolerance = "≤ previous past the deepest focus",
                .note =
-                   "From above; the contrast at 15 m must not exceed that at 6 m (the caustics of a sea of "
-                   "many wavelengths blur with depth beyond their focal zone)."};
+                   "From above; the contrast of the floor's light at 15 m must not exceed that at 6 m. The "
+                   "floor's light is the sun's direct share s(z) of it focused by the map, the diffuse rest "
+                   "unfocused (common/caustics.glsl: 1 + s (map - 1), s from the optics model): scattering "
+                   "takes light out of the focused beam with depth, as the finite sun and the waves' "
+                   "spread of focal depths blur the pattern."};
   std::vector<Law> laws;
   for (bool above : {true, false}) {
     auto slices = caustic_slices(ctx, above, o);

@@ -3,10 +3,11 @@
 #include "shared/frame.h"
 #include "shared/caustics.h"
 
-// One source cell of the sea's surface per invocation: the sun's ray through the displaced surface there,
-// refracted by its normal, carries the cell's share of the flat-surface irradiance down to each slice's
-// depth, where it is splatted bilinearly (fixed point, atomics). Every cell carries the same energy, so what
-// arrives over the window is what left the surface: under a flat sea each destination cell gets exactly 1.
+// One ray per invocation, LAGOON_CAUSTICS_RAYS² per source cell of the sea's surface: the sun's ray through
+// the displaced surface there, refracted by its normal, carries its share of the flat-surface irradiance
+// down to each slice's depth, where it is splatted bilinearly (fixed point, atomics). Every ray carries the
+// same energy, so what arrives over the window is what left the surface: under a flat sea each destination
+// cell gets exactly 1.
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(std140, binding = LAGOON_CAUSTICS_BIND_FRAME) uniform Frame { FrameUniforms frame; };
 layout(binding = LAGOON_CAUSTICS_BIND_DISPLACEMENT) uniform sampler2DArray displacement[LAGOON_MAX_CASCADES];
@@ -25,9 +26,9 @@ void splat(int slice, ivec2 cell, uint amount) {
 
 void main() {
   ivec2 s = ivec2(gl_GlobalInvocationID.xy);
-  if (any(greaterThanEqual(s, ivec2(p.source.zw)))) return;
+  if (any(greaterThanEqual(s, ivec2(p.source.zw) * LAGOON_CAUSTICS_RAYS))) return;
   float cell = frame.caustics.z;
-  vec2 rest = p.source.xy + (vec2(s) + 0.5) * cell;
+  vec2 rest = p.source.xy + (vec2(s) + 0.5) * (cell / float(LAGOON_CAUSTICS_RAYS));
   // The cascades filtered to the cell size: shorter waves would alias into the pattern.
   vec3 d = vec3(0.0);
   vec2 slope = vec2(0.0);
@@ -56,11 +57,11 @@ void main() {
     vec2 f = (hit - frame.caustics.xy) / cell - 0.5;  // cell centres at integers
     ivec2 c0 = ivec2(floor(f));
     vec2 w = f - vec2(c0);
-    // Weights in fixed point that add up to exactly one ray.
-    const uint one = uint(LAGOON_CAUSTICS_ONE);
-    uint w00 = uint((1.0 - w.x) * (1.0 - w.y) * LAGOON_CAUSTICS_ONE);
-    uint w10 = uint(w.x * (1.0 - w.y) * LAGOON_CAUSTICS_ONE);
-    uint w01 = uint((1.0 - w.x) * w.y * LAGOON_CAUSTICS_ONE);
+    // Weights in fixed point that add up to exactly one ray (1/RAYS² of a source cell).
+    const uint one = uint(LAGOON_CAUSTICS_ONE) / uint(LAGOON_CAUSTICS_RAYS * LAGOON_CAUSTICS_RAYS);
+    uint w00 = uint((1.0 - w.x) * (1.0 - w.y) * float(one));
+    uint w10 = uint(w.x * (1.0 - w.y) * float(one));
+    uint w01 = uint((1.0 - w.x) * w.y * float(one));
     uint w11 = one - min(w00 + w10 + w01, one);
     splat(slice, c0, w00);
     splat(slice, c0 + ivec2(1, 0), w10);

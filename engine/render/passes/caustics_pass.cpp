@@ -81,7 +81,8 @@ void CausticsPass::record(const FrameContext& frame, const CausticsWindow& windo
   const gpu::CausticsPush push{
       .source = glm::vec4(window.source_origin, float(window.source_cells.x), float(window.source_cells.y))};
   vk::dispatch(frame.cmd, splat_, splat, &push, sizeof(push),
-               vk::groups_for(splat_, {window.source_cells.x, window.source_cells.y, 1}));
+               vk::groups_for(splat_, {window.source_cells.x * LAGOON_CAUSTICS_RAYS,
+                                       window.source_cells.y * LAGOON_CAUSTICS_RAYS, 1}));
   vk::buffer_barrier(frame.cmd, accum_.handle(), vk::access::kComputeReadWrite,
                      vk::access::kComputeReadWrite);
   // The last frame's readers are done with the map before it is rewritten.
