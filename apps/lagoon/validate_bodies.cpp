@@ -9,6 +9,7 @@
 #include "physics/airy_wave.h"
 #include "physics/floating_body.h"
 #include "physics/hydrostatics.h"
+#include "physics/sphere_mesh.h"
 
 namespace lagoon::cli {
 namespace {
@@ -207,25 +208,8 @@ Law floor_contact(const ValidateOptions& o) {
 // hand-tuned damping.
 constexpr double kSphereRadius = 5.0, kFresh = 1000.0;
 
-physics::TriangleMesh sphere(double r, int rings) {
-  physics::TriangleMesh m;
-  const int sectors = 2 * rings;
-  for (int i = 0; i <= rings; ++i)
-    for (int j = 0; j <= sectors; ++j) {
-      const double theta = kPi * i / rings, phi = 2 * kPi * j / sectors;
-      m.vertices.push_back(
-          r * glm::dvec3(std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)));
-    }
-  for (int i = 0; i < rings; ++i)
-    for (int j = 0; j < sectors; ++j) {
-      const uint32_t a = uint32_t(i * (sectors + 1) + j), b = a + 1, d = a + uint32_t(sectors + 1), c = d + 1;
-      m.indices.insert(m.indices.end(), {a, b, c, a, c, d});
-    }
-  return m;
-}
-
 physics::FloatingBody task10_sphere(const ValidateOptions& o) {
-  const physics::TriangleMesh hull = sphere(kSphereRadius, 32);
+  const physics::TriangleMesh hull = physics::uv_sphere(kSphereRadius, 32);
   physics::BodyOptions options = body_options(o);
   options.radiation.enabled = o.broken != "no-radiation";
   physics::FloatingBody body(hull, physics::solid_mass_properties(hull, 0.5 * kFresh),
@@ -322,7 +306,7 @@ std::vector<Law> task10(const ValidateOptions& o) {
                 .note =
                     "R = 5 m, 32 rings x 64 sectors; the change in buoyancy over a small displacement "
                     "from the half-immersed equilibrium, in fresh water."};
-  const physics::TriangleMesh hull = sphere(kSphereRadius, 32);
+  const physics::TriangleMesh hull = physics::uv_sphere(kSphereRadius, 32);
   const auto still = [](double, double) { return 0.0; };
   auto buoyancy = [&](double dy) {
     std::vector<glm::dvec3> at = hull.vertices;

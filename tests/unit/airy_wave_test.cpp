@@ -9,8 +9,8 @@
 
 #include "physics/airy_wave.h"
 #include "physics/hydrostatics.h"
+#include "physics/sphere_mesh.h"
 #include "support/reference_math.h"
-#include "support/sphere_mesh.h"
 
 namespace lagoon::test {
 namespace {
@@ -66,7 +66,7 @@ TEST(Hydrostatics, TheWavesPressureOnADeepHullFadesAsLinearTheorySays) {
   // The IEA OES Task 10 sphere (R = 5 m, half submerged) under the crest of a 30 m wave (kR = 1.05, its
   // heave resonance), 1 cm high so that the waterline hardly moves.
   const double rho = 1000.0, radius = 5.0, k = 2 * kPi / 30.0, a = 0.01;
-  const physics::TriangleMesh hull = sphere(radius, 48);
+  const physics::TriangleMesh hull = physics::uv_sphere(radius, 48);
   const physics::AiryWave wave{.amplitude = a, .wavenumber = k, .gravity = kG};
   const physics::WaterHeight still = [](double, double) { return 0.0; };
   const physics::WaterHeight height = [&](double x, double z) { return wave.height(x, z, 0); };

@@ -16,9 +16,9 @@
 #include "physics/hydrostatics.h"
 #include "physics/mass_properties.h"
 #include "physics/mesh_floor.h"
+#include "physics/sphere_mesh.h"
 #include "support/box_mesh.h"
 #include "support/reference_math.h"
-#include "support/sphere_mesh.h"
 
 namespace lagoon::test {
 namespace {
@@ -390,7 +390,7 @@ double decay_period(physics::FloatingBody& body, int count) {
 // gives 2π·sqrt(m/K) = 3.66 s.
 TEST(FloatingBody, TheTask10SphereDecaysWithItsAddedMassPeriod) {
   const double rho = 1000.0, radius = 5.0;
-  const physics::TriangleMesh hull = sphere(radius, 32);
+  const physics::TriangleMesh hull = physics::uv_sphere(radius, 32);
   const physics::MassProperties mass = physics::solid_mass_properties(hull, rho / 2);
   ASSERT_NEAR(mass.mass, 261.8e3, 0.01 * 261.8e3);
   auto released = [&](bool radiation) {

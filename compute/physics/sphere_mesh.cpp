@@ -1,18 +1,12 @@
-// A UV sphere as a hull for the physics tests (the IEA OES Task 10 sphere is one): its buoyancy, heave
-// stiffness and wave force have closed forms or quadratures to check against.
-#pragma once
+#include "physics/sphere_mesh.h"
+
 #include <cmath>
-#include <cstdint>
-#include <glm/vec3.hpp>
 #include <numbers>
 
-#include "physics/mass_properties.h"
+namespace lagoon::physics {
 
-namespace lagoon::test {
-
-// A sphere of radius r, `rings` from pole to pole, counter-clockwise from outside.
-inline physics::TriangleMesh sphere(double r, int rings) {
-  physics::TriangleMesh m;
+TriangleMesh uv_sphere(double r, int rings) {
+  TriangleMesh m;
   const int sectors = 2 * rings;
   for (int i = 0; i <= rings; ++i)
     for (int j = 0; j <= sectors; ++j) {
@@ -28,4 +22,4 @@ inline physics::TriangleMesh sphere(double r, int rings) {
   return m;
 }
 
-}  // namespace lagoon::test
+}  // namespace lagoon::physics
