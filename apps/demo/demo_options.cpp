@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/bounded_file.h"
 #include "exit_codes.h"
 #include "scene_args.h"
 
@@ -85,11 +86,12 @@ Result<std::vector<ScriptStep>> parse_script(std::string_view text, const std::s
 }
 
 Result<std::vector<ScriptStep>> read_script(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) return make_error(path + ": cannot read the script (check the path)");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_script(text.str(), path);
+  // A script is a line per edit; 16 MiB is hundreds of thousands. Checked before reading
+  // (core/bounded_file.h): a FIFO or device is refused, not read for ever.
+  Result<std::string> text = read_bounded_file(path, std::uintmax_t{16} << 20);
+  if (!text)
+    return make_error(path + ": cannot read the script: it " + text.error().message + " (check the path)");
+  return parse_script(*text, path);
 }
 
 namespace {

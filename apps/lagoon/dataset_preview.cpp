@@ -2,14 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "core/bounded_file.h"
 #include "io/json_limits.h"
 #include "io/npy.h"
 #include "io/text_raster.h"
@@ -89,12 +88,12 @@ std::vector<Rgb8> colour(const std::string& kind, const io::NpyArray& a, size_t 
 }
 
 Result<nlohmann::ordered_json> read_metadata(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return Error{path.string() + ": cannot be opened; name a frame's .json written by lagoon render"};
-  std::ostringstream text;
-  text << in.rdbuf();
-  const std::string s = text.str();
-  if (s.size() > (1u << 20) || io::json_limit_exceeded(s, {}))
+  Result<std::string> text = read_bounded_file(path, std::uintmax_t{1} << 20);
+  if (!text)
+    return Error{path.string() + ": " + text.error().message +
+                 "; name a frame's .json written by lagoon render (at most 1 MiB)"};
+  const std::string& s = *text;
+  if (io::json_limit_exceeded(s, {}))
     return Error{path.string() + ": is not a frame's metadata (too large or too deeply nested)"};
   nlohmann::ordered_json j = nlohmann::ordered_json::parse(s, nullptr, false);
   if (j.is_discarded() || !j.is_object() || !j.contains("image") || !j["image"].is_string() ||

@@ -5,10 +5,9 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
-#include <sstream>
 #include <utility>
 
+#include "core/bounded_file.h"
 #include "optics/embedded_text.h"
 
 namespace lagoon::optics {
@@ -123,12 +122,12 @@ Result<CsvTable> CsvTable::parse(std::string_view text, std::string source, CsvO
 }
 
 Result<CsvTable> CsvTable::read_file(const std::filesystem::path& path, CsvOptions options) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return make_error(path.string() + ": cannot open the file (does it exist and is it readable?)");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) return make_error(path.string() + ": read error");
-  return parse(text.str(), path.string(), options);
+  // Spectral tables are kilobytes; checked before reading (core/bounded_file.h), so /dev/zero or a FIFO
+  // named as a water table is refused, not read for ever.
+  constexpr std::uintmax_t kMaxTableBytes = std::uintmax_t{16} << 20;
+  Result<std::string> text = read_bounded_file(path, kMaxTableBytes);
+  if (!text) return make_error(path.string() + ": " + text.error().message + " (a table is a CSV file)");
+  return parse(*text, path.string(), options);
 }
 
 Result<CsvTable> CsvTable::embedded(std::string_view name, CsvOptions options) {

@@ -153,20 +153,26 @@ Result<void> write_file_atomic(const std::filesystem::path& path, std::span<cons
   return file->commit();
 }
 
-Result<std::vector<std::byte>> read_file_bytes(const std::filesystem::path& path) {
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+Result<std::vector<std::byte>> read_file_bytes(const std::filesystem::path& path, std::uintmax_t max_bytes) {
+  // O_NONBLOCK: opening a FIFO must not wait for a writer before fstat can refuse it.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
   if (fd < 0) return make_error(os_error_message("cannot read", path, errno));
   FdCloser closer(fd);
   struct stat st {};
   if (::fstat(fd, &st) != 0) return make_error(os_error_message("cannot read", path, errno));
   if (S_ISDIR(st.st_mode)) return make_error(os_error_message("cannot read", path, EISDIR));
-
-  std::vector<std::byte> data;
-  // st_size is only a hint (the file may change or be a pipe); read until end of file.
-  data.resize(S_ISREG(st.st_mode) ? static_cast<size_t>(st.st_size) + 1 : 64 * 1024);
+  if (!S_ISREG(st.st_mode))
+    return make_error("cannot read " + path.string() +
+                      ": not a regular file (a device, pipe or socket, which could block or never end)");
+  const auto size = static_cast<std::uintmax_t>(st.st_size);
+  if (size > max_bytes)
+    return make_error("cannot read " + path.string() + ": it has " + std::to_string(size) +
+                      " bytes, more than the " + std::to_string(max_bytes >> 20) +
+                      " MiB such a file may have");
+  // One byte more than the size, so that a file growing while it is read is noticed, not cut.
+  std::vector<std::byte> data(static_cast<size_t>(size) + 1);
   size_t used = 0;
-  for (;;) {
-    if (used == data.size()) data.resize(data.size() * 2);
+  while (used < data.size()) {
     const ssize_t n = ::read(fd, data.data() + used, data.size() - used);
     if (n < 0) {
       if (errno == EINTR) continue;
@@ -175,6 +181,7 @@ Result<std::vector<std::byte>> read_file_bytes(const std::filesystem::path& path
     if (n == 0) break;
     used += static_cast<size_t>(n);
   }
+  if (used != size) return make_error("cannot read " + path.string() + ": it changed size while being read");
   data.resize(used);
   return data;
 }

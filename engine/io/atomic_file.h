@@ -2,6 +2,7 @@
 // half-way) see either the old file or the complete new one, never a truncated image or array.
 #pragma once
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <span>
 #include <string_view>
@@ -49,8 +50,12 @@ Result<void> write_file_atomic(const std::filesystem::path& path, std::span<cons
 // The same for text (JSON, CSV, Markdown).
 Result<void> write_text_atomic(const std::filesystem::path& path, std::string_view text);
 
-// Reads a whole file; the error names the path and the OS reason.
-Result<std::vector<std::byte>> read_file_bytes(const std::filesystem::path& path);
+// Reads a whole regular file of at most `max_bytes`; the error names the path and the reason. A device,
+// pipe or socket is refused before a byte is read (it could block, or never end: issue 36), and so is a
+// file larger than the limit.
+inline constexpr std::uintmax_t kMaxReadBytes = std::uintmax_t{1} << 30;
+Result<std::vector<std::byte>> read_file_bytes(const std::filesystem::path& path,
+                                               std::uintmax_t max_bytes = kMaxReadBytes);
 
 // "<what> <path>: <strerror(errnum)>", the shape of every I/O error message here.
 std::string os_error_message(const char* what, const std::filesystem::path& path, int errnum);

@@ -9,6 +9,7 @@
 #include <regex>
 #include <set>
 
+#include "core/bounded_file.h"
 #include "io/atomic_file.h"
 #include "io/json_limits.h"
 #include "io/sha256.h"
@@ -86,6 +87,10 @@ std::optional<json> parse_line(const std::string& line) {
 }  // namespace
 
 Result<Manifest> read_manifest(const std::filesystem::path& path) {
+  // A manifest is a line per frame (about 300 bytes): 1 GiB is millions of frames. Checked before it is
+  // opened (core/bounded_file.h), so a FIFO or device named as one is refused, not read for ever.
+  if (const FileCheck check = check_file_to_read(path, std::uintmax_t{1} << 30); !check)
+    return Error{"cannot read the manifest " + path.string() + ": it " + check.reason};
   std::ifstream in(path, std::ios::binary);
   if (!in) return Error{os_error_message("cannot open", path, errno)};
   Manifest m;

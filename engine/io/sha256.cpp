@@ -5,6 +5,7 @@
 #include <memory>
 #include <vector>
 
+#include "core/bounded_file.h"
 #include "io/atomic_file.h"
 
 namespace lagoon::io {
@@ -86,6 +87,9 @@ std::string sha256_hex(std::span<const std::byte> bytes) {
 }
 
 Result<std::string> sha256_file(const std::filesystem::path& path) {
+  // Streamed, so any size is fine; but only a regular file, which ends (core/bounded_file.h).
+  if (const FileCheck check = check_file_to_read(path, UINTMAX_MAX); !check)
+    return Error{"cannot hash " + path.string() + ": it " + check.reason};
   std::unique_ptr<FILE, int (*)(FILE*)> file(std::fopen(path.c_str(), "rb"), std::fclose);
   if (!file) return Error{os_error_message("cannot open", path, errno)};
   Sha256 sha;

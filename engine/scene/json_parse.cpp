@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/bounded_file.h"
 #include "io/json_limits.h"
 #include "scene/json_fields.h"
 
@@ -113,40 +114,42 @@ std::optional<json> parse_json_text(std::string_view text, Diagnostics& diag) {
 std::optional<std::string> read_json_file(const std::filesystem::path& path, Diagnostics& diag,
                                           const JsonFileKind& kind) {
   const std::string name(kind.name), example(kind.example);
-  std::error_code ec;
-  const std::filesystem::file_status status = std::filesystem::status(path, ec);
-  if (!std::filesystem::exists(status)) {
-    const std::filesystem::path cwd = std::filesystem::current_path(ec);
-    diag.file_error("file not found", "check the path (relative paths start from the working directory " +
-                                          cwd.string() + "); " + example + " is a starting point");
-    return std::nullopt;
-  }
-  if (std::filesystem::is_directory(status)) {
-    diag.file_error("is a directory, not a " + name, "pass a .json file such as " + example);
-    return std::nullopt;
-  }
   // Scene and path files are a few kilobytes; a huge one is the wrong file, and reading it whole would cost
-  // its size.
+  // its size. Checked before anything is read (core/bounded_file.h): /dev/zero or a FIFO is refused, not
+  // read for ever.
   constexpr std::uintmax_t kMaxSceneBytes = std::uintmax_t{16} << 20;
-  if (const std::uintmax_t size = std::filesystem::file_size(path, ec); !ec && size > kMaxSceneBytes) {
-    diag.file_error("is " + std::to_string(size >> 20) + " MiB; " + name + "s are limited to 16 MiB",
-                    "check that this is the " + name + " you meant (" + example + " is " +
-                        std::string(kind.example_size) + ")");
+  const FileCheck check = check_file_to_read(path, kMaxSceneBytes);
+  switch (check.problem) {
+    case FileProblem::kNone:
+      break;
+    case FileProblem::kMissing: {
+      std::error_code ec;
+      const std::filesystem::path cwd = std::filesystem::current_path(ec);
+      diag.file_error("file not found", "check the path (relative paths start from the working directory " +
+                                            cwd.string() + "); " + example + " is a starting point");
+      return std::nullopt;
+    }
+    case FileProblem::kFolder:
+      diag.file_error("is a directory, not a " + name, "pass a .json file such as " + example);
+      return std::nullopt;
+    case FileProblem::kNotRegular:
+      diag.file_error(check.reason, "pass a " + name + " saved as a file, such as " + example);
+      return std::nullopt;
+    case FileProblem::kTooLarge:
+      diag.file_error("is " + std::to_string(check.size >> 20) + " MiB; " + name + "s are limited to 16 MiB",
+                      "check that this is the " + name + " you meant (" + example + " is " +
+                          std::string(kind.example_size) + ")");
+      return std::nullopt;
+    case FileProblem::kUnreadable:
+      diag.file_error(check.reason, "check that the file is readable by this user");
+      return std::nullopt;
+  }
+  Result<std::string> text = read_bounded_file(path, kMaxSceneBytes);
+  if (!text) {
+    diag.file_error(text.error().message, "check that the file is readable by this user and its disk");
     return std::nullopt;
   }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    diag.file_error(std::string("cannot be opened: ") + std::strerror(errno),
-                    "check that the file is readable by this user");
-    return std::nullopt;
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) {
-    diag.file_error("could not be read", "check the file and the disk it is on");
-    return std::nullopt;
-  }
-  return text.str();
+  return std::move(*text);
 }
 
 }  // namespace lagoon::scene

@@ -8,6 +8,7 @@
 #include <iterator>
 #include <vector>
 
+#include "core/bounded_file.h"
 #include "vk/check.h"
 
 namespace lagoon::vk {
@@ -38,8 +39,9 @@ Unique<VkPipelineCache> load_pipeline_cache(VkDevice device, const VkPhysicalDev
                                             const std::filesystem::path& file) {
   std::vector<char> data;
   if (!file.empty()) {
-    std::ifstream in(file, std::ios::binary);
-    if (in) data.assign(std::istreambuf_iterator<char>(in), {});
+    // A cache is a few MiB; anything else in its place (a FIFO, a huge file) is ignored, not read.
+    Result<std::string> bytes = read_bounded_file(file, std::uintmax_t{256} << 20);
+    if (bytes) data.assign(bytes->begin(), bytes->end());
     if (!header_matches(data, props)) data.clear();
   }
   const VkPipelineCacheCreateInfo info{.sType = VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO,

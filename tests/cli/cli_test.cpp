@@ -1,5 +1,6 @@
 // End-to-end tests of the `lagoon` binary: exit codes, messages and no half-written output.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <filesystem>
 #include <fstream>
@@ -87,6 +88,22 @@ TEST_F(Cli, MissingSceneFileExits1AndNamesIt) {
   auto r = lagoon("render --scene " + out("nowhere.json") + " --out " + out("x.png"));
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("nowhere.json"), std::string::npos) << r.output;
+  expect_no_files();
+}
+
+// Issue 36: `--scene /dev/zero` was read to 4.2 GB of memory before it was refused; a FIFO blocked. Both
+// are refused before a byte is read, naming the file (the run is short and small, or ctest times it out).
+TEST_F(Cli, ADeviceOrPipeAsTheSceneExits1WithoutReadingIt) {
+  auto r = lagoon("render --scene /dev/zero --out " + out("x.png"));
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("/dev/zero: is not a regular file"), std::string::npos) << r.output;
+  const std::string pipe = (fs::path(LAGOON_TEST_ARTIFACTS) / "cli" / "pipe.json").string();
+  fs::remove(pipe);
+  ASSERT_EQ(::mkfifo(pipe.c_str(), 0600), 0);
+  r = lagoon("render --scene " + pipe + " --out " + out("x.png"));
+  fs::remove(pipe);
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("pipe.json: is not a regular file"), std::string::npos) << r.output;
   expect_no_files();
 }
 

@@ -1,6 +1,7 @@
 #include "scene/scene.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -589,6 +590,17 @@ TEST_F(SceneFileTest, HugeFileIsRefusedWithoutReadingIt) {
   fs::resize_file(path, std::uintmax_t{17} << 20);  // sparse: nothing is written
   EXPECT_TRUE(
       Contains(ErrorOf(load_scene(path)), path.string() + ": is 17 MiB; scene files are limited to 16 MiB"));
+}
+
+// Issue 36: /dev/zero was read to 4.2 GB before the 16 MiB limit was checked, and a FIFO would block
+// until something wrote to it. Both are refused before a byte is read.
+TEST_F(SceneFileTest, DevicesAndPipesAreRefusedWithoutReadingThem) {
+  const std::string zero = ErrorOf(load_scene("/dev/zero"));
+  EXPECT_TRUE(Contains(zero, "/dev/zero: is not a regular file")) << zero;
+  EXPECT_TRUE(Contains(zero, "scenes/default.json")) << "the fix names a scene file: " << zero;
+  const fs::path fifo = dir_ / "pipe.json";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  EXPECT_TRUE(Contains(ErrorOf(load_scene(fifo)), fifo.string() + ": is not a regular file"));
 }
 
 TEST_F(SceneFileTest, DeeplyNestedOverrideIsRefused) {
