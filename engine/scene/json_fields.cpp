@@ -168,8 +168,9 @@ std::optional<double> ObjectReader::read_number(std::string_view name, const std
                           (default_text.empty() ? "" : " (default " + default_text + ")");
   const std::optional<double> v = finite_number(*j, path, fix, *diag_);
   if (!v) return std::nullopt;
-  // Checked again as float so e.g. 1e-50 for a "> 0" field cannot round to 0.
-  if (!bounds.contains(*v) || (as_float && !bounds.contains(static_cast<float>(*v)))) {
+  // Checked again as float so e.g. 1e-50 for a "> 0" field cannot round to 0, against the bounds as float
+  // too: 0.005 rounds to 0.004999999888f, below the double 0.005 it is documented to accept (issue 36).
+  if (!bounds.contains(*v) || (as_float && !bounds.as_float().contains(static_cast<float>(*v)))) {
     diag_->error(path, describe_value(*j) + " is out of range", fix);
     return std::nullopt;
   }

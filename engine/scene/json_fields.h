@@ -39,6 +39,7 @@ struct Bounds {
   static Bounds at_least(double lo);                // v >= lo
   static Bounds above_up_to(double lo, double hi);  // lo < v <= hi
   bool contains(double v) const;
+  Bounds as_float() const;       // the ends rounded to float, for a value stored as float
   std::string describe() const;  // "1 to 170", "> 0", "any"
 };
 

@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "scene/json_fields.h"
 
@@ -80,6 +81,17 @@ Bounds Bounds::at_least(double lo) {
 Bounds Bounds::above_up_to(double lo, double hi) {
   Bounds b = between(lo, hi);
   b.min_open = true;
+  return b;
+}
+
+Bounds Bounds::as_float() const {
+  // Ends beyond float's range (and ±inf) stay as they are: converting them would be undefined.
+  const auto rounded = [](double x) {
+    return std::fabs(x) <= std::numeric_limits<float>::max() ? double(static_cast<float>(x)) : x;
+  };
+  Bounds b = *this;
+  b.min = rounded(min);
+  b.max = rounded(max);
   return b;
 }
 
