@@ -222,6 +222,12 @@ Result<CausticSlices> caustic_slices(vk::Context& ctx, bool from_above, const Va
   const glm::vec4 depths = render::CausticsWindow{}.depths;  // the slices' depths (fixed)
   const int frames = o.quick ? 6 : 16;
   const size_t n = LAGOON_CAUSTICS_CELLS, lo = n / 10, hi = n - n / 10;
+  std::vector<double> share;  // the sun's direct share of the light at each slice's depth
+  for (int k = 0; k < LAGOON_CAUSTICS_SLICES; ++k) {
+    auto sample = optics::underwater_sample(*inputs, 0.0, depths[k]);
+    if (!sample) return sample.error();
+    share.push_back(sample->direct_share);
+  }
   CausticSlices out;
   out.mean.assign(LAGOON_CAUSTICS_SLICES, 0.0), out.contrast.assign(LAGOON_CAUSTICS_SLICES, 0.0);
   for (int f = 0; f < frames; ++f) {
@@ -229,13 +235,10 @@ Result<CausticSlices> caustic_slices(vk::Context& ctx, bool from_above, const Va
     (*renderer)->render(*s);
     const std::vector<float> map = (*renderer)->caustics().read_map(ctx);
     for (size_t k = 0; k < LAGOON_CAUSTICS_SLICES; ++k) {
-      auto sample = optics::underwater_sample(*inputs, 0.0, depths[int(k)]);
-      if (!sample) return sample.error();
-      const double share = sample->direct_share;
       double sum = 0, gain = 0, square = 0, count = 0;
       for (size_t z = lo; z < hi; ++z)
         for (size_t x = lo; x < hi; ++x) {
-          const double v = map[(k * n + z) * n + x], g = 1.0 + share * (v - 1.0);
+          const double v = map[(k * n + z) * n + x], g = 1.0 + share[k] * (v - 1.0);
           sum += v, gain += g, square += g * g, ++count;
         }
       out.mean[k] += sum / count / frames;

@@ -50,19 +50,27 @@ inline FileCheck check_file_to_read(const std::filesystem::path& path, std::uint
   return {FileProblem::kNone, size, ""};
 }
 
-// The whole of a regular file of at most `max_bytes`; the error is check_file_to_read's reason, or why the
-// read failed.
-inline Result<std::string> read_bounded_file(const std::filesystem::path& path, std::uintmax_t max_bytes) {
-  const FileCheck check = check_file_to_read(path, max_bytes);
-  if (!check) return make_error(check.reason);
+// The whole of a file check_file_to_read has passed (`check` is its answer), as `Bytes` (std::string or a
+// vector of bytes); the error says why the read failed.
+template <typename Bytes = std::string>
+Result<Bytes> read_checked_file(const std::filesystem::path& path, const FileCheck& check) {
   std::ifstream in(path, std::ios::binary);
   if (!in) return make_error(std::string("cannot be opened: ") + std::strerror(errno));
-  std::string text(static_cast<size_t>(check.size), '\0');
-  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  Bytes bytes(static_cast<size_t>(check.size), typename Bytes::value_type{});
+  in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
   if (static_cast<std::uintmax_t>(in.gcount()) != check.size || in.bad() ||
       in.peek() != std::ifstream::traits_type::eof())
     return make_error("cannot be read (it changed size while being read, or the disk failed)");
-  return text;
+  return bytes;
+}
+
+// The whole of a regular file of at most `max_bytes`; the error is check_file_to_read's reason, or why the
+// read failed.
+template <typename Bytes = std::string>
+Result<Bytes> read_bounded_file(const std::filesystem::path& path, std::uintmax_t max_bytes) {
+  const FileCheck check = check_file_to_read(path, max_bytes);
+  if (!check) return make_error(check.reason);
+  return read_checked_file<Bytes>(path, check);
 }
 
 }  // namespace lagoon

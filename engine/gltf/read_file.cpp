@@ -1,10 +1,6 @@
 #include "gltf/read_file.h"
 
-#include <cerrno>
-#include <cstring>
-#include <fstream>
 #include <string>
-#include <system_error>
 
 #include "core/bounded_file.h"
 
@@ -25,14 +21,7 @@ Result<std::vector<uint8_t>> read_file(const fs::path& path, size_t max_bytes) {
     default:
       return make_error(check.reason);
   }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return make_error(std::string("cannot be opened: ") + std::strerror(errno));
-  std::vector<uint8_t> bytes(static_cast<size_t>(check.size));
-  in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
-  if (static_cast<uintmax_t>(in.gcount()) != check.size) {
-    return make_error("cannot be read (it changed size while being read, or the read failed)");
-  }
-  return bytes;
+  return read_checked_file<std::vector<uint8_t>>(path, check);
 }
 
 }  // namespace lagoon::gltf::detail

@@ -1,10 +1,6 @@
 // JSON text into a document, with what plain parsing lets through reported: duplicate keys, text beyond
 // kSceneJsonLimits. Declared in scene/json_fields.h.
-#include <cerrno>
-#include <cstring>
-#include <fstream>
 #include <set>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -144,7 +140,7 @@ std::optional<std::string> read_json_file(const std::filesystem::path& path, Dia
       diag.file_error(check.reason, "check that the file is readable by this user");
       return std::nullopt;
   }
-  Result<std::string> text = read_bounded_file(path, kMaxSceneBytes);
+  Result<std::string> text = read_checked_file(path, check);
   if (!text) {
     diag.file_error(text.error().message, "check that the file is readable by this user and its disk");
     return std::nullopt;
