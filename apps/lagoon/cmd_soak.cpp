@@ -1,9 +1,13 @@
 // lagoon soak: a long run that must stay healthy. The ocean is stepped many times and many frames are
-// rendered; after every step and frame the GPU counts non-finite texels in the fields, resident memory
-// after a warm-up must not grow by 1 % or more, and the validation layer (always on here) must stay silent.
+// rendered; after every step and frame the GPU counts non-finite texels in the fields, and resident memory
+// after a warm-up must not grow by 1 % or more. With --validation the layer must also stay silent (it keeps
+// 2-4 KB of its own per queue submission, so long runs with it need a larger --max-growth;
+// docs/reliability.md).
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -34,20 +38,29 @@ struct Phase {
   uint64_t non_finite = 0;
   long long first_bad_unit = -1;
   uint64_t rss_after_warmup = 0, rss_end = 0, rss_peak = 0;
+  std::vector<double> curve_mib;  // resident set after each unit
+  // --retain-kib: memory deliberately kept per unit, so a run can show that the check catches a leak.
+  size_t retain_bytes = 0;
+  std::vector<std::vector<char>> retained;
 
   double growth_percent() const {
     return rss_after_warmup == 0
                ? 0.0
                : 100.0 * (double(rss_end) - double(rss_after_warmup)) / double(rss_after_warmup);
   }
-  // Called after each unit; the first tenth of the run is the warm-up (pools, caches, lazily built
-  // pipelines).
+  // Units of warm-up (pools, caches, lazily built pipelines, the driver's threads' first allocations);
+  // memory is compared from its end. 0 = the first tenth of the run.
+  long long warmup = 0;
   void account(long long unit, long long total, uint64_t bad) {
     units = unit + 1;
     if (bad > 0 && first_bad_unit < 0) first_bad_unit = unit;
     non_finite += bad;
+    if (retain_bytes > 0) {
+      retained.emplace_back(retain_bytes, char{1});  // written, so it is resident
+    }
     const uint64_t rss = resident_bytes();
-    if (unit + 1 == std::max(1LL, total / 10)) rss_after_warmup = rss;
+    curve_mib.push_back(double(rss) / 1048576.0);
+    if (unit + 1 == std::clamp(warmup > 0 ? warmup : total / 10, 1LL, total)) rss_after_warmup = rss;
     if (rss_after_warmup > 0) rss_peak = std::max(rss_peak, rss);
     rss_end = rss;
   }
@@ -62,6 +75,21 @@ struct Phase {
   }
 };
 
+// --curve FILE: the resident set after every step and frame, for plotting (docs/reliability.md).
+bool write_curve(const std::string& path, const std::vector<Phase>& phases) {
+  std::string csv = "phase,unit,rss_mib\n";
+  for (const Phase& p : phases)
+    for (size_t i = 0; i < p.curve_mib.size(); ++i)
+      csv += std::string(p.name) + "," + std::to_string(i + 1) + "," + std::to_string(p.curve_mib[i]) + "\n";
+  std::vector<std::byte> bytes(csv.size());
+  std::memcpy(bytes.data(), csv.data(), csv.size());
+  if (auto r = io::write_file_atomic(path, bytes); !r) {
+    std::fprintf(stderr, "lagoon soak: --curve: %s\n", r.error().message.c_str());
+    return false;
+  }
+  return true;
+}
+
 void progress(const char* what, long long done, long long total) {
   if (done == total || done % std::max(1LL, total / 100) == 0)
     std::fprintf(stderr, "\rlagoon soak: %s %lld/%lld", what, done, total);
@@ -69,8 +97,9 @@ void progress(const char* what, long long done, long long total) {
 }
 
 // Steps a GPU ocean of the scene `steps` times, `batch` steps per submission, checking every step.
-Phase soak_ocean(vk::Context& ctx, const scene::Scene& scene, long long steps, double dt) {
-  Phase phase{"steps"};
+Phase soak_ocean(vk::Context& ctx, const scene::Scene& scene, long long steps, double dt, const Phase& how) {
+  Phase phase = how;
+  phase.name = "steps";
   ocean::GpuOcean gpu(ctx, scene.ocean);
   ocean::FieldCheck check(ctx);
   constexpr long long kBatch = 10;
@@ -90,8 +119,10 @@ Phase soak_ocean(vk::Context& ctx, const scene::Scene& scene, long long steps, d
 }
 
 // Renders `frames` frames at successive times through the whole renderer, checking its ocean each frame.
-Result<Phase> soak_frames(vk::Context& ctx, scene::Scene scene, long long frames, double dt) {
-  Phase phase{"frames"};
+Result<Phase> soak_frames(vk::Context& ctx, scene::Scene scene, long long frames, double dt,
+                          const Phase& how) {
+  Phase phase = how;
+  phase.name = "frames";
   auto renderer = render::OceanRenderer::create(ctx, scene);
   if (!renderer) return renderer.error();
   ocean::FieldCheck check(ctx);
@@ -117,15 +148,27 @@ int run_soak(const ParsedArgs& args) {
       return kExitUsage;
     }
   const auto max_growth = number_option(args, "max-growth", 1.0, 0.0, 1000.0);
+  const auto retain_kib = integer_option(args, "retain-kib", 0, 0, 65536);
+  const auto warmup = integer_option(args, "warmup", 0, 0, 10000000);
+  for (const auto* r : {&retain_kib, &warmup})
+    if (!*r) {
+      std::fprintf(stderr, "lagoon soak: %s\n", r->error().message.c_str());
+      return kExitUsage;
+    }
   if (!max_growth) {
     std::fprintf(stderr, "lagoon soak: %s\n", max_growth.error().message.c_str());
     return kExitUsage;
   }
+  Phase how{""};
+  how.retain_bytes = size_t(*retain_kib) * 1024;
+  how.warmup = *warmup;
   auto scene = load_scene_from_args(
       args, "soak", {"render.width=" + std::to_string(*width), "render.height=" + std::to_string(*height)});
   if (!scene) return kExitFailure;
   vk::ContextOptions options = vk::ContextOptions::from_environment();
-  options.validation = true;  // a soak is also a check that the validation layer stays silent
+  // The layer's own bookkeeping grows with every submission, so memory is judged only without it.
+  const bool validation = args.has("validation") || options.validation;
+  options.validation = validation;
   auto ctx = vk::Context::create(options);
   if (!ctx) {
     std::fprintf(stderr, "lagoon soak: %s\n", ctx.error().message.c_str());
@@ -133,9 +176,9 @@ int run_soak(const ParsedArgs& args) {
   }
   const double dt = 1.0 / 30.0;
   std::vector<Phase> phases;
-  if (*steps > 0) phases.push_back(soak_ocean(**ctx, *scene, *steps, dt));
+  if (*steps > 0) phases.push_back(soak_ocean(**ctx, *scene, *steps, dt, how));
   if (*frames > 0) {
-    auto phase = soak_frames(**ctx, *scene, *frames, dt);
+    auto phase = soak_frames(**ctx, *scene, *frames, dt, how);
     if (!phase) {
       std::fprintf(stderr, "lagoon soak: %s: %s\n", scene->source.c_str(), phase.error().message.c_str());
       return kExitFailure;
@@ -149,9 +192,12 @@ int run_soak(const ParsedArgs& args) {
     p.print();
     healthy = healthy && p.non_finite == 0 && p.growth_percent() < *max_growth;
   }
-  const uint32_t validation_errors = (*ctx)->validation().failures();
-  std::printf("validation errors %u\n", validation_errors);
-  if (validation_errors > 0) return kExitValidation;
+  if (auto curve = args.get("curve"); curve && !write_curve(*curve, phases)) return kExitFailure;
+  if (validation) {
+    const uint32_t validation_errors = (*ctx)->validation().failures();
+    std::printf("validation errors %u\n", validation_errors);
+    if (validation_errors > 0) return kExitValidation;
+  }
   if (healthy)
     std::printf("healthy\n");
   else
@@ -163,25 +209,35 @@ int run_soak(const ParsedArgs& args) {
 
 const Command& soak_command() {
   static const Command command{
-      .spec = {.name = "soak",
-               .summary =
-                   "Long-run check: steps the ocean and renders frames, checking every step and frame for "
-                   "NaN/Inf in the fields, resident-memory growth after warm-up (below --max-growth) and "
-                   "validation errors (the layer is always on).",
-               .options = {scene_option(),
-                           {"steps", "N", "ocean steps of 1/30 s (default 10000; 0 skips the phase)"},
-                           {"frames", "N",
-                            "frames rendered through the whole renderer (default 2000; 0 skips)"},
-                           {"width", "W", "frame width (default 640)"},
-                           {"height", "H", "frame height (default 360)"},
-                           {"max-growth", "PERCENT",
-                            "largest allowed resident-memory growth after warm-up (default 1)"},
-                           set_option()},
-               .details =
-                   "The first tenth of each phase is its warm-up; memory is compared from there to the end.\n"
-                   "Exit 0 when healthy, 1 when a field held NaN/Inf or memory grew, 3 on validation "
-                   "errors.\nexample:\n  lagoon soak --scene scenes/default.json --steps 10000 --frames "
-                   "2000\n"},
+      .spec =
+          {.name = "soak",
+           .summary = "Long-run check: steps the ocean and renders frames, checking every step and frame for "
+                      "NaN/Inf in the fields and resident-memory growth after warm-up (below --max-growth), "
+                      "and with --validation for validation errors.",
+           .options = {scene_option(),
+                       {"steps", "N", "ocean steps of 1/30 s (default 10000; 0 skips the phase)"},
+                       {"frames", "N", "frames rendered through the whole renderer (default 2000; 0 skips)"},
+                       {"width", "W", "frame width (default 640)"},
+                       {"height", "H", "frame height (default 360)"},
+                       {"max-growth", "PERCENT",
+                        "largest allowed resident-memory growth after warm-up (default 1)"},
+                       {"validation", "",
+                        "run with the Vulkan validation layer (also LAGOON_VALIDATION=1) and fail on any "
+                        "of its messages; the layer itself keeps 2-4 KB per submission"},
+                       {"warmup", "N",
+                        "steps and frames of warm-up before memory is measured (default: a tenth of "
+                        "each phase)"},
+                       {"curve", "FILE", "write the resident set after every step and frame (CSV)"},
+                       {"retain-kib", "N",
+                        "self-test of the memory check: keep N KiB alive per step and frame (default 0)"},
+                       set_option()},
+           .details =
+               "The warm-up (--warmup, else the first tenth of each phase) fills pools and caches; memory "
+               "is compared from its end to the end of the phase.\n"
+               "Exit 0 when healthy, 1 when a field held NaN/Inf or memory grew, 3 on validation "
+               "errors (--validation).\nexample:\n  lagoon soak --scene scenes/default.json --steps 10000 "
+               "--frames "
+               "2000\n"},
       .run = run_soak};
   return command;
 }
