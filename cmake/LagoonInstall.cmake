@@ -17,10 +17,11 @@ set(LAGOON_INSTALL_INCLUDEDIR ${CMAKE_INSTALL_INCLUDEDIR}/lagoon)
 
 # Helper targets that only make sense inside this build: their usage requirements must not reach a host.
 #   lagoon_warnings: -Werror & co. for our own sources; compile-only, it contributes nothing to a link.
-#   lagoon_stb: stb's include path (private to io/gltf's .cpp files) and libstb, which the static io and
-#               gltf archives still need at the host's link: installed consumers get Lagoon::stb instead,
-#               an imported libstb that LagoonConfig.cmake defines.
-set(LAGOON_BUILD_ONLY_TARGETS lagoon_warnings lagoon_stb)
+#   lagoon_codecs: libpng, libjpeg-turbo, libwebp and nettle, which the static io archive needs at the host's
+#               link: installed consumers get Lagoon::codecs instead, which LagoonConfig.cmake defines from
+#               the libraries it finds.
+#   lagoon_stb: stb's headers (stb_easy_font in io, header-only; stb_image_write in the tests).
+set(LAGOON_BUILD_ONLY_TARGETS lagoon_warnings lagoon_codecs lagoon_stb)
 # Imported targets an exported interface may name: LagoonConfig.cmake finds each of them.
 set(LAGOON_KNOWN_DEPENDENCIES Threads::Threads glm::glm Vulkan::Vulkan nlohmann_json::nlohmann_json PNG::PNG)
 
@@ -92,7 +93,7 @@ if(LAGOON_BUILD_SHARED)
   set_target_properties(lagoon_shared PROPERTIES OUTPUT_NAME lagoon LINKER_LANGUAGE CXX
                         VERSION ${PROJECT_VERSION} SOVERSION ${PROJECT_VERSION_MAJOR}.${PROJECT_VERSION_MINOR})
   # What the objects call (private: resolved inside liblagoon.so) and what its headers need (interface).
-  target_link_libraries(lagoon_shared PRIVATE lagoon_stb PNG::PNG Vulkan::Vulkan Threads::Threads
+  target_link_libraries(lagoon_shared PRIVATE lagoon_codecs Vulkan::Vulkan Threads::Threads
                         INTERFACE ${header_targets} glm::glm nlohmann_json::nlohmann_json Threads::Threads)
   list(APPEND LAGOON_VULKAN_TARGETS lagoon_shared)
 endif()
@@ -123,8 +124,8 @@ function(_lagoon_prepare_export target)
       string(REGEX REPLACE "^\\$<LINK_ONLY:(.*)>$" "\\1" name "${lib}")
       if(name IN_LIST LAGOON_BUILD_ONLY_TARGETS)
         list(APPEND rewritten "$<BUILD_INTERFACE:${lib}>")
-        if(name STREQUAL "lagoon_stb")
-          list(APPEND rewritten "$<INSTALL_INTERFACE:$<LINK_ONLY:Lagoon::stb>>")
+        if(name STREQUAL "lagoon_codecs")
+          list(APPEND rewritten "$<INSTALL_INTERFACE:$<LINK_ONLY:Lagoon::codecs>>")
         endif()
       else()
         list(APPEND rewritten "${lib}")
@@ -174,9 +175,9 @@ foreach(dir IN LISTS shader_dirs)
   endif()
 endforeach()
 
-# libstb's directory at build time: a hint for LagoonConfig.cmake's search (Debian: libstb-dev).
-list(GET STB_LINK_LIBRARIES 0 stb_library)
-get_filename_component(LAGOON_STB_LIBRARY_DIR "${stb_library}" DIRECTORY)
+# The codec libraries' directory at build time: a hint for LagoonConfig.cmake's search.
+list(GET JPEG_LINK_LIBRARIES 0 jpeg_library)
+get_filename_component(LAGOON_CODECS_LIBRARY_DIR "${jpeg_library}" DIRECTORY)
 
 # Component names (export names) for LagoonConfig.cmake.
 set(LAGOON_PLAIN_COMPONENTS "")
@@ -236,5 +237,5 @@ _lagoon_pkg_config(lagoon-optics "Lagoon's spectral water-colour model, plain C+
                    "-llagoon_optics")
 _lagoon_pkg_config(lagoon-physics "Lagoon's floating bodies, plain C++ (no Vulkan)" "glm" "-llagoon_physics")
 _lagoon_pkg_config(lagoon "Lagoon: ocean simulation and rendering on Vulkan (every module)"
-                   "lagoon-ocean lagoon-optics lagoon-physics vulkan nlohmann_json libpng"
-                   "-llagoon_render -llagoon_ocean_gpu -llagoon_fft -llagoon_gltf -llagoon_scene -llagoon_io -llagoon_shaders -llagoon_vk -lstb -pthread")
+                   "lagoon-ocean lagoon-optics lagoon-physics vulkan nlohmann_json libpng libjpeg libwebp nettle"
+                   "-llagoon_render -llagoon_ocean_gpu -llagoon_fft -llagoon_gltf -llagoon_scene -llagoon_io -llagoon_shaders -llagoon_vk -pthread")

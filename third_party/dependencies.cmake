@@ -9,9 +9,19 @@ find_package(PkgConfig REQUIRED)
 pkg_check_modules(STB REQUIRED IMPORTED_TARGET GLOBAL stb)
 
 # libpng writes the PNGs (io/png.cpp): its zlib at level 2 with the Sub filter encodes a 1280x720 frame in
-# ~35 ms where stb_image_write took ~200 ms, and smaller. Reading still goes through stb_image.
+# ~35 ms where stb_image_write took ~200 ms, and smaller.
 find_package(PNG REQUIRED)
 
+# Images are decoded by the maintained, security-patched libraries (io/image_decode.h): libpng, libjpeg-turbo
+# and libwebp (glTF's EXT_texture_webp); nettle computes the dataset manifests' SHA-256 (io/sha256.h).
+pkg_check_modules(JPEG REQUIRED IMPORTED_TARGET GLOBAL libjpeg)
+pkg_check_modules(WEBP REQUIRED IMPORTED_TARGET GLOBAL libwebp)
+pkg_check_modules(NETTLE REQUIRED IMPORTED_TARGET GLOBAL nettle)
+add_library(lagoon_codecs INTERFACE)
+target_link_libraries(lagoon_codecs INTERFACE PNG::PNG PkgConfig::JPEG PkgConfig::WEBP PkgConfig::NETTLE)
+
+# stb: stb_easy_font (header only) for the text on images, and stb_image_write in the tests (they encode their
+# own PNG and JPEG inputs with an encoder independent of the decoders).
 add_library(lagoon_stb INTERFACE)
 target_link_libraries(lagoon_stb INTERFACE PkgConfig::STB)
 

@@ -18,6 +18,8 @@ packages=(
   libvulkan-dev mesa-vulkan-drivers glslang-tools
   # header and small libraries the command uses; FFTW is the CPU baseline of `lagoon bench compute`
   libglm-dev libtinygltf-dev libstb-dev libpng-dev nlohmann-json3-dev libfftw3-dev
+  # image decoding (PNG, JPEG, WebP) and the dataset manifests' SHA-256, by maintained libraries
+  libjpeg62-turbo-dev libwebp-dev nettle-dev
 )
 if [[ $profile == all ]]; then
   packages+=(

@@ -36,7 +36,8 @@ inline void warn_once(std::vector<std::string>& warnings, std::string message) {
 // requires another one is refused.
 inline bool supported_extension(std::string_view name) {
   return name == "KHR_lights_punctual" || name == "KHR_texture_transform" ||
-         name == "KHR_materials_emissive_strength" || name == "KHR_mesh_quantization";
+         name == "KHR_materials_emissive_strength" || name == "KHR_mesh_quantization" ||
+         name == "EXT_texture_webp";
 }
 
 }  // namespace lagoon::gltf::detail

@@ -253,6 +253,21 @@ Result<void> texture_transform(const tinygltf::ExtensionMap& extensions, const s
   return {};
 }
 
+// The image a texture shows: EXT_texture_webp's source when the texture has one (Lagoon decodes WebP, so the
+// PNG or JPEG a file may give as texture.source for other viewers is its fallback), else texture.source.
+Result<int> texture_source(const tinygltf::Texture& texture, const std::string& where) {
+  const auto it = texture.extensions.find("EXT_texture_webp");
+  if (it == texture.extensions.end()) return texture.source;
+  const tinygltf::Value& source = it->second.Get("source");
+  if (!source.IsInt() && !source.IsNumber())
+    return make_error(where + ".extensions.EXT_texture_webp.source: missing or not an image index");
+  const double value = source.GetNumberAsDouble();
+  if (!(value >= 0.0 && value <= 2147483647.0) || value != static_cast<double>(static_cast<int>(value)))
+    return make_error(where + ".extensions.EXT_texture_webp.source: " + std::to_string(value) +
+                      " is not an image index");
+  return static_cast<int>(value);
+}
+
 // One textureInfo (`where` names it, e.g. "materials[0].normalTexture") into a TextureRef; the image it
 // uses is given a slot in `image_slots` (image index -> Model::textures index).
 Result<TextureRef> texture_ref(const tinygltf::Model& g, int index, int texcoord,
@@ -282,13 +297,16 @@ Result<TextureRef> texture_ref(const tinygltf::Model& g, int index, int texcoord
     if (!sampler) return sampler.error();
     ref.sampler = *sampler;
   }
-  if (texture.source == -1) {
-    warn_once(warnings, "textures without a PNG or JPEG image are not supported; drawn untextured");
-  } else if (!valid_index(texture.source, g.images.size())) {
-    return make_error(at("textures", index) + ".source: images[" + std::to_string(texture.source) +
-                      "] does not exist");
+  Result<int> source = texture_source(texture, at("textures", index));
+  if (!source) return source.error();
+  if (*source == -1) {
+    warn_once(warnings, "textures without an image are not supported; drawn untextured");
+  } else if (!valid_index(*source, g.images.size())) {
+    return make_error(at("textures", index) +
+                      (*source == texture.source ? "" : ".extensions.EXT_texture_webp") + ".source: images[" +
+                      std::to_string(*source) + "] does not exist");
   } else {
-    auto [slot, added] = image_slots.try_emplace(texture.source, static_cast<int>(image_slots.size()));
+    auto [slot, added] = image_slots.try_emplace(*source, static_cast<int>(image_slots.size()));
     ref.image = slot->second;
   }
   return ref;

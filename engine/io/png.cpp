@@ -1,8 +1,6 @@
 #include "io/png.h"
 
-// Declarations only: the stb implementation is compiled into libstb (reading); libpng writes.
 #include <png.h>
-#include <stb_image.h>
 
 #include <climits>
 #include <csetjmp>
@@ -13,12 +11,10 @@
 #include <string>
 
 #include "io/atomic_file.h"
-#include "io/png_chunks.h"
+#include "io/image_decode.h"
 
 namespace lagoon::io {
 namespace {
-
-constexpr unsigned char kPngSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
 
 // libpng's output into memory; running out of it is reported as libpng's error (longjmp), never thrown
 // through C.
@@ -105,39 +101,11 @@ Result<void> write_png(const std::filesystem::path& path, const Image8& image) {
 Result<Image8> read_png(const std::filesystem::path& path) {
   Result<std::vector<std::byte>> file = read_file_bytes(path);
   if (!file) return file.error();
-  const std::vector<std::byte>& bytes = *file;
-  // Checked here because stb would also accept JPEG, BMP, ... and the caller asked for a PNG.
-  if (bytes.size() < sizeof kPngSignature || std::memcmp(bytes.data(), kPngSignature, sizeof kPngSignature)) {
+  const std::span bytes(reinterpret_cast<const uint8_t*>(file->data()), file->size());
+  // The caller asked for a PNG: a JPEG or WebP under a .png name is refused, not decoded.
+  if (sniff_image_format(bytes) != ImageFormat::kPng)
     return make_error("cannot read PNG " + path.string() + ": not a PNG file (wrong signature)");
-  }
-  if (bytes.size() > INT_MAX) return make_error("cannot read PNG " + path.string() + ": file is too large");
-
-  if (auto chunks =
-          check_png_chunk_lengths(std::span(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size()),
-                                  "cannot read PNG " + path.string());
-      !chunks)
-    return chunks.error();
-  int w = 0, h = 0, channels_in_file = 0;
-  if (stbi_info_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), static_cast<int>(bytes.size()),
-                            &w, &h, &channels_in_file) &&
-      (uint32_t(w) > kMaxPngSide || uint32_t(h) > kMaxPngSide)) {
-    return make_error("cannot read PNG " + path.string() + ": " + std::to_string(w) + "x" +
-                      std::to_string(h) + " pixels is larger than the limit of " +
-                      std::to_string(kMaxPngSide) + " per side (scale the image down)");
-  }
-  std::unique_ptr<stbi_uc, decltype(&stbi_image_free)> pixels(
-      stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), static_cast<int>(bytes.size()),
-                            &w, &h, &channels_in_file, 4),
-      &stbi_image_free);
-  if (!pixels) {
-    const char* reason = stbi_failure_reason();
-    return make_error("cannot decode PNG " + path.string() + ": " + (reason ? reason : "unknown error"));
-  }
-  Image8 image;
-  image.width = static_cast<uint32_t>(w);
-  image.height = static_cast<uint32_t>(h);
-  image.rgba.assign(pixels.get(), pixels.get() + size_t{image.width} * image.height * 4);
-  return image;
+  return decode_png(bytes, "cannot read PNG " + path.string(), kMaxPngSide);
 }
 
 }  // namespace lagoon::io

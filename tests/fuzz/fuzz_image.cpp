@@ -1,5 +1,5 @@
-// The embedded-image decode path of the glTF loader (PNG and JPEG through stb_image, behind our signature
-// and size checks), on raw bytes.
+// The image decode path of the glTF loader and of the PNG reader (PNG, JPEG and WebP through libpng,
+// libjpeg-turbo and libwebp, behind the signature and size checks), on raw bytes.
 #include <span>
 
 #include "gltf/image_decode.h"

@@ -2,7 +2,7 @@
 """Writes the fuzz targets' seed corpora (tests/fuzz/corpus/<target>/) from the repository's own data: the
 shipped scenes, the buoy model and the sand texture, small glTF models like the unit tests' own, .npy files
 of every header version, and demo scripts. The corpora are committed so that `make test` needs neither
-Python nor a C++ compiler for them; run this again (it needs c++ and libstb-dev for the JPEG) when an input
+Python nor a C++ compiler for them; run this again (it needs c++, libstb-dev and libwebp-dev for the JPEG and WebP) when an input
 format changes."""
 import json, os, shutil, struct, subprocess, tempfile, zlib
 
@@ -70,12 +70,22 @@ put("image", "grey16x1.png", png(16, 1, 0, lambda y: bytes(range(0, 256, 16))))
 put("image", "grey-alpha16bit2x2.png", png(2, 2, 4, lambda y: bytes(range(y * 8, y * 8 + 8)), depth=16))
 put("image", "palette4x2.png", png(4, 2, 3, lambda y: bytes((x + y) % 3 for x in range(4)), extra=bytes(range(9))))
 
-# A 16x16 crop of the shipped sand texture, as PNG and as JPEG, through stb (the loader's own decoder).
+# A 16x16 crop of the shipped sand texture, as PNG and JPEG (stb's encoder) and as lossless and lossy WebP
+# (libwebp's encoder).
 crop_cpp = r"""
 #define STB_IMAGE_IMPLEMENTATION
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #include <stb_image.h>
 #include <stb_image_write.h>
+#include <webp/encode.h>
+#include <cstdio>
+static bool write_all(const char* path, const unsigned char* data, size_t size) {
+  FILE* f = std::fopen(path, "wb");
+  bool ok = f && size > 0 && std::fwrite(data, 1, size, f) == size;
+  if (f) std::fclose(f);
+  WebPFree(const_cast<unsigned char*>(data));
+  return ok;
+}
 int main(int, char** argv) {
   int w, h, n;
   unsigned char* p = stbi_load(argv[1], &w, &h, &n, 3);
@@ -83,19 +93,24 @@ int main(int, char** argv) {
   static unsigned char crop[16 * 16 * 3];
   for (int y = 0; y < 16; ++y)
     for (int x = 0; x < 16 * 3; ++x) crop[y * 48 + x] = p[y * w * 3 + x];
-  return !(stbi_write_png(argv[2], 16, 16, 3, crop, 48) && stbi_write_jpg(argv[3], 16, 16, 3, crop, 90));
+  unsigned char *lossless = nullptr, *lossy = nullptr;
+  const size_t n_lossless = WebPEncodeLosslessRGB(crop, 16, 16, 48, &lossless);
+  const size_t n_lossy = WebPEncodeRGB(crop, 16, 16, 48, 80.0f, &lossy);
+  return !(stbi_write_png(argv[2], 16, 16, 3, crop, 48) && stbi_write_jpg(argv[3], 16, 16, 3, crop, 90) &&
+           write_all(argv[4], lossless, n_lossless) && write_all(argv[5], lossy, n_lossy));
 }
 """
 with tempfile.TemporaryDirectory() as tmp:
     src, exe = os.path.join(tmp, "crop.cpp"), os.path.join(tmp, "crop")
     open(src, "w").write(crop_cpp)
-    subprocess.run(["c++", "-O1", "-I/usr/include/stb", src, "-o", exe], check=True)
-    subprocess.run([exe, os.path.join(repo, "scenes", "assets", "sand.png"), os.path.join(tmp, "sand16.png"),
-                    os.path.join(tmp, "sand16.jpg")], check=True)
-    sand_png = open(os.path.join(tmp, "sand16.png"), "rb").read()
-    sand_jpg = open(os.path.join(tmp, "sand16.jpg"), "rb").read()
-put("image", "sand16.png", sand_png)
-put("image", "sand16.jpg", sand_jpg)
+    subprocess.run(["c++", "-O1", "-I/usr/include/stb", src, "-o", exe, "-lwebp"], check=True)
+    outputs = ["sand16.png", "sand16.jpg", "sand16-lossless.webp", "sand16-lossy.webp"]
+    subprocess.run([exe, os.path.join(repo, "scenes", "assets", "sand.png")] + [os.path.join(tmp, o) for o in outputs],
+                   check=True)
+    sand = {o: open(os.path.join(tmp, o), "rb").read() for o in outputs}
+for name, data in sand.items():
+    put("image", name, data)
+sand_png, sand_jpg = sand["sand16.png"], sand["sand16.jpg"]
 
 
 # ---- gltf: byte 0 even = a .glb, odd = a .gltf whose text ends at the first NUL and "m.bin" follows --------

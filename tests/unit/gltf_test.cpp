@@ -5,6 +5,7 @@
 #include <stb_image_write.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <webp/encode.h>
 #include <nlohmann/json.hpp>
 #include "support/temp_dir.h"
 
@@ -444,6 +445,36 @@ TEST(GltfLoad, JpegTextureIsDecoded) {
   EXPECT_EQ(m.textures[0].width, 8u);
   EXPECT_NEAR(m.textures[0].rgba[0], 200, 3);
   EXPECT_EQ(m.textures[0].rgba[3], 255);
+}
+
+// EXT_texture_webp: the texture shows the WebP its extension names, not the PNG given as a fallback for
+// viewers without WebP; the extension may be required. A missing or wrong index is named with its field.
+TEST(GltfLoad, WebpTextureOfExtTextureWebpIsDecodedInsteadOfTheFallback) {
+  TempDir dir;
+  Builder b = textured_quad(ImageAt::kBufferView);
+  // 2x2 of other colours than kPixels, so which image was taken shows.
+  const std::vector<uint8_t> webp_pixels = {10, 20, 30, 255, 40, 50, 60, 255, 70, 80, 90, 200, 1, 2, 3, 4};
+  uint8_t* encoded = nullptr;
+  const size_t size = WebPEncodeLosslessRGBA(webp_pixels.data(), 2, 2, 8, &encoded);
+  ASSERT_GT(size, 0u);
+  const std::vector<uint8_t> webp(encoded, encoded + size);
+  WebPFree(encoded);
+  b.push("images", {{"bufferView", b.view(webp)}, {"mimeType", "image/webp"}});
+  b.doc["textures"][0]["extensions"] = {{"EXT_texture_webp", {{"source", 1}}}};
+  b.doc["extensionsUsed"] = {"EXT_texture_webp"};
+  b.doc["extensionsRequired"] = {"EXT_texture_webp"};
+  Result<Model> m = load_gltf(b.write(dir.path(), "w", Layout::kGlb), {});
+  ASSERT_TRUE(m.ok()) << m.error().message;
+  ASSERT_EQ(m->textures.size(), 1u);
+  EXPECT_EQ(m->textures[0].rgba, webp_pixels);
+  EXPECT_EQ(count_of(m->warnings, "EXT_texture_webp"), 0);
+
+  b.doc["textures"][0]["extensions"]["EXT_texture_webp"]["source"] = 7;
+  EXPECT_TRUE(has_all(load_error(b.write(dir.path(), "w7", Layout::kGlb)),
+                      {"textures[0].extensions.EXT_texture_webp.source: images[7] does not exist"}));
+  b.doc["textures"][0]["extensions"]["EXT_texture_webp"] = json::object();
+  EXPECT_TRUE(has_all(load_error(b.write(dir.path(), "wnone", Layout::kGlb)),
+                      {"textures[0].extensions.EXT_texture_webp.source: missing or not an image index"}));
 }
 
 TEST(GltfLoad, SharedImageIsDecodedOnce) {
@@ -961,13 +992,13 @@ TEST(GltfImage, UndecodableImagesAreNamed) {
     std::fill(png.begin() + 8, png.end(), 0x5A);  // signature intact, chunks garbage
     b.doc["images"][0]["bufferView"] = b.view(png);
   }));
-  // 0x5A5A5A5A as a chunk length is refused before stb sees it (io/png_chunks.h).
-  EXPECT_TRUE(has_all(corrupt, {"images[0] 'checker'", "the PNG's chunk at byte 8 declares"}));
+  // 0x5A5A5A5A as a chunk length: libpng stops at it.
+  EXPECT_TRUE(has_all(corrupt, {"images[0] 'checker'", "cannot decode the PNG (libpng: "}));
   const std::string gif = load_error(write_quad_with(dir, [](Builder& b) {
     const std::string bytes = "GIF89a\x01\x00\x01\x00";
     b.doc["images"][0]["bufferView"] = b.view(bytes.data(), bytes.size());
   }));
-  EXPECT_TRUE(has_all(gif, {"images[0]", "not a PNG or JPEG"}));
+  EXPECT_TRUE(has_all(gif, {"images[0]", "not a PNG, JPEG or WebP image"}));
 }
 
 TEST(GltfImage, TexturesAboveTheLimitsAreRefused) {
