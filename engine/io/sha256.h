@@ -1,10 +1,11 @@
 // SHA-256 (FIPS 180-4) of bytes and of files, as lowercase hex: the checksums of a dataset's manifest
 // (docs/datasets.md), the same digest `sha256sum` prints, so a set can be checked without Lagoon too.
+// Computed by nettle (Debian's nettle-dev), a maintained library, not by code of Lagoon's own.
 #pragma once
-#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <span>
 #include <string>
 
@@ -15,16 +16,16 @@ namespace lagoon::io {
 class Sha256 {
  public:
   Sha256();
+  ~Sha256();
+  Sha256(Sha256&&) noexcept;
+  Sha256& operator=(Sha256&&) noexcept;
   void update(std::span<const std::byte> bytes);
-  // The digest as 64 lowercase hex digits. The object is spent afterwards.
+  // The digest as 64 lowercase hex digits; the object starts a new digest afterwards.
   std::string hex();
 
  private:
-  void block(const uint8_t* p);
-  std::array<uint32_t, 8> h_;
-  std::array<uint8_t, 64> buffer_{};
-  size_t buffered_ = 0;
-  uint64_t length_ = 0;  // bytes
+  struct State;
+  std::unique_ptr<State> state_;
 };
 
 std::string sha256_hex(std::span<const std::byte> bytes);
