@@ -161,6 +161,32 @@ void read_vehicle(ObjectReader& r, Vehicle& v) {
          "move with it, as objects[].lights_from_gltf.");
 }
 
+// A still frame replays history_s / step_s steps of the layer, each over resolution² cells on the device and
+// bodies_resolution² on the CPU (issue 36). Legal values could ask for hundreds of times the defaults' work
+// (1024 / 1024 took 90 s for a 96 x 54 frame at t = 3 s), so the product is bounded at about 1.2 times the
+// defaults' 83.6 million cell-steps and anything above is refused with its cost and the fix.
+constexpr double kMaxWakeCellStepsPerFrame = 100e6;
+
+void check_wake_cost(ObjectReader& r, const Wakes& w) {
+  const double cells = double(w.resolution) * w.resolution +
+                       (w.felt_by_bodies ? double(w.bodies_resolution) * w.bodies_resolution : 0.0);
+  const double steps = w.step_s > 0 ? std::ceil(w.history_s / w.step_s) : 0.0;
+  const double cost = steps * cells;
+  const bool holds = !w.enabled || cost <= kMaxWakeCellStepsPerFrame;
+  r.rule("step_s", holds,
+         "history_s / step_s x (resolution² + bodies_resolution²) <= 100 million cell-steps a frame",
+         holds ? std::string()
+               : "history_s " + format_number(w.history_s) + " / step_s " + format_number(w.step_s) + " = " +
+                     format_number(steps) + " steps of " + format_number(cells) + " cells is " +
+                     format_number(std::round(cost / 1e6)) +
+                     " million cell-steps a frame (the defaults: 83.6 million); raise step_s to " +
+                     format_number(std::ceil(w.history_s * cells / kMaxWakeCellStepsPerFrame * 1000.0) /
+                                   1000.0) +
+                     ", shorten history_s to " +
+                     format_number(std::floor(kMaxWakeCellStepsPerFrame * w.step_s / cells)) +
+                     " or lower resolution / bodies_resolution");
+}
+
 void read_wakes(ObjectReader& r, Wakes& w) {
   r.flag(
       "enabled", w.enabled,
@@ -204,6 +230,7 @@ void read_wakes(ObjectReader& r, Wakes& w) {
   r.rule("bodies_resolution", w.bodies_resolution <= w.resolution, "<= resolution",
          "got " + std::to_string(w.bodies_resolution) + " for a picture layer of " +
              std::to_string(w.resolution) + " cells; the bodies' layer is at most as fine as the picture's");
+  check_wake_cost(r, w);
 }
 
 void read_sediment(ObjectReader& r, Sediment& s) {

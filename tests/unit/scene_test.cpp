@@ -106,6 +106,26 @@ TEST(SceneParse, SpringsRefuseATimeTheirGridCannotReach) {
   EXPECT_TRUE(parse_scene(json::parse(R"({"time_s": 60000})"), kSource).ok());
 }
 
+// A still frame replays history_s / step_s steps of the wake layer: a combination over 100 million
+// cell-steps (1.2 times the defaults) is refused with its cost and the fix; the defaults and a borderline one
+// load, and a disabled layer costs nothing (issue 36: 1024 / 1024 took 90 s for a 96 x 54 frame).
+TEST(SceneParse, WakeSettingsThatWouldTakeMinutesAreRefusedWithTheirCost) {
+  const std::string big = ParseError(R"({"wakes": {"resolution": 1024, "bodies_resolution": 1024}})");
+  EXPECT_TRUE(Contains(big, "wakes.step_s: must be history_s / step_s x (resolution² + bodies_resolution²)"));
+  EXPECT_TRUE(Contains(big, "300 steps of 2097152 cells is 629 million cell-steps a frame"));
+  EXPECT_TRUE(Contains(big, "raise step_s to 0.63, shorten history_s to 4"));
+  const std::string fine_step = ParseError(R"({"wakes": {"step_s": 0.005}})");
+  EXPECT_TRUE(Contains(fine_step, "6000 steps of 278528 cells"));
+  EXPECT_TRUE(parse_scene(json::parse("{}"), kSource).ok());
+  // 80 steps of 1024² + 128² = 85 million: allowed.
+  EXPECT_TRUE(parse_scene(json::parse(R"({"wakes": {"resolution": 1024, "history_s": 8}})"), kSource).ok());
+  EXPECT_TRUE(parse_scene(json::parse(R"({"wakes": {"enabled": false, "step_s": 0.005}})"), kSource).ok());
+  EXPECT_TRUE(parse_scene(json::parse(R"({"wakes": {"felt_by_bodies": false, "resolution": 1024,
+                                                    "bodies_resolution": 1024, "history_s": 9}})"),
+                          kSource)
+                  .ok());
+}
+
 TEST(SceneParse, EmptyBlocksGiveDefaults) {
   Result<Scene> scene = parse_scene(json::parse(R"({"camera": {}, "sun": {}, "render": {}})"), kSource);
   ASSERT_TRUE(scene.ok()) << scene.error().message;
