@@ -6,7 +6,9 @@
 #
 #   tools/demo-soak.sh [SECONDS [SEED]]      defaults: 600 s, seed 1
 #
-# Environment: BUILD_DIR (default build), OUT (default out/demo-soak), WIDTH/HEIGHT (default 640x360).
+# Environment: BUILD_DIR (default build), OUT (default out/demo-soak), WIDTH/HEIGHT (default 640x360),
+# VALIDATION (default 1; 0 runs without the layer, whose own bookkeeping grows with every submission and
+# every object the edits rebuild, so memory is best judged without it; docs/reliability.md).
 # Writes OUT/script.txt, OUT/demo.log and OUT/rss.csv (seconds, KiB). Passes (exit 0) when the demo exits 0
 # (which includes no validation error), no edit produced an error other than the loader's rejection of a
 # value, and resident memory at the end is less than 1 % above the sample at 10 % of the run. Edits that
@@ -62,7 +64,7 @@ awk -v frames="$frames" -v seed="$seed" -F' [|] ' '
 
 echo "seconds,rss_kib" >"$out/rss.csv"
 start=$(date +%s)
-LAGOON_VALIDATION=1 xvfb-run -a "$demo" --scene scenes/default.json --width "${WIDTH:-640}" --height "${HEIGHT:-360}" \
+LAGOON_VALIDATION=${VALIDATION:-1} xvfb-run -a "$demo" --scene scenes/default.json --width "${WIDTH:-640}" --height "${HEIGHT:-360}" \
   --frames "$frames" --script "$out/script.txt" --no-vsync >"$out/demo.log" 2>&1 &
 runner=$!
 pid=
