@@ -13,12 +13,27 @@ namespace {
 // healthy at the default 1 % (the validation layer the tests run with keeps a few KB a submission, about
 // 0.1 % here). The same run keeping 0.1 MiB a frame alive (--retain-kib 100, 5 MiB over the 50 frames, 2.5 %
 // of the process) must fail: the check catches a leak of that size (issue 36).
+// Under AddressSanitizer (make test-sanitize) the resident set is ASan's quarantine and shadow memory
+// (1.3 GiB here, moving by tens of MiB as freed blocks cycle through it), so it says nothing about leaks;
+// LeakSanitizer checks those there instead, and the memory verdicts are not asserted.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kResidentSetMeansNothing = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kResidentSetMeansNothing = true;
+#else
+constexpr bool kResidentSetMeansNothing = false;
+#endif
+#else
+constexpr bool kResidentSetMeansNothing = false;
+#endif
+
 std::string short_soak(const std::string& extra) {
   return "soak --scene " + kDefaultScene +
          " --width 64 --height 36 --warmup 50 --set "
          "'ocean.cascades=[{\"patch_size_m\":300,\"resolution\":64},{\"patch_size_m\":30,\"resolution\":64}]'"
          " " +
-         extra;
+         extra + (kResidentSetMeansNothing ? " --max-growth 1000" : "");
 }
 
 TEST(SoakCli, AShortSoakChecksEveryStepAndFrameAndIsHealthy) {
@@ -33,6 +48,8 @@ TEST(SoakCli, AShortSoakChecksEveryStepAndFrameAndIsHealthy) {
 }
 
 TEST(SoakCli, ALeakOfATenthOfAMiBPerFrameIsCaught) {
+  if (kResidentSetMeansNothing)
+    GTEST_SKIP() << "AddressSanitizer's quarantine hides a leak in the resident set";
   auto r = lagoon(short_soak("--steps 0 --frames 100 --retain-kib 100"));
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("NOT healthy"), std::string::npos) << r.output;
