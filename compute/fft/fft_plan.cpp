@@ -10,6 +10,9 @@ bool is_supported_size(uint32_t n) {
 }
 
 std::vector<uint32_t> stockham_radices(uint32_t n) {
+  // Above 256 a radix-32 pass saves a whole pass over memory: 512 = 32 x 16 and 1024 = 32 x 32 take two
+  // passes, where radix 16 and a remainder would take three.
+  if (n > 256) return {32, n / 32};
   std::vector<uint32_t> radices;
   while (n % 16 == 0 && n > 1) {
     radices.push_back(16);

@@ -152,8 +152,21 @@ void FloatingObjects::reset() {
   steps_ = 0;
 }
 
+namespace {
+
+long long step_at(double time_s) {
+  return (long long)std::floor(std::max(time_s, 0.0) / FloatingObjects::kStepS + 1e-9);
+}
+
+}  // namespace
+
+long long FloatingObjects::steps_to(double time_s) const {
+  const long long target = step_at(time_s);
+  return target < steps_ ? target : target - steps_;
+}
+
 void FloatingObjects::advance(double time_s) {
-  const long long target = (long long)std::floor(std::max(time_s, 0.0) / kStepS + 1e-9);
+  const long long target = step_at(time_s);
   if (target < steps_) reset();
   for (; steps_ < target; ++steps_) {
     const double t = double(steps_) * kStepS;

@@ -38,6 +38,8 @@ class FloatingObjects {
 
   bool empty() const { return bodies_.empty() && vehicles_.empty(); }
   void advance(double time_s);
+  // The steps advance(time_s) would take (from time 0 when time_s is before the bodies' time).
+  long long steps_to(double time_s) const;
 
   struct Pose {
     size_t object;             // index into the scene's objects, then its vehicles (objects.size() + v)

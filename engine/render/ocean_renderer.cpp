@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <future>
 
 #include "core/stage_times.h"
 #include "render/camera.h"
@@ -142,8 +143,16 @@ void OceanRenderer::record_frame(const FrameContext& f, const CausticsWindow& ca
 
 void OceanRenderer::prepare(const scene::Scene& scene) {
   StageTimer t("warm-up (foam, wakes)");
+  // A jump in time (a still frame at a late time, a dataset's frame) has the floating bodies' physics replay
+  // as much history on the CPU as the device does: it runs on another thread meanwhile, while this one only
+  // waits for the device. The frames of a live loop take a step or two, inline (begin_frame).
+  constexpr long long kJumpSteps = 120;  // a second of physics
+  std::future<void> bodies;
+  if (!floating_->empty() && floating_->steps_to(scene.time_s) >= kJumpSteps)
+    bodies = std::async(std::launch::async, [this, time_s = scene.time_s] { floating_->advance(time_s); });
   ocean_step_->prepare(ctx_, scene.time_s, history_ == History::Replay);
   wakes_->prepare(ctx_, scene, history_ == History::Replay);
+  if (bodies.valid()) bodies.get();  // rethrows what the physics threw
 }
 
 CameraSide OceanRenderer::camera_side(const scene::Scene& scene, VkExtent2D extent) {

@@ -80,8 +80,9 @@ class OceanRenderer {
   void set_history(History history) { history_ = history; }
 
   // Work that submits and waits, kept out of record(): the foam warm-up when scene.time_s jumps (the first
-  // frame, a step back, or more than kWarmupS ahead) or always with History::Replay, and the wakes' likewise.
-  // Call before recording a frame for scene.time_s.
+  // frame, a step back, or more than kWarmupS ahead) or always with History::Replay, and the wakes' likewise;
+  // the floating bodies are brought to scene.time_s on another thread meanwhile. Call before recording a
+  // frame for scene.time_s.
   void prepare(const scene::Scene& scene);
   // Records the frame (the ocean stepped to scene.time_s, then every pass) into `cmd`; never submits. Uses
   // slot `slot` (mod kSlots): the caller must have waited for the last frame recorded with it. Returns the

@@ -2,7 +2,7 @@
 // One invocation computes one radix-R butterfly of one line: it reads R elements spaced N/R apart, applies
 // the twiddles W^(r·(j mod Ns)·N/(Ns·R)) (table of the N roots of unity), transforms them in registers and
 // writes them Ns apart (autosort: no bit reversal pass). log_R(N) passes make a length-N transform.
-// Specialisation (IDs in shared/fft.h): FFT_RADIX (2, 4, 8 or 16), FFT_INVERSE (exp(+2πi kn/N), unnormalised),
+// Specialisation (IDs in shared/fft.h): FFT_RADIX (2, 4, 8, 16 or 32), FFT_INVERSE (exp(+2πi kn/N), unnormalised),
 // FFT_N (length), FFT_NS (this pass's Stockham stride). All compile-time constants: the loops unroll,
 // the in-register twiddles fold, and index arithmetic becomes shifts and masks (lavapipe has no vector
 // integer division: a division by a run-time value costs a scalar loop over the SIMD lanes).
@@ -10,7 +10,8 @@
 #define LAGOON_COMMON_FFT_GLSL
 #include "shared/fft.h"
 
-layout(constant_id = LAGOON_FFT_SPEC_RADIX) const int FFT_RADIX = 16;
+// The largest radix by default: glslang checks the in-register kernels' constant indices against it.
+layout(constant_id = LAGOON_FFT_SPEC_RADIX) const int FFT_RADIX = 32;
 layout(constant_id = LAGOON_FFT_SPEC_INVERSE) const bool FFT_INVERSE = true;
 layout(constant_id = LAGOON_FFT_SPEC_N) const int FFT_N = 256;
 layout(constant_id = LAGOON_FFT_SPEC_NS) const int FFT_NS = 1;
@@ -46,5 +47,9 @@ int fft_twiddle_index(int j, int r) { return (j % FFT_NS) * r * (FFT_N / (FFT_NS
     if (FFT_RADIX > 8) {                                                                   \
       w[8] = fft_twiddle(table[8 * m_]);                                                   \
       for (int r_ = 9; r_ < 16; ++r_) w[r_] = cmul(w[8], w[r_ - 8]);                      \
+    }                                                                                      \
+    if (FFT_RADIX > 16) {                                                                  \
+      w[16] = fft_twiddle(table[16 * m_]);                                                 \
+      for (int r_ = 17; r_ < 32; ++r_) w[r_] = cmul(w[16], w[r_ - 16]);                   \
     }                                                                                      \
   }

@@ -15,18 +15,22 @@ layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 layout(std430, binding = LAGOON_DYNAMIC_BIND_RAW) readonly buffer Raw { vec2 raw[]; };
 layout(std430, binding = LAGOON_DYNAMIC_BIND_STATE) writeonly buffer State { vec2 state[]; };
 layout(rgba32f, binding = LAGOON_DYNAMIC_BIND_FIELDS) writeonly uniform image2D fields;
-layout(std430, binding = LAGOON_DYNAMIC_BIND_SOURCES) readonly buffer Sources { DynamicSource sources[]; };
+// A uniform block, not a storage buffer: every invocation reads the same sources, and lavapipe loads a
+// uniform block at a uniform offset once for the SIMD vector instead of once per lane.
+layout(std140, binding = LAGOON_DYNAMIC_BIND_SOURCES) uniform Sources { DynamicSource sources[LAGOON_DYNAMIC_MAX_SOURCES]; };
 layout(std430, binding = LAGOON_DYNAMIC_BIND_FOAM) buffer Foam { float foam[]; };
 layout(push_constant) uniform Push { DynamicPush p; };
 
+// n is a power of two: wrapping is a mask (two's complement keeps it right for negative values), where a
+// modulo would be a scalar loop over the SIMD lanes on lavapipe.
 int from_edge(int index, int origin, int n) {
-  int a = ((index - origin) % n + n) % n;
+  int a = (index - origin) & (n - 1);
   return min(a, n - 1 - a);
 }
 
 // The world cell that storage index `index` holds.
 int window_cell(int index, int origin, int n) {
-  return origin + ((index - origin) % n + n) % n;
+  return origin + ((index - origin) & (n - 1));
 }
 
 float sponge_at(int i, int j) {
@@ -35,30 +39,31 @@ float sponge_at(int i, int j) {
   return dl_sponge(edge, p.sponge_cells, p.sponge_per_s, p.dt);
 }
 
-// The damped state at storage index (i, j), wrapped.
-vec2 damped(int i, int j) {
+// The damped height at storage index (i, j), wrapped: one float load, where the state is two.
+float damped_height(int i, int j) {
   int n = int(p.n);
-  i = (i + n) % n;
-  j = (j + n) % n;
-  return raw[j * n + i] * sponge_at(i, j);
+  i &= n - 1;
+  j &= n - 1;
+  return raw[j * n + i].x * sponge_at(i, j);
 }
 
 void main() {
   int n = int(p.n);
   ivec2 c = ivec2(gl_GlobalInvocationID.xy);
   if (c.x >= n || c.y >= n) return;
-  vec2 here = damped(c.x, c.y);
+  float keep = sponge_at(c.x, c.y);
+  vec2 here = raw[c.y * n + c.x] * keep;
   state[c.y * n + c.x] = here;
   vec2 xz = vec2(window_cell(c.x, p.origin.x, n), window_cell(c.y, p.origin.y, n)) * p.cell;
   float injected = 0.0;
-  for (uint s = 0u; s < p.source_count; ++s) {
-    DynamicSource src = sources[p.source_first + s];
+  for (uint s = 0u; s < p.foam_sources; ++s) {
+    DynamicSource src = sources[s];
     injected += dl_foam_injection(xz, src.centre, src.velocity, src.along, src.sigma, src.foam_per_s, p.dt,
                                   float(p.n) * p.cell);
   }
-  float trail = dl_foam_update(foam[c.y * n + c.x], p.foam_decay, injected) * sponge_at(c.x, c.y);
+  float trail = dl_foam_update(foam[c.y * n + c.x], p.foam_decay, injected) * keep;
   foam[c.y * n + c.x] = trail;
-  float dx = (damped(c.x + 1, c.y).x - damped(c.x - 1, c.y).x) / (2.0 * p.cell);
-  float dz = (damped(c.x, c.y + 1).x - damped(c.x, c.y - 1).x) / (2.0 * p.cell);
+  float dx = (damped_height(c.x + 1, c.y) - damped_height(c.x - 1, c.y)) / (2.0 * p.cell);
+  float dz = (damped_height(c.x, c.y + 1) - damped_height(c.x, c.y - 1)) / (2.0 * p.cell);
   imageStore(fields, c, vec4(here.x, dx, dz, trail));
 }

@@ -10,6 +10,8 @@
 #define LAGOON_DYNAMIC_BIND_SPECTRUM 0
 #define LAGOON_DYNAMIC_BIND_EVOLVED 1
 #define LAGOON_DYNAMIC_BIND_SOURCES 2
+// Specialisation: the evolution's pass over the Nyquist lines (bool; dynamic_evolve.comp).
+#define LAGOON_DYNAMIC_SPEC_NYQUIST 0
 // The sponge, the foam and the fields (dynamic_sponge.comp): the state after the inverse transform in, the
 // damped state, the foam (float per cell, read and written) and the image (h, dh/dx, dh/dz, foam) out. The
 // step's sources are at LAGOON_DYNAMIC_BIND_SOURCES, as in the evolution.
@@ -44,7 +46,7 @@ struct DynamicPush {
   float decay_per_s;   // damping of every mode
   float sponge_cells;  // width of the absorbing border
   float sponge_per_s;  // its strongest damping rate, at the edge
-  uint source_first;   // this step's sources in the sources buffer
+  uint foam_sources;   // the first this many sources leave foam (foam_per_s > 0), the others none
   float foam_decay;    // the factor the foam keeps over this step
   uint pad1;
   uint pad2;

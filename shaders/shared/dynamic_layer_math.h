@@ -12,8 +12,9 @@
 // The DFT bin (i, j) of an n x n grid of `cell` metres as a wavevector (rad/m), negative frequencies above
 // n/2.
 LAGOON_FN dl_real2 dl_wavevector(int i, int j, int n, dl_real cell) {
-  int fi = i < n / 2 ? i : i - n;
-  int fj = j < n / 2 ? j : j - n;
+  // n is a power of two: a shift, not a division (a scalar loop over the SIMD lanes on lavapipe).
+  int fi = i < (n >> 1) ? i : i - n;
+  int fj = j < (n >> 1) ? j : j - n;
   return dl_real2(fi, fj) * (dl_real(6.283185307179586) / (dl_real(n) * cell));
 }
 

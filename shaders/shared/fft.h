@@ -7,7 +7,7 @@
 // ocean's fused passes); compute/fft/gpu_fft.cpp and compute/ocean/gpu/ocean_fft_path.cpp set them.
 #define LAGOON_FFT_SPEC_GROUP_X 0  // workgroup size x (local_size_x_id)
 #define LAGOON_FFT_SPEC_GROUP_Y 1  // workgroup size y (local_size_y_id)
-#define LAGOON_FFT_SPEC_RADIX 2    // 2, 4, 8 or 16
+#define LAGOON_FFT_SPEC_RADIX 2    // 2, 4, 8, 16 or 32
 #define LAGOON_FFT_SPEC_COLUMNS 3  // bool: the pass runs along columns
 #define LAGOON_FFT_SPEC_INVERSE 4  // bool: exp(+2πi kn/N), unnormalised
 #define LAGOON_FFT_SPEC_N 5        // transform size

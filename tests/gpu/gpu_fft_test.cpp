@@ -15,14 +15,16 @@ namespace {
 
 class GpuFftTest : public GpuTest, public ::testing::WithParamInterface<std::tuple<uint32_t, bool>> {};
 
-TEST(FftPlan, RadicesMultiplyToTheSizeAndPreferSixteen) {
+TEST(FftPlan, RadicesMultiplyToTheSizeInTwoPasses) {
   for (uint32_t n = 64; n <= 1024; n *= 2) {
     uint32_t product = 1;
     for (uint32_t r : fft::stockham_radices(n)) product *= r;
     EXPECT_EQ(product, n);
+    EXPECT_EQ(fft::stockham_radices(n).size(), 2u) << n;
   }
   EXPECT_EQ(fft::stockham_radices(256), (std::vector<uint32_t>{16, 16}));
-  EXPECT_EQ(fft::stockham_radices(512), (std::vector<uint32_t>{16, 16, 2}));
+  EXPECT_EQ(fft::stockham_radices(512), (std::vector<uint32_t>{32, 16}));
+  EXPECT_EQ(fft::stockham_radices(1024), (std::vector<uint32_t>{32, 32}));
   EXPECT_FALSE(fft::is_supported_size(96));
   EXPECT_FALSE(fft::is_supported_size(2048));
   EXPECT_TRUE(fft::is_supported_size(64));

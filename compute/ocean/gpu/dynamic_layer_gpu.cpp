@@ -1,5 +1,6 @@
 #include "ocean/gpu/dynamic_layer_gpu.h"
 
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <vector>
@@ -11,6 +12,11 @@
 
 namespace lagoon::ocean {
 namespace {
+
+// One step's sources: a multiple of 256 bytes, the largest uniform-buffer offset alignment Vulkan allows.
+constexpr VkDeviceSize kSlotBytes = sizeof(gpu::DynamicSource) * LAGOON_DYNAMIC_MAX_SOURCES;
+static_assert(kSlotBytes % 256 == 0);
+constexpr std::array<vk::SpecConstant, 1> kNyquistLines{{{LAGOON_DYNAMIC_SPEC_NYQUIST, 1}}};
 
 gpu::DynamicSource to_gpu(const WakeSource& s, double period) {
   // A whole period changes no phase of the grid's modes; within one, float phases stay accurate.
@@ -31,6 +37,7 @@ DynamicLayerGpu::DynamicLayerGpu(vk::Context& ctx, const DynamicLayerParams& par
       forward_(ctx, params.n, false),
       inverse_(ctx, params.n, true),
       evolve_(vk::ComputePipeline::create(ctx, shaders::ocean_dynamic_evolve_comp)),
+      evolve_nyquist_(vk::ComputePipeline::create(ctx, shaders::ocean_dynamic_evolve_comp, kNyquistLines)),
       sponge_(vk::ComputePipeline::create(ctx, shaders::ocean_dynamic_sponge_comp)) {
   const VkDeviceSize bytes = VkDeviceSize(params.n) * params.n * 2 * sizeof(float);
   state_ = vk::Buffer::create(ctx, bytes, (vk::kStorageUsage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT),
@@ -39,9 +46,8 @@ DynamicLayerGpu::DynamicLayerGpu(vk::Context& ctx, const DynamicLayerParams& par
                                 vk::MemoryUsage::Device, "dynamic layer scratch");
   foam_ = vk::Buffer::create(ctx, bytes / 2, (vk::kStorageUsage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT),
                              vk::MemoryUsage::Device, "dynamic layer foam");
-  sources_ = vk::Buffer::create(ctx, sizeof(gpu::DynamicSource) * LAGOON_DYNAMIC_MAX_SOURCES * kStepsInFlight,
-                                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUsage::Upload,
-                                "dynamic layer sources");
+  sources_ = vk::Buffer::create(ctx, kSlotBytes * kStepsInFlight, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                                vk::MemoryUsage::Upload, "dynamic layer sources");
   fields_ =
       vk::Image::create(ctx, {.format = VK_FORMAT_R32G32B32A32_SFLOAT,
                               .extent = {params.n, params.n},
@@ -69,11 +75,17 @@ void DynamicLayerGpu::record_step(VkCommandBuffer cmd, double dt, std::span<cons
   if (sources.size() > LAGOON_DYNAMIC_MAX_SOURCES)
     vk::throw_usage_error("DynamicLayerGpu: more than " + std::to_string(LAGOON_DYNAMIC_MAX_SOURCES) +
                           " sources in one step");
-  const uint32_t first = next_slot_ * LAGOON_DYNAMIC_MAX_SOURCES;
+  const VkDeviceSize offset = VkDeviceSize(next_slot_) * kSlotBytes;
   next_slot_ = (next_slot_ + 1) % kStepsInFlight;
-  auto* slot = reinterpret_cast<gpu::DynamicSource*>(sources_.mapped()) + first;
+  auto* slot = reinterpret_cast<gpu::DynamicSource*>(static_cast<std::byte*>(sources_.mapped()) + offset);
   const double period = params_.n * params_.cell_m;
-  for (size_t i = 0; i < sources.size(); ++i) slot[i] = to_gpu(sources[i], period);
+  // Those that leave foam first: the sponge pass loops over them only (lavapipe runs both sides of an `if`,
+  // but leaves a loop when it ends).
+  uint32_t foam_sources = 0;
+  for (const WakeSource& s : sources)
+    if (s.foam_per_s > 0) slot[foam_sources++] = to_gpu(s, period);
+  for (size_t i = 0, next = foam_sources; i < sources.size(); ++i)
+    if (!(sources[i].foam_per_s > 0)) slot[next++] = to_gpu(sources[i], period);
   sources_.flush();
   const gpu::DynamicPush push{.origin = origin_,
                               .n = params_.n,
@@ -86,23 +98,28 @@ void DynamicLayerGpu::record_step(VkCommandBuffer cmd, double dt, std::span<cons
                               .decay_per_s = float(params_.decay_per_s),
                               .sponge_cells = float(params_.sponge_m / params_.cell_m),
                               .sponge_per_s = float(params_.sponge_per_s),
-                              .source_first = first,
+                              .foam_sources = foam_sources,
                               .foam_decay = float(foam_decay_factor(params_.foam_lifetime_s, dt))};
+  const vk::BufferRef step_sources{sources_.handle(), offset, kSlotBytes};
   const std::array<uint32_t, 3> cells{params_.n, params_.n, 1};
   // The state is in state_; each transform returns its result in the buffer it was given.
   forward_.record(cmd, state_, scratch_, 1);
-  vk::dispatch(
-      cmd, evolve_,
-      {vk::bind(LAGOON_DYNAMIC_BIND_SPECTRUM, state_), vk::bind(LAGOON_DYNAMIC_BIND_EVOLVED, scratch_),
-       vk::bind(LAGOON_DYNAMIC_BIND_SOURCES, sources_)},
-      push, vk::groups_for(evolve_, cells));
+  const std::array<vk::Binding, 3> spectral{vk::bind(LAGOON_DYNAMIC_BIND_SPECTRUM, state_),
+                                            vk::bind(LAGOON_DYNAMIC_BIND_EVOLVED, scratch_),
+                                            vk::bind(LAGOON_DYNAMIC_BIND_SOURCES, step_sources)};
+  // The pairs k, -k (half the grid), and the Nyquist lines: disjoint writes, no barrier between them.
+  vk::dispatch(cmd, evolve_, spectral, &push, sizeof(push),
+               vk::groups_for(evolve_, {params_.n, params_.n / 2, 1}));
+  vk::dispatch(cmd, evolve_nyquist_, spectral, &push, sizeof(push),
+               vk::groups_for(evolve_nyquist_, {2 * params_.n, 1, 1}));
   vk::memory_barrier(cmd, vk::access::kComputeReadWrite, vk::access::kComputeReadWrite);
   inverse_.record(cmd, scratch_, state_, 1);
-  vk::dispatch(cmd, sponge_,
-               {vk::bind(LAGOON_DYNAMIC_BIND_RAW, scratch_), vk::bind(LAGOON_DYNAMIC_BIND_STATE, state_),
-                vk::bind(LAGOON_DYNAMIC_BIND_SOURCES, sources_), vk::bind(LAGOON_DYNAMIC_BIND_FOAM, foam_),
-                vk::bind(LAGOON_DYNAMIC_BIND_FIELDS, vk::ImageRef{fields_.view(), VK_IMAGE_LAYOUT_GENERAL})},
-               push, vk::groups_for(sponge_, cells));
+  vk::dispatch(
+      cmd, sponge_,
+      {vk::bind(LAGOON_DYNAMIC_BIND_RAW, scratch_), vk::bind(LAGOON_DYNAMIC_BIND_STATE, state_),
+       vk::bind(LAGOON_DYNAMIC_BIND_SOURCES, step_sources), vk::bind(LAGOON_DYNAMIC_BIND_FOAM, foam_),
+       vk::bind(LAGOON_DYNAMIC_BIND_FIELDS, vk::ImageRef{fields_.view(), VK_IMAGE_LAYOUT_GENERAL})},
+      push, vk::groups_for(sponge_, cells));
   vk::memory_barrier(cmd, vk::access::kComputeReadWrite, vk::access::kComputeReadWrite);
 }
 

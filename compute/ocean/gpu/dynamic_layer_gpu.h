@@ -1,7 +1,8 @@
 // The dynamic wave layer on the GPU (issue 14; the CPU reference and the physics: ocean/dynamic_layer.h).
 // A step: forward FFT of the state h + i dh/dt (fft/gpu_fft.h), the exact evolution of every mode toward the
-// sources' depression (shaders/ocean/dynamic_evolve.comp), the inverse FFT, and the absorbing border with the
-// foam trails and the renderer's fields (dynamic_sponge.comp). Records only; never submits.
+// sources' depression (shaders/ocean/dynamic_evolve.comp: the modes in pairs k, -k, then the Nyquist lines),
+// the inverse FFT, and the absorbing border with the foam trails and the renderer's fields
+// (dynamic_sponge.comp). Records only; never submits.
 #pragma once
 #include <glm/vec2.hpp>
 #include <span>
@@ -44,7 +45,7 @@ class DynamicLayerGpu {
  private:
   DynamicLayerParams params_;
   fft::GpuFft2d forward_, inverse_;
-  vk::ComputePipeline evolve_, sponge_;
+  vk::ComputePipeline evolve_, evolve_nyquist_, sponge_;
   vk::Buffer state_, scratch_, sources_, foam_;
   vk::Image fields_;
   glm::ivec2 origin_{0};
