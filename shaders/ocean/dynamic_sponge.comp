@@ -11,6 +11,9 @@
 #define dl_real4 vec4
 #include "shared/dynamic_layer_math.h"
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
+// Off for the steps of a catch-up but its last: only the last step's fields are ever drawn, and the slopes'
+// four neighbour loads are most of this pass on lavapipe.
+layout(constant_id = LAGOON_DYNAMIC_SPEC_FIELDS) const bool DL_FIELDS = true;
 
 layout(std430, binding = LAGOON_DYNAMIC_BIND_RAW) readonly buffer Raw { vec2 raw[]; };
 layout(std430, binding = LAGOON_DYNAMIC_BIND_STATE) writeonly buffer State { vec2 state[]; };
@@ -63,6 +66,7 @@ void main() {
   }
   float trail = dl_foam_update(foam[c.y * n + c.x], p.foam_decay, injected) * keep;
   foam[c.y * n + c.x] = trail;
+  if (!DL_FIELDS) return;
   float dx = (damped_height(c.x + 1, c.y) - damped_height(c.x - 1, c.y)) / (2.0 * p.cell);
   float dz = (damped_height(c.x, c.y + 1) - damped_height(c.x, c.y - 1)) / (2.0 * p.cell);
   imageStore(fields, c, vec4(here.x, dx, dz, trail));

@@ -10,8 +10,10 @@
 #define LAGOON_DYNAMIC_BIND_SPECTRUM 0
 #define LAGOON_DYNAMIC_BIND_EVOLVED 1
 #define LAGOON_DYNAMIC_BIND_SOURCES 2
-// Specialisation: the evolution's pass over the Nyquist lines (bool; dynamic_evolve.comp).
+// Specialisation: the evolution's pass over the Nyquist lines (bool; dynamic_evolve.comp), and whether the
+// border's pass writes the renderer's fields image (bool; dynamic_sponge.comp).
 #define LAGOON_DYNAMIC_SPEC_NYQUIST 0
+#define LAGOON_DYNAMIC_SPEC_FIELDS 1
 // The sponge, the foam and the fields (dynamic_sponge.comp): the state after the inverse transform in, the
 // damped state, the foam (float per cell, read and written) and the image (h, dh/dx, dh/dz, foam) out. The
 // step's sources are at LAGOON_DYNAMIC_BIND_SOURCES, as in the evolution.

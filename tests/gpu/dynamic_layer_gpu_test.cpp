@@ -92,5 +92,57 @@ TEST_F(DynamicLayerGpuTest, HundredStepsMatchTheCpuReference) {
   EXPECT_LT(worst_slope, 1e-3 * steepest);
 }
 
+// A catch-up writes the fields image at its last step only (Fields::Keep before): the image a frame draws is
+// the one every step would have left, and a kept step leaves it alone while the state moves on.
+TEST_F(DynamicLayerGpuTest, ACatchUpWritesTheFieldsOfItsLastStepOnly) {
+  const ocean::DynamicLayerParams params{.n = 64, .cell_m = 0.5, .sponge_m = 4};
+  ocean::DynamicLayerGpu every(ctx(), params), last(ctx(), params);
+  const std::vector<ocean::WakeSource> hull{{.centre = {8, 4},
+                                             .velocity = {2, 0},
+                                             .heading = 1.57,
+                                             .sigma = {1, 0.4},
+                                             .depression = 0.2,
+                                             .foam_per_s = 4}};
+  auto run = [&](ocean::DynamicLayerGpu& layer, int steps, bool keep_all_but_last) {
+    ctx().submit_and_wait([&](VkCommandBuffer cmd) {
+      for (int s = 0; s < steps; ++s)
+        layer.record_step(cmd, 0.1, hull,
+                          keep_all_but_last && s + 1 < steps ? ocean::DynamicLayerGpu::Fields::Keep
+                                                             : ocean::DynamicLayerGpu::Fields::Write);
+      vk::memory_barrier(cmd, vk::access::kComputeWrite, vk::access::kTransferRead);
+    });
+  };
+  auto fields = [&](const ocean::DynamicLayerGpu& layer) {
+    const std::vector<std::byte> raw =
+        vk::readback_image(ctx(), layer.fields(), VK_IMAGE_LAYOUT_GENERAL, vk::access::kComputeWrite);
+    const float* f = reinterpret_cast<const float*>(raw.data());
+    return std::vector<float>(f, f + raw.size() / sizeof(float));
+  };
+  run(every, 30, false);
+  run(last, 30, true);
+  const std::vector<float> a = fields(every), b = fields(last);
+  double largest = 0, worst = 0;
+  for (size_t i = 0; i < a.size(); ++i) {
+    largest = std::max(largest, double(std::abs(a[i])));
+    worst = std::max(worst, double(std::abs(a[i] - b[i])));
+  }
+  EXPECT_GT(largest, 0.01) << "the hull made nothing to compare";
+  EXPECT_LT(worst, 1e-6 * largest);
+  // One more step that keeps the fields: the image is the previous step's, though the waves moved.
+  ctx().submit_and_wait([&](VkCommandBuffer cmd) {
+    last.record_step(cmd, 0.1, hull, ocean::DynamicLayerGpu::Fields::Keep);
+    every.record_step(cmd, 0.1, hull);
+    vk::memory_barrier(cmd, vk::access::kComputeWrite, vk::access::kTransferRead);
+  });
+  const std::vector<float> kept = fields(last), moved = fields(every);
+  double kept_change = 0, moved_change = 0;
+  for (size_t i = 0; i < b.size(); ++i) {
+    kept_change = std::max(kept_change, double(std::abs(kept[i] - b[i])));
+    moved_change = std::max(moved_change, double(std::abs(moved[i] - a[i])));
+  }
+  EXPECT_LT(kept_change, 1e-7 * largest);
+  EXPECT_GT(moved_change, 1e-3 * largest);
+}
+
 }  // namespace
 }  // namespace lagoon::test

@@ -17,6 +17,7 @@ namespace {
 constexpr VkDeviceSize kSlotBytes = sizeof(gpu::DynamicSource) * LAGOON_DYNAMIC_MAX_SOURCES;
 static_assert(kSlotBytes % 256 == 0);
 constexpr std::array<vk::SpecConstant, 1> kNyquistLines{{{LAGOON_DYNAMIC_SPEC_NYQUIST, 1}}};
+constexpr std::array<vk::SpecConstant, 1> kNoFields{{{LAGOON_DYNAMIC_SPEC_FIELDS, 0}}};
 
 gpu::DynamicSource to_gpu(const WakeSource& s, double period) {
   // A whole period changes no phase of the grid's modes; within one, float phases stay accurate.
@@ -38,7 +39,8 @@ DynamicLayerGpu::DynamicLayerGpu(vk::Context& ctx, const DynamicLayerParams& par
       inverse_(ctx, params.n, true),
       evolve_(vk::ComputePipeline::create(ctx, shaders::ocean_dynamic_evolve_comp)),
       evolve_nyquist_(vk::ComputePipeline::create(ctx, shaders::ocean_dynamic_evolve_comp, kNyquistLines)),
-      sponge_(vk::ComputePipeline::create(ctx, shaders::ocean_dynamic_sponge_comp)) {
+      sponge_(vk::ComputePipeline::create(ctx, shaders::ocean_dynamic_sponge_comp)),
+      sponge_no_fields_(vk::ComputePipeline::create(ctx, shaders::ocean_dynamic_sponge_comp, kNoFields)) {
   const VkDeviceSize bytes = VkDeviceSize(params.n) * params.n * 2 * sizeof(float);
   state_ = vk::Buffer::create(ctx, bytes, (vk::kStorageUsage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT),
                               vk::MemoryUsage::Device, "dynamic layer state");
@@ -71,7 +73,8 @@ void DynamicLayerGpu::record_clear(VkCommandBuffer cmd) {
   vk::memory_barrier(cmd, vk::access::kTransferWrite, vk::access::kComputeReadWrite);
 }
 
-void DynamicLayerGpu::record_step(VkCommandBuffer cmd, double dt, std::span<const WakeSource> sources) {
+void DynamicLayerGpu::record_step(VkCommandBuffer cmd, double dt, std::span<const WakeSource> sources,
+                                  Fields fields) {
   if (sources.size() > LAGOON_DYNAMIC_MAX_SOURCES)
     vk::throw_usage_error("DynamicLayerGpu: more than " + std::to_string(LAGOON_DYNAMIC_MAX_SOURCES) +
                           " sources in one step");
@@ -114,12 +117,13 @@ void DynamicLayerGpu::record_step(VkCommandBuffer cmd, double dt, std::span<cons
                vk::groups_for(evolve_nyquist_, {2 * params_.n, 1, 1}));
   vk::memory_barrier(cmd, vk::access::kComputeReadWrite, vk::access::kComputeReadWrite);
   inverse_.record(cmd, scratch_, state_, 1);
+  const vk::ComputePipeline& sponge = fields == Fields::Write ? sponge_ : sponge_no_fields_;
   vk::dispatch(
-      cmd, sponge_,
+      cmd, sponge,
       {vk::bind(LAGOON_DYNAMIC_BIND_RAW, scratch_), vk::bind(LAGOON_DYNAMIC_BIND_STATE, state_),
        vk::bind(LAGOON_DYNAMIC_BIND_SOURCES, step_sources), vk::bind(LAGOON_DYNAMIC_BIND_FOAM, foam_),
        vk::bind(LAGOON_DYNAMIC_BIND_FIELDS, vk::ImageRef{fields_.view(), VK_IMAGE_LAYOUT_GENERAL})},
-      push, vk::groups_for(sponge_, cells));
+      push, vk::groups_for(sponge, cells));
   vk::memory_barrier(cmd, vk::access::kComputeReadWrite, vk::access::kComputeReadWrite);
 }
 

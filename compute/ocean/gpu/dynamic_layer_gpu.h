@@ -29,8 +29,11 @@ class DynamicLayerGpu {
   // Records the state back to rest (and the fields to zero).
   void record_clear(VkCommandBuffer cmd);
   // Records one step of dt seconds. At most kStepsInFlight steps may be recorded before the GPU has run the
-  // first of them (their sources share a ring).
-  void record_step(VkCommandBuffer cmd, double dt, std::span<const WakeSource> sources);
+  // first of them (their sources share a ring). Fields::Keep leaves the fields image as it was (the steps of
+  // a catch-up but its last: cheaper, and nothing draws them).
+  enum class Fields { Write, Keep };
+  void record_step(VkCommandBuffer cmd, double dt, std::span<const WakeSource> sources,
+                   Fields fields = Fields::Write);
 
   // (h, dh/dx, dh/dz, foam) per cell, R32G32B32A32 n x n in GENERAL, world cell (a, b) at texel (a mod n,
   // b mod n): sample it with repeat addressing at uv = (x, z) / (n · cell) + 0.5 / n. Visible to compute
@@ -45,7 +48,7 @@ class DynamicLayerGpu {
  private:
   DynamicLayerParams params_;
   fft::GpuFft2d forward_, inverse_;
-  vk::ComputePipeline evolve_, evolve_nyquist_, sponge_;
+  vk::ComputePipeline evolve_, evolve_nyquist_, sponge_, sponge_no_fields_;
   vk::Buffer state_, scratch_, sources_, foam_;
   vk::Image fields_;
   glm::ivec2 origin_{0};

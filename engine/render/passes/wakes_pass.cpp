@@ -51,7 +51,9 @@ void WakesPass::follow_camera(const scene::Scene& scene) {
 void WakesPass::record_steps(VkCommandBuffer cmd, long long to) {
   for (; steps_done_ < to; ++steps_done_) {
     const std::vector<ocean::WakeSource> now = hulls_.sources(double(steps_done_) * hulls_.step_s());
-    layer_->record_step(cmd, hulls_.step_s(), now);
+    layer_->record_step(
+        cmd, hulls_.step_s(), now,
+        steps_done_ + 1 == to ? ocean::DynamicLayerGpu::Fields::Write : ocean::DynamicLayerGpu::Fields::Keep);
   }
 }
 
