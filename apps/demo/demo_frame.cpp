@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "core/free_heap.h"
 #include "demo.h"
 #include "io/png.h"
 #include "vk/barriers.h"
@@ -46,6 +47,9 @@ bool Demo::frame() {
   if (!screenshot.empty()) finish_screenshot(screenshot, pixels);
   if (last_scripted && !options_.save_scene.empty()) save_scene_to(options_.save_scene);
   ++frame_;
+  // Every 64 frames the freed heap goes back to the system: an edit that rebuilds the renderer compiles its
+  // pipelines over the next frames and frees what the compiler used.
+  if (frame_ % 64 == 0) release_free_heap();
   return !(last_scripted && options_.exit_after_frames);
 }
 

@@ -3,7 +3,6 @@
 // after a warm-up must not grow by 1 % or more. With --validation the layer must also stay silent (it keeps
 // 2-4 KB of its own per queue submission, so long runs with it need a larger --max-growth;
 // docs/reliability.md).
-#include <malloc.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -14,6 +13,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "core/free_heap.h"
 #include "gpu_session.h"
 #include "ocean/gpu/field_check.h"
 #include "ocean/gpu/gpu_ocean.h"
@@ -28,9 +28,7 @@ namespace {
 // compiler or a warm-up freed stays resident otherwise, and later allocations (a leak among them) fill it
 // without the resident set growing (15 MiB of it hid a 5 MiB leak once shader compilation grew).
 uint64_t resident_bytes() {
-#ifdef __GLIBC__
-  ::malloc_trim(0);
-#endif
+  release_free_heap();
   std::ifstream statm("/proc/self/statm");
   uint64_t size = 0, resident = 0;
   statm >> size >> resident;
@@ -45,6 +43,7 @@ struct Phase {
   long long first_bad_unit = -1;
   uint64_t rss_after_warmup = 0, rss_end = 0, rss_peak = 0;
   std::vector<double> curve_mib;  // resident set after each unit
+  std::vector<uint64_t> samples;  // the same, in bytes
   // --retain-kib: memory deliberately kept per unit, so a run can show that the check catches a leak.
   size_t retain_bytes = 0;
   std::vector<std::vector<char>> retained;
@@ -65,10 +64,17 @@ struct Phase {
       retained.emplace_back(retain_bytes, char{1});  // written, so it is resident
     }
     const uint64_t rss = resident_bytes();
+    samples.push_back(rss);
     curve_mib.push_back(double(rss) / 1048576.0);
-    if (unit + 1 == std::clamp(warmup > 0 ? warmup : total / 10, 1LL, total)) rss_after_warmup = rss;
-    if (rss_after_warmup > 0) rss_peak = std::max(rss_peak, rss);
-    rss_end = rss;
+    // With the free heap trimmed a sample holds only live memory, including what a frame has in flight
+    // (2-4 MiB at 64 x 36): each end is the least of up to 10 samples, so a leak raises the floor and a
+    // transient does not count.
+    const long long first = std::clamp(warmup > 0 ? warmup : total / 10, 1LL, total) - 1;
+    const long long window = std::clamp((total - first) / 5, 1LL, 10LL);
+    if (unit + 1 == std::min(first + window, total))
+      rss_after_warmup = *std::min_element(samples.begin() + first, samples.end());
+    if (unit >= first) rss_peak = std::max(rss_peak, rss);
+    rss_end = *std::min_element(samples.end() - std::min<long long>(window, unit + 1), samples.end());
   }
   void print() const {
     std::printf(

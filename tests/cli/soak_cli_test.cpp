@@ -9,10 +9,12 @@
 namespace lagoon::test {
 namespace {
 
-// 100 frames of 64x36, memory measured over the last 50: Lagoon keeps nothing per frame, so the run is
-// healthy at the default 1 % (the validation layer the tests run with keeps a few KB a submission, about
-// 0.1 % here). The same run keeping 0.1 MiB a frame alive (--retain-kib 100, 5 MiB over the 50 frames, 2.5 %
-// of the process) must fail: the check catches a leak of that size (issue 36).
+// 64x36 frames, memory measured after the first 50 (the least of 10 samples at each end, the free heap
+// trimmed before each): Lagoon keeps nothing per frame, but at this size what the driver and the validation
+// layer hold from one frame to the next moves the floor by up to 2 MiB of 130-170 MiB when the machine is
+// busy (measured: -0.6 to +1.9 % with two soaks at once), so the runs here are judged at 2.5 %. Keeping
+// 0.1 MiB a frame alive (--retain-kib 100) over 100 frames after the warm-up, 10 MiB, reads about +7 % and
+// must fail: the check catches a leak of that size (issue 36).
 // Under AddressSanitizer (make test-sanitize) the resident set is ASan's quarantine and shadow memory
 // (1.3 GiB here, moving by tens of MiB as freed blocks cycle through it), so it says nothing about leaks;
 // LeakSanitizer checks those there instead, and the memory verdicts are not asserted.
@@ -33,7 +35,7 @@ std::string short_soak(const std::string& extra) {
          " --width 64 --height 36 --warmup 50 --set "
          "'ocean.cascades=[{\"patch_size_m\":300,\"resolution\":64},{\"patch_size_m\":30,\"resolution\":64}]'"
          " " +
-         extra + (kResidentSetMeansNothing ? " --max-growth 1000" : "");
+         extra + (kResidentSetMeansNothing ? " --max-growth 1000" : " --max-growth 2.5");
 }
 
 TEST(SoakCli, AShortSoakChecksEveryStepAndFrameAndIsHealthy) {
@@ -50,7 +52,7 @@ TEST(SoakCli, AShortSoakChecksEveryStepAndFrameAndIsHealthy) {
 TEST(SoakCli, ALeakOfATenthOfAMiBPerFrameIsCaught) {
   if (kResidentSetMeansNothing)
     GTEST_SKIP() << "AddressSanitizer's quarantine hides a leak in the resident set";
-  auto r = lagoon(short_soak("--steps 0 --frames 100 --retain-kib 100"));
+  auto r = lagoon(short_soak("--steps 0 --frames 150 --retain-kib 100"));
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(r.output.find("NOT healthy"), std::string::npos) << r.output;
 }
