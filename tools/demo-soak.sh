@@ -34,7 +34,7 @@ awk -v frames="$frames" -v seed="$seed" -F' [|] ' '
   function pick(lo, hi, integer) { v = lo + rand() * (hi - lo); return integer ? int(v + 0.5) : sprintf("%.4g", v) }
   /^\| `[a-z_.\[\]]+` \|/ {
     path = $1; sub(/^\| `/, "", path); sub(/`$/, "", path)
-    type = $2; allowed = $5; d = $4; gsub(/`/, "", d); dflt[path] = d
+    type = $2; allowed = $5; d = $4; gsub(/`/, "", d)
     if (path ~ /^(objects|lights)/ || path ~ /^render\./) next  # none in the default scene; the window sets the size
     sub(/\[\]/, "[0]", path); dflt[path] = d
     if (allowed ~ /^one of /) {

@@ -42,8 +42,7 @@ struct Phase {
   uint64_t non_finite = 0;
   long long first_bad_unit = -1;
   uint64_t rss_after_warmup = 0, rss_end = 0, rss_peak = 0;
-  std::vector<double> curve_mib;  // resident set after each unit
-  std::vector<uint64_t> samples;  // the same, in bytes
+  std::vector<uint64_t> samples;  // resident set after each unit, bytes
   // --retain-kib: memory deliberately kept per unit, so a run can show that the check catches a leak.
   size_t retain_bytes = 0;
   std::vector<std::vector<char>> retained;
@@ -65,7 +64,6 @@ struct Phase {
     }
     const uint64_t rss = resident_bytes();
     samples.push_back(rss);
-    curve_mib.push_back(double(rss) / 1048576.0);
     // With the free heap trimmed a sample holds only live memory, including what a frame has in flight
     // (2-4 MiB at 64 x 36): each end is the least of up to 10 samples, so a leak raises the floor and a
     // transient does not count.
@@ -91,8 +89,9 @@ struct Phase {
 bool write_curve(const std::string& path, const std::vector<Phase>& phases) {
   std::string csv = "phase,unit,rss_mib\n";
   for (const Phase& p : phases)
-    for (size_t i = 0; i < p.curve_mib.size(); ++i)
-      csv += std::string(p.name) + "," + std::to_string(i + 1) + "," + std::to_string(p.curve_mib[i]) + "\n";
+    for (size_t i = 0; i < p.samples.size(); ++i)
+      csv += std::string(p.name) + "," + std::to_string(i + 1) + "," +
+             std::to_string(double(p.samples[i]) / 1048576.0) + "\n";
   std::vector<std::byte> bytes(csv.size());
   std::memcpy(bytes.data(), csv.data(), csv.size());
   if (auto r = io::write_file_atomic(path, bytes); !r) {
