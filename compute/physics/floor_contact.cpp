@@ -21,11 +21,15 @@ glm::dvec3 floor_normal(const FloorHeight& floor, double x, double z) {
 // plus twice its horizontal radius (a floor steeper than 2:1 under a body could be missed), so a floating
 // body costs one floor lookup a step.
 bool may_touch(std::span<const glm::dvec3> points, glm::dvec3 centre, const FloorHeight& floor) {
-  double lowest = 1e300, radius = 0;
-  for (const glm::dvec3& p : points)
-    lowest = std::min(lowest, p.y), radius = std::max(radius, std::hypot(p.x - centre.x, p.z - centre.z));
+  // The squared radius: this runs over every hull point at every step, and std::hypot's care for
+  // overflow costs several times the rest of the loop. Any bound on the radius gives the same contact.
+  double lowest = 1e300, radius2 = 0;
+  for (const glm::dvec3& p : points) {
+    const double dx = p.x - centre.x, dz = p.z - centre.z;
+    lowest = std::min(lowest, p.y), radius2 = std::max(radius2, dx * dx + dz * dz);
+  }
   const double under = floor(centre.x, centre.z);
-  return !std::isfinite(under) || lowest <= under + 2 * radius;
+  return !std::isfinite(under) || lowest <= under + 2 * std::sqrt(radius2);
 }
 
 }  // namespace
