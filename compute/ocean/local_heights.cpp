@@ -56,6 +56,7 @@ void LocalHeights::update(double time_s, glm::dvec2 centre) {
   for (int m = 0; m < 4; ++m) knot(k - 1 + m);
   std::array<const std::vector<double>*, 4> at{};
   for (int m = 0; m < 4; ++m) at[m] = &knot(k - 1 + m);
+  query_->prefetch(double(k + 3) * options_.knot_interval_s);  // the knot the next interval will need
   for (size_t i = 0; i < now_.size(); ++i)
     now_[i] = w[0] * (*at[0])[i] + w[1] * (*at[1])[i] + w[2] * (*at[2])[i] + w[3] * (*at[3])[i];
   // Catmull-Rom's weights sum to 1 with negative lobes of at most 1/8 per axis, so a value lies at most

@@ -77,7 +77,10 @@ WaveQuery::WaveQuery(const OceanParams& params, std::vector<CascadeSpectrum> spe
 
 WaveQuery::WaveQuery(const OceanParams& params, std::vector<CascadeSpectrum> spectra,
                      WaveQueryOptions options)
-    : params_(params), spectra_(std::move(spectra)), options_(options) {
+    : params_(params),
+      spectra_(std::move(spectra)),
+      options_(options),
+      fft_(cpu_inverse_fft(options.threads)) {
   if (params.model == SurfaceModel::Springs) {
     springs_ = std::make_unique<SpringGrid>(params);
     return;
@@ -129,11 +132,13 @@ WaveQuery::WaveQuery(const OceanParams& params, std::vector<CascadeSpectrum> spe
   bound_displacement_ = 5 * std::sqrt(2 * variance_d);  // both components: |(dx, dz)|
 }
 
-WaveQuery::~WaveQuery() = default;
+WaveQuery::~WaveQuery() {
+  if (pending_.valid()) pending_.wait();  // it reads this query
+}
 
 // The grid's heights and vertical velocities at the nodes, and their central-difference slopes (as the GPU's
 // springs_assemble.comp takes them); no horizontal motion.
-void WaveQuery::evaluate_springs(double time_s) {
+std::shared_ptr<const WaveQuery::Evaluation> WaveQuery::evaluate_springs(double time_s) {
   const std::vector<glm::dvec2> surface = springs_->surface_at(time_s);
   auto grid = std::make_unique<Grid>();
   const uint32_t n = springs_->resolution();
@@ -141,7 +146,6 @@ void WaveQuery::evaluate_springs(double time_s) {
   grid->texel_m = springs_->spacing_m();
   for (auto& f : grid->fields) f.assign(size_t{n} * n, 0.0);
   auto h = [&](uint32_t i, uint32_t j) { return surface[size_t(j % n) * n + i % n].x; };
-  max_slope_ = 0;
   for (uint32_t j = 0; j < n; ++j)
     for (uint32_t i = 0; i < n; ++i) {
       const size_t at = size_t{j} * n + i;
@@ -150,55 +154,82 @@ void WaveQuery::evaluate_springs(double time_s) {
       grid->fields[kSlopeX][at] = (h(i + 1, j) - h(i + n - 1, j)) / (2 * grid->texel_m);
       grid->fields[kSlopeZ][at] = (h(i, j + 1) - h(i, j + n - 1)) / (2 * grid->texel_m);
     }
-  grids_.clear();
-  grids_.push_back(std::move(grid));
+  auto out = std::make_shared<Evaluation>();
+  out->time_s = time_s;
+  out->grids.push_back(std::move(grid));
+  return out;
 }
 
-void WaveQuery::evaluate(double time_s) {
-  if (evaluated_ && time_s == time_s_) return;
-  if (springs_) {
-    evaluate_springs(time_s);
-    time_s_ = time_s;
-    evaluated_ = true;
-    return;
-  }
-  const InverseFft2d fft = cpu_inverse_fft(options_.threads);
-  grids_.clear();
-  max_slope_ = 0;
+std::shared_ptr<const WaveQuery::Evaluation> WaveQuery::evaluate_spectra(double time_s) const {
+  auto out = std::make_shared<Evaluation>();
+  out->time_s = time_s;
   const int fields = options_.heights_only ? kDz + 1 : kFieldCount;  // Dx, height, Dz come first
   for (const CascadeSpectrum& s : spectra_) {
     auto grid = std::make_unique<Grid>();
     grid->n = s.resolution;
     grid->texel_m = s.patch_size_m / s.resolution;
-    auto values = evaluate_fields(s, time_s, std::span(kFields, size_t(fields)), fft);
+    auto values = evaluate_fields(s, time_s, std::span(kFields, size_t(fields)), fft_);
     for (int f = 0; f < fields; ++f) grid->fields[f] = std::move(values[f]);
-    grids_.push_back(std::move(grid));
+    out->grids.push_back(std::move(grid));
   }
-  time_s_ = time_s;
-  evaluated_ = true;
   if (options_.heights_only) {
-    max_slope_ = slope_bound_;
-    return;
+    out->max_slope = slope_bound_;
+    return out;
   }
   // Largest slope of the summed surface, bounded by the sum of each cascade's largest slope.
-  for (const auto& g : grids_) {
+  for (const auto& g : out->grids) {
     double m = 0;
     for (size_t i = 0; i < g->fields[kSlopeX].size(); ++i)
       m = std::max(m, std::hypot(g->fields[kSlopeX][i], g->fields[kSlopeZ][i]));
-    max_slope_ += m;
+    out->max_slope += m;
   }
+  return out;
+}
+
+void WaveQuery::keep(std::shared_ptr<const Evaluation> evaluation) {
+  if (recent_.size() == kRecentTimes) recent_.erase(recent_.begin());
+  recent_.push_back(std::move(evaluation));
+}
+
+void WaveQuery::prefetch(double time_s) {
+  if (springs_) return;
+  if (pending_.valid() && pending_time_ == time_s) return;
+  for (const auto& e : recent_)
+    if (e->time_s == time_s) return;
+  if (pending_.valid()) keep(pending_.get());  // one at a time; keep what the last one made
+  pending_time_ = time_s;
+  pending_ = std::async(std::launch::async, [this, time_s] { return evaluate_spectra(time_s); });
+}
+
+void WaveQuery::evaluate(double time_s) {
+  if (current_ && current_->time_s == time_s) return;
+  if (springs_) {  // stepped in order: never cached
+    current_ = evaluate_springs(time_s);
+    return;
+  }
+  for (const auto& e : recent_)
+    if (e->time_s == time_s) {
+      current_ = e;
+      return;
+    }
+  if (pending_.valid() && pending_time_ == time_s) {
+    current_ = pending_.get();
+  } else {
+    current_ = evaluate_spectra(time_s);
+  }
+  keep(current_);
 }
 
 glm::dvec2 WaveQuery::displacement(glm::dvec2 p) const {
   double d[3] = {0, 0, 0};
-  for (const auto& g : grids_) g->sample(p, kDx, 3, d);
+  for (const auto& g : current_->grids) g->sample(p, kDx, 3, d);
   return params_.choppiness * glm::dvec2(d[0], d[2]);
 }
 
 std::vector<WaveSample> WaveQuery::sample(double time_s, std::span<const glm::dvec2> points) {
   evaluate(time_s);
   std::vector<WaveSample> out(points.size());
-  const double bound = bound_height_ + max_slope_ * 2 * params_.choppiness * bound_displacement_;
+  const double bound = bound_height_ + current_->max_slope * 2 * params_.choppiness * bound_displacement_;
   for (size_t i = 0; i < points.size(); ++i) {
     const glm::dvec2 q = points[i];
     // Fixed point of p = q - λD(p): the rest position whose displaced position is q.
@@ -215,11 +246,11 @@ std::vector<WaveSample> WaveQuery::sample(double time_s, std::span<const glm::dv
     s.error_bound_m = bound;
     s.converged = converged;
     if (options_.heights_only) {
-      for (const auto& g : grids_) g->sample(p, kHeight, 1, &f[kHeight]);
+      for (const auto& g : current_->grids) g->sample(p, kHeight, 1, &f[kHeight]);
       s.height = f[kHeight];
       continue;
     }
-    for (const auto& g : grids_) g->sample(p, 0, kFieldCount, f);
+    for (const auto& g : current_->grids) g->sample(p, 0, kFieldCount, f);
     s.height = f[kHeight];
     s.normal = glm::normalize(glm::dvec3(-f[kSlopeX], 1.0, -f[kSlopeZ]));
     s.velocity = {params_.choppiness * f[kVx], f[kVy], params_.choppiness * f[kVz]};

@@ -18,6 +18,7 @@
 //   time; the factor 2 covers the displacement inversion while the horizontal map contracts by 1/2 or
 //   better (away from folding crests). worst_case_bound_m() gives the rigorous Σ |a_k| E(k), far larger.
 #pragma once
+#include <future>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <limits>
@@ -27,6 +28,7 @@
 
 #include "ocean/initial_spectrum.h"
 #include "ocean/ocean_params.h"
+#include "ocean/spectral_fields.h"
 #include "ocean/springs.h"
 
 namespace lagoon::ocean {
@@ -64,10 +66,17 @@ class WaveQuery {
   WaveQuery(const OceanParams& params, std::vector<CascadeSpectrum> spectra, WaveQueryOptions options);
   ~WaveQuery();
 
-  // Samples every point at `time_s`. The fields for a new time are evaluated first (cached for the next
-  // call).
+  // Samples every point at `time_s`. The fields for a new time are evaluated first; the last few times'
+  // stay cached (kRecentTimes), so callers that return to a recent time do not pay for it again.
   std::vector<WaveSample> sample(double time_s, std::span<const glm::dvec2> points);
   WaveSample sample(double time_s, double x, double z);
+  // Starts evaluating the fields for `time_s` on another thread, so that a later sample() at that time finds
+  // them ready (or waits only for the rest). The bodies' physics asks for its next time knot this way: the
+  // FFTs run while the steps before the knot go on, instead of on one step. The answers are the same to
+  // the bit. Nothing for model springs, whose grid steps in order.
+  void prefetch(double time_s);
+
+  static constexpr size_t kRecentTimes = 5;  // the bodies' four knots in use and the next one
 
   // The interpolation bounds B_h and B_D (time-independent, 5σ) and the rigorous worst case for the height.
   double height_interpolation_bound_m() const { return bound_height_; }
@@ -76,20 +85,29 @@ class WaveQuery {
 
  private:
   struct Grid;
+  // The fields of every cascade at one time, and the largest slope the bound uses.
+  struct Evaluation {
+    double time_s = 0;
+    std::vector<std::unique_ptr<Grid>> grids;
+    double max_slope = 0;
+  };
   void evaluate(double time_s);
+  // Reads only what construction set, so it may run on another thread while the query answers.
+  std::shared_ptr<const Evaluation> evaluate_spectra(double time_s) const;
+  std::shared_ptr<const Evaluation> evaluate_springs(double time_s);
+  void keep(std::shared_ptr<const Evaluation> evaluation);
   glm::dvec2 displacement(glm::dvec2 p) const;
-
-  void evaluate_springs(double time_s);
 
   OceanParams params_;
   std::unique_ptr<SpringGrid> springs_;  // model springs: the grid itself, stepped to each time asked
   std::vector<CascadeSpectrum> spectra_;
   WaveQueryOptions options_;
-  std::vector<std::unique_ptr<Grid>> grids_;
+  InverseFft2d fft_;        // plans shared by every evaluation, on any thread
   double slope_bound_ = 0;  // Σ |a_k| |k| over every mode: no slope of the surface exceeds it
-  double time_s_ = 0;
-  bool evaluated_ = false;
-  double max_slope_ = 0;
+  std::shared_ptr<const Evaluation> current_;               // what sample() answers from
+  std::vector<std::shared_ptr<const Evaluation>> recent_;   // the last kRecentTimes, oldest first
+  std::future<std::shared_ptr<const Evaluation>> pending_;  // prefetch()'s, for pending_time_
+  double pending_time_ = 0;
   double bound_height_ = 0, bound_displacement_ = 0, worst_case_height_ = 0;
 };
 

@@ -1,0 +1,63 @@
+// WaveQuery's recent times and prefetch (ocean/wave_query.h): a time evaluated on another thread, or kept
+// from before, answers exactly as a query that evaluates it afresh. The bodies' physics relies on this: its
+// knots are prefetched, and a frame must not depend on how it was reached.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "ocean/wave_query.h"
+
+namespace lagoon::test {
+namespace {
+
+ocean::OceanParams small_sea() {
+  ocean::OceanParams params;
+  params.choppiness = 1.0;
+  params.cascades = {{120.0, 64}, {20.0, 32}};
+  return params;
+}
+
+std::vector<glm::dvec2> points() {
+  std::vector<glm::dvec2> out;
+  for (int i = 0; i < 40; ++i) out.push_back({-37.0 + 3.1 * i, 11.0 - 1.7 * i});
+  return out;
+}
+
+// The same to the bit: both are the same arithmetic on the same inputs, whichever thread ran it.
+void expect_same(const std::vector<ocean::WaveSample>& a, const std::vector<ocean::WaveSample>& b,
+                 const char* what) {
+  ASSERT_EQ(a.size(), b.size());
+  for (size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].height, b[i].height) << what << ", point " << i;
+    EXPECT_EQ(a[i].normal, b[i].normal) << what << ", point " << i;
+    EXPECT_EQ(a[i].velocity, b[i].velocity) << what << ", point " << i;
+    EXPECT_EQ(a[i].error_bound_m, b[i].error_bound_m) << what << ", point " << i;
+  }
+}
+
+TEST(WaveQueryCache, APrefetchedTimeAnswersAsAFreshQuery) {
+  const std::vector<glm::dvec2> at = points();
+  ocean::WaveQuery prefetching(small_sea());
+  prefetching.prefetch(2.6);
+  prefetching.sample(0.4, at);  // answered while 2.6 is evaluated on the other thread
+  prefetching.prefetch(3.1);    // 2.6 not asked for yet: kept, and 3.1 started
+  const auto prefetched = prefetching.sample(2.6, at);
+  const auto next = prefetching.sample(3.1, at);
+  ocean::WaveQuery fresh(small_sea());
+  expect_same(prefetched, fresh.sample(2.6, at), "t = 2.6");
+  expect_same(next, fresh.sample(3.1, at), "t = 3.1");
+  // And the answers are of their own times (the waves move between them).
+  EXPECT_NE(prefetched[0].height, next[0].height);
+}
+
+TEST(WaveQueryCache, ATimeAskedAgainAnswersAsTheFirstTime) {
+  const std::vector<glm::dvec2> at = points();
+  ocean::WaveQuery query(small_sea());
+  std::vector<std::vector<ocean::WaveSample>> first;
+  const int times = int(ocean::WaveQuery::kRecentTimes) + 3;  // some fall out of the recent ones
+  for (int k = 0; k < times; ++k) first.push_back(query.sample(0.2 * k, at));
+  for (int k = times - 1; k >= 0; --k) expect_same(query.sample(0.2 * k, at), first[size_t(k)], "again");
+}
+
+}  // namespace
+}  // namespace lagoon::test
