@@ -126,6 +126,7 @@ void DynamicLayerCpu::step(double dt, std::span<const WakeSource> sources) {
       const double sponge = dl_double::dl_sponge(from_edge, width, params_.sponge_per_s, dt);
       const size_t c = size_t(j) * n + i;
       state_[c] *= sponge;
+      if (!foam_on_) continue;
       // The cell's world position: its index within the window, from the window's first cell.
       const glm::dvec2 xz =
           glm::dvec2(window_cell(i, origin_.x, n), window_cell(j, origin_.y, n)) * params_.cell_m;

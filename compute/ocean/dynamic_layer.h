@@ -57,6 +57,8 @@ class DynamicLayerCpu {
   // The window's first cell (world cell index); cells both windows share keep their waves.
   void set_window(glm::ivec2 origin) { origin_ = origin; }
   glm::ivec2 window() const { return origin_; }
+  // Off: steps leave the foam at 0 (a user of the heights alone skips the per-cell trail work).
+  void set_foam(bool on) { foam_on_ = on; }
   void step(double dt, std::span<const WakeSource> sources);
 
   const DynamicLayerParams& params() const { return params_; }
@@ -79,6 +81,7 @@ class DynamicLayerCpu {
   glm::ivec2 origin_{0};
   std::vector<std::complex<double>> state_;  // h + i dh/dt
   std::vector<double> foam_;
+  bool foam_on_ = true;
 };
 
 }  // namespace lagoon::ocean

@@ -29,10 +29,24 @@ WakeHeights::WakeHeights(VehicleWakes wakes, uint32_t resolution)
   }
 }
 
+namespace {
+
+// The largest |h| and |dh/dt| of a layer's state.
+glm::dvec2 most_of(const std::vector<std::complex<double>>& state) {
+  glm::dvec2 most(0.0);
+  for (const std::complex<double>& c : state)
+    most = glm::max(most, glm::dvec2(std::abs(c.real()), std::abs(c.imag())));
+  return most;
+}
+
+}  // namespace
+
 void WakeHeights::restart(long long first_step) {
   for (Layer& l : layers_) {
     l.layer = std::make_unique<ocean::DynamicLayerCpu>(params_);
+    l.layer->set_foam(false);  // the bodies feel heights only
     l.before = l.layer->state();
+    l.most_before = l.most_after = glm::dvec2(0.0);
   }
   first_step_ = first_step;
   steps_done_ = first_step;
@@ -46,8 +60,10 @@ void WakeHeights::step_all(glm::dvec2 centre) {
   for (size_t h = 0; h < layers_.size(); ++h) {
     Layer& l = layers_[h];
     l.before = l.layer->state();
+    l.most_before = l.most_after;
     l.layer->set_window(origin);
     l.layer->step(wakes_.step_s(), std::span(&sources[h], 1));
+    l.most_after = most_of(l.layer->state());
   }
   ++steps_done_;
 }
@@ -63,70 +79,94 @@ void WakeHeights::advance(double t, glm::dvec2 centre, long long first_step) {
   // Cubic Hermite through (h, dh/dt) at both ends, and its derivative.
   const double h00 = 2 * s3 - 3 * s2 + 1, h10 = s3 - 2 * s2 + s, h01 = -2 * s3 + 3 * s2, h11 = s3 - s2;
   const double d00 = (6 * s2 - 6 * s) / dt, d10 = 3 * s2 - 4 * s + 1, d01 = -d00, d11 = 3 * s2 - 2 * s;
-  const int n = int(params_.n);
+  weights_ = {{h00, h10 * dt, h01, h11 * dt}, {d00, d10, d01, d11}};
   origin_ = layers_.front().layer->window();
-  for (View& v : views_) {
-    v.height.assign(size_t(n) * n, 0.0);
-    v.rate.assign(size_t(n) * n, 0.0);
-  }
-  for (const Layer& l : layers_) {
-    const std::vector<std::complex<double>>& after = l.layer->state();
-    for (int j = 0; j < n; ++j) {
-      const size_t row = size_t(((origin_.y + j) % n + n) % n) * n;
-      for (int i = 0; i < n; ++i) {
-        const size_t c = row + size_t(((origin_.x + i) % n + n) % n), w = size_t(j) * n + i;
-        const std::complex<double> a = l.before[c], b = after[c];
-        const double h = h00 * a.real() + h10 * dt * a.imag() + h01 * b.real() + h11 * dt * b.imag();
-        const double r = d00 * a.real() + d10 * a.imag() + d01 * b.real() + d11 * b.imag();
-        for (View& v : views_)
-          if (v.skip != l.vehicle) {
-            v.height[w] += h;
-            v.rate[w] += r;
-          }
-      }
-    }
+  const size_t cells = size_t(params_.n) * params_.n;
+  if (++advances_ == 0) {  // the stamps wrapped: every cell is stale
+    advances_ = 1;
+    for (View& v : views_) v.fresh.assign(cells, 0);
   }
   // A lookup weighs 16 cells by Catmull-Rom weights whose magnitudes add up to at most 1.25² (fewer
-  // near the window's edge, where the cells outside count as 0).
+  // near the window's edge, where the cells outside count as 0); a cell's sum is at most each layer's
+  // largest values at both ends, Hermite-weighted.
   for (View& v : views_) {
+    if (v.fresh.size() != cells) {
+      v.height.assign(cells, 0.0);
+      v.rate.assign(cells, 0.0);
+      v.fresh.assign(cells, 0);
+    }
     double largest = 0;
-    for (double h : v.height) largest = std::max(largest, std::abs(h));
+    for (const Layer& l : layers_)
+      if (l.vehicle != v.skip)
+        largest += std::abs(h00) * l.most_before.x + std::abs(h10 * dt) * l.most_before.y +
+                   std::abs(h01) * l.most_after.x + std::abs(h11 * dt) * l.most_after.y;
     v.highest = 1.5625 * largest;
   }
+}
+
+void WakeHeights::refresh(View& v, size_t w) const {
+  const int n = int(params_.n);
+  const int i = int(w % size_t(n)), j = int(w / size_t(n));
+  const size_t c = size_t(((origin_.y + j) % n + n) % n) * n + size_t(((origin_.x + i) % n + n) % n);
+  const Weights& q = weights_;
+  double height = 0, rate = 0;
+  for (const Layer& l : layers_) {
+    if (l.vehicle == v.skip) continue;
+    const std::complex<double> a = l.before[c], b = l.layer->state()[c];
+    height += q.h[0] * a.real() + q.h[1] * a.imag() + q.h[2] * b.real() + q.h[3] * b.imag();
+    rate += q.r[0] * a.real() + q.r[1] * a.imag() + q.r[2] * b.real() + q.r[3] * b.imag();
+  }
+  v.height[w] = height;
+  v.rate[w] = rate;
+  v.fresh[w] = advances_;
 }
 
 double WakeHeights::highest(size_t skip_vehicle) const {
   return layers_.empty() ? 0.0 : view(skip_vehicle).highest;
 }
 
-const WakeHeights::View& WakeHeights::view(size_t skip) const {
-  for (const View& v : views_)
+WakeHeights::View& WakeHeights::view(size_t skip) const {
+  for (View& v : views_)
     if (v.skip == skip) return v;
   return views_.front();  // a vehicle without a wake skips nothing
 }
 
-double WakeHeights::lookup(const std::vector<double>& field, glm::dvec2 p) const {
-  if (field.empty()) return 0.0;
+double WakeHeights::lookup(View& v, bool rate, glm::dvec2 p) const {
+  if (v.fresh.empty()) return 0.0;
   const int n = int(params_.n);
   const glm::dvec2 u = p / params_.cell_m - glm::dvec2(origin_);
   if (!(u.x >= -2 && u.y >= -2 && u.x < n + 1 && u.y < n + 1)) return 0.0;  // no wake outside the window
   const int a = int(std::floor(u.x)), b = int(std::floor(u.y));
   const std::array<double, 4> wa = ocean::catmull_rom_weights(u.x - a),
                               wb = ocean::catmull_rom_weights(u.y - b);
+  const std::vector<double>& field = rate ? v.rate : v.height;
   double sum = 0;
+  if (a >= 1 && b >= 1 && a + 2 < n && b + 2 < n) {
+    // Inside the window (nearly every lookup): no tap is cut. The same terms in the same order as below.
+    for (int j = 0; j < 4; ++j) {
+      const size_t row = size_t(b - 1 + j) * n + size_t(a - 1);
+      for (int i = 0; i < 4; ++i)
+        if (v.fresh[row + i] != advances_) refresh(v, row + i);
+      for (int i = 0; i < 4; ++i) sum += wa[i] * wb[j] * field[row + i];
+    }
+    return sum;
+  }
   for (int j = 0; j < 4; ++j) {
     const int cb = b - 1 + j;
     if (cb < 0 || cb >= n) continue;
     for (int i = 0; i < 4; ++i) {
       const int ca = a - 1 + i;
-      if (ca >= 0 && ca < n) sum += wa[i] * wb[j] * field[size_t(cb) * n + size_t(ca)];
+      if (ca < 0 || ca >= n) continue;
+      const size_t w = size_t(cb) * n + size_t(ca);
+      if (v.fresh[w] != advances_) refresh(v, w);
+      sum += wa[i] * wb[j] * field[w];
     }
   }
   return sum;
 }
 
 double WakeHeights::height(glm::dvec2 p, size_t skip_vehicle) const {
-  return layers_.empty() ? 0.0 : lookup(view(skip_vehicle).height, p);
+  return layers_.empty() ? 0.0 : lookup(view(skip_vehicle), false, p);
 }
 
 glm::dvec2 WakeHeights::slope(glm::dvec2 p) const {
@@ -137,7 +177,7 @@ glm::dvec2 WakeHeights::slope(glm::dvec2 p) const {
 }
 
 double WakeHeights::rate(glm::dvec2 p) const {
-  return layers_.empty() ? 0.0 : lookup(view(kNoVehicle).rate, p);
+  return layers_.empty() ? 0.0 : lookup(view(kNoVehicle), true, p);
 }
 
 }  // namespace lagoon::render

@@ -11,6 +11,7 @@
 #pragma once
 #include <complex>
 #include <cstddef>
+#include <cstdint>
 #include <glm/vec2.hpp>
 #include <limits>
 #include <memory>
@@ -49,23 +50,37 @@ class WakeHeights {
     size_t vehicle;
     std::unique_ptr<ocean::DynamicLayerCpu> layer;
     std::vector<std::complex<double>> before;  // (h, dh/dt) at step steps_done_ - 1, per storage index
+    // The largest |h| and |dh/dt| over the window in `before` and in the layer's state: the views' bound.
+    glm::dvec2 most_before{0.0}, most_after{0.0};
+  };
+  // The cubic Hermite weights of the last advance's time within its interval: h00, h10·dt, h01, h11·dt for
+  // the height and their time derivatives for the rate.
+  struct Weights {
+    double h[4] = {0, 0, 0, 0}, r[4] = {0, 0, 0, 0};
   };
   // The sum of the layers but vehicles[skip]'s at the last advance's time, in window order (cell (i, j) of
-  // the window at i + n j), so a lookup is a few loads: the bodies ask for thousands of points a step.
+  // the window at i + n j). Cells are summed when a lookup first needs them after an advance (`fresh` holds
+  // the advance they were summed at): the bodies ask for thousands of points a step, all near the hulls,
+  // and summing the whole window at every 120 Hz step cost more than the lookups.
   struct View {
     size_t skip;
     std::vector<double> height, rate;
+    std::vector<uint32_t> fresh;
     double highest = 0;  // bounds lookup(height, ·) from above
   };
   void restart(long long first_step);
   void step_all(glm::dvec2 centre);
-  const View& view(size_t skip) const;
-  double lookup(const std::vector<double>& field, glm::dvec2 p) const;
+  View& view(size_t skip) const;
+  // Sums cell `w` (window order) of `v` at the last advance's time.
+  void refresh(View& v, size_t w) const;
+  double lookup(View& v, bool rate, glm::dvec2 p) const;
 
   VehicleWakes wakes_;
   ocean::DynamicLayerParams params_;
   std::vector<Layer> layers_;
-  std::vector<View> views_;    // skipping none, then each layer's vehicle
+  mutable std::vector<View> views_;  // skipping none, then each layer's vehicle (summed lazily)
+  Weights weights_;
+  uint32_t advances_ = 0;      // stamps View::fresh
   glm::ivec2 origin_{0};       // the window's first cell
   long long steps_done_ = -1;  // the layers' state is at this step (the step before is in Layer::before)
   long long first_step_ = 0;
