@@ -42,6 +42,7 @@ glm::dvec2 most_of(const std::vector<std::complex<double>>& state) {
 }  // namespace
 
 void WakeHeights::restart(long long first_step) {
+  if (next_.valid()) next_.get();  // a step of the states being replaced
   for (Layer& l : layers_) {
     l.layer = std::make_unique<ocean::DynamicLayerCpu>(params_);
     l.layer->set_foam(false);  // the bodies feel heights only
@@ -52,17 +53,34 @@ void WakeHeights::restart(long long first_step) {
   steps_done_ = first_step;
 }
 
-void WakeHeights::step_all(glm::dvec2 centre) {
+glm::ivec2 WakeHeights::window_for(glm::dvec2 centre) const {
   const int half = int(params_.n / 2);
-  const glm::ivec2 origin(int(std::floor(centre.x / params_.cell_m)) - half,
-                          int(std::floor(centre.y / params_.cell_m)) - half);
-  const std::vector<ocean::WakeSource> sources = wakes_.sources(double(steps_done_) * wakes_.step_s());
+  return {int(std::floor(centre.x / params_.cell_m)) - half,
+          int(std::floor(centre.y / params_.cell_m)) - half};
+}
+
+WakeHeights::Stepped WakeHeights::copies() const {
+  Stepped out;
+  for (const Layer& l : layers_) out.push_back(std::make_unique<ocean::DynamicLayerCpu>(*l.layer));
+  return out;
+}
+
+WakeHeights::Stepped WakeHeights::step_layers(Stepped layers, glm::ivec2 origin, long long step) const {
+  const std::vector<ocean::WakeSource> sources = wakes_.sources(double(step) * wakes_.step_s());
+  for (size_t h = 0; h < layers.size(); ++h) {
+    layers[h]->set_window(origin);
+    layers[h]->step(wakes_.step_s(), std::span(&sources[h], 1));
+  }
+  return layers;
+}
+
+void WakeHeights::step_all(glm::dvec2 centre) {
+  Stepped stepped = next_.valid() ? next_.get() : step_layers(copies(), window_for(centre), steps_done_);
   for (size_t h = 0; h < layers_.size(); ++h) {
     Layer& l = layers_[h];
     l.before = l.layer->state();
     l.most_before = l.most_after;
-    l.layer->set_window(origin);
-    l.layer->step(wakes_.step_s(), std::span(&sources[h], 1));
+    l.layer = std::move(stepped[h]);
     l.most_after = most_of(l.layer->state());
   }
   ++steps_done_;
@@ -74,6 +92,11 @@ void WakeHeights::advance(double t, glm::dvec2 centre, long long first_step) {
   const long long k = std::max(wakes_.step_at(t), first_step);
   if (steps_done_ < 0 || first_step != first_step_ || steps_done_ > k + 1) restart(first_step);
   while (steps_done_ < k + 1) step_all(centre);
+  if (!next_.valid())  // copied here, so the other thread never reads a layer this one replaces
+    next_ = std::async(std::launch::async,
+                       [this, origin = window_for(centre), step = steps_done_, layers = copies()]() mutable {
+                         return step_layers(std::move(layers), origin, step);
+                       });
   const double dt = wakes_.step_s();
   const double s = std::clamp((t - double(k) * dt) / dt, 0.0, 1.0), s2 = s * s, s3 = s2 * s;
   // Cubic Hermite through (h, dh/dt) at both ends, and its derivative.

@@ -7,11 +7,13 @@
 // One layer per wake-making vehicle: the layer is linear, so the sea's wakes are the sum of the layers, and a
 // vehicle's hull can be given every wake but its own (its own depression is the water it displaces, which its
 // buoyancy already counts). Between the layer's steps the heights are Hermite-interpolated from the height
-// and its rate at both ends, so the forces on a body do not jump at every step.
+// and its rate at both ends, so the forces on a body do not jump at every step. Each step of the layers is
+// computed on another thread during the interval before it is needed (see next_).
 #pragma once
 #include <complex>
 #include <cstddef>
 #include <cstdint>
+#include <future>
 #include <glm/vec2.hpp>
 #include <limits>
 #include <memory>
@@ -28,6 +30,8 @@ class WakeHeights {
 
   // Empty (no layers) when `wakes` is; `resolution` cells per side over the wakes' window width.
   WakeHeights(VehicleWakes wakes, uint32_t resolution);
+  WakeHeights(const WakeHeights&) = delete;  // its next step's thread holds `this`
+  WakeHeights& operator=(const WakeHeights&) = delete;
 
   bool empty() const { return layers_.empty(); }
   // Brings the layers to time t, their window centred on `centre` (world x, z). The layers step from
@@ -68,7 +72,13 @@ class WakeHeights {
     std::vector<uint32_t> fresh;
     double highest = 0;  // bounds lookup(height, ·) from above
   };
+  using Stepped = std::vector<std::unique_ptr<ocean::DynamicLayerCpu>>;
   void restart(long long first_step);
+  glm::ivec2 window_for(glm::dvec2 centre) const;
+  Stepped copies() const;
+  // `layers` stepped once from step `step` with their window at `origin`. Reads nothing else of this but
+  // wakes_ and params_, which never change, so it may run on another thread.
+  Stepped step_layers(Stepped layers, glm::ivec2 origin, long long step) const;
   void step_all(glm::dvec2 centre);
   View& view(size_t skip) const;
   // Sums cell `w` (window order) of `v` at the last advance's time.
@@ -84,6 +94,10 @@ class WakeHeights {
   glm::ivec2 origin_{0};       // the window's first cell
   long long steps_done_ = -1;  // the layers' state is at this step (the step before is in Layer::before)
   long long first_step_ = 0;
+  // The layers' next step, begun on another thread when an advance has brought them to steps_done_, with
+  // the window where the bodies were then: the FFTs of a step run while the bodies take the 120 Hz steps
+  // before it, instead of on one of them. The window thus trails the bodies by one step of the layer.
+  std::future<Stepped> next_;
 };
 
 }  // namespace lagoon::render
