@@ -22,22 +22,52 @@ void LocalHeights::recentre(glm::dvec2 centre) {
   origin_ = glm::floor((centre - half) / s) * s;
   placed_ = true;
   knots_.clear();
+  ahead_index_ = std::numeric_limits<long long>::min();
+}
+
+std::vector<glm::dvec2> LocalHeights::lattice_points(size_t first, size_t last) const {
+  const size_t n = size_t(options_.points_per_side);
+  std::vector<glm::dvec2> points;
+  points.reserve(last - first);
+  for (size_t p = first; p < last; ++p)
+    points.push_back(origin_ + glm::dvec2(p % n, p / n) * options_.spacing_m);
+  return points;
 }
 
 const std::vector<double>& LocalHeights::knot(long long index) {
   for (const auto& [i, heights] : knots_)
     if (i == index) return heights;
-  const int n = options_.points_per_side;
-  std::vector<glm::dvec2> points;
-  points.reserve(size_t(n) * n);
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) points.push_back(origin_ + glm::dvec2(i, j) * options_.spacing_m);
-  const std::vector<WaveSample> samples = query_->sample(double(index) * options_.knot_interval_s, points);
-  std::vector<double> heights(samples.size());
-  for (size_t k = 0; k < samples.size(); ++k) heights[k] = samples[k].height;
+  const size_t count = size_t(options_.points_per_side) * size_t(options_.points_per_side);
+  const double time = double(index) * options_.knot_interval_s;
+  std::vector<double> heights(count);
+  size_t done = 0;
+  if (index == ahead_index_) {  // what sample_ahead already has
+    heights = std::move(ahead_);
+    done = ahead_done_;
+    ahead_index_ = std::numeric_limits<long long>::min();
+  }
+  if (done < count) {
+    const std::vector<WaveSample> samples = query_->sample(time, lattice_points(done, count));
+    for (size_t k = 0; k < samples.size(); ++k) heights[done + k] = samples[k].height;
+  }
   ++knots_sampled_;
   knots_.emplace_back(index, std::move(heights));
   return knots_.back().second;
+}
+
+void LocalHeights::sample_ahead(long long index) {
+  const size_t count = size_t(options_.points_per_side) * size_t(options_.points_per_side);
+  if (ahead_index_ != index) {
+    ahead_index_ = index;
+    ahead_.assign(count, 0.0);
+    ahead_done_ = 0;
+  }
+  const double time = double(index) * options_.knot_interval_s;
+  if (ahead_done_ == count || !query_->ready(time)) return;
+  const size_t end = std::min(count, ahead_done_ + (count + kShares - 1) / kShares);
+  const std::vector<WaveSample> samples = query_->sample(time, lattice_points(ahead_done_, end));
+  for (size_t k = 0; k < samples.size(); ++k) ahead_[ahead_done_ + k] = samples[k].height;
+  ahead_done_ = end;
 }
 
 void LocalHeights::update(double time_s, glm::dvec2 centre) {
@@ -57,6 +87,7 @@ void LocalHeights::update(double time_s, glm::dvec2 centre) {
   std::array<const std::vector<double>*, 4> at{};
   for (int m = 0; m < 4; ++m) at[m] = &knot(k - 1 + m);
   query_->prefetch(double(k + 3) * options_.knot_interval_s);  // the knot the next interval will need
+  sample_ahead(k + 3);
   for (size_t i = 0; i < now_.size(); ++i)
     now_[i] = w[0] * (*at[0])[i] + w[1] * (*at[1])[i] + w[2] * (*at[2])[i] + w[3] * (*at[3])[i];
   // Catmull-Rom's weights sum to 1 with negative lobes of at most 1/8 per axis, so a value lies at most

@@ -8,6 +8,7 @@
 #pragma once
 #include <array>
 #include <glm/vec2.hpp>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -49,7 +50,10 @@ class LocalHeights {
 
  private:
   void recentre(glm::dvec2 centre);
+  std::vector<glm::dvec2> lattice_points(size_t first, size_t last) const;
   const std::vector<double>& knot(long long index);
+  // Samples a share of knot `index`'s points if the query has its time ready (ocean/wave_query.h prefetch).
+  void sample_ahead(long long index);
 
   std::shared_ptr<WaveQuery> query_;
   LocalHeightsOptions options_;
@@ -57,6 +61,12 @@ class LocalHeights {
   bool placed_ = false;
   // The knots k - 1 .. k + 2 around the last update's time (index, heights on the lattice).
   std::vector<std::pair<long long, std::vector<double>>> knots_;
+  // The knot after the four in use, sampled a share of its points per update once the query has its time,
+  // so that no step samples a whole knot (a hull's lattice has up to thousands of points).
+  static constexpr size_t kShares = 12;  // of the 24 steps at 120 Hz between knots
+  long long ahead_index_ = std::numeric_limits<long long>::min();
+  std::vector<double> ahead_;
+  size_t ahead_done_ = 0;
   std::vector<double> now_;  // the lattice at the last update's time
   double highest_ = 0;
   int knots_sampled_ = 0;

@@ -75,6 +75,9 @@ class WaveQuery {
   // FFTs run while the steps before the knot go on, instead of on one step. The answers are the same to
   // the bit. Nothing for model springs, whose grid steps in order.
   void prefetch(double time_s);
+  // Whether sample() at `time_s` would answer without evaluating or waiting: the time is a recent one, or
+  // its prefetch has finished. Always false for model springs.
+  bool ready(double time_s) const;
 
   static constexpr size_t kRecentTimes = 5;  // the bodies' four knots in use and the next one
 

@@ -8,6 +8,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <memory>
+#include <thread>
 
 #include "physics/floating_body.h"
 #include "support/shipped_scene.h"
@@ -55,6 +57,33 @@ TEST(LocalHeights, FollowWaveQueryBetweenKnots) {
   EXPECT_GT(rms, 0.03) << "too calm a sea to tell";
   EXPECT_LT(rms_error, 0.1 * rms);
   EXPECT_LE(local.knots_sampled(), 12) << "knots are sampled again and again";
+}
+
+// A knot sampled ahead, a share of its points per update while the query has its time ready, answers exactly
+// as one sampled whole when it is needed: a lattice stepped at 120 Hz, waiting each step until the prefetched
+// time is ready (as a paced 60 Hz loop has time for), against one on its own query updated at the last time
+// only.
+TEST(LocalHeights, AKnotSampledAheadInSharesIsTheKnotSampledWhole) {
+  const scene::Scene s = shipped_scene("default");
+  const auto spectra = ocean::make_cascade_spectra(s.ocean);
+  auto query = std::make_shared<ocean::WaveQuery>(s.ocean, spectra);
+  ocean::LocalHeights stepped(query, {}), whole(s.ocean, spectra, {});
+  const glm::dvec2 centre(3.0, -7.0);
+  const double interval = ocean::LocalHeightsOptions{}.knot_interval_s;
+  double t = 2.0;
+  for (int step = 0; step < 60; ++step, t += 1.0 / 120.0) {
+    stepped.update(t, centre);
+    const double ahead = (std::floor(t / interval) + 3) * interval;
+    for (int wait = 0; wait < 5000 && !query->ready(ahead); ++wait)
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  whole.update(t - 1.0 / 120.0, centre);
+  const double spacing = ocean::LocalHeightsOptions{}.spacing_m;
+  int points = 0;
+  for (double x = centre.x - 3; x <= centre.x + 3; x += 0.37 * spacing)
+    for (double z = centre.y - 3; z <= centre.y + 3; z += 0.41 * spacing, ++points)
+      ASSERT_EQ(stepped.height(x, z), whole.height(x, z)) << x << ", " << z;
+  EXPECT_GT(points, 900);
 }
 
 // highest() bounds every height() at the last update's time (the bodies skip their dry triangles by it),
