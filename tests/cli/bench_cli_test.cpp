@@ -127,13 +127,16 @@ TEST(BenchCli, BodiesReportsTheFrameCostWithAndWithoutWakes) {
   const auto doc = nlohmann::json::parse(file);
   std::map<std::string, nlohmann::json> by_name;
   for (const auto& b : doc["benchmarks"]) by_name[b["name"]] = b;
-  for (const char* name : {"bodies/frame_mean/as_scene", "bodies/frame_worst/as_scene",
-                           "bodies/frame_mean/without_wakes", "bodies/frame_worst/without_wakes"}) {
+  for (const char* name :
+       {"bodies/frame_mean/as_scene", "bodies/frame_worst/as_scene", "bodies/frame_mean/without_wakes",
+        "bodies/frame_worst/without_wakes", "bodies/paced_mean/as_scene", "bodies/paced_worst/as_scene",
+        "bodies/paced_mean/without_wakes", "bodies/paced_worst/without_wakes"}) {
     ASSERT_TRUE(by_name.count(name)) << name << "\n" << r.output;
     expect_spread(by_name[name], 1, "wall");
   }
-  EXPECT_LE(by_name["bodies/frame_mean/as_scene"]["real_time"].get<double>(),
-            by_name["bodies/frame_worst/as_scene"]["real_time"].get<double>());
+  for (const char* pace : {"frame", "paced"})
+    EXPECT_LE(by_name[std::string("bodies/") + pace + "_mean/as_scene"]["real_time"].get<double>(),
+              by_name[std::string("bodies/") + pace + "_worst/as_scene"]["real_time"].get<double>());
   auto none =
       lagoon("bench bodies --scene " + std::string(LAGOON_SOURCE_DIR) + "/scenes/default.json --rounds 1");
   EXPECT_EQ(none.exit_code, 1) << none.output;
