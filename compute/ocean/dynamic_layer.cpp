@@ -90,14 +90,23 @@ void DynamicLayerCpu::step(double dt, std::span<const WakeSource> sources) {
   const double scale = 1.0 / (double(n) * n);
   std::vector<WakeSource> local(sources.begin(), sources.begin() + std::min(sources.size(), kMaxSources));
   for (WakeSource& s : local) s.centre = within_period(s.centre, period);
+  if (turns_dt_ != sub) {
+    turns_.resize(size_t(n) * n);
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const glm::dvec2 k = dl_double::dl_wavevector(i, j, n, params_.cell_m);
+        turns_[size_t(j) * n + i] =
+            dl_double::dl_turn(dl_double::dl_omega(glm::length(k), params_.gravity, params_.depth_m), sub);
+      }
+    turns_dt_ = sub;
+  }
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       const complex z = spectrum[size_t(j) * n + i];
       const complex zm = std::conj(spectrum[size_t((n - j) % n) * n + (n - i) % n]);
       const complex h = 0.5 * (z + zm), v = (z - zm) / complex(0, 2);
       const glm::dvec2 k = dl_double::dl_wavevector(i, j, n, params_.cell_m);
-      const glm::dvec4 turn =
-          dl_double::dl_turn(dl_double::dl_omega(glm::length(k), params_.gravity, params_.depth_m), sub);
+      const glm::dvec4& turn = turns_[size_t(j) * n + i];
       // The free evolution plus each source's response from rest (the step is linear), as on the GPU.
       glm::dvec4 hv(h.real(), h.imag(), v.real(), v.imag());
       for (uint32_t p = 0; p < parts; ++p) hv = dl_double::dl_evolve(hv, glm::dvec2(0.0), turn, decay);

@@ -13,6 +13,7 @@
 #include <complex>
 #include <cstdint>
 #include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
 #include <span>
 #include <vector>
 
@@ -82,6 +83,10 @@ class DynamicLayerCpu {
   std::vector<std::complex<double>> state_;  // h + i dh/dt
   std::vector<double> foam_;
   bool foam_on_ = true;
+  // dl_turn of every mode for substeps of turns_dt_ (the same each step while the substep is: the sin, cos,
+  // tanh and sqrt of a mode were most of a step's per-cell work).
+  std::vector<glm::dvec4> turns_;
+  double turns_dt_ = -1;
 };
 
 }  // namespace lagoon::ocean
