@@ -8,7 +8,6 @@
 #include <glm/geometric.hpp>
 #include <numbers>
 
-#include "core/background_priority.h"
 #include "ocean/band_limit.h"
 #include "ocean/catmull_rom.h"
 #include "ocean/spectral_fields.h"
@@ -200,10 +199,7 @@ void WaveQuery::prefetch(double time_s) {
     if (e->time_s == time_s) return;
   if (pending_.valid()) keep(pending_.get());  // one at a time; keep what the last one made
   pending_time_ = time_s;
-  pending_ = std::async(std::launch::async, [this, time_s] {
-    lower_this_thread_priority();
-    return evaluate_spectra(time_s);
-  });
+  pending_ = std::async(std::launch::async, [this, time_s] { return evaluate_spectra(time_s); });
 }
 
 bool WaveQuery::ready(double time_s) const {

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <span>
 
-#include "core/background_priority.h"
 #include "ocean/catmull_rom.h"
 
 namespace lagoon::render {
@@ -96,7 +95,6 @@ void WakeHeights::advance(double t, glm::dvec2 centre, long long first_step) {
   if (!next_.valid())  // copied here, so the other thread never reads a layer this one replaces
     next_ = std::async(std::launch::async,
                        [this, origin = window_for(centre), step = steps_done_, layers = copies()]() mutable {
-                         lower_this_thread_priority();
                          return step_layers(std::move(layers), origin, step);
                        });
   const double dt = wakes_.step_s();
