@@ -75,13 +75,20 @@ WakeHeights::Stepped WakeHeights::step_layers(Stepped layers, glm::ivec2 origin,
 }
 
 void WakeHeights::step_all(glm::dvec2 centre) {
-  Stepped stepped = next_.valid() ? next_.get() : step_layers(copies(), window_for(centre), steps_done_);
-  for (size_t h = 0; h < layers_.size(); ++h) {
-    Layer& l = layers_[h];
+  for (Layer& l : layers_) {
     l.before = l.layer->state();
     l.most_before = l.most_after;
-    l.layer = std::move(stepped[h]);
-    l.most_after = most_of(l.layer->state());
+  }
+  Stepped stepped;
+  if (next_.valid()) {
+    stepped = next_.get();
+  } else {  // a catch-up: the layers themselves step (no other thread holds them)
+    for (Layer& l : layers_) stepped.push_back(std::move(l.layer));
+    stepped = step_layers(std::move(stepped), window_for(centre), steps_done_);
+  }
+  for (size_t h = 0; h < layers_.size(); ++h) {
+    layers_[h].layer = std::move(stepped[h]);
+    layers_[h].most_after = most_of(layers_[h].layer->state());
   }
   ++steps_done_;
 }
