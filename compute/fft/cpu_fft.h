@@ -1,5 +1,5 @@
-// A plain CPU FFT (radix-2, double) for library code that must not depend on FFTW (WaveQuery). FFTW is
-// the reference it is tested against.
+// A plain CPU FFT (radix-2, double, several lines at once) for library code that must not depend on FFTW
+// (WaveQuery). FFTW is the reference it is tested against.
 #pragma once
 #include <complex>
 #include <cstdint>
@@ -17,7 +17,12 @@ class CpuFft2d {
   uint32_t size() const { return n_; }
 
  private:
-  void transform_line(std::complex<double>* line) const;
+  // kLanes lines transformed together, element i of line l at [i * kLanes + l].
+  static constexpr uint32_t kLanes = 16;
+  struct Lanes {
+    std::vector<double> re, im;
+  };
+  void transform_lanes(Lanes& lanes) const;
   uint32_t n_;
   std::vector<std::complex<double>> twiddles_;  // exp(±2πi q/n), q < n/2
   std::vector<uint32_t> bit_reverse_;

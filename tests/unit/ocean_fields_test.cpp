@@ -20,7 +20,7 @@ ocean::OceanParams small_ocean() {
 }
 
 TEST(CpuFft, MatchesFftw) {
-  for (uint32_t n : {2u, 64u, 256u}) {
+  for (uint32_t n : {2u, 8u, 64u, 256u, 512u}) {
     for (bool inverse : {false, true}) {
       std::mt19937 rng(n);
       std::normal_distribution<double> g;
