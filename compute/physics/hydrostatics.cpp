@@ -1,6 +1,5 @@
 #include "physics/hydrostatics.h"
 
-#include <array>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <limits>
@@ -9,21 +8,18 @@
 namespace lagoon::physics {
 namespace {
 
-struct Point {
-  glm::dvec3 p;
-  double depth;  // below the water, > 0 when submerged
-};
-
-// The pressure on one triangle whose depth is linear between its corners, all >= 0. With area vector
-// S = A·n (outward): F = −ρg·∫d dA·n = −ρg·mean(d)·S, and ∫(p − c)·d dA = A/12·(Σ rᵢdᵢ + Σrᵢ·Σdᵢ) for linear
-// r and d, so τ = −ρg/12·(Σ rᵢdᵢ + Σrᵢ·Σdᵢ) × S.
-void add_triangle(const Point& a, const Point& b, const Point& c, glm::dvec3 about, double rho_g,
-                  Wrench& out) {
-  const glm::dvec3 s = 0.5 * glm::cross(b.p - a.p, c.p - a.p);
-  const double sum_d = a.depth + b.depth + c.depth;
-  const glm::dvec3 ra = a.p - about, rb = b.p - about, rc = c.p - about;
+// The pressure on one triangle (corners a, b, c at depths da, db, dc, all >= 0) whose depth is linear
+// between its corners. With area vector S = A·n (outward): F = −ρg·∫d dA·n = −ρg·mean(d)·S, and
+// ∫(p − c)·d dA = A/12·(Σ rᵢdᵢ + Σrᵢ·Σdᵢ) for linear r and d, so τ = −ρg/12·(Σ rᵢdᵢ + Σrᵢ·Σdᵢ) × S.
+// Points and depths are passed apart: copying {point, depth} pairs through the stack stalled the loads that
+// read them back (store forwarding), a third of the step.
+void add_triangle(const glm::dvec3& a, double da, const glm::dvec3& b, double db, const glm::dvec3& c,
+                  double dc, glm::dvec3 about, double rho_g, Wrench& out) {
+  const glm::dvec3 s = 0.5 * glm::cross(b - a, c - a);
+  const double sum_d = da + db + dc;
+  const glm::dvec3 ra = a - about, rb = b - about, rc = c - about;
   out.force += -rho_g * sum_d / 3.0 * s;
-  const glm::dvec3 first_moment = ra * a.depth + rb * b.depth + rc * c.depth + (ra + rb + rc) * sum_d;
+  const glm::dvec3 first_moment = ra * da + rb * db + rc * dc + (ra + rb + rc) * sum_d;
   out.torque += glm::cross(-rho_g / 12.0 * first_moment, s);
   out.wetted_area += glm::length(s);
 }
@@ -46,29 +42,39 @@ Wrench hydrostatic_wrench(std::span<const glm::dvec3> vertices, std::span<const 
     return depth[v];
   };
   for (size_t t = 0; t + 2 < indices.size(); t += 3) {
-    if (vertices[indices[t]].y > water_top && vertices[indices[t + 1]].y > water_top &&
-        vertices[indices[t + 2]].y > water_top)
-      continue;  // dry whatever the water does
-    std::array<Point, 3> corner;
-    int under = 0;
-    for (int k = 0; k < 3; ++k) {
-      corner[k] = {vertices[indices[t + k]], depth_at(indices[t + k])};
-      under += corner[k].depth > 0 ? 1 : 0;
+    const uint32_t i0 = indices[t], i1 = indices[t + 1], i2 = indices[t + 2];
+    const glm::dvec3 &p0 = vertices[i0], &p1 = vertices[i1], &p2 = vertices[i2];
+    if (p0.y > water_top && p1.y > water_top && p2.y > water_top) continue;  // dry whatever the water does
+    const double d0 = depth_at(i0), d1 = depth_at(i1), d2 = depth_at(i2);
+    if (!(d0 > 0 || d1 > 0 || d2 > 0)) continue;
+    if (d0 > 0 && d1 > 0 && d2 > 0) {  // wholly under: the clip below would keep it as it is
+      add_triangle(p0, d0, p1, d1, p2, d2, about, rho_g, out);
+      continue;
     }
-    if (under == 0) continue;
     // Clip the triangle to depth >= 0 (Sutherland–Hodgman against one plane): at most four corners.
-    std::array<Point, 4> poly;
+    const glm::dvec3* corner[3] = {&p0, &p1, &p2};
+    const double depth_of[3] = {d0, d1, d2};
+    glm::dvec3 poly[4];
+    double poly_depth[4];
     int n = 0;
     for (int k = 0; k < 3; ++k) {
-      const Point& cur = corner[k];
-      const Point& next = corner[(k + 1) % 3];
-      if (cur.depth >= 0) poly[n++] = cur;
-      if ((cur.depth > 0) != (next.depth > 0) && cur.depth != next.depth && n < 4) {
-        const double f = cur.depth / (cur.depth - next.depth);
-        if (f > 0 && f < 1) poly[n++] = {cur.p + f * (next.p - cur.p), 0.0};
+      const int next = (k + 1) % 3;
+      const double dc = depth_of[k], dn = depth_of[next];
+      if (dc >= 0) {
+        poly[n] = *corner[k];
+        poly_depth[n++] = dc;
+      }
+      if ((dc > 0) != (dn > 0) && dc != dn && n < 4) {
+        const double f = dc / (dc - dn);
+        if (f > 0 && f < 1) {
+          poly[n] = *corner[k] + f * (*corner[next] - *corner[k]);
+          poly_depth[n++] = 0.0;
+        }
       }
     }
-    for (int k = 1; k + 1 < n; ++k) add_triangle(poly[0], poly[k], poly[k + 1], about, rho_g, out);
+    for (int k = 1; k + 1 < n; ++k)
+      add_triangle(poly[0], poly_depth[0], poly[k], poly_depth[k], poly[k + 1], poly_depth[k + 1], about,
+                   rho_g, out);
   }
   return out;
 }
