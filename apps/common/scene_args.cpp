@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "scene/model_overrides.h"
+
 namespace lagoon::cli {
 
 OptionSpec scene_option() {
@@ -34,6 +36,8 @@ std::optional<scene::Scene> load_scene_from_args(const ParsedArgs& args, const s
         return std::nullopt;
       }
     }
+    for (const std::string& note : scene::apply_model_constraints(document, extra_overrides))
+      std::fprintf(stderr, "%s: note: %s\n", program(command).c_str(), note.c_str());
     auto scene = scene::parse_scene(document, "(command line)");
     if (!scene) {
       std::fprintf(stderr, "%s: %s\n", program(command).c_str(), scene.error().message.c_str());
@@ -41,7 +45,10 @@ std::optional<scene::Scene> load_scene_from_args(const ParsedArgs& args, const s
     }
     return std::move(scene).value();
   }
-  auto scene = scene::load_scene(*args.get("scene"), extra_overrides);
+  std::vector<std::string> notes;
+  auto scene = scene::load_scene(*args.get("scene"), extra_overrides, &notes);
+  for (const std::string& note : notes)
+    std::fprintf(stderr, "%s: note: %s\n", program(command).c_str(), note.c_str());
   if (!scene) {
     std::fprintf(stderr, "%s: %s\n", program(command).c_str(), scene.error().message.c_str());
     return std::nullopt;

@@ -115,7 +115,8 @@ class Demo {
   HelmInput helm_input_;                    // the arrow keys this frame
   std::optional<HelmInput> scripted_helm_;  // a --script's helm.throttle / helm.rudder, held until changed
   std::string vehicles_key_;                // the vehicles the renderer's tracks were made for
-  double choppiness_before_sines_ = -1;     // restored when the model leaves sines (which needs 0)
+  // The fields the current model needed changed (ocean/model_constraints.h), with their values before.
+  std::vector<std::pair<double ocean::OceanParams::*, double>> replaced_for_model_;
 
   // The loop's state.
   std::array<bool, render::OceanRenderer::kSlots> slot_used_{};  // a slot's timings are readable

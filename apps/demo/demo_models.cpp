@@ -1,9 +1,11 @@
 // The demo's model selector (issue 15): the surface models side by side in one window, switched live. The
-// renderer rebuilds from the edited scene as for any panel edit. Sines moves points only vertically, so the
-// demo sets choppiness 0 while it runs and gives the old value back after.
+// renderer rebuilds from the edited scene as for any panel edit. A model's needs of the other fields
+// (ocean/model_constraints.h: sines moves points only vertically, so choppiness 0) hold while it runs, and
+// the old values come back after.
 #include <imgui.h>
 
 #include "demo.h"
+#include "ocean/model_constraints.h"
 
 namespace lagoon::demo {
 namespace {
@@ -17,14 +19,13 @@ constexpr ocean::SurfaceModel kModels[] = {ocean::SurfaceModel::Fft, ocean::Surf
 void Demo::select_model(ocean::SurfaceModel model) {
   ocean::OceanParams& o = scene_.ocean;
   if (o.model == model) return;
-  if (o.model == ocean::SurfaceModel::Sines && choppiness_before_sines_ >= 0) {
-    o.choppiness = choppiness_before_sines_;
-    choppiness_before_sines_ = -1;
-  }
-  if (model == ocean::SurfaceModel::Sines && o.choppiness != 0) {
-    choppiness_before_sines_ = o.choppiness;
-    o.choppiness = 0;
-  }
+  for (const auto& [member, value] : replaced_for_model_) o.*member = value;
+  replaced_for_model_.clear();
+  for (const ocean::ModelConstraint& c : ocean::model_constraints(model))
+    if (o.*c.member != c.value) {
+      replaced_for_model_.push_back({c.member, o.*c.member});
+      o.*c.member = c.value;
+    }
   o.model = model;
   scene_edited_ = true;
   message(std::string("model ") + ocean::to_string(model) + " (M: next model)");

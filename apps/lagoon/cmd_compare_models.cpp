@@ -13,8 +13,10 @@
 #include "gpu_session.h"
 #include "io/atomic_file.h"
 #include "model_comparison.h"
+#include "ocean/model_constraints.h"
 #include "ocean/ocean_params.h"
 #include "report_text.h"
+#include "scene/json_fields.h"
 #include "scene_args.h"
 #include "staged_output.h"
 
@@ -40,13 +42,17 @@ std::optional<std::vector<std::string>> parse_models(const std::string& list) {
   return out.empty() ? std::nullopt : std::optional(out);
 }
 
-// What compare sets for a model beyond its name: sines moves points only vertically.
+// What compare sets for a model beyond its name: what the model needs of the other fields.
 std::vector<std::string> overrides_for(const std::string& model, std::string& note) {
-  if (model == "sines") {
-    note = "choppiness 0 (the model needs it)";
-    return {"ocean.model=sines", "ocean.choppiness=0"};
+  std::vector<std::string> out{"ocean.model=" + model};
+  ocean::SurfaceModel m;
+  if (!ocean::from_string(model, m)) return out;
+  for (const ocean::ModelConstraint& c : ocean::model_constraints(m)) {
+    out.push_back(std::string("ocean.") + c.field + "=" + scene::format_number(c.value));
+    note += (note.empty() ? "" : ", ") + std::string(c.field) + " " + scene::format_number(c.value) +
+            " (the model needs it)";
   }
-  return {"ocean.model=" + model};
+  return out;
 }
 
 std::string markdown(const std::vector<ModelMeasure>& rows, const std::string& device, int rounds) {

@@ -10,6 +10,7 @@
 
 #include "ocean/gerstner.h"
 #include "ocean/initial_spectrum.h"
+#include "ocean/model_constraints.h"
 #include "ocean/sines.h"
 #include "ocean/springs.h"
 
@@ -152,10 +153,9 @@ void check_gerstner(const OceanParams& p, Problems& problems) {
 
 // Model sines: points move only vertically, and every wave with all its harmonics in one cascade's band.
 void check_sines(const OceanParams& p, Problems& problems) {
-  if (p.choppiness != 0)
-    problems.add("choppiness", num(p.choppiness) +
-                                   " must be 0 for model sines: eqs. 1-3 move the surface only "
-                                   "up and down (use model gerstner for moving crests)");
+  for (const ModelConstraint& c : model_constraints(SurfaceModel::Sines))
+    if (p.*c.member != c.value)
+      problems.add(c.field, num(p.*c.member) + " must be " + num(c.value) + " for model sines: " + c.reason);
   const std::vector<SineWaveSpec> waves = sines_wave_specs(p);
   if (waves.empty()) problems.add("sines.waves", "is empty; model sines needs at least one wave");
   for (size_t i = 0; i < waves.size(); ++i) {

@@ -15,6 +15,7 @@
 #include "ocean/springs.h"
 #include "ocean/validate.h"
 
+#include "scene/model_overrides.h"
 #include "scene/ocean_block.h"
 #include "scene/water_block.h"
 #include "scene/world_blocks.h"
@@ -166,7 +167,8 @@ void resolve_files(Scene& scene, const std::filesystem::path& folder) {
 
 }  // namespace
 
-Result<Scene> load_scene(const std::filesystem::path& path, std::span<const std::string> overrides) {
+Result<Scene> load_scene(const std::filesystem::path& path, std::span<const std::string> overrides,
+                         std::vector<std::string>* notes) {
   try {
     Diagnostics diag(path.string());
     const std::optional<std::string> text =
@@ -183,6 +185,8 @@ Result<Scene> load_scene(const std::filesystem::path& path, std::span<const std:
       diag.note_override(parse_assignment(assignment)->path, assignment);
     }
     if (!diag.ok()) return diag.to_error();
+    std::vector<std::string> constraint_notes = apply_model_constraints(*document, overrides);
+    if (notes) notes->insert(notes->end(), constraint_notes.begin(), constraint_notes.end());
     Result<Scene> scene = validate(*document, diag);
     if (scene) {
       scene->source = path;

@@ -226,8 +226,11 @@ struct Scene {
 
 // Reads and validates a scene. `overrides` are "a.b.c=value" strings applied to the JSON before validation
 // (value parsed as JSON if it parses, otherwise taken as a string), so they are validated exactly like the
-// file. On failure the error lists every problem, one per line. Never throws.
-Result<Scene> load_scene(const std::filesystem::path& path, std::span<const std::string> overrides = {});
+// file. An override that picks a surface model also sets what that model needs of the other fields
+// (scene/model_overrides.h); `notes`, when given, receives one line per such change for the user. On failure
+// the error lists every problem, one per line. Never throws.
+Result<Scene> load_scene(const std::filesystem::path& path, std::span<const std::string> overrides = {},
+                         std::vector<std::string>* notes = nullptr);
 
 // Validates an already-parsed document; `source_name` prefixes error messages. Never throws.
 Result<Scene> parse_scene(const nlohmann::json& document, const std::string& source_name);

@@ -85,5 +85,42 @@ TEST(SceneCli, FramesWriteOneNumberedPngEach) {
             2);
 }
 
+// Issue 39: `--set ocean.model=sines` on a scene written for the FFT ocean sets what sines needs
+// (choppiness 0, ocean/model_constraints.h), as the demo's selector does, and says so; a choppiness the user
+// sets too, or a scene file that picks sines itself with another choppiness, is still refused.
+TEST(SceneCli, PickingAModelWithSetAlsoSetsWhatTheModelNeedsAndSaysSo) {
+  for (const char* name : {"default", "harbour", "open-ocean", "reef-dive", "tropical-lagoon", "waterline"}) {
+    const std::string scene = shell_quote(std::string(LAGOON_SOURCE_DIR) + "/scenes/" + name + ".json");
+    const ProcessResult r = lagoon("probe --scene " + scene + " --time 1 --at 0,0 --set ocean.model=sines");
+    EXPECT_EQ(r.exit_code, 0) << name << "\n" << r.output;
+    EXPECT_NE(r.output.find("note: --set ocean.model=sines also sets ocean.choppiness "), std::string::npos)
+        << name << "\n"
+        << r.output;
+    EXPECT_NE(r.output.find("-> 0: eqs. 1-3 move the surface only up and down"), std::string::npos)
+        << r.output;
+  }
+  const std::string scene = shell_quote(std::string(LAGOON_SOURCE_DIR) + "/scenes/default.json");
+  TempDir dir;
+  const ProcessResult render =
+      lagoon("render --scene " + scene + " --set ocean.model=sines --width 32 --height 18" + " --out " +
+             shell_quote((dir / "sines.png").string()));
+  EXPECT_EQ(render.exit_code, 0) << render.output;
+  EXPECT_TRUE(fs::exists(dir / "sines.png"));
+
+  const ProcessResult chosen = lagoon(
+      "probe --scene " + scene + " --time 1 --at 0,0 --set ocean.model=sines --set ocean.choppiness=0.5");
+  EXPECT_EQ(chosen.exit_code, 1) << chosen.output;
+  EXPECT_NE(chosen.output.find("ocean.choppiness: 0.5 must be 0 for model sines"), std::string::npos)
+      << chosen.output;
+  EXPECT_EQ(chosen.output.find("also sets"), std::string::npos) << chosen.output;
+
+  std::ofstream(dir / "sines.json") << R"({"ocean": {"model": "sines", "choppiness": 0.8}})";
+  const ProcessResult written =
+      lagoon("probe --scene " + shell_quote((dir / "sines.json").string()) + " --time 1 --at 0,0");
+  EXPECT_EQ(written.exit_code, 1) << written.output;
+  EXPECT_NE(written.output.find("ocean.choppiness: 0.8 must be 0 for model sines"), std::string::npos)
+      << written.output;
+}
+
 }  // namespace
 }  // namespace lagoon::test
