@@ -112,7 +112,8 @@ gpu::FrameUniforms frame_uniforms(const FrameInputs& in) {
       .classic_ambient = glm::vec4(scene.render.classic.ambient, 0.0f),
       .classic_diffuse = glm::vec4(scene.render.classic.diffuse, scene.render.classic.shininess),
       .classic_specular = glm::vec4(scene.render.classic.specular, 0.0f),
-      .sky = light.sky_model};
+      .sky = light.sky_model,
+      .whitecaps = glm::vec4(scene.render.effects.foam ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f)};
   for (uint32_t c = 0; c < drawn; ++c) {
     const ocean::CascadeTextures tex = in.ocean.cascade(c);
     f.cascade_patch[c] = float(tex.patch_size_m);

@@ -16,7 +16,9 @@ void read_effects(ObjectReader& r, RenderEffects& e) {
   r.flag("refraction", e.refraction,
          "The floor and submerged objects seen through the surface, coloured by the water LUTs; false = "
          "the water's own colour only.");
-  r.flag("foam", e.foam, "Whitecaps from ocean.foam; false hides them.");
+  r.flag("foam", e.foam,
+         "Whitecaps from ocean.foam; false hides them, and the shore foam with them (the vehicles' foam "
+         "trails are the wakes').");
   r.flag(
       "shore_foam", e.shore_foam,
       "Foam where the floor or an object meets the surface (a shore, a hull, a buoy): waves break where "

@@ -45,13 +45,14 @@ SurfaceSample surface_sample(vec3 to_viewer) {
   LAGOON_CASCADE(2)
   LAGOON_CASCADE(3)
 #undef LAGOON_CASCADE
-  vec4 wake = wake_at(v_rest);
-  slope += wake.yz;
-  foam = max(foam, wake_foam(wake.w, v_rest));  // the hulls' trails, drawn as the sea's own foam
   // Each cascade keeps its own foam with its decay; where the cascades fold the surface only together
   // (long waves squeezing shorter ones), the whole sea's Jacobian adds the foam no single cascade shows.
   float jacobian = (1.0 + terms.x) * (1.0 + terms.y) - terms.z * terms.z;
   foam = max(foam, clamp((frame.glint.y - jacobian) / frame.glint.w, 0.0, 1.0));
+  foam *= frame.whitecaps.x;  // render.effects.foam = false hides the whitecaps
+  vec4 wake = wake_at(v_rest);
+  slope += wake.yz;
+  foam = max(foam, wake_foam(wake.w, v_rest));  // the hulls' trails, drawn as the sea's own foam
   vec3 n = normalize(vec3(-slope.x, 1.0, -slope.y));  // slope = (∂h/∂x, ∂h/∂z) summed over cascades
   vec3 v = to_viewer;
   if (dot(n, v) < 0.02) n = normalize(n + v * (0.02 - dot(n, v)));  // back-facing slopes seen at grazing angles

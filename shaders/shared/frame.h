@@ -54,6 +54,7 @@ struct FrameUniforms {
   vec4 classic_diffuse;   // rgb = diffuse reflectance, w = shininess (the exponent of the highlight)
   vec4 classic_specular;  // rgb = specular reflectance, w unused
   SkyModelGpu sky;        // the sky's radiance by direction (shared/sky_model.h), white units
+  vec4 whitecaps;         // x = 1 when the whitecaps are drawn, 0 when render.effects.foam hides them; yzw unused
 };
 
 // One point light of the scene's "lights" block (storage buffer, std430).
@@ -66,7 +67,7 @@ struct PointLightGpu {
 LAGOON_GPU_END
 
 #ifdef __cplusplus
-LAGOON_CHECK_SIZE(FrameUniforms, 720);
+LAGOON_CHECK_SIZE(FrameUniforms, 736);
 LAGOON_CHECK_OFFSET(FrameUniforms, sky, 592);
 LAGOON_CHECK_SIZE(PointLightGpu, 48);
 LAGOON_CHECK_OFFSET(FrameUniforms, camera_pos, 128);
