@@ -33,7 +33,8 @@ void read_effects(ObjectReader& r, RenderEffects& e) {
          "Suspended particles in the water, seen from under the water (underwater.particles).");
   r.flag("shafts", e.shafts,
          "Light shafts: the sun's beams, focused by the waves, seen in the water from under it (a volumetric "
-         "estimate, docs/rendering.md). Off by default: on lavapipe they cost ~100 ms a 1280x720 frame.");
+         "estimate, docs/rendering.md). Off by default: on lavapipe they cost about 35 ms of a 1280x720 "
+         "reef-dive frame (docs/rendering.md).");
   r.flag(
       "underwater", e.underwater,
       "Under the water, the water's effect on light along each view ray (attenuation, its own light, "
