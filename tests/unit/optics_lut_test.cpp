@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "optics/colour.h"
 #include "optics/four_flow.h"
 
@@ -92,6 +94,35 @@ TEST(OpticsLut, Eq22ReproducesEq20ForAGreyBottom) {
       if (direct[c] <= 1e-6) continue;  // clipped to the gamut in the LUT
       EXPECT_NEAR(via_luts[c], direct[c], 1e-9 + 1e-6 * direct[c]) << "r " << r << " h " << h;
     }
+  }
+}
+
+// Eq. 23 with γ ≠ 1: the LUT's a(r, h) is 1 − (1 − ᾱ)^γ, with ᾱ Bouguer's transmission e^{−ε l} along
+// l = √(r² + h²) averaged over 380–780 nm (trapezoids on the 5 nm grid), recomputed here from the water's
+// χ and σ at each grid point. The points are where ᾱ is mid-range, so a γ ignored or misapplied shows.
+TEST(OpticsLut, Eq23GivesTheBottomsShareWithItsGamma) {
+  for (double gamma : {0.4, 2.5}) {
+    const LutInputs in = inputs("jerlov-1C", 0.3, gamma);
+    const WaterLut lut = build(in);
+    int mid_range = 0;
+    for (uint32_t i = 0; i < lut.r_count; i += 3)
+      for (uint32_t j = 1; j < lut.h_count; j += 2) {
+        const double r = lut.r_m[i], h = lut.h_m[j], l = std::hypot(r, h);
+        auto e = explain_lut_point(in, r, h);
+        ASSERT_TRUE(e) << e.error().message;
+        double integral = 0;
+        for (size_t k = 0; k + 1 < e->spectral.size(); ++k) {
+          const auto &w0 = e->spectral[k], &w1 = e->spectral[k + 1];
+          integral += 0.5 * (std::exp(-(w0.chi + w0.sigma) * l) + std::exp(-(w1.chi + w1.sigma) * l)) *
+                      (w1.wavelength_nm - w0.wavelength_nm);
+        }
+        ASSERT_DOUBLE_EQ(e->spectral.back().wavelength_nm - e->spectral.front().wavelength_nm, 400.0);
+        const double mean = integral / 400.0, expected = 1.0 - std::pow(1.0 - mean, gamma);
+        EXPECT_NEAR(t0_at(lut, i, j)[3], expected, 1e-6 + 1e-5 * expected)
+            << "gamma " << gamma << " r " << r << " h " << h << " mean transmission " << mean;
+        mid_range += std::abs(expected - mean) > 0.01 ? 1 : 0;
+      }
+    EXPECT_GE(mid_range, 6) << "gamma " << gamma << ": too few points where gamma changes a";
   }
 }
 
