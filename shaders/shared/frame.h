@@ -54,7 +54,7 @@ struct FrameUniforms {
   vec4 classic_diffuse;   // rgb = diffuse reflectance, w = shininess (the exponent of the highlight)
   vec4 classic_specular;  // rgb = specular reflectance, w unused
   SkyModelGpu sky;        // the sky's radiance by direction (shared/sky_model.h), white units
-  vec4 whitecaps;         // x = 1 when the whitecaps are drawn, 0 when render.effects.foam hides them; yzw unused
+  vec4 whitecaps;  // x = 1 when the whitecaps are drawn, 0 when render.effects.foam hides them; yzw unused
 };
 
 // One point light of the scene's "lights" block (storage buffer, std430).
