@@ -10,7 +10,7 @@ namespace lagoon::render {
 namespace {
 
 static_assert((2 * kClipmapHalfCells) % gpu::kClipmapBlock == 0, "levels must split into whole blocks");
-static_assert(kClipmapMorphCells <= kClipmapHalfCells / 2 - 1.5f, "morph zone reaches the finer level");
+static_assert(kClipmapMorphCells <= kClipmapHalfCells / 2 - 2.5f, "morph zone reaches the finer level");
 
 // Planes a·x + b·y + c·z + d >= 0 of the view volume (0 <= z <= w, Vulkan depth).
 std::array<glm::vec4, 6> frustum_planes(const glm::mat4& m) {
@@ -28,7 +28,50 @@ bool box_may_be_visible(const std::array<glm::vec4, 6>& planes, const glm::vec3&
   return true;
 }
 
+// The 2 x 2 corner block at (x0, y0) as a fan about its middle vertex, without the odd vertices of its two
+// outer sides.
+ClipmapPatch corner_patch(int x0, int y0) {
+  const glm::ivec2 ring[8] = {{0, 0}, {1, 0}, {2, 0}, {2, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}};
+  const glm::ivec2 skip_x = x0 == 0 ? glm::ivec2(0, 1) : glm::ivec2(2, 1);
+  const glm::ivec2 skip_y = y0 == 0 ? glm::ivec2(1, 0) : glm::ivec2(1, 2);
+  std::vector<glm::ivec2> polygon;
+  for (const glm::ivec2& v : ring)
+    if (v != skip_x && v != skip_y) polygon.push_back(glm::ivec2(x0, y0) + v);
+  ClipmapPatch patch{.first = {x0, y0}, .triangles = {}};
+  const glm::ivec2 middle(x0 + 1, y0 + 1);
+  for (size_t k = 0; k < polygon.size(); ++k)
+    patch.triangles.insert(patch.triangles.end(), {polygon[k], polygon[(k + 1) % polygon.size()], middle});
+  return patch;
+}
+
 }  // namespace
+
+ClipmapPatch clipmap_patch(int i, int j, int cells, bool stitched) {
+  const int n = cells;
+  if (stitched) {
+    const bool corner_x = i < 2 || i >= n - 2, corner_y = j < 2 || j >= n - 2;
+    if (corner_x && corner_y) return corner_patch(i < 2 ? 0 : n - 2, j < 2 ? 0 : n - 2);
+    const int a = i & ~1, b = j & ~1;  // a pair along the edge starts at an even cell
+    using V = glm::ivec2;
+    if (j == 0)
+      return {{a, 0},
+              {V(a, 0), V(a + 2, 0), V(a + 1, 1), V(a, 0), V(a + 1, 1), V(a, 1), V(a + 2, 0), V(a + 2, 1),
+               V(a + 1, 1)}};
+    if (j == n - 1)
+      return {{a, n - 1},
+              {V(a + 2, n), V(a, n), V(a + 1, n - 1), V(a, n - 1), V(a + 1, n - 1), V(a, n), V(a + 1, n - 1),
+               V(a + 2, n - 1), V(a + 2, n)}};
+    if (i == 0)
+      return {{0, b},
+              {V(0, b + 2), V(0, b), V(1, b + 1), V(0, b), V(1, b), V(1, b + 1), V(1, b + 1), V(1, b + 2),
+               V(0, b + 2)}};
+    if (i == n - 1)
+      return {{n - 1, b},
+              {V(n, b), V(n, b + 2), V(n - 1, b + 1), V(n - 1, b), V(n, b), V(n - 1, b + 1), V(n - 1, b + 1),
+               V(n, b + 2), V(n - 1, b + 2)}};
+  }
+  return {{i, j}, {{i, j}, {i + 1, j}, {i + 1, j + 1}, {i, j}, {i + 1, j + 1}, {i, j + 1}}};
+}
 
 SurfaceGrid surface_grid_parameters(const glm::vec3& camera, float reach_m) {
   // Continuous level of detail b: its integer part picks the finest lattice, its fraction fades that
@@ -73,9 +116,12 @@ SurfaceGrid surface_grid(const glm::vec3& camera, float reach_m, const glm::mat4
       for (int j = b0.y; j < b0.y + gpu::kClipmapBlock; ++j)
         for (int i = b0.x; i < b0.x + gpu::kClipmapBlock; ++i) {
           if (!gpu::clipmap_cell_visible(level, {i, j}, cam, g.grid)) continue;  // the finer level's
-          const uint32_t v00 = base + uint32_t(j) * side + uint32_t(i), v10 = v00 + 1, v01 = v00 + side,
-                         v11 = v01 + 1;
-          g.indices.insert(g.indices.end(), {v00, v10, v11, v00, v11, v01});
+          // A patch of several cells is listed once, with its first cell (in the same block: pairs and
+          // corners start at even cells).
+          const ClipmapPatch patch = clipmap_patch(i, j, cells, level + 1 < levels);
+          if (patch.first != glm::ivec2(i, j)) continue;
+          for (const glm::ivec2& v : patch.triangles)
+            g.indices.push_back(base + uint32_t(v.y) * side + uint32_t(v.x));
         }
     }
   }

@@ -6,7 +6,8 @@
 // vertex is also a vertex of level i + 1. Level i > 0 skips the cells the finer level covers; the finer
 // square always lies on the coarser lattice, so the rings tile the plane without gaps or overlap.
 //
-// Near its outer edge a level morphs into the next coarser one (clipmap.z = width of that zone in cells):
+// Near its outer edge a level morphs into the next coarser one (clipmap.z = width of that zone in cells,
+// ending a cell inside the edge):
 // odd vertices move to the middle of the coarse edge they sit on, so at the edge the fine mesh is the coarse
 // mesh (no cracks) and cells that change level as the camera moves look the same in both (no popping).
 // clipmap.y fades the finest level into the next as the camera rises (render/surface_grid.h).
@@ -60,10 +61,13 @@ LAGOON_FN ClipmapVertex clipmap_vertex(int level, ivec2 vertex, vec2 camera, vec
   vec2 odd = vec2(vertex.x & 1, vertex.y & 1) * v.spacing;
   v.coarse_a = v.rest - odd;
   v.coarse_b = v.rest + odd;
-  // Chebyshev distance in cells; the level's edge is at least m - 1 cells from the camera.
+  // Chebyshev distance in cells; the level's edge is at least m - 1 cells from the camera, the row inside it
+  // at least m - 2. Both are wholly morphed, so the edge's stitched triangles (render/surface_grid.h:
+  // clipmap_patch) lie on the coarser mesh, as the plain cells there do: the two triangulations are the
+  // same surface and a cell that changes from one to the other as the level's centre snaps does not pop.
   vec2 d = abs(v.rest - camera) / v.spacing;
   float width = clipmap.z;
-  v.morph = clamp((max(d.x, d.y) - (float(m - 1) - width)) / width, 0.0f, 1.0f);
+  v.morph = clamp((max(d.x, d.y) - (float(m - 2) - width)) / width, 0.0f, 1.0f);
   if (level == 0) v.morph = max(v.morph, clipmap.y);
   return v;
 }

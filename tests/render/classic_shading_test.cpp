@@ -113,8 +113,8 @@ TEST_F(ClassicShading, TheHighlightIsTheHalfVectorsPowerWhereAndAsWideAsTheFormu
   scene::Scene scene;
   const io::Image8 image = render_with(ctx(), sets, &scene);
   ASSERT_EQ(image.width, kW);
-  // Where the mesh is drawn (the clipmap leaves pixel-sized holes at some T-junctions between its rings, see
-  // the closing note of issue 39's stop): those pixels show the sky, not the water.
+  // Where the mesh is drawn: this test found two pixel-sized holes at T-junctions between the clipmap's rings
+  // (docs/rendering.md, "No T-junctions"), where the sky showed through; they are counted and skipped.
   auto renderer = render::OceanRenderer::create(ctx(), scene);
   ASSERT_TRUE(renderer) << renderer.error().message;
   const render::OceanRenderer::SurfaceAov drawn_water = (*renderer)->render_surface_aov(scene);
