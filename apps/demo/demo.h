@@ -22,6 +22,7 @@
 #include "optics/lut.h"
 #include "parameter_panel.h"
 #include "render/ocean_renderer.h"
+#include "resolution_scale.h"
 #include "vk/buffer.h"
 #include "vk/frame_ring.h"
 #include "window/swapchain.h"
@@ -56,8 +57,9 @@ class Demo {
   scene::Scene advance_time(float dt);
   std::optional<uint32_t> acquire_image(uint32_t slot);
   void record_to_swapchain(VkCommandBuffer cmd, const scene::Scene& frame_scene, uint32_t slot,
-                           uint32_t image);
+                           uint32_t image, bool full_size);
   std::string take_screenshot_request(bool last_scripted);
+  void draw_resolution();
   vk::Buffer record_screenshot_copy(VkCommandBuffer cmd, uint32_t image);
   void submit_and_present(uint32_t slot, uint32_t image);
   void finish_screenshot(const std::string& path, const vk::Buffer& pixels);
@@ -135,6 +137,8 @@ class Demo {
   char save_path_[512] = "lagoon-scene.json";
   std::string status_;
   std::deque<float> frame_ms_;
+  ResolutionScale resolution_;        // live frames' size (the timing tab and --target-fps set it)
+  bool last_frame_full_size_ = true;  // the frame tick() just timed was not drawn at resolution_
   std::vector<vk::PassTime> timings_;
   std::optional<ocean::WaveSample> probe_;
   glm::dvec2 probe_xz_{0};

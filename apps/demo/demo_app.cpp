@@ -46,6 +46,7 @@ int Demo::start() {
   }
   ctx_ = std::move(*ctx);
   vsync_ = options_.vsync;
+  resolution_.set_target_fps(options_.target_fps);
   show_ui_ = !options_.hide_ui;
   time_s_ = scene_.time_s;
   camera_.emplace(scene_.camera);
@@ -80,6 +81,11 @@ void Demo::print_summary() const {
   std::printf("lagoon-demo: %lld frames at %ux%u on %s; median frame time %.1f ms\n", frame_,
               swapchain_->extent().width, swapchain_->extent().height, ctx_->device_info().name.c_str(),
               times[times.size() / 2]);
+  if (!options_.frames && resolution_.target_fps() > 0) {
+    const VkExtent2D drawn = resolution_.render_extent(swapchain_->extent());
+    std::printf("lagoon-demo: live frames drawn at %.0f %% of the window (%ux%u) for %g frames a second\n",
+                100.0 * resolution_.scale(), drawn.width, drawn.height, resolution_.target_fps());
+  }
   print_helm();
 }
 

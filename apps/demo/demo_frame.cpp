@@ -24,6 +24,7 @@ bool Demo::frame() {
   if (swapchain_dirty_ || fb.width != swapchain_->extent().width || fb.height != swapchain_->extent().height)
     recreate_swapchain();
   const float dt = tick();
+  if (!last_frame_full_size_) resolution_.observe(double(dt) * 1000.0);
   update_ui(dt);
   const scene::Scene frame_scene = advance_time(dt);
 
@@ -37,10 +38,12 @@ bool Demo::frame() {
     swapchain_dirty_ = true;
     return true;
   }
-  record_to_swapchain(cmd, frame_scene, slot, *image);
-
   const bool last_scripted = options_.frames && frame_ + 1 == *options_.frames;
   const std::string screenshot = take_screenshot_request(last_scripted);
+  // Scripted runs (what the tests compare with the CLI) and screenshots are drawn at the window's size.
+  last_frame_full_size_ = options_.frames || !screenshot.empty() || resolution_.target_fps() == 0;
+  record_to_swapchain(cmd, frame_scene, slot, *image, last_frame_full_size_);
+
   vk::Buffer pixels;
   if (!screenshot.empty()) pixels = record_screenshot_copy(cmd, *image);
   submit_and_present(slot, *image);
@@ -105,11 +108,13 @@ std::optional<uint32_t> Demo::acquire_image(uint32_t slot) {
 }
 
 // The renderer's frame, then the rendered frame into the swapchain image (a blit converts RGBA to the
-// swapchain's BGRA), then the UI over it, which leaves the image ready to present.
+// swapchain's BGRA, and stretches a frame drawn at the dynamic resolution to the window), then the UI over
+// it, which leaves the image ready to present.
 void Demo::record_to_swapchain(VkCommandBuffer cmd, const scene::Scene& frame_scene, uint32_t slot,
-                               uint32_t image) {
+                               uint32_t image, bool full_size) {
   const VkExtent2D extent = swapchain_->extent();
-  const vk::Image& colour = renderer_->record(cmd, frame_scene, extent, slot);
+  const VkExtent2D drawn = full_size ? extent : resolution_.render_extent(extent);
+  const vk::Image& colour = renderer_->record(cmd, frame_scene, drawn, slot);
   slot_used_[slot] = true;
 
   const VkImage target = swapchain_->image(image);
@@ -121,11 +126,13 @@ void Demo::record_to_swapchain(VkCommandBuffer cmd, const scene::Scene& frame_sc
   vk::image_barrier(cmd, target, whole, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                     acquired_stage, vk::access::kTransferWrite);
   const VkImageBlit region{.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
-                           .srcOffsets = {{0, 0, 0}, {int32_t(extent.width), int32_t(extent.height), 1}},
+                           .srcOffsets = {{0, 0, 0}, {int32_t(drawn.width), int32_t(drawn.height), 1}},
                            .dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
                            .dstOffsets = {{0, 0, 0}, {int32_t(extent.width), int32_t(extent.height), 1}}};
-  vkCmdBlitImage(cmd, colour.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target,
-                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region, VK_FILTER_NEAREST);
+  vkCmdBlitImage(
+      cmd, colour.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target,
+      VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region,
+      drawn.width == extent.width && drawn.height == extent.height ? VK_FILTER_NEAREST : VK_FILTER_LINEAR);
   vk::image_barrier(cmd, colour.handle(), colour.all_subresources(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                     VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, vk::access::kTransferRead,
                     vk::access::kColorAttachmentWrite);

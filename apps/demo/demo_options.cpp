@@ -39,6 +39,11 @@ const cli::CommandSpec& demo_command() {
                   {.name = "fps",
                    .value_name = "F",
                    .help = "time step of --frames, frames per second (default 30)"},
+                  {.name = "target-fps",
+                   .value_name = "F",
+                   .help = "dynamic resolution: draw live frames at the fraction of the window that holds F "
+                           "frames a second, stretched to the window (default 15; 0 = always full size; "
+                           "--frames runs and screenshots are full size)"},
                   {.name = "screenshot",
                    .value_name = "FILE",
                    .help = "write the last of --frames (the first frame without --frames) to this PNG"},
@@ -110,6 +115,12 @@ Result<void> read_options(const cli::ParsedArgs& parsed, DemoOptions& o) {
     if (!f || *f <= 0 || *f > 1000)
       return make_error("--fps " + *v + " must be a number of frames per second in (0, 1000]");
     o.fps = *f;
+  }
+  if (auto v = parsed.get("target-fps")) {
+    const auto f = cli::parse_number(*v);
+    if (!f || *f < 0 || *f > 240)
+      return make_error("--target-fps " + *v + " must be a number of frames per second from 0 (off) to 240");
+    o.target_fps = *f;
   }
   o.width = *width > 0 ? uint32_t(*width) : 0;
   o.height = *height > 0 ? uint32_t(*height) : 0;

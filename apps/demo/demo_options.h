@@ -23,6 +23,9 @@ struct DemoOptions {
   uint32_t width = 1280, height = 720;  // window size; default the scene's render size
   std::optional<long long> frames;      // run exactly this many frames at a fixed step of 1/fps
   double fps = 30.0;
+  // Live frames are drawn at the fraction of the window's size that holds this frame rate (0: always the
+  // window's size); --frames runs and screenshots are always at the window's size (resolution_scale.h).
+  double target_fps = 15.0;
   std::string screenshot;  // PNG of the last of --frames (or of the first frame without --frames)
   std::string save_scene;  // the scene as JSON after the last of --frames
   bool hide_ui = false;

@@ -2,6 +2,7 @@
 // with its controls and tabs, and the wave probe under the cursor.
 #include <imgui.h>
 
+#include <cmath>
 #include <ctime>
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -121,6 +122,19 @@ void Demo::draw_ui() {
   ImGui::End();
 }
 
+// Dynamic resolution: the size live frames are drawn at, and the frame rate it holds (resolution_scale.h).
+void Demo::draw_resolution() {
+  const VkExtent2D window = swapchain_->extent(), drawn = resolution_.render_extent(window);
+  if (resolution_.target_fps() == 0)
+    ImGui::Text("drawn at the window's size, %u x %u", window.width, window.height);
+  else
+    ImGui::Text("drawn at %.0f %% of the window: %u x %u of %u x %u", 100.0 * resolution_.scale(),
+                drawn.width, drawn.height, window.width, window.height);
+  float fps = float(resolution_.target_fps());
+  if (ImGui::SliderFloat("target fps (0: full size)", &fps, 0.0f, 60.0f, "%.0f"))
+    resolution_.set_target_fps(std::round(fps));
+}
+
 void Demo::draw_help() {
   ImGui::SetNextWindowPos(ImVec2(40, 40), ImGuiCond_FirstUseEver);
   ImGui::Begin("Keys (F1)", &show_help_, ImGuiWindowFlags_AlwaysAutoResize);
@@ -175,6 +189,7 @@ void Demo::draw_tabs() {
     ImGui::EndTabItem();
   }
   if (ImGui::BeginTabItem("timing")) {
+    draw_resolution();
     frame_time_graph(frame_ms_);
     pass_time_bars(timings_);
     ImGui::EndTabItem();

@@ -59,6 +59,41 @@ TEST_F(Demo, SigtermClosesTheDemoLikeItsWindowButton) {
   EXPECT_NE(d.output.find(" frames at 160x90 on "), std::string::npos) << d.output;
 }
 
+// Dynamic resolution (issue 34, apps/demo/resolution_scale.h): live frames are drawn at the fraction of the
+// window that holds --target-fps and stretched to it (a linear blit the validation layer checks). A target
+// out of reach takes them to the floor, a quarter of the window; scripted runs stay at full size (the other
+// tests compare them with the CLI's renders).
+TEST_F(Demo, LiveFramesAreDrawnAtTheFractionOfTheWindowThatHoldsTheTargetRate) {
+  auto d = run_process(shell_quote(LAGOON_XVFB_RUN) + " -a sh -c " +
+                       shell_quote(shell_quote(LAGOON_DEMO_BINARY) + " --scene " + shell_quote(kScene) +
+                                   " --width 320 --height 180 --no-vsync --target-fps 240 & p=$!; sleep 6; "
+                                   "kill -TERM $p; wait $p"));
+  EXPECT_EQ(d.exit_code, 0) << d.output;
+  // "lagoon-demo: N frames at 320x180 on DEVICE; median frame time X ms", then the live frames' size.
+  const size_t median_at = d.output.find("median frame time ");
+  const size_t drawn_at = d.output.find("live frames drawn at ");
+  ASSERT_NE(median_at, std::string::npos) << d.output;
+  ASSERT_NE(drawn_at, std::string::npos) << d.output;
+  const double median_ms = std::stod(d.output.substr(median_at + 18));
+  const int percent = std::stoi(d.output.substr(drawn_at + 21));
+  EXPECT_NE(d.output.find("% of the window", drawn_at), std::string::npos) << d.output;
+  // Frames well over the target's 4.2 ms must have been made smaller; lavapipe's (about 100 ms at any size,
+  // the ocean step being most of it) go to the floor, 80 x 45.
+  if (median_ms > 1.5 * 1000.0 / 240.0) {
+    EXPECT_LT(percent, 100) << d.output;
+  }
+  if (d.output.find("llvmpipe") != std::string::npos) {
+    EXPECT_NE(d.output.find("live frames drawn at 25 % of the window (80x45) for 240 frames a second"),
+              std::string::npos)
+        << d.output;
+  }
+  auto bad = demo("--target-fps -1 --frames 1 --exit");
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+  EXPECT_NE(bad.output.find("--target-fps -1 must be a number of frames per second from 0 (off) to 240"),
+            std::string::npos)
+      << bad.output;
+}
+
 TEST_F(Demo, ScreenshotMatchesTheCliRenderOfTheSameSceneAndTime) {
   // 30 frames from t = 6 s at 1/30 s: the last is at 6 + 29/30 s.
   auto d = demo("--scene " + shell_quote(kScene) + " --width 320 --height 180 --frames 30 --screenshot " +
