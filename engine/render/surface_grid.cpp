@@ -28,20 +28,30 @@ bool box_may_be_visible(const std::array<glm::vec4, 6>& planes, const glm::vec3&
   return true;
 }
 
+ClipmapPatch patch(glm::ivec2 first, std::initializer_list<glm::ivec2> corners) {
+  ClipmapPatch p{.first = first};
+  for (const glm::ivec2& c : corners) p.corners[p.count++] = c;
+  return p;
+}
+
 // The 2 x 2 corner block at (x0, y0) as a fan about its middle vertex, without the odd vertices of its two
 // outer sides.
 ClipmapPatch corner_patch(int x0, int y0) {
   const glm::ivec2 ring[8] = {{0, 0}, {1, 0}, {2, 0}, {2, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}};
   const glm::ivec2 skip_x = x0 == 0 ? glm::ivec2(0, 1) : glm::ivec2(2, 1);
   const glm::ivec2 skip_y = y0 == 0 ? glm::ivec2(1, 0) : glm::ivec2(1, 2);
-  std::vector<glm::ivec2> polygon;
+  std::array<glm::ivec2, 6> polygon;
+  size_t sides = 0;
   for (const glm::ivec2& v : ring)
-    if (v != skip_x && v != skip_y) polygon.push_back(glm::ivec2(x0, y0) + v);
-  ClipmapPatch patch{.first = {x0, y0}, .triangles = {}};
+    if (v != skip_x && v != skip_y) polygon[sides++] = glm::ivec2(x0, y0) + v;
+  ClipmapPatch fan{.first = {x0, y0}};
   const glm::ivec2 middle(x0 + 1, y0 + 1);
-  for (size_t k = 0; k < polygon.size(); ++k)
-    patch.triangles.insert(patch.triangles.end(), {polygon[k], polygon[(k + 1) % polygon.size()], middle});
-  return patch;
+  for (size_t k = 0; k < sides; ++k) {
+    fan.corners[fan.count++] = polygon[k];
+    fan.corners[fan.count++] = polygon[(k + 1) % sides];
+    fan.corners[fan.count++] = middle;
+  }
+  return fan;
 }
 
 }  // namespace
@@ -54,23 +64,19 @@ ClipmapPatch clipmap_patch(int i, int j, int cells, bool stitched) {
     const int a = i & ~1, b = j & ~1;  // a pair along the edge starts at an even cell
     using V = glm::ivec2;
     if (j == 0)
-      return {{a, 0},
-              {V(a, 0), V(a + 2, 0), V(a + 1, 1), V(a, 0), V(a + 1, 1), V(a, 1), V(a + 2, 0), V(a + 2, 1),
-               V(a + 1, 1)}};
+      return patch({a, 0}, {V(a, 0), V(a + 2, 0), V(a + 1, 1), V(a, 0), V(a + 1, 1), V(a, 1), V(a + 2, 0),
+                            V(a + 2, 1), V(a + 1, 1)});
     if (j == n - 1)
-      return {{a, n - 1},
-              {V(a + 2, n), V(a, n), V(a + 1, n - 1), V(a, n - 1), V(a + 1, n - 1), V(a, n), V(a + 1, n - 1),
-               V(a + 2, n - 1), V(a + 2, n)}};
+      return patch({a, n - 1}, {V(a + 2, n), V(a, n), V(a + 1, n - 1), V(a, n - 1), V(a + 1, n - 1), V(a, n),
+                                V(a + 1, n - 1), V(a + 2, n - 1), V(a + 2, n)});
     if (i == 0)
-      return {{0, b},
-              {V(0, b + 2), V(0, b), V(1, b + 1), V(0, b), V(1, b), V(1, b + 1), V(1, b + 1), V(1, b + 2),
-               V(0, b + 2)}};
+      return patch({0, b}, {V(0, b + 2), V(0, b), V(1, b + 1), V(0, b), V(1, b), V(1, b + 1), V(1, b + 1),
+                            V(1, b + 2), V(0, b + 2)});
     if (i == n - 1)
-      return {{n - 1, b},
-              {V(n, b), V(n, b + 2), V(n - 1, b + 1), V(n - 1, b), V(n, b), V(n - 1, b + 1), V(n - 1, b + 1),
-               V(n, b + 2), V(n - 1, b + 2)}};
+      return patch({n - 1, b}, {V(n, b), V(n, b + 2), V(n - 1, b + 1), V(n - 1, b), V(n, b), V(n - 1, b + 1),
+                                V(n - 1, b + 1), V(n, b + 2), V(n - 1, b + 2)});
   }
-  return {{i, j}, {{i, j}, {i + 1, j}, {i + 1, j + 1}, {i, j}, {i + 1, j + 1}, {i, j + 1}}};
+  return patch({i, j}, {{i, j}, {i + 1, j}, {i + 1, j + 1}, {i, j}, {i + 1, j + 1}, {i, j + 1}});
 }
 
 SurfaceGrid surface_grid_parameters(const glm::vec3& camera, float reach_m) {
@@ -120,7 +126,7 @@ SurfaceGrid surface_grid(const glm::vec3& camera, float reach_m, const glm::mat4
           // corners start at even cells).
           const ClipmapPatch patch = clipmap_patch(i, j, cells, level + 1 < levels);
           if (patch.first != glm::ivec2(i, j)) continue;
-          for (const glm::ivec2& v : patch.triangles)
+          for (const glm::ivec2& v : patch.triangles())
             g.indices.push_back(base + uint32_t(v.y) * side + uint32_t(v.x));
         }
     }

@@ -1,7 +1,9 @@
 // Parameters and draw ranges of the ocean surface's clipmap mesh (shaders/shared/clipmap.h) for one camera.
 #pragma once
+#include <array>
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <span>
 #include <vector>
 
 namespace lagoon::render {
@@ -22,8 +24,12 @@ struct SurfaceGrid {
 // fan about its middle vertex, so the finer edge's odd vertices (morphed onto the coarser edge's middle,
 // shared/clipmap.h) are not used and every edge of the mesh is shared by two triangles.
 struct ClipmapPatch {
-  glm::ivec2 first{0};                // the patch's first cell: surface_grid lists it with this cell
-  std::vector<glm::ivec2> triangles;  // lattice vertices of the level, three per triangle, counter-clockwise
+  glm::ivec2 first{0};  // the patch's first cell: surface_grid lists it with this cell
+  // Lattice vertices of the level, three per triangle, counter-clockwise: at most a corner's six triangles.
+  // Held in place, not on the heap: surface_grid asks for every cell of every level each frame.
+  std::array<glm::ivec2, 18> corners{};
+  uint32_t count = 0;
+  std::span<const glm::ivec2> triangles() const { return {corners.data(), count}; }
 };
 // Cell (i, j) of a level of `cells` x `cells` (2m, even).
 ClipmapPatch clipmap_patch(int i, int j, int cells, bool stitched);

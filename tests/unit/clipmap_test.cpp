@@ -74,15 +74,15 @@ SurfaceSample surface_at(vec2 p, vec2 camera, const render::SurfaceGrid& g, bool
       if (!morph) v.morph = 0.0f;
       return gpu::clipmap_displaced(v).y;
     };
-    for (size_t t = 0; t < patch.triangles.size(); t += 3) {
-      const vec2 a(patch.triangles[t]), b(patch.triangles[t + 1]), c(patch.triangles[t + 2]);
+    for (size_t t = 0; t < patch.triangles().size(); t += 3) {
+      const vec2 a(patch.triangles()[t]), b(patch.triangles()[t + 1]), c(patch.triangles()[t + 2]);
       const float area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
       const float wb = ((f.x - a.x) * (c.y - a.y) - (f.y - a.y) * (c.x - a.x)) / area;
       const float wc = ((b.x - a.x) * (f.y - a.y) - (b.y - a.y) * (f.x - a.x)) / area;
       const float wa = 1.0f - wb - wc;
       if (wa < -1e-5f || wb < -1e-5f || wc < -1e-5f) continue;
-      out.height = wa * height(patch.triangles[t]) + wb * height(patch.triangles[t + 1]) +
-                   wc * height(patch.triangles[t + 2]);
+      out.height = wa * height(patch.triangles()[t]) + wb * height(patch.triangles()[t + 1]) +
+                   wc * height(patch.triangles()[t + 2]);
       break;
     }
   }
