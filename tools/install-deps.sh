@@ -25,6 +25,8 @@ if [[ $profile == all ]]; then
   packages+=(
     # the validation layer every Vulkan test runs with, SPIR-V tools, the style check
     vulkan-validationlayers spirv-tools clang-format
+    # tools/convert-compass.py and its test
+    python3
     # the demo: window and panel
     libglfw3-dev libimgui-dev
     # tests and benchmarks; clang-14 with libFuzzer's runtime builds the fuzz targets (tests/fuzz)

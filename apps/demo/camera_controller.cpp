@@ -3,12 +3,15 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/compass.h"
+
 namespace lagoon::demo {
 namespace {
 
 glm::vec3 direction(float yaw_deg, float pitch_deg) {
-  const float yaw = glm::radians(yaw_deg), pitch = glm::radians(pitch_deg);
-  return {std::sin(yaw) * std::cos(pitch), std::sin(pitch), std::cos(yaw) * std::cos(pitch)};
+  const float pitch = glm::radians(pitch_deg);
+  const glm::vec2 ahead = glm::vec2(compass::toward_deg(yaw_deg)) * std::cos(pitch);
+  return {ahead.x, std::sin(pitch), ahead.y};
 }
 
 }  // namespace
@@ -16,7 +19,7 @@ glm::vec3 direction(float yaw_deg, float pitch_deg) {
 CameraController::CameraController(const scene::Camera& camera, Mode mode)
     : mode_(mode), position_(camera.position), target_(camera.look_at) {
   const glm::vec3 d = glm::normalize(camera.look_at - camera.position);
-  yaw_deg_ = glm::degrees(std::atan2(d.x, d.z));
+  yaw_deg_ = float(glm::degrees(compass::azimuth_of({d.x, d.z})));
   pitch_deg_ = std::clamp(glm::degrees(std::asin(std::clamp(d.y, -1.0f, 1.0f))), -kMaxPitchDeg, kMaxPitchDeg);
   speed_ = std::clamp(glm::length(camera.look_at - camera.position) / 4.0f, 1.0f, 50.0f);
 }
@@ -39,8 +42,9 @@ void CameraController::set_mode(Mode mode) {
 void CameraController::update(const CameraInput& input, float dt_s) {
   dt_s = std::clamp(dt_s, 0.0f, 0.25f);  // a stall must not fling the camera away
   if (mode_ == Mode::Fly) speed_ = std::clamp(speed_ * std::pow(1.2f, input.scroll), kMinSpeed, kMaxSpeed);
-  // Mouse right turns the view towards the screen's right (glm::lookAt's side vector, f x up).
-  yaw_deg_ = std::fmod(yaw_deg_ - input.look.x * kDegreesPerPixel + 360.0f, 360.0f);
+  // Mouse right turns the view towards the screen's right (glm::lookAt's side vector, f x up): clockwise
+  // seen from above, so the compass yaw grows.
+  yaw_deg_ = std::fmod(yaw_deg_ + input.look.x * kDegreesPerPixel + 360.0f, 360.0f);
   pitch_deg_ = std::clamp(pitch_deg_ - input.look.y * kDegreesPerPixel, -kMaxPitchDeg, kMaxPitchDeg);
   const glm::vec3 f = forward();
   const glm::vec3 right = glm::normalize(glm::vec3(-f.z, 0.0f, f.x));  // f x up: the screen's right

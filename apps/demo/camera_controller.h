@@ -41,7 +41,7 @@ class CameraController {
   Mode mode_ = Mode::Fly;
   glm::vec3 position_{0.0f};
   glm::vec3 target_{0.0f};  // orbit centre
-  float yaw_deg_ = 0.0f;    // clockwise from +z (north) toward +x (east), as the scene's sun and yaw_deg
+  float yaw_deg_ = 0.0f;    // compass (core/compass.h), as the scene's sun and yaw_deg
   float pitch_deg_ = 0.0f;  // above the horizon
   float speed_ = 5.0f;
 };

@@ -94,8 +94,8 @@ void Demo::print_helm() const {
   std::printf(
       "lagoon-demo: at the helm of %s at t = %.4f s: x = %.4f m, z = %.4f m, heading %.4f deg, "
       "%.4f m/s\n",
-      scene_.vehicles[*helm_.vehicle()].name.c_str(), time_s_, p.position.x, p.position.y, degrees(p.heading),
-      std::hypot(p.velocity.x, p.velocity.y));
+      scene_.vehicles[*helm_.vehicle()].name.c_str(), time_s_, p.position.x, p.position.y,
+      std::fmod(degrees(p.heading) + 360.0, 360.0), std::hypot(p.velocity.x, p.velocity.y));
 }
 
 }  // namespace lagoon::demo

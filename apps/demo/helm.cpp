@@ -20,8 +20,8 @@ std::optional<physics::HelmOrder> Helm::update(HelmInput input, double dt) {
   ordered_ = std::clamp(ordered_ + throttle * kThrottleMps2 * dt, 0.0, kMaxSpeedMps);
   const double change = std::clamp(ordered_ - speed_, -kAccelerationMps2 * dt, kAccelerationMps2 * dt);
   speed_ += change;
-  // Starboard (Right) is -x for a hull facing +z with +y up, so a right turn lowers the heading.
-  yaw_rate_ = -rudder * std::min(speed_ / kTurningRadiusM, kMaxYawRateRadps);
+  // A turn to starboard (right) is clockwise seen from above: the compass heading grows.
+  yaw_rate_ = rudder * std::min(speed_ / kTurningRadiusM, kMaxYawRateRadps);
   const physics::HelmOrder order{speed_, yaw_rate_};
   if (last_ && last_->speed_mps == order.speed_mps && last_->yaw_rate_radps == order.yaw_rate_radps)
     return std::nullopt;

@@ -5,15 +5,19 @@
 #include <numbers>
 #include <numeric>
 
+#include "core/compass.h"
+
 namespace lagoon::cli {
 namespace {
 
-// The direction of pixel (x, y): φ measured from the sun's azimuth, the sun at φ = 180° (the middle column).
+// The direction of pixel (x, y): the compass azimuth φ measured clockwise from the sun's, the sun at
+// φ = 180° (the middle column).
 glm::dvec3 pixel_direction(const render::SkyLight& light, int x, int y, int width, int height) {
   const double theta = (y + 0.5) / height * std::numbers::pi / 2;
-  const double sun_azimuth = std::atan2(double(light.sun_direction.z), double(light.sun_direction.x));
+  const double sun_azimuth = compass::azimuth_of({light.sun_direction.x, light.sun_direction.z});
   const double phi = sun_azimuth + (x + 0.5) / width * 2 * std::numbers::pi - std::numbers::pi;
-  return {std::sin(theta) * std::cos(phi), std::cos(theta), std::sin(theta) * std::sin(phi)};
+  const glm::dvec2 across = std::sin(theta) * compass::toward(phi);
+  return {across.x, std::cos(theta), across.y};
 }
 
 }  // namespace

@@ -10,7 +10,8 @@
 namespace lagoon::cli {
 namespace {
 
-// A fully developed JONSWAP sea at u10 with the wind along +z, cascades of 20, 2 and 0.2 peak wavelengths.
+// A fully developed JONSWAP sea at u10 with the wind toward north (-z), cascades of 20, 2 and 0.2 peak
+// wavelengths.
 ocean::OceanParams foam_sea(double u10, uint32_t n) {
   ocean::OceanParams p;
   p.spectrum.type = ocean::SpectrumType::Jonswap;
@@ -120,7 +121,7 @@ std::vector<Law> foam_laws(vk::Context& ctx, const ValidateOptions& o) {
   const bool lifetime_wanted = o.wants("foam.lifetime"), streaks_wanted = o.wants("foam.streaks");
   if (!lifetime_wanted && !streaks_wanted) return {};
   const std::string grid_note =
-      "Fully developed JONSWAP sea, wind along +z, the default foam settings; after 15 s of steps, 100 "
+      "Fully developed JONSWAP sea, wind toward north, the default foam settings; after 15 s of steps, 100 "
       "frames at 10 Hz of the foam Lagoon draws (each cascade's and the whole sea's Jacobian's, as the "
       "surface shader combines them, whitened where >= 0.5) on a 256² grid over three times the finest "
       "cascade's patch (0.6 peak wavelengths).";

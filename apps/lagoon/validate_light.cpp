@@ -204,7 +204,7 @@ Result<CausticSlices> caustic_slices(vk::Context& ctx, bool from_above, const Va
                                     ? nlohmann::json{{"position", {0, 3, 0}}, {"look_at", {0, -3, 6}}}
                                     : nlohmann::json{{"position", {0, -1.5, 0}}, {"look_at", {0, -4, 10}}};
   nlohmann::json doc{{"camera", camera},
-                     {"sun", {{"elevation_deg", 60}, {"azimuth_deg", 160}}},
+                     {"sun", {{"elevation_deg", 60}, {"azimuth_deg", 20}}},
                      {"ocean", {{"spectrum", {{"wind_speed_mps", 7.0}}}}},
                      {"water", {{"type", "jerlov-I"}}},
                      {"seafloor", {{"type", "slope"}, {"depth_near_m", 3}, {"depth_far_m", 6}}},

@@ -5,6 +5,7 @@
 #include <functional>
 #include <numbers>
 
+#include "core/compass.h"
 #include "ocean/dispersion.h"
 #include "ocean/field_statistics.h"
 #include "ocean/gpu/gpu_ocean.h"
@@ -356,7 +357,8 @@ std::vector<Law> cox_munk(const ValidateOptions& o) {
                                           return sum;
                                         }()
                                       : ocean::sea_slope_moments(p);
-    const double phi = p.spectrum.wind_direction_deg * kPi / 180, wx = std::sin(phi), wz = std::cos(phi);
+    const glm::dvec2 wind = compass::toward_deg(p.spectrum.wind_direction_deg);
+    const double wx = wind.x, wz = wind.y;
     const double along = m.xx * wx * wx + 2 * m.xz * wx * wz + m.zz * wz * wz;
     const double across = m.xx * wz * wz - 2 * m.xz * wx * wz + m.zz * wx * wx;
     up.points.push_back(relative_point(u, cox_munk_upwind(u), along * o.scale(), 0.20));

@@ -6,13 +6,13 @@
 #include <numbers>
 #include <vector>
 
+#include "core/compass.h"
 #include "ocean/initial_spectrum.h"
 
 namespace lagoon::ocean {
 
 glm::dvec2 wave_vector(double wavelength_m, double direction_deg) {
-  const double a = direction_deg * std::numbers::pi / 180;
-  return 2 * std::numbers::pi / wavelength_m * glm::dvec2(std::sin(a), std::cos(a));
+  return 2 * std::numbers::pi / wavelength_m * compass::toward_deg(direction_deg);
 }
 
 LatticeWave snap_to_cascades(const OceanParams& params, glm::dvec2 k) {

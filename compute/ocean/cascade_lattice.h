@@ -16,7 +16,7 @@ struct LatticeWave {
   glm::dvec2 k{0.0};   // rad/m, on the lattice (the asked k when no cascade holds it)
 };
 
-// k of a wave `wavelength_m` long travelling toward `direction_deg` (clockwise from +z toward +x).
+// k of a wave `wavelength_m` long travelling toward `direction_deg` (compass degrees, core/compass.h).
 glm::dvec2 wave_vector(double wavelength_m, double direction_deg);
 LatticeWave snap_to_cascades(const OceanParams& params, glm::dvec2 k);
 // Index of mode (mx, mz) in a cascade's n x n arrays ([iz * n + ix], negative modes wrapped).

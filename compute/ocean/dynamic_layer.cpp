@@ -22,6 +22,7 @@ using std::sin;
 using std::sqrt;
 using std::tanh;
 #define LAGOON_FN inline
+#include "core/compass.h"
 #include "shared/dynamic_layer_math.h"
 #undef LAGOON_FN
 }  // namespace dl_double
@@ -59,7 +60,7 @@ uint32_t dynamic_substeps(double dt, std::span<const WakeSource> sources) {
     const double speed = glm::length(s.velocity);
     if (speed <= 0) continue;
     // The footprint's width along the motion: sigma along the heading for a hull moving ahead.
-    const glm::dvec2 along(std::sin(s.heading), std::cos(s.heading)), across(along.y, -along.x);
+    const glm::dvec2 along = compass::toward(s.heading), across(along.y, -along.x);
     const double a = glm::dot(s.velocity, along) / speed, b = glm::dot(s.velocity, across) / speed;
     const double width = 1.0 / std::sqrt(a * a / (s.sigma.x * s.sigma.x) + b * b / (s.sigma.y * s.sigma.y));
     parts = std::max(parts, std::ceil(speed * dt / (0.25 * std::max(width, 1e-3))));
@@ -111,7 +112,7 @@ void DynamicLayerCpu::step(double dt, std::span<const WakeSource> sources) {
       glm::dvec4 hv(h.real(), h.imag(), v.real(), v.imag());
       for (uint32_t p = 0; p < parts; ++p) hv = dl_double::dl_evolve(hv, glm::dvec2(0.0), turn, decay);
       for (const WakeSource& s : local) {
-        const glm::dvec2 along(std::sin(s.heading), std::cos(s.heading));
+        const glm::dvec2 along = compass::toward(s.heading);
         const double exponent = dl_double::dl_source_exponent(k, along, s.sigma, s.depth);
         if (exponent < dl_double::kDlNegligible) continue;
         glm::dvec2 e = dl_double::dl_source_hat(k, s.centre + s.velocity * (0.5 * sub), exponent, s.sigma,
@@ -141,8 +142,7 @@ void DynamicLayerCpu::step(double dt, std::span<const WakeSource> sources) {
           glm::dvec2(window_cell(i, origin_.x, n), window_cell(j, origin_.y, n)) * params_.cell_m;
       double injected = 0;
       for (const WakeSource& s : local)
-        injected += dl_double::dl_foam_injection(xz, s.centre, s.velocity,
-                                                 glm::dvec2(std::sin(s.heading), std::cos(s.heading)),
+        injected += dl_double::dl_foam_injection(xz, s.centre, s.velocity, compass::toward(s.heading),
                                                  s.sigma, s.foam_per_s, dt, period);
       foam_[c] = dl_double::dl_foam_update(foam_[c], foam_decay, injected) * sponge;
     }

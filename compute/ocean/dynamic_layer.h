@@ -38,7 +38,7 @@ struct DynamicLayerParams {
 struct WakeSource {
   glm::dvec2 centre{0.0};    // world (x, z), m
   glm::dvec2 velocity{0.0};  // m/s
-  double heading = 0;        // rad, clockwise from +z toward +x
+  double heading = 0;        // rad, compass (clockwise from north, core/compass.h)
   glm::dvec2 sigma{1.0};     // m
   double depression = 0;     // m
   double depth = 0;          // m

@@ -4,6 +4,7 @@
 #include <glm/geometric.hpp>
 #include <numbers>
 
+#include "core/compass.h"
 #include "ocean/cascade_lattice.h"
 #include "ocean/dispersion.h"
 #include "ocean/spectrum.h"
@@ -26,8 +27,8 @@ double gerstner_omega(GerstnerDispersion law, double k, double depth_m) {
 GerstnerSurface::GerstnerSurface(GerstnerParams params) : params_(std::move(params)) {
   double sum = 0;
   for (const GerstnerWave& w : params_.waves) {
-    const double k = 2 * std::numbers::pi / w.wavelength_m, a = w.direction_deg * std::numbers::pi / 180;
-    k_.push_back(k * glm::dvec2(std::sin(a), std::cos(a)));
+    const double k = 2 * std::numbers::pi / w.wavelength_m;
+    k_.push_back(k * compass::toward_deg(w.direction_deg));
     omega_.push_back(
         quantise_omega(gerstner_omega(params_.dispersion, k, params_.depth_m), params_.loop_period_s));
     q_.push_back(w.steepness);
@@ -145,7 +146,7 @@ std::vector<GerstnerWaveSpec> spectrum_wave_specs(const OceanParams& params, uin
         360.0 * std::fmod((params.seed + 1) * 0.7548776662466927 + i * 0.5698402909980532, 1.0);
     out.push_back({.amplitude_m = std::sqrt(2 * frequency_spectrum(spectrum, params.depth_m, w) * (w1 - w0)),
                    .wavelength_m = 2 * std::numbers::pi / (w * w / kGravity),  // deep water k = ω²/g
-                   .direction_deg = wind + theta,
+                   .direction_deg = wind - theta,  // D is even in θ: the sign only picks a side
                    .phase_deg = phase});
   }
   return out;
@@ -158,7 +159,7 @@ std::vector<GerstnerWave> lattice_gerstner_waves(const OceanParams& params, std:
     const LatticeWave l = snap_to_cascades(params, wave_vector(w.wavelength_m, w.direction_deg));
     out.push_back({.amplitude_m = w.amplitude_m,
                    .wavelength_m = 2 * std::numbers::pi / glm::length(l.k),
-                   .direction_deg = std::atan2(l.k.x, l.k.y) * 180 / std::numbers::pi,
+                   .direction_deg = compass::azimuth_of(l.k) * 180 / std::numbers::pi,
                    .phase_rad = w.phase_deg * std::numbers::pi / 180,
                    .steepness = params.choppiness});
     if (cascade_of) cascade_of->push_back(l.cascade);

@@ -19,9 +19,9 @@ namespace lagoon::ocean {
 struct GerstnerWave {
   double amplitude_m = 0.5;
   double wavelength_m = 20;
-  double direction_deg = 0;  // the direction it travels, clockwise from +z toward +x (as the wind)
-  double phase_rad = 0;      // φ
-  double steepness = 1;      // Q: 0 = a sum of sines, 1 = the document's circles
+  double direction_deg = 180;  // the direction it travels, compass degrees (as the wind)
+  double phase_rad = 0;        // φ
+  double steepness = 1;        // Q: 0 = a sum of sines, 1 = the document's circles
 };
 
 struct GerstnerParams {

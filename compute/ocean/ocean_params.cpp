@@ -34,18 +34,18 @@ const char* to_string(Spreading spreading) {
 
 std::vector<GerstnerWaveSpec> default_gerstner_waves() {
   std::vector<GerstnerWaveSpec> waves(3);
-  waves[0] = {0.5, 40, 0, 0};
-  waves[1] = {0.25, 17, 25, 70};
-  waves[2] = {0.12, 8, -30, 200};
+  waves[0] = {0.5, 40, 180, 0};
+  waves[1] = {0.25, 17, 155, 70};
+  waves[2] = {0.12, 8, -150, 200};
   return waves;
 }
 
 GerstnerSet::GerstnerSet() : waves(default_gerstner_waves()) {}
 
 SinesSet::SinesSet() : waves(3) {
-  waves[0] = {0.6, 30, 0, 2, 0};
-  waves[1] = {0.3, 13, 40, 3, 0};
-  waves[2] = {0.15, 7, -25, 1, 0};
+  waves[0] = {0.6, 30, 180, 2, 0};
+  waves[1] = {0.3, 13, 140, 3, 0};
+  waves[2] = {0.15, 7, -155, 1, 0};
 }
 
 // Three drops at different places and times: rings that meet, so a scene switched to springs shows waves.

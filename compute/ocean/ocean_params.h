@@ -17,10 +17,10 @@ enum class Spreading { Cos2, Cos2s, DonelanBanner };
 
 struct SpectrumParams {
   SpectrumType type = SpectrumType::Jonswap;
-  double wind_speed_mps = 10.0;     // U10, wind speed 10 m above the surface; > 0
-  double wind_direction_deg = 0.0;  // direction the wind blows towards, clockwise from +z (north) towards +x
-  double fetch_km = 100.0;          // distance over which the wind has blown (JONSWAP, TMA); > 0
-  double gamma = 3.3;               // JONSWAP peak enhancement; 1 gives Pierson-Moskowitz's shape
+  double wind_speed_mps = 10.0;       // U10, wind speed 10 m above the surface; > 0
+  double wind_direction_deg = 180.0;  // direction the wind blows towards, compass degrees (core/compass.h)
+  double fetch_km = 100.0;            // distance over which the wind has blown (JONSWAP, TMA); > 0
+  double gamma = 3.3;                 // JONSWAP peak enhancement; 1 gives Pierson-Moskowitz's shape
   Spreading spreading = Spreading::Cos2s;
   double swell = 0.0;                // Horvath's swell ξ in [0, 1]: elongates crests of long waves
   double small_wave_cutoff_m = 0.0;  // Phillips' damping length l (exp(-k²l²)); 0 = none
@@ -43,7 +43,7 @@ enum class GerstnerDispersion { Deep, FiniteDepth, Capillary };
 struct GerstnerWaveSpec {
   double amplitude_m = 0.5;
   double wavelength_m = 20;
-  double direction_deg = 0;  // travels toward, clockwise from +z toward +x
+  double direction_deg = 180;  // travels toward, compass degrees
   double phase_deg = 0;
 };
 
@@ -62,9 +62,9 @@ struct GerstnerSet {
 struct SineWaveSpec {
   double amplitude_m = 0.6;
   double wavelength_m = 30;
-  double direction_deg = 0;  // travels toward, clockwise from +z toward +x
-  uint32_t steepness = 2;    // the exponent of eq. 2: 1 = a plain sine, higher = sharper crests
-  double phase_deg = 0;      // added to S (not in eq. 1; sampled waves must not all crest at the origin)
+  double direction_deg = 180;  // travels toward, compass degrees
+  uint32_t steepness = 2;      // the exponent of eq. 2: 1 = a plain sine, higher = sharper crests
+  double phase_deg = 0;        // added to S (not in eq. 1; sampled waves must not all crest at the origin)
 };
 
 struct SinesSet {
@@ -102,7 +102,7 @@ struct SpringGust {
   double duration_s = 4;
   double radius_m = 6;
   double force_n = 2;
-  double direction_deg = 0;
+  double direction_deg = 180;  // compass degrees
   double speed_mps = 2;
 };
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/compass.h"
 #include "ocean/spectrum.h"
 
 namespace lagoon::ocean {
@@ -58,9 +59,9 @@ SlopeMoments short_wave_slope_moments(const OceanParams& params, double k_from) 
     const double b = short_wave_curvature(params, k), d = short_wave_spreading(params, k);
     along += w * b * (0.5 + 0.25 * d), across += w * b * (0.5 - 0.25 * d);
   }
-  // Rotate from (along, across) the wind into (x, z): the wind blows toward (sin φ, cos φ).
-  const double phi = params.spectrum.wind_direction_deg * std::numbers::pi / 180.0;
-  const double wx = std::sin(phi), wz = std::cos(phi);
+  // Rotate from (along, across) the wind into (x, z): the wind blows toward (wx, wz).
+  const glm::dvec2 wind = compass::toward_deg(params.spectrum.wind_direction_deg);
+  const double wx = wind.x, wz = wind.y;
   m.xx = along * wx * wx + across * wz * wz;
   m.zz = along * wz * wz + across * wx * wx;
   m.xz = (along - across) * wx * wz;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/compass.h"
+
 namespace lagoon::ocean {
 namespace {
 
@@ -172,9 +174,9 @@ DirectionalSpectrum::DirectionalSpectrum(const OceanParams& params)
       dispersion_{params.depth_m, true, 0.0},
       spreading_(spreading_for(params.spectrum)),
       shape_(shape_of(params.spectrum)) {
-  const double phi = params.spectrum.wind_direction_deg * std::numbers::pi / 180.0;
-  wind_x_ = std::sin(phi);
-  wind_z_ = std::cos(phi);
+  const glm::dvec2 wind = compass::toward_deg(params.spectrum.wind_direction_deg);
+  wind_x_ = wind.x;
+  wind_z_ = wind.y;
 }
 
 double DirectionalSpectrum::frequency(double omega) const {

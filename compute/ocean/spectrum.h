@@ -58,7 +58,7 @@ double peak_omega(const SpectrumParams& spectrum);
 double frequency_spectrum(const SpectrumParams& spectrum, double depth_m, double omega);
 
 // Ψ(k) = S(ω(k)) D(ω, θ) (dω/dk) / k with the unquantised finite-depth, capillary ω(k); θ is the angle of k
-// from the wind vector (sin φ, cos φ) in (x, z), φ = wind_direction_deg. Everything that does not depend
+// from the wind vector compass::toward(φ) in (x, z), φ = wind_direction_deg. Everything that does not depend
 // on k is computed once in the constructor, so sampling a grid costs one dispersion, one S and one D per
 // mode.
 class DirectionalSpectrum {

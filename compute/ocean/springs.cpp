@@ -23,6 +23,7 @@ glm::dvec2 floor(glm::dvec2 v) {
   return glm::floor(v);
 }
 #define LAGOON_FN inline
+#include "core/compass.h"
 #include "shared/springs_math.h"
 #undef LAGOON_FN
 
@@ -76,10 +77,10 @@ std::vector<gpu::SpringExcitation> springs_excitations(const OceanParams& params
                    .end_step = step_of(d.time_s) + 1,
                    .mean_weight = float(mean_patch_weight({d.x_m, d.z_m}, d.radius_m, n, spacing))});
   for (const SpringGust& g : p.gusts) {
-    const double heading = g.direction_deg * std::numbers::pi / 180;
+    const glm::dvec2 heading = compass::toward_deg(g.direction_deg);
     const uint32_t first = step_of(g.time_s);
     out.push_back({.centre = glm::vec2(g.x_m, g.z_m),
-                   .velocity = glm::vec2(g.speed_mps * std::sin(heading), g.speed_mps * std::cos(heading)),
+                   .velocity = glm::vec2(g.speed_mps * heading),
                    .sigma = float(g.radius_m),
                    .accel = float(-g.force_n / p.mass_kg),
                    .start_s = float(g.time_s),

@@ -2,11 +2,13 @@
 
 #include <cmath>
 
+#include "core/compass.h"
+
 namespace lagoon::physics {
 namespace {
 
 glm::dquat yaw(double heading) {
-  return glm::angleAxis(heading, glm::dvec3(0, 1, 0));
+  return glm::angleAxis(compass::angle_about_up(heading), glm::dvec3(0, 1, 0));
 }
 
 }  // namespace
@@ -45,7 +47,7 @@ void VehicleMotion::hold_on(const TrackPoint& track) {
   s.position.z += track.position.y - origin.z;
   s.velocity.x = track.velocity.x;
   s.velocity.z = track.velocity.y;
-  s.angular_velocity.y = track.yaw_rate;
+  s.angular_velocity.y = -track.yaw_rate;  // the heading turns clockwise, +y counterclockwise
 }
 
 void VehicleMotion::step(double t, double dt, const WaterHeight& water, double water_top) {
@@ -74,7 +76,7 @@ glm::dvec3 VehicleMotion::velocity() const {
 }
 
 glm::dvec3 VehicleMotion::angular_velocity() const {
-  return hull_ ? hull_->state().angular_velocity : glm::dvec3(0, track_.yaw_rate, 0);
+  return hull_ ? hull_->state().angular_velocity : glm::dvec3(0, -track_.yaw_rate, 0);
 }
 
 }  // namespace lagoon::physics

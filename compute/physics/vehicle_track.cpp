@@ -4,15 +4,13 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/compass.h"
+
 namespace lagoon::physics {
 namespace {
 
 double wrap(double angle) {
   return std::remainder(angle, 2 * std::numbers::pi);
-}
-
-glm::dvec2 ahead(double heading) {
-  return {std::sin(heading), std::cos(heading)};
 }
 
 }  // namespace
@@ -26,14 +24,15 @@ TrackPoint VehicleTrack::at(double time_s) const {
   const double tau = t - leg.start_s, v = leg.order.speed_mps, w = leg.order.yaw_rate_radps;
   const double h0 = leg.from.heading, h = h0 + w * tau;
   TrackPoint p;
-  // The arc of radius v / w: d/dτ of (cos h0 - cos h, sin h - sin h0) v / w is v (sin h, cos h).
+  // The arc of radius v / w: d/dτ of (cos h0 - cos h, sin h0 - sin h) v / w is v (sin h, -cos h), the
+  // velocity along compass::toward(h).
   if (std::abs(w * tau) > 1e-9)
     p.position =
-        leg.from.position + (v / w) * glm::dvec2(std::cos(h0) - std::cos(h), std::sin(h) - std::sin(h0));
+        leg.from.position + (v / w) * glm::dvec2(std::cos(h0) - std::cos(h), std::sin(h0) - std::sin(h));
   else
-    p.position = leg.from.position + v * tau * ahead(h0 + 0.5 * w * tau);
+    p.position = leg.from.position + v * tau * compass::toward(h0 + 0.5 * w * tau);
   p.heading = wrap(h);
-  p.velocity = v * ahead(h);
+  p.velocity = v * compass::toward(h);
   p.yaw_rate = w;
   return p;
 }

@@ -12,8 +12,9 @@
 namespace lagoon::physics {
 
 struct HelmOrder {
-  double speed_mps = 0;       // along the heading
-  double yaw_rate_radps = 0;  // about +y: positive turns from +z toward +x (the heading grows)
+  double speed_mps = 0;  // along the heading
+  double yaw_rate_radps =
+      0;  // of the compass heading: positive turns clockwise seen from above, to starboard
 };
 
 class VehicleTrack {

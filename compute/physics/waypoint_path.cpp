@@ -5,6 +5,8 @@
 #include <glm/geometric.hpp>
 #include <numbers>
 
+#include "core/compass.h"
+
 namespace lagoon::physics {
 namespace {
 
@@ -24,10 +26,6 @@ glm::dvec2 centripetal(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, glm::dvec2 p
   const glm::dvec2 b1 = ((t2 - t) * a1 + (t - t0) * a2) / (t2 - t0);
   const glm::dvec2 b2 = ((t3 - t) * a2 + (t - t1) * a3) / (t3 - t1);
   return ((t2 - t) * b1 + (t - t1) * b2) / (t2 - t1);
-}
-
-double heading_of(glm::dvec2 d) {
-  return std::atan2(d.x, d.y);
 }
 
 }  // namespace
@@ -75,7 +73,7 @@ WaypointPath::WaypointPath(std::vector<glm::dvec2> waypoints, bool loop, double 
     } else {
       d = samples_[std::min(i + 1, m - 1)] - samples_[i == 0 ? 0 : i - 1];
     }
-    heading_[i] = heading_of(d);
+    heading_[i] = compass::azimuth_of(d);
     if (i > 0) {
       const double step = heading_[i] - heading_[i - 1];
       heading_[i] -= 2 * std::numbers::pi * std::round(step / (2 * std::numbers::pi));
@@ -97,7 +95,7 @@ TrackPoint WaypointPath::along(double s) const {
   const double heading = heading_[i - 1] + f * (heading_[i] - heading_[i - 1]);
   out.heading = heading - 2 * std::numbers::pi * std::round(heading / (2 * std::numbers::pi));
   const double turn = span > 0 ? (heading_[i] - heading_[i - 1]) / span : 0.0;  // rad per metre
-  out.velocity = speed_ * glm::dvec2(std::sin(heading), std::cos(heading));
+  out.velocity = speed_ * compass::toward(heading);
   out.yaw_rate = speed_ * turn;
   return out;
 }

@@ -7,13 +7,13 @@
 
 namespace lagoon::physics {
 
-// Where a vehicle is on its path at a time: position, heading (radians, clockwise from +z toward +x, as an
-// object's yaw) and their rates.
+// Where a vehicle is on its path at a time: position, heading (radians on the compass, core/compass.h, as
+// an object's yaw) and their rates.
 struct TrackPoint {
   glm::dvec2 position{0.0};  // (x, z), m
   double heading = 0;        // rad, in [-pi, pi]
   glm::dvec2 velocity{0.0};  // (x, z), m/s
-  double yaw_rate = 0;       // rad/s, about +y
+  double yaw_rate = 0;       // rad/s of the heading: clockwise seen from above, so -ω about +y
 };
 
 class WaypointPath {

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "core/compass.h"
+
 namespace lagoon::render {
 
 CameraMatrices camera_matrices(const scene::Camera& camera, float aspect) {
@@ -21,8 +23,9 @@ CameraMatrices camera_matrices(const scene::Camera& camera, float aspect) {
 }
 
 glm::vec3 sun_direction(const scene::Sun& sun) {
-  const float el = glm::radians(sun.elevation_deg), az = glm::radians(sun.azimuth_deg);
-  return {std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az)};
+  const double el = glm::radians(double{sun.elevation_deg});
+  const glm::dvec2 across = compass::toward_deg(double{sun.azimuth_deg}) * std::cos(el);
+  return glm::vec3(glm::dvec3(across.x, std::sin(el), across.y));
 }
 
 }  // namespace lagoon::render

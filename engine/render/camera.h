@@ -1,4 +1,4 @@
-// Camera and sun conventions shared by every pass: y up, mean water level y = 0, +z north, +x east.
+// Camera and sun conventions shared by every pass: y up, mean water level y = 0, -z north, +x east.
 // Projection maps depth to [0, 1] (GLM_FORCE_DEPTH_ZERO_TO_ONE) with clip-space y up; the viewport flips y.
 #pragma once
 #include <glm/glm.hpp>

@@ -1,4 +1,4 @@
-// Where a scene object (objects[]) is drawn: T(position) · Ry(yaw) · Rx(−pitch) · Rz(roll) · S(scale)
+// Where a scene object (objects[]) is drawn: T(position) · Ry(π − yaw) · Rx(−pitch) · Rz(roll) · S(scale)
 // (docs/scene-format.md, Objects). One definition for the objects placed by the scene and for the floating
 // bodies that start from it.
 #pragma once

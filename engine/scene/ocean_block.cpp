@@ -26,7 +26,7 @@ void read_spectrum(ObjectReader& r, ocean::SpectrumParams& s) {
   r.number("wind_speed_mps", s.wind_speed_mps, Bounds::above_up_to(0, 60), "m/s",
            "Wind speed 10 m above the surface (U10); sets the wave height and the peak wavelength.");
   r.number("wind_direction_deg", s.wind_direction_deg, Bounds::between(0, 360), "deg",
-           "Direction the wind blows towards, clockwise from +z (north) toward +x (east); 90 = toward east.");
+           "Direction the wind blows towards, clockwise from north (-z) toward east (+x); 90 = toward east.");
   r.number("fetch_km", s.fetch_km, Bounds::above_up_to(0, 10000), "km",
            "Distance over which the wind has blown; a short fetch gives younger, smaller, shorter waves "
            "(jonswap, tma).");
@@ -63,7 +63,7 @@ void read_gerstner_wave(ObjectReader& r, ocean::GerstnerWaveSpec& w) {
   r.number("wavelength_m", w.wavelength_m, Bounds::above_up_to(0, 100000), "m",
            "Wavelength 2 pi / k; moved to the nearest wave the cascades tile with (docs/models.md).");
   r.number("direction_deg", w.direction_deg, Bounds::between(-360, 360), "deg",
-           "Direction it travels toward, clockwise from +z (north) toward +x (east).");
+           "Direction it travels toward, clockwise from north (-z) toward east (+x).");
   r.number("phase_deg", w.phase_deg, Bounds::between(-360, 360), "deg", "Phase phi of eq. 11.");
 }
 
@@ -87,7 +87,7 @@ void read_sine_wave(ObjectReader& r, ocean::SineWaveSpec& w) {
   r.number("wavelength_m", w.wavelength_m, Bounds::above_up_to(0, 100000), "m",
            "Wavelength 2 pi / freq; moved to the nearest wave the cascades tile with (docs/models.md).");
   r.number("direction_deg", w.direction_deg, Bounds::between(-360, 360), "deg",
-           "Direction it travels toward, clockwise from +z (north) toward +x (east).");
+           "Direction it travels toward, clockwise from north (-z) toward east (+x).");
   r.integer("steepness", w.steepness, Bounds::between(1, 8), "",
             "Exponent of eq. 2: 1 = a plain sine; higher gives sharper crests and flatter troughs (whole "
             "numbers, so the wave is exactly `steepness` harmonics).");
@@ -120,7 +120,7 @@ void read_perlin(ObjectReader& r, ocean::PerlinParams& p) {
 
 void read_spring_drop(ObjectReader& r, ocean::SpringDrop& d) {
   r.number("x_m", d.x_m, Bounds::between(-1e6, 1e6), "m", "Where it falls: x (east).");
-  r.number("z_m", d.z_m, Bounds::between(-1e6, 1e6), "m", "Where it falls: z (north).");
+  r.number("z_m", d.z_m, Bounds::between(-1e6, 1e6), "m", "Where it falls: z (south; north is -z).");
   r.number("time_s", d.time_s, Bounds::between(0, 1e6), "s",
            "When it falls (within the step that holds it).");
   r.number("radius_m", d.radius_m, Bounds::above_up_to(0, 1e4), "m",
@@ -131,7 +131,7 @@ void read_spring_drop(ObjectReader& r, ocean::SpringDrop& d) {
 
 void read_spring_gust(ObjectReader& r, ocean::SpringGust& g) {
   r.number("x_m", g.x_m, Bounds::between(-1e6, 1e6), "m", "Where it starts: x (east).");
-  r.number("z_m", g.z_m, Bounds::between(-1e6, 1e6), "m", "Where it starts: z (north).");
+  r.number("z_m", g.z_m, Bounds::between(-1e6, 1e6), "m", "Where it starts: z (south; north is -z).");
   r.number("time_s", g.time_s, Bounds::between(0, 1e6), "s", "When it starts.");
   r.number("duration_s", g.duration_s, Bounds::between(0, 1e6), "s", "How long it blows.");
   r.number("radius_m", g.radius_m, Bounds::above_up_to(0, 1e4), "m",
@@ -139,7 +139,7 @@ void read_spring_gust(ObjectReader& r, ocean::SpringGust& g) {
   r.number("force_n", g.force_n, Bounds::between(-1e4, 1e4), "N",
            "Downward force on the node at its centre.");
   r.number("direction_deg", g.direction_deg, Bounds::between(-360, 360), "deg",
-           "Direction it moves toward, clockwise from +z (north) toward +x (east).");
+           "Direction it moves toward, clockwise from north (-z) toward east (+x).");
   r.number("speed_mps", g.speed_mps, Bounds::between(0, 100), "m/s", "How fast the patch moves.");
 }
 

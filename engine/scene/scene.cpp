@@ -1,5 +1,6 @@
 #include "scene/scene.h"
 
+#include "core/compass.h"
 #include "scene/gltf_camera.h"
 
 #include <glm/geometric.hpp>
@@ -28,12 +29,12 @@ using nlohmann::json;
 
 // ---- The format: one read function per block; each line declares one field. ----
 
-// Unit view direction for a compass yaw (clockwise from +z toward +x, like the sun's azimuth) and a pitch
-// above the horizon. In double so that pitch -90 gives x and z of ~1e-17, not float cos() noise.
+// Unit view direction for a compass yaw (core/compass.h, like the sun's azimuth) and a pitch above the
+// horizon. In double so that pitch -90 gives x and z of ~1e-17, not float cos() noise.
 glm::vec3 view_direction(float yaw_deg, float pitch_deg) {
-  const double yaw = glm::radians(double{yaw_deg}), pitch = glm::radians(double{pitch_deg});
-  return glm::vec3(
-      glm::dvec3(std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw)));
+  const double pitch = glm::radians(double{pitch_deg});
+  const glm::dvec2 ahead = compass::toward_deg(double{yaw_deg}) * std::cos(pitch);
+  return glm::vec3(glm::dvec3(ahead.x, std::sin(pitch), ahead.y));
 }
 
 void read_camera_gltf(ObjectReader& r, CameraFromGltf& g) {
@@ -48,7 +49,7 @@ void read_camera(ObjectReader& r, Camera& c) {
   // Angles are an input form only: they become look_at, so the renderer reads the view one way.
   std::optional<float> yaw_deg, pitch_deg;
   r.number("yaw_deg", yaw_deg, Bounds::between(-360, 360), "deg",
-           "Instead of look_at: compass direction of the view, clockwise from +z (north) toward +x (east); "
+           "Instead of look_at: compass direction of the view, clockwise from north (-z) toward east (+x); "
            "90 = east.");
   r.number("pitch_deg", pitch_deg, Bounds::between(-90, 90), "deg",
            "With yaw_deg: angle of the view above the horizon; 0 = level, -90 = straight down.");
@@ -57,7 +58,7 @@ void read_camera(ObjectReader& r, Camera& c) {
   r.rule("pitch_deg", has_pitch || !has_yaw, "given with yaw_deg",
          "got yaw_deg alone; add pitch_deg (0 = level, negative looks down)");
   r.rule("yaw_deg", has_yaw || !has_pitch, "given with pitch_deg",
-         "got pitch_deg alone; add yaw_deg (0 = toward +z/north, 90 = toward +x/east)");
+         "got pitch_deg alone; add yaw_deg (0 = toward north/-z, 90 = toward east/+x)");
   r.rule("look_at", !has_look_at || (!has_yaw && !has_pitch), "left out when yaw_deg or pitch_deg is given",
          "both aim the camera; keep either look_at or yaw_deg and pitch_deg");
   if (yaw_deg && pitch_deg && !has_look_at) {
@@ -90,7 +91,7 @@ void read_sun(ObjectReader& r, Sun& s) {
            "Angle above the horizon; negative puts the sun below it.");
   r.number(
       "azimuth_deg", s.azimuth_deg, Bounds::between(0, 360), "deg",
-      "Compass direction of the sun, clockwise from +z (north) toward +x (east); 90 = east, 270 = west.");
+      "Compass direction of the sun, clockwise from north (-z) toward east (+x); 90 = east, 270 = west.");
   r.number("intensity", s.intensity, Bounds::between(0, 100), "",
            "Multiplier on the sun's brightness; 1 is the reference sun, 0 turns it off.");
 }

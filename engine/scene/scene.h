@@ -17,7 +17,7 @@
 
 namespace lagoon::scene {
 
-// World space: y is up, the mean water surface is y = 0, +z is north, +x is east; distances in metres.
+// World space: y is up, the mean water surface is y = 0, +x is east and -z north (core/compass.h); metres.
 // camera.gltf: take the camera from a glTF file (issue 17) instead of position, look_at and the lens.
 struct CameraFromGltf {
   std::string file;  // "" = none; relative paths are resolved against the scene file's folder
@@ -39,7 +39,7 @@ struct Camera {
 
 struct Sun {
   float elevation_deg = 35.f;
-  float azimuth_deg = 210.f;  // clockwise from +z (north) toward +x (east)
+  float azimuth_deg = 330.f;  // compass: clockwise from north (-z) toward east (+x)
   float intensity = 1.f;
 };
 

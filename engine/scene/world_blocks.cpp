@@ -279,8 +279,9 @@ void read_object(ObjectReader& r, Object& o) {
          "every object is loaded from a glTF file; add e.g. \"file\": \"buoy.glb\"");
   r.vec3("position", o.position, "m", "Where the model's origin goes (y up; the mean water level is y = 0).");
   r.vec3("rotation_deg", o.rotation_deg, "[yaw, pitch, roll]", Bounds::between(-360, 360), "deg",
-         "Yaw about the vertical (clockwise from +z toward +x, like camera.yaw_deg), then pitch (positive "
-         "raises the model's +z end), then roll about the model's z axis; see Objects below.");
+         "Yaw: the compass direction the model's front (+z) faces, clockwise from north (-z) toward east "
+         "(+x) like camera.yaw_deg; then pitch (positive raises the model's +z end), then roll about the "
+         "model's z axis; see Objects below.");
   r.number("scale", o.scale, Bounds::above_up_to(0, 1000), "", "Uniform scale of the model.");
   r.block("floating", o.floating, read_floating, "An object that rides the waves (docs/physics.md).");
   r.flag("lights_from_gltf", o.lights_from_gltf,

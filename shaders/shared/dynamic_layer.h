@@ -29,7 +29,7 @@ struct DynamicSource {
   vec2 centre;       // world (x, z), m
   vec2 velocity;     // m/s
   vec2 sigma;        // along and across the heading, m
-  vec2 along;        // the heading as a unit vector: (sin, cos) of the yaw
+  vec2 along;        // the heading as a unit vector in (x, z), compass::toward
   float depression;  // m: the still-water depression at its centre (pressure / (ρ g))
   float depth;       // m below the surface (0 = at it): its pattern is filtered by exp(-k depth)
   float foam_per_s;  // how fast foam builds behind its stern (and at 0.3 of that at its bow)

@@ -26,7 +26,7 @@ LAGOON_FN dl_real dl_omega(dl_real k, dl_real gravity, dl_real depth) {
 // The exponent of a source's footprint at wavevector k (its Gaussian in the rotated frame, and exp(-k depth)
 // for a source below the surface): below kDlNegligible the source adds nothing a float can hold.
 #define kDlNegligible dl_real(-16)
-// `along` is the heading as a unit vector, (sin, cos) of the yaw.
+// `along` is the heading as a unit vector in (x, z) (compass::toward of it, core/compass.h).
 LAGOON_FN dl_real dl_source_exponent(dl_real2 k, dl_real2 along, dl_real2 sigma, dl_real depth) {
   dl_real2 across = dl_real2(along.y, -along.x);
   dl_real kl = dot(k, along) * sigma.x, kb = dot(k, across) * sigma.y;

@@ -177,7 +177,8 @@ TEST_F(DatasetCli, TheMetadataStatesAPinholeCameraThatSeesItsAimAtTheCentre) {
   EXPECT_NEAR(k[0][2].get<double>(), 47.5, 1e-9);
   EXPECT_NEAR(k[1][2].get<double>(), 26.5, 1e-9);
   // x_cam = R^T (X - t); the aim projects to the principal point, a point to the camera's right (the quay
-  // camera looks north-ish along +z, so world -x) to the right half and one above to the upper half.
+  // camera looks south along +z, so its right is west, world -x) to the right half and one above to the
+  // upper half.
   const auto& pose = meta["camera"]["world_from_camera"];
   auto project = [&](double x, double y, double z) {
     double c[3];
@@ -197,6 +198,60 @@ TEST_F(DatasetCli, TheMetadataStatesAPinholeCameraThatSeesItsAimAtTheCentre) {
   EXPECT_NEAR(enu[0][3].get<double>(), 0, 1e-9);
   EXPECT_NEAR(enu[1][3].get<double>(), 16, 1e-9);
   EXPECT_NEAR(enu[2][3].get<double>(), 5, 1e-9);
+}
+
+// One compass (issue 39): azimuths turn clockwise from north (-z) toward east (+x), seen from above. A camera
+// looking toward -z faces north in the frame's ENU pose with east on its right, a sun at azimuth a has the
+// ENU direction (sin a cos e, cos a cos e, sin e), and the picture agrees: a low sun at 0 stands in front of
+// the north-facing view (its glitter brightens the water) and at 180 behind it; at 60 it lights the right
+// of the view, at 300 the left. (With the old, mirrored compass, azimuth 0 put the sun behind this view.)
+TEST(DatasetCliCompass, TheSunAndTheCameraStandWhereTheCompassSaysInThePictureAndTheEnuPose) {
+  const TempDir dir;
+  const double elevation = 6;
+  struct Picture {
+    double right_minus_left = 0, water = 0;
+  };
+  std::map<int, Picture> pictures;
+  for (int azimuth : {0, 60, 180, 300}) {
+    const std::string name = "sun" + std::to_string(azimuth);
+    const ProcessResult r = lagoon(
+        "render --scene " + shell_quote(std::string(LAGOON_SOURCE_DIR) + "/scenes/open-ocean.json") +
+        " --width 64 --height 36 --frames 2 --set camera.position=[0,6,0] --set camera.look_at=[0,4.6,-10]"
+        " --set sun.elevation_deg=" +
+        std::to_string(elevation) + " --set sun.azimuth_deg=" + std::to_string(azimuth) + " --out " +
+        shell_quote((dir / (name + ".png")).string()));
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const nlohmann::json meta = nlohmann::json::parse(read_file(dir / (name + "_0000.json")));
+    const double a = azimuth * M_PI / 180, e = elevation * M_PI / 180;
+    const auto& sun = meta["sun"]["direction_enu"];
+    EXPECT_NEAR(sun[0].get<double>(), std::sin(a) * std::cos(e), 1e-5) << "east, azimuth " << azimuth;
+    EXPECT_NEAR(sun[1].get<double>(), std::cos(a) * std::cos(e), 1e-5) << "north, azimuth " << azimuth;
+    EXPECT_NEAR(sun[2].get<double>(), std::sin(e), 1e-5) << "up, azimuth " << azimuth;
+    // The optical frame's columns in ENU: x (right) is east, z (forward) north (-z), tilted down.
+    const auto& pose = meta["camera"]["enu_from_camera"];
+    EXPECT_NEAR(pose[0][0].get<double>(), 1, 1e-5) << "the camera's right is east";
+    EXPECT_NEAR(pose[1][2].get<double>(), 10 / std::hypot(10, 1.4), 1e-5) << "looking toward -z is north";
+    EXPECT_NEAR(pose[0][2].get<double>(), 0, 1e-5);
+    const Result<io::Image8> image = io::read_png(dir / (name + "_0000.png"));
+    ASSERT_TRUE(image.ok()) << image.error().message;
+    const uint32_t w = image->width, h = image->height;
+    double left = 0, right = 0, water = 0;
+    for (uint32_t y = 0; y < h; ++y)
+      for (uint32_t x = 0; x < w; ++x)
+        for (int c = 0; c < 3; ++c) {
+          const double v = image->pixel(x, y)[c];
+          left += x < w / 3 ? v : 0.0;
+          right += x >= w - w / 3 ? v : 0.0;
+          water += y >= h / 2 ? v : 0.0;
+        }
+    pictures[azimuth] = {(right - left) / (3.0 * h * (w / 3)), water / (3.0 * w * (h - h / 2))};
+    RecordProperty("sun_" + std::to_string(azimuth),
+                   "right - left " + std::to_string(pictures[azimuth].right_minus_left) + ", water mean " +
+                       std::to_string(pictures[azimuth].water));
+  }
+  EXPECT_GT(pictures[0].water, pictures[180].water + 5) << "a sun in the north glitters ahead of the view";
+  EXPECT_GT(pictures[60].right_minus_left, 2.0) << "a sun east of north lights the right of the view";
+  EXPECT_LT(pictures[300].right_minus_left, -2.0) << "a sun west of north lights its left";
 }
 
 TEST(DatasetCliAov, GroundTruthIsWrittenBesideEachFrameListedCheckedAndPreviewed) {

@@ -39,7 +39,9 @@ class GltfMaterialsCli : public ::testing::Test {
     s["render"].update({{"width", 64}, {"height", 36}});
     s["seafloor"] = {{"type", "none"}};
     use_small_cascades(s);  // the model's materials are checked, not the sea
-    s["objects"] = json::array({json{{"file", "model.gltf"}, {"position", {0, 3, 20}}}});
+    // Yaw 180: the model's front (+z) faces south, away from the camera, which sees its -z side.
+    s["objects"] =
+        json::array({json{{"file", "model.gltf"}, {"position", {0, 3, 20}}, {"rotation_deg", {180, 0, 0}}}});
     std::ofstream(dir_ / "scene.json") << s.dump();
     return run_process(shell_quote(LAGOON_BINARY) + " render --scene " +
                        shell_quote((dir_ / "scene.json").string()) + " --out " +

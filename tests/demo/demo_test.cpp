@@ -194,8 +194,9 @@ TEST_F(Demo, ResizingTheWindowRecreatesTheSwapchain) {
 }
 
 // At the helm (the arrow keys, here a script's helm.* lines): the harbour's boat at 6 m/s with full starboard
-// rudder runs the helm's turning circle (15 m) from where its path had it. Its heading falls by v/R per
-// second, and the chord from the start is 2R sin(Δh/2). A misspelt vehicle is reported, not fatal.
+// rudder runs the helm's turning circle (15 m) from where its path had it. Its compass heading (clockwise
+// from north, -z) grows by v/R per second, and the chord from the start is 2R sin(Δh/2). A misspelt vehicle
+// is reported, not fatal.
 TEST_F(Demo, TheArrowKeysSteerAVehicleAtTheHelm) {
   // The harbour without its wakes (the helm moves the boat, the wakes only follow it; replaying them to the
   // scene's 6 s was most of the test's time), beside a link to its assets.
@@ -225,16 +226,16 @@ TEST_F(Demo, TheArrowKeysSteerAVehicleAtTheHelm) {
             5)
       << d.output;
   EXPECT_NEAR(t, 9.0, 1e-6);  // the scene's 6 s, then 30 frames of 0.1 s
-  // Where the path had the boat when the helm was taken (its velocity gives the heading).
+  // Where the path had the boat when the helm was taken (its velocity gives the compass heading).
   auto p = lagoon("probe --scene " + shell_quote(harbour) + " --object boat --time 6");
   ASSERT_EQ(p.exit_code, 0) << p.output;
   const auto start = nlohmann::json::parse(p.output);
   const double x0 = start["origin"][0], z0 = start["origin"][2];
   const double h0 =
-      std::atan2(start["velocity_mps"][0].get<double>(), start["velocity_mps"][2].get<double>());
+      std::atan2(start["velocity_mps"][0].get<double>(), -start["velocity_mps"][2].get<double>());
   const double radius = 15.0, turned = 6.0 / radius * 3.0;  // rad, over 3 s
   EXPECT_NEAR(speed, 6.0, 1e-3);
-  EXPECT_NEAR(std::remainder(heading * M_PI / 180 - (h0 - turned), 2 * M_PI), 0.0, 1e-3) << d.output;
+  EXPECT_NEAR(std::remainder(heading * M_PI / 180 - (h0 + turned), 2 * M_PI), 0.0, 1e-3) << d.output;
   EXPECT_NEAR(std::hypot(x - x0, z - z0), 2 * radius * std::sin(turned / 2), 1e-3) << d.output;
 }
 

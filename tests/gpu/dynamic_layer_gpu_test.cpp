@@ -29,7 +29,7 @@ TEST_F(DynamicLayerGpuTest, HundredStepsMatchTheCpuReference) {
                                         .depth = 0.8},
                                        {.centre = {1012, -488},
                                         .velocity = {2.5, 1.0},
-                                        .heading = 1.19,
+                                        .heading = 1.95,  // along its velocity: pi - atan2(1.0, 2.5)
                                         .sigma = {1.2, 0.5},
                                         .depression = 0.25,
                                         .foam_per_s = 6}};

@@ -35,9 +35,11 @@ class GltfMaterialsRender : public GpuTest {
     json s = shipped_scene_json("default");
     s["camera"] = {{"position", {0, 3, 0}}, {"look_at", {0, 3, 20}}};
     s["render"].update({{"width", 160}, {"height", 90}});
-    s["sun"] = {{"elevation_deg", 40}, {"azimuth_deg", 230}};
+    s["sun"] = {{"elevation_deg", 40}, {"azimuth_deg", 310}};
     s["seafloor"] = {{"type", "none"}};
-    s["objects"] = json::array({json{{"file", file}, {"position", {0, 3, 20}}}});
+    // Yaw 180: the model's front (+z) faces south, away from the camera, which sees its -z side.
+    s["objects"] =
+        json::array({json{{"file", file}, {"position", {0, 3, 20}}, {"rotation_deg", {180, 0, 0}}}});
     return render(write_and_load(s, dir_ / "scene.json"));
   }
 
@@ -241,11 +243,12 @@ TEST_F(GltfMaterialsRender, RougherSpheresSpreadTheirHighlightAndOnlyMetalsTintI
     s["camera"] = {{"position", {0, 3, 0}}, {"look_at", {0, 3, 7}}, {"fov_deg", 60}};
     s["render"].update(
         {{"width", 640}, {"height", 360}, {"tone_map", "clamp"}, {"gamma", gamma}, {"exposure", 1}});
-    s["sun"] = {{"elevation_deg", -20}, {"azimuth_deg", 185}};
+    s["sun"] = {{"elevation_deg", -20}, {"azimuth_deg", 355}};
     s["lights"] = json::array(
         {json{{"position", {0.5, 3.5, -1}}, {"colour", {1, 1, 1}}, {"intensity", lamp}, {"range_m", 60}}});
     s["seafloor"] = {{"type", "none"}};
-    s["objects"] = json::array({json{{"file", "spheres.gltf"}, {"position", {0, 3, 7}}}});
+    s["objects"] =
+        json::array({json{{"file", "spheres.gltf"}, {"position", {0, 3, 7}}, {"rotation_deg", {180, 0, 0}}}});
     return render(write_and_load(s, dir_ / "spheres.json"));
   };
   // The dielectrics' highlight (f0 = 0.04) under a lamp 48 times brighter than the metals' (f0 = 0.9), and

@@ -573,7 +573,7 @@ TEST_F(Underwater, LightShaftsComeFromTheFocusedSunAndFaceIt) {
     EXPECT_TRUE(renderer) << renderer.error().message;
     return (*renderer)->render(s);
   };
-  const std::string towards = "[3.4,-5,20.6]", away = "[-3.4,-5,39.4]";  // the sun's azimuth is 160°
+  const std::string towards = "[3.4,-5,20.6]", away = "[-3.4,-5,39.4]";  // the sun's azimuth is 20°
   const double facing = mean_difference(frame(towards, true, "5"), frame(towards, false, "5"));
   const double behind = mean_difference(frame(away, true, "5"), frame(away, false, "5"));
   RecordProperty("shafts",

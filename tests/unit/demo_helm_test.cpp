@@ -47,15 +47,15 @@ TEST(Helm, FullRudderTurnsOnTheSetCircleToThatSide) {
   const auto right = helm.update({0, 1}, 0.02);
   ASSERT_TRUE(right);
   EXPECT_DOUBLE_EQ(right->speed_mps, 6.0);
-  // Starboard: the heading (from +z toward +x) falls; radius v / |w| is the turning circle.
-  EXPECT_NEAR(right->yaw_rate_radps, -6.0 / Helm::kTurningRadiusM, 1e-12);
+  // Starboard: the compass heading (clockwise from north) grows; radius v / |w| is the turning circle.
+  EXPECT_NEAR(right->yaw_rate_radps, 6.0 / Helm::kTurningRadiusM, 1e-12);
   const auto left = helm.update({0, -0.5}, 0.02);
   ASSERT_TRUE(left);
-  EXPECT_NEAR(left->yaw_rate_radps, 0.5 * 6.0 / Helm::kTurningRadiusM, 1e-12);
+  EXPECT_NEAR(left->yaw_rate_radps, -0.5 * 6.0 / Helm::kTurningRadiusM, 1e-12);
   // Fast, the rate of turn is capped.
   Helm fast;
   fast.take(0, cruising(Helm::kMaxSpeedMps));
-  EXPECT_NEAR(fast.update({0, 1}, 0.02)->yaw_rate_radps, -Helm::kMaxYawRateRadps, 1e-12);
+  EXPECT_NEAR(fast.update({0, 1}, 0.02)->yaw_rate_radps, Helm::kMaxYawRateRadps, 1e-12);
   // Stopped, the rudder does nothing.
   Helm stopped;
   stopped.take(0, cruising(0.0));

@@ -222,18 +222,21 @@ TEST(DynamicLayerFoam, CrossingTrailsSaturateAndSubmergedHullsLeaveNone) {
   // A long lifetime: what the crossing holds is what the two trails laid there.
   ocean::DynamicLayerParams p{.n = 128, .cell_m = 0.25, .sponge_m = 4, .foam_lifetime_s = 3600};
   ocean::DynamicLayerCpu layer(p, 2);
-  std::vector<ocean::WakeSource> hulls{
-      {.centre = {6, 16},
-       .velocity = {3, 0},
-       .heading = std::numbers::pi / 2,
-       .sigma = {1, 0.5},
-       .foam_per_s = 40},
-      {.centre = {16, 6}, .velocity = {0, 3}, .heading = 0, .sigma = {1, 0.5}, .foam_per_s = 40},
-      {.centre = {20, 26},
-       .velocity = {-3, 0},
-       .heading = -std::numbers::pi / 2,
-       .sigma = {1, 0.2},
-       .depth = 4}};
+  std::vector<ocean::WakeSource> hulls{{.centre = {6, 16},
+                                        .velocity = {3, 0},
+                                        .heading = std::numbers::pi / 2,
+                                        .sigma = {1, 0.5},
+                                        .foam_per_s = 40},
+                                       {.centre = {16, 6},
+                                        .velocity = {0, 3},
+                                        .heading = std::numbers::pi,  // south, +z
+                                        .sigma = {1, 0.5},
+                                        .foam_per_s = 40},
+                                       {.centre = {20, 26},
+                                        .velocity = {-3, 0},
+                                        .heading = -std::numbers::pi / 2,
+                                        .sigma = {1, 0.2},
+                                        .depth = 4}};
   for (int s = 0; s < 70; ++s) {
     layer.step(0.1, hulls);
     for (ocean::WakeSource& h : hulls) h.centre += h.velocity * 0.1;

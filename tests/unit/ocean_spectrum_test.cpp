@@ -292,17 +292,20 @@ TEST(OceanSpectrum, PhillipsEq18IntegratesToTheHsOfItsFormula) {
   }
 }
 
-TEST(OceanSpectrum, WindDirectionIsClockwiseFromPlusZ) {
+// The compass: clockwise from north (-z) toward east (+x), seen from above.
+TEST(OceanSpectrum, WindDirectionIsClockwiseFromNorth) {
   OceanParams p;  // JONSWAP, cos-2s
   const double k = 0.1;
-  p.spectrum.wind_direction_deg = 0.0;  // towards +z
-  EXPECT_GT(directional_spectrum(p, 0.0, k), 10.0 * directional_spectrum(p, k, 0.0));
-  EXPECT_GT(directional_spectrum(p, 0.0, k), 10.0 * directional_spectrum(p, 0.0, -k));
-  p.spectrum.wind_direction_deg = 90.0;  // towards +x
+  p.spectrum.wind_direction_deg = 0.0;  // towards north, -z
+  EXPECT_GT(directional_spectrum(p, 0.0, -k), 10.0 * directional_spectrum(p, k, 0.0));
+  EXPECT_GT(directional_spectrum(p, 0.0, -k), 10.0 * directional_spectrum(p, 0.0, k));
+  p.spectrum.wind_direction_deg = 90.0;  // towards east, +x
   EXPECT_GT(directional_spectrum(p, k, 0.0), 10.0 * directional_spectrum(p, 0.0, k));
   EXPECT_GT(directional_spectrum(p, k, 0.0), 10.0 * directional_spectrum(p, -k, 0.0));
-  p.spectrum.wind_direction_deg = 45.0;
-  EXPECT_NEAR(directional_spectrum(p, k, 0.0), directional_spectrum(p, 0.0, k), 1e-12);
+  p.spectrum.wind_direction_deg = 180.0;  // towards south, +z
+  EXPECT_GT(directional_spectrum(p, 0.0, k), 10.0 * directional_spectrum(p, 0.0, -k));
+  p.spectrum.wind_direction_deg = 45.0;  // north-east: +x and -z alike
+  EXPECT_NEAR(directional_spectrum(p, k, 0.0), directional_spectrum(p, 0.0, -k), 1e-12);
   EXPECT_EQ(directional_spectrum(p, 0.0, 0.0), 0.0);
 }
 

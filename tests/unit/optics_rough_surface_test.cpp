@@ -19,9 +19,11 @@ namespace {
 using optics::SurfaceCoefficients;
 constexpr double kWater = 1.333;
 
+// Toward a sun at a compass azimuth (clockwise from north, -z, as the wind's direction): 30 is downwind of
+// the test sea's wind, 120 across it.
 glm::dvec3 sun_at(double zenith_deg, double azimuth_deg) {
   const double z = zenith_deg * std::numbers::pi / 180, a = azimuth_deg * std::numbers::pi / 180;
-  return {std::sin(z) * std::sin(a), std::cos(z), std::sin(z) * std::cos(a)};
+  return {std::sin(z) * std::sin(a), std::cos(z), -std::sin(z) * std::cos(a)};
 }
 
 void expect_same(const SurfaceCoefficients& a, const SurfaceCoefficients& b) {

@@ -85,7 +85,7 @@ TEST(SceneParse, EmptyObjectGivesDefaults) {
   EXPECT_FLOAT_EQ(scene->camera.near_m, 0.1f);
   EXPECT_FLOAT_EQ(scene->camera.far_m, 5000.f);
   EXPECT_FLOAT_EQ(scene->sun.elevation_deg, 35.f);
-  EXPECT_FLOAT_EQ(scene->sun.azimuth_deg, 210.f);
+  EXPECT_FLOAT_EQ(scene->sun.azimuth_deg, 330.f);
   EXPECT_FLOAT_EQ(scene->sun.intensity, 1.f);
   EXPECT_EQ(scene->render.width, 1280u);
   EXPECT_EQ(scene->render.height, 720u);
@@ -173,7 +173,7 @@ TEST(SceneOcean, AbsentBlockGivesDefaults) {
   EXPECT_EQ(o.loop_period_s, 0.0);
   EXPECT_EQ(o.spectrum.type, SpectrumType::Jonswap);
   EXPECT_EQ(o.spectrum.wind_speed_mps, 10.0);
-  EXPECT_EQ(o.spectrum.wind_direction_deg, 0.0);
+  EXPECT_EQ(o.spectrum.wind_direction_deg, 180.0);
   EXPECT_EQ(o.spectrum.fetch_km, 100.0);
   EXPECT_EQ(o.spectrum.gamma, 3.3);
   EXPECT_EQ(o.spectrum.spreading, Spreading::Cos2s);
@@ -329,7 +329,7 @@ TEST(SceneOcean, OutOfRangeValues) {
       {R"({"spectrum": {"fetch_km": 0}})",
        "ocean.spectrum.fetch_km: 0 is out of range; allowed: number > 0 and <= 10000 km (default 100)"},
       {R"({"spectrum": {"wind_direction_deg": 361}})",
-       "ocean.spectrum.wind_direction_deg: 361 is out of range; allowed: number 0 to 360 deg (default 0)"},
+       "ocean.spectrum.wind_direction_deg: 361 is out of range; allowed: number 0 to 360 deg (default 180)"},
       {R"({"spectrum": {"gamma": 0.5}})",
        "ocean.spectrum.gamma: 0.5 is out of range; allowed: number 1 to 20"},
       {R"({"spectrum": {"swell": 1.5}})",
@@ -449,7 +449,7 @@ TEST(SceneErrors, OutOfRange) {
 
 TEST(SceneErrors, AzimuthDoesNotWrap) {
   EXPECT_TRUE(Contains(ParseError(R"({"sun": {"azimuth_deg": 370}})"),
-                       "sun.azimuth_deg: 370 is out of range; allowed: number 0 to 360 deg (default 210)"));
+                       "sun.azimuth_deg: 370 is out of range; allowed: number 0 to 360 deg (default 330)"));
   EXPECT_TRUE(
       Contains(ParseError(R"({"sun": {"azimuth_deg": -10}})"), "sun.azimuth_deg: -10 is out of range"));
 }
@@ -1158,16 +1158,19 @@ void ExpectNear(glm::vec3 got, glm::vec3 expected, const std::string& what) {
   EXPECT_NEAR(got.z, expected.z, 1e-6f) << what;
 }
 
+// The compass (core/compass.h): clockwise from north (-z) toward east (+x), seen from above.
 TEST(SceneCamera, YawAndPitchSetLookAt) {
-  ExpectNear(ViewOf(R"({"yaw_deg": 0, "pitch_deg": 0})"), {0, 0, 1}, "yaw 0 looks north (+z)");
+  ExpectNear(ViewOf(R"({"yaw_deg": 0, "pitch_deg": 0})"), {0, 0, -1}, "yaw 0 looks north (-z)");
   ExpectNear(ViewOf(R"({"yaw_deg": 90, "pitch_deg": 0})"), {1, 0, 0}, "yaw 90 looks east (+x)");
-  ExpectNear(ViewOf(R"({"yaw_deg": 180, "pitch_deg": 0})"), {0, 0, -1}, "yaw 180 looks south");
+  ExpectNear(ViewOf(R"({"yaw_deg": 180, "pitch_deg": 0})"), {0, 0, 1}, "yaw 180 looks south (+z)");
+  const float h = std::sqrt(0.5f);
+  ExpectNear(ViewOf(R"({"yaw_deg": 45, "pitch_deg": 0})"), {h, 0, -h}, "yaw 45 looks north-east");
   ExpectNear(ViewOf(R"({"yaw_deg": -90, "pitch_deg": 0})"), {-1, 0, 0}, "yaw -90 = 270 looks west");
   ExpectNear(ViewOf(R"({"yaw_deg": 270, "pitch_deg": 0})"), {-1, 0, 0}, "yaw 270 looks west");
   ExpectNear(ViewOf(R"({"yaw_deg": 37, "pitch_deg": -90})"), {0, -1, 0}, "pitch -90 looks straight down");
   ExpectNear(ViewOf(R"({"yaw_deg": 0, "pitch_deg": 90})"), {0, 1, 0}, "pitch 90 looks straight up");
   const float c = std::sqrt(0.5f);
-  ExpectNear(ViewOf(R"({"yaw_deg": 0, "pitch_deg": 45})"), {0, c, c}, "pitch up is positive");
+  ExpectNear(ViewOf(R"({"yaw_deg": 0, "pitch_deg": 45})"), {0, c, -c}, "pitch up is positive");
   ExpectNear(ViewOf(R"({"yaw_deg": 90, "pitch_deg": -30})"), {std::cos(glm::radians(30.f)), -0.5f, 0},
              "east and 30 degrees down");
 }

@@ -21,8 +21,10 @@ double angle_between(const glm::dquat& a, const glm::dquat& b) {
   return 2.0 * std::acos(std::min(1.0, std::abs(glm::dot(a, b))));
 }
 
+// A model facing +z turned to a compass heading (clockwise from north, -z): Ry(π - heading) takes +z to
+// (sin h, 0, -cos h).
 glm::dquat yaw(double heading) {
-  return glm::angleAxis(heading, glm::dvec3(0, 1, 0));
+  return glm::angleAxis(std::numbers::pi - heading, glm::dvec3(0, 1, 0));
 }
 
 physics::WaypointPath square_loop(double speed) {
@@ -35,7 +37,8 @@ TEST(WaypointPath, StraightOpenPathAtConstantSpeedThenStops) {
   const physics::TrackPoint p = path.at(2.0);
   EXPECT_NEAR(p.position.x, 6.0, 1e-6);
   EXPECT_NEAR(p.position.y, 8.0, 1e-6);
-  EXPECT_NEAR(p.heading, std::atan2(30.0, 40.0), 1e-6);  // clockwise from +z toward +x
+  // Toward +x (east) and +z (south): a compass heading of 180° - atan(30/40) = 143.13°.
+  EXPECT_NEAR(p.heading, std::numbers::pi - std::atan2(30.0, 40.0), 1e-6);
   EXPECT_NEAR(p.velocity.x, 3.0, 1e-6);
   EXPECT_NEAR(p.velocity.y, 4.0, 1e-6);
   const physics::TrackPoint end = path.at(20.0);  // 100 m of travel on a 50 m path
@@ -62,8 +65,9 @@ TEST(WaypointPath, ClosedLoopPassesEveryWaypointAtConstantSpeedWithASmoothHeadin
     for (int c = 0; c < 4; ++c) nearest[c] = std::min(nearest[c], glm::distance(p.position, corners[c]));
     const glm::dvec2 moved = p.position - last.position;
     ASSERT_NEAR(glm::length(moved) / dt, speed, 0.01 * speed) << "t = " << t;
-    // The heading is the direction of travel, and it turns without jumps (also where the loop closes).
-    const double travel = std::atan2(moved.x, moved.y);
+    // The heading is the direction of travel (a compass angle, clockwise from north = -z), and it turns
+    // without jumps (also where the loop closes).
+    const double travel = std::atan2(moved.x, -moved.y);
     ASSERT_LT(std::abs(wrap_angle(travel - last.heading - 0.5 * wrap_angle(p.heading - last.heading))), 0.02)
         << "t = " << t;
     ASSERT_LT(std::abs(wrap_angle(p.heading - last.heading)), 0.05) << "t = " << t;
@@ -106,6 +110,10 @@ TEST(VehicleMotion, SurfaceVehicleRidesAtItsDraughtOnThePathAndHeading) {
     ASSERT_NEAR(origin.y, 0.0, 0.02 * 1.0) << "t = " << t;  // half of its 1 m height under
     ASSERT_LT(angle_between(motion.orientation(), yaw(track.heading)), 0.01) << "t = " << t;
     ASSERT_NEAR(glm::length(motion.velocity()), 3.0, 1e-6) << "t = " << t;
+    // Its bow (+z) points where it goes.
+    const glm::dvec3 bow = motion.orientation() * glm::dvec3(0, 0, 1);
+    ASSERT_LT(glm::distance(glm::normalize(glm::dvec2(bow.x, bow.z)), glm::normalize(track.velocity)), 0.02)
+        << "t = " << t;
   }
 }
 

@@ -18,9 +18,10 @@ physics::WaypointPath square_loop() {
   return physics::WaypointPath({{0, 0}, {40, 0}, {40, 40}, {0, 40}}, true, 4.0, 0.0);
 }
 
-// (x, z, heading) after `duration` at speed v and yaw rate w, by RK4 in 1 ms steps.
+// (x, z, heading) after `duration` at speed v and yaw rate w, by RK4 in 1 ms steps. The heading is a compass
+// angle, clockwise from north (-z) toward east (+x): the velocity is v (sin h, -cos h).
 glm::dvec3 integrate(glm::dvec3 s, double v, double w, double duration) {
-  auto f = [v, w](glm::dvec3 y) { return glm::dvec3(v * std::sin(y.z), v * std::cos(y.z), w); };
+  auto f = [v, w](glm::dvec3 y) { return glm::dvec3(v * std::sin(y.z), -v * std::cos(y.z), w); };
   const int n = int(std::round(duration / 1e-3));
   const double h = duration / n;
   for (int i = 0; i < n; ++i) {
@@ -38,7 +39,7 @@ TEST(VehicleTrack, OnItsPathUntilOrderedThenTheOrderedArcs) {
     EXPECT_EQ(track.at(t).position, path.at(t).position);
     EXPECT_EQ(track.at(t).heading, path.at(t).heading);
   }
-  // At 5 s: a turn to port at 5 m/s, 0.3 rad/s; at 12 s straight on at 2 m/s; at 15 s a starboard turn.
+  // At 5 s: a turn to starboard at 5 m/s, 0.3 rad/s; at 12 s straight on at 2 m/s; at 15 s a turn to port.
   track.order(5.0, {5.0, 0.3});
   track.order(12.0, {2.0, 0.0});
   track.order(15.0, {3.0, -0.5});
@@ -83,13 +84,13 @@ TEST(VehicleTrack, AnOrderForAnEarlierTimeReplaysFromThere) {
 TEST(VehicleTrack, AFullCircleComesBackToItsStart) {
   // 2π / w seconds of a constant turn: back where it started, heading as it started (radius v / w).
   physics::VehicleTrack track(physics::WaypointPath({{3, 4}, {3, 50}}, false, 2.0, 0.0));
-  track.order(1.0, {6.0, -0.4});
+  track.order(1.0, {6.0, 0.4});
   const physics::TrackPoint start = track.at(1.0);
   const physics::TrackPoint end = track.at(1.0 + 2 * std::numbers::pi / 0.4);
   EXPECT_NEAR(glm::distance(start.position, end.position), 0.0, 1e-9);
   EXPECT_NEAR(wrap_angle(start.heading - end.heading), 0.0, 1e-9);
-  // Half way round it is a diameter, 2 v / w, away; turning to starboard from heading +z (-0.4 rad/s) it
-  // went towards -x.
+  // Half way round it is a diameter, 2 v / w, away; turning to starboard (+0.4 rad/s, clockwise seen from
+  // above) from heading south (+z) it went west, towards -x.
   const physics::TrackPoint half = track.at(1.0 + std::numbers::pi / 0.4);
   EXPECT_NEAR(glm::distance(start.position, half.position), 2 * 6.0 / 0.4, 1e-9);
   EXPECT_LT(half.position.x, start.position.x - 29.0);

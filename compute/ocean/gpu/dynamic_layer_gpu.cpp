@@ -5,6 +5,7 @@
 #include <cstring>
 #include <vector>
 
+#include "core/compass.h"
 #include "lagoon_shaders/shaders.h"
 #include "shared/dynamic_layer.h"
 #include "vk/barriers.h"
@@ -25,7 +26,7 @@ gpu::DynamicSource to_gpu(const WakeSource& s, double period) {
   return {.centre = glm::vec2(centre),
           .velocity = glm::vec2(s.velocity),
           .sigma = glm::vec2(s.sigma),
-          .along = glm::vec2(std::sin(s.heading), std::cos(s.heading)),
+          .along = glm::vec2(compass::toward(s.heading)),
           .depression = float(s.depression),
           .depth = float(s.depth),
           .foam_per_s = float(s.foam_per_s)};
