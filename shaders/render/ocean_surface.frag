@@ -27,6 +27,7 @@ layout(location = 1) in vec2 v_rest;
 layout(location = 0) out vec4 out_colour;
 
 #include "common/surface_normal.glsl"
+#include "common/refracted_hit.glsl"
 #include "common/caustics.glsl"
 #include "common/underwater.glsl"
 #include "common/underwater_lamps.glsl"
@@ -47,19 +48,11 @@ vec3 water_radiance(vec3 n, vec3 v, out vec3 lamps, out float seen_m, out float 
   float down = max(-t.y, 0.05);
   seen_m = frame.lut.y / down;
   if (frame.lut.z < 0.5) return deep;
-  vec2 screen_uv = gl_FragCoord.xy * frame.screen.zw;
-  // Refraction offsets the lookup with the slope; keep it undistorted when the offset lands on something in
-  // front of the water (the usual guard against sampling objects that are not under the surface).
-  vec2 uv = screen_uv + n.xz * vec2(0.05, -0.05);
-  float depth = texture(refraction_depth, uv).r;
-  if (depth < gl_FragCoord.z) {
-    uv = screen_uv;
-    depth = texture(refraction_depth, uv).r;
-  }
+  float depth;
+  vec2 uv = refracted_hit(v_world, t, seen_m, depth);
   vec4 albedo = texture(refraction_albedo, uv);
   if (albedo.a < 0.5) return deep;
-  vec4 c = frame.inv_view_proj * vec4(uv.x * 2.0 - 1.0, 1.0 - uv.y * 2.0, depth, 1.0);
-  vec3 floor_point = c.xyz / c.w;
+  vec3 floor_point = world_of(uv, depth);
   float h = max(v_world.y - floor_point.y, 0.0);
   float l = h / down;
   seen_m = l;
