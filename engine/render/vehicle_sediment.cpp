@@ -4,7 +4,7 @@
 #include <string>
 
 #include "gltf/gltf_loader.h"
-#include "render/seafloor.h"
+#include "render/floor_height.h"
 #include "render/vehicle_tracks.h"
 
 namespace lagoon::render {
@@ -12,7 +12,11 @@ namespace lagoon::render {
 Result<VehicleSediment> VehicleSediment::create(const scene::Scene& scene, VehicleTracks tracks) {
   VehicleSediment out;
   const scene::Sediment& s = scene.sediment;
-  if (!s.enabled || scene.vehicles.empty() || scene.seafloor.type != scene::SeafloorType::Slope) return out;
+  if (!s.enabled || scene.vehicles.empty()) return out;
+  // Every kind of floor stirs: the slope, a glTF floor (by its triangles), or with none the sea's bottom at
+  // ocean.depth_m, which no vehicle comes near. The same heights the bodies rest on.
+  auto floor = floor_height(scene);
+  if (!floor) return floor.error();
   tracks = tracks_or_fresh(scene, std::move(tracks));
   std::vector<physics::StirrerBottom> stirrers;
   for (size_t v = 0; v < scene.vehicles.size(); ++v) {
@@ -28,7 +32,6 @@ Result<VehicleSediment> VehicleSediment::create(const scene::Scene& scene, Vehic
       return glm::dvec3(p.x, bottom, p.y);
     });
   }
-  const scene::Seafloor floor = scene.seafloor;
   out.cloud_.emplace(
       physics::SedimentParams{.release_height_m = s.release_height_m,
                               .release_g_per_s = s.release_g_per_s,
@@ -39,7 +42,7 @@ Result<VehicleSediment> VehicleSediment::create(const scene::Scene& scene, Vehic
                               .current_mps = glm::dvec2(s.current_mps),
                               .interval_s = s.interval_s,
                               .max_age_s = s.max_age_s},
-      [floor](glm::dvec2 xz) { return double(slope_depth(floor, glm::vec2(xz))); }, std::move(stirrers));
+      [height = *floor](glm::dvec2 xz) { return -height(xz.x, xz.y); }, std::move(stirrers));
   out.attenuation_ = s.attenuation_m2_per_g;
   out.colour_ = s.colour;
   return out;

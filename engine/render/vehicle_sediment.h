@@ -1,7 +1,7 @@
 // The scene's vehicles as stirrers of the floor (docs/physics.md, Sediment): each hull's lowest point along
-// its path, over the slope floor's heights, releases clouds (physics/sediment.h) with the scene's `sediment`
-// parameters. Shared by the frame (its sediment buffer, shared/sediment.h) and the tools, so both see the
-// same clouds.
+// its path, over the floor's heights (render/floor_height.h: the slope, a glTF floor), releases clouds
+// (physics/sediment.h) with the scene's `sediment` parameters. Shared by the frame (its sediment buffer,
+// shared/sediment.h) and the tools, so both see the same clouds.
 #pragma once
 #include <optional>
 #include <vector>
@@ -17,8 +17,8 @@ namespace lagoon::render {
 class VehicleSediment {
  public:
   // Fails naming the field when a vehicle's model cannot be read (its lowest point comes from its bounds).
-  // Empty when sediment.enabled is false, there are no vehicles, or the floor's heights are not known on the
-  // CPU (only the procedural slope floor's are).
+  // Fails naming seafloor.file when a glTF floor cannot be read. Empty when sediment.enabled is false or
+  // there are no vehicles.
   // The stirrers follow `tracks` (one per scene vehicle; fresh ones on the scene's paths when not given).
   static Result<VehicleSediment> create(const scene::Scene& scene, VehicleTracks tracks = {});
 

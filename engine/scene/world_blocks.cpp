@@ -238,8 +238,7 @@ void read_wakes(ObjectReader& r, Wakes& w) {
 
 void read_sediment(ObjectReader& r, Sediment& s) {
   r.flag("enabled", s.enabled,
-         "Vehicles that pass near the floor stir up sediment; needs the slope floor (`seafloor.type` "
-         "\"slope\"), whose heights are known on the CPU.");
+         "Vehicles that pass near the floor (the slope or a glTF floor) stir up sediment.");
   r.number("release_height_m", s.release_height_m, Bounds::between(0, 100), "m",
            "A hull whose lowest point (or, submerged, its propeller wash there) comes closer to the floor "
            "than this stirs it up; 0 = never.");

@@ -170,6 +170,33 @@ TEST(FloatingObjects, TheFloorIsKnownOnTheCpuForEveryKindOfFloor) {
   EXPECT_EQ((*none)(3.0, 4.0), -s.ocean.depth_m);
 }
 
+// Sediment is stirred over a glTF floor as over the slope (issue 39): the harbour's AUV (4.4 m down) over a
+// level glTF floor at 5.2 m releases clouds that start from that floor, and the same floor 45 m down, far
+// below the hull, stirs nothing.
+TEST(FloatingObjects, AGltfFloorIsStirredAsTheSlopeIs) {
+  TempDir dir;
+  scene::Scene s = shipped_scene("harbour", {"sediment.current_mps=[0,0]"});
+  s.seafloor.type = scene::SeafloorType::Gltf;
+  auto puffs_over = [&](double floor_y) {
+    const std::string file = (dir / ("floor" + std::to_string(int(-floor_y)) + ".gltf")).string();
+    write_quads(file, {{.material = nlohmann::json::object(),
+                        .translation = {0, floor_y, 6},
+                        .rotation = {-0.70710678, 0, 0, 0.70710678},
+                        .half = 100}});
+    s.seafloor.file = file;
+    auto sediment = render::VehicleSediment::create(s);
+    EXPECT_TRUE(sediment) << sediment.error().message;
+    return sediment ? sediment->puffs(10.0) : std::vector<physics::SedimentPuff>{};
+  };
+  const std::vector<physics::SedimentPuff> near = puffs_over(-5.2);
+  ASSERT_GT(near.size(), 3u) << "the AUV passes 0.5 m over the floor";
+  for (const physics::SedimentPuff& p : near) {
+    // Released rise_m over the floor, then sinking at the settling speed.
+    EXPECT_NEAR(p.centre.y, -5.2 + s.sediment.rise_m - s.sediment.settling_mps * p.age_s, 1e-4);
+  }
+  EXPECT_TRUE(puffs_over(-45.0).empty()) << "a floor far below the hull is not stirred";
+}
+
 TEST(FloatingObjects, AMeshThatEnclosesNothingIsRefusedNamingTheField) {
   TempDir dir;
   std::ofstream(dir / "sheet.gltf")
