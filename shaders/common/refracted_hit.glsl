@@ -30,11 +30,15 @@ float world_y_of(vec2 uv, float depth) {
 // something in front of the water, the last point found (at first the pixel's own).
 vec2 refracted_hit(vec3 p, vec3 t, float max_m, out float depth) {
   vec2 uv = gl_FragCoord.xy * frame.screen.zw;
-  depth = texture(refraction_depth, uv).r;
+  depth = textureLod(refraction_depth, uv, 0.0).r;
   float down = max(-t.y, 0.05);
   float below = p.y - world_y_of(uv, depth), last = -1.0;
-  // The clip position is linear along the ray: p's and t's once, then each guess is a multiply-add.
-  vec4 clip_p = frame.view_proj * vec4(p, 1.0), clip_t = frame.view_proj * vec4(t, 0.0);
+  // The clip position is linear along the ray: p's and t's once, then each guess is a multiply-add. The
+  // projection is the inverse's inverse: reading frame.view_proj in this fragment shader makes lavapipe's
+  // resident memory grow by about 0.9 MiB a frame (Mesa 22.3; `lagoon soak` +32 % in 100 frames), this
+  // does not.
+  mat4 view_proj = inverse(frame.inv_view_proj);
+  vec4 clip_p = view_proj * vec4(p, 1.0), clip_t = view_proj * vec4(t, 0.0);
   vec2 deepest_uv = uv;
   float deepest_depth = depth, deepest = below;
   for (int i = 0; i < kRefractedSteps; ++i) {
@@ -44,7 +48,7 @@ vec2 refracted_hit(vec3 p, vec3 t, float max_m, out float depth) {
     // Off the screen nothing was drawn: the edge's nearest pixel stands in (a level floor continues there).
     vec4 clip = clip_p + s * clip_t;
     vec2 next = clamp(vec2(0.5, 0.5) + vec2(0.5, -0.5) * clip.xy / clip.w, vec2(0.0), vec2(1.0));
-    float d = texture(refraction_depth, next).r;
+    float d = textureLod(refraction_depth, next, 0.0).r;
     if (d < gl_FragCoord.z) return uv;
     uv = next;
     depth = d;
