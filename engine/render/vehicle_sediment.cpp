@@ -12,9 +12,9 @@ namespace lagoon::render {
 Result<VehicleSediment> VehicleSediment::create(const scene::Scene& scene, VehicleTracks tracks) {
   VehicleSediment out;
   const scene::Sediment& s = scene.sediment;
-  if (!s.enabled || scene.vehicles.empty()) return out;
-  // Every kind of floor stirs: the slope, a glTF floor (by its triangles), or with none the sea's bottom at
-  // ocean.depth_m, which no vehicle comes near. The same heights the bodies rest on.
+  // Every drawn floor stirs, the slope and a glTF floor (by its triangles): the heights the bodies rest on.
+  // Without one there is nothing to stir (and the shaders compile the clouds out).
+  if (!s.enabled || scene.vehicles.empty() || scene.seafloor.type == scene::SeafloorType::None) return out;
   auto floor = floor_height(scene);
   if (!floor) return floor.error();
   tracks = tracks_or_fresh(scene, std::move(tracks));

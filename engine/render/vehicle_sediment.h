@@ -17,8 +17,8 @@ namespace lagoon::render {
 class VehicleSediment {
  public:
   // Fails naming the field when a vehicle's model cannot be read (its lowest point comes from its bounds).
-  // Fails naming seafloor.file when a glTF floor cannot be read. Empty when sediment.enabled is false or
-  // there are no vehicles.
+  // Fails naming seafloor.file when a glTF floor cannot be read. Empty when sediment.enabled is false, there
+  // are no vehicles or no floor is drawn (seafloor.type "none").
   // The stirrers follow `tracks` (one per scene vehicle; fresh ones on the scene's paths when not given).
   static Result<VehicleSediment> create(const scene::Scene& scene, VehicleTracks tracks = {});
 
