@@ -9,9 +9,7 @@ namespace lagoon::demo {
 namespace {
 
 glm::vec3 direction(float yaw_deg, float pitch_deg) {
-  const float pitch = glm::radians(pitch_deg);
-  const glm::vec2 ahead = glm::vec2(compass::toward_deg(yaw_deg)) * std::cos(pitch);
-  return {ahead.x, std::sin(pitch), ahead.y};
+  return glm::vec3(compass::direction_deg(yaw_deg, pitch_deg));
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
 namespace lagoon::compass {
 
@@ -34,6 +35,14 @@ inline glm::dvec2 toward_deg(double azimuth_deg) {
     default:
       return rest;
   }
+}
+
+// Unit world direction at a compass azimuth and an angle above the horizon (degrees): the sun's direction,
+// a camera's view from yaw and pitch. In double, so an elevation of ±90 leaves x and z at ~1e-17.
+inline glm::dvec3 direction_deg(double azimuth_deg, double elevation_deg) {
+  const double elevation = radians(elevation_deg);
+  const glm::dvec2 across = toward_deg(azimuth_deg) * std::cos(elevation);
+  return {across.x, std::sin(elevation), across.y};
 }
 
 // Azimuth (rad, in [−π, π]) of the horizontal direction (x, z); the inverse of toward().

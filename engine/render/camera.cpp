@@ -23,9 +23,7 @@ CameraMatrices camera_matrices(const scene::Camera& camera, float aspect) {
 }
 
 glm::vec3 sun_direction(const scene::Sun& sun) {
-  const double el = glm::radians(double{sun.elevation_deg});
-  const glm::dvec2 across = compass::toward_deg(double{sun.azimuth_deg}) * std::cos(el);
-  return glm::vec3(glm::dvec3(across.x, std::sin(el), across.y));
+  return glm::vec3(compass::direction_deg(sun.azimuth_deg, sun.elevation_deg));
 }
 
 }  // namespace lagoon::render

@@ -32,9 +32,7 @@ using nlohmann::json;
 // Unit view direction for a compass yaw (core/compass.h, like the sun's azimuth) and a pitch above the
 // horizon. In double so that pitch -90 gives x and z of ~1e-17, not float cos() noise.
 glm::vec3 view_direction(float yaw_deg, float pitch_deg) {
-  const double pitch = glm::radians(double{pitch_deg});
-  const glm::dvec2 ahead = compass::toward_deg(double{yaw_deg}) * std::cos(pitch);
-  return glm::vec3(glm::dvec3(ahead.x, std::sin(pitch), ahead.y));
+  return glm::vec3(compass::direction_deg(yaw_deg, pitch_deg));
 }
 
 void read_camera_gltf(ObjectReader& r, CameraFromGltf& g) {
