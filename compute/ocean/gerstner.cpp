@@ -10,6 +10,16 @@
 #include "ocean/spectrum.h"
 #include "ocean/spreading.h"
 
+namespace {
+using dw_real = double;
+using dw_real2 = glm::dvec2;
+using std::cos;
+using std::sin;
+#define LAGOON_FN inline
+#include "shared/direct_waves_math.h"
+#undef LAGOON_FN
+}  // namespace
+
 namespace lagoon::ocean {
 
 double gerstner_omega(GerstnerDispersion law, double k, double depth_m) {
@@ -32,6 +42,12 @@ GerstnerSurface::GerstnerSurface(GerstnerParams params) : params_(std::move(para
     omega_.push_back(
         quantise_omega(gerstner_omega(params_.dispersion, k, params_.depth_m), params_.loop_period_s));
     q_.push_back(w.steepness);
+    double mean = 0;  // C(2p, p) / 4^p
+    if (w.power > 0) {
+      mean = 1;
+      for (uint32_t j = 1; j <= w.power; ++j) mean *= double(w.power + j) / double(j) / 4.0;
+    }
+    mean_.push_back(mean);
     sum += w.steepness * k * w.amplitude_m;
   }
   if (params_.limit_steepness && sum > 1)
@@ -57,14 +73,15 @@ GerstnerPoint GerstnerSurface::at_rest(glm::dvec2 x0, double t) const {
     const glm::dvec2 d = k_[i] / k;
     const double theta = glm::dot(k_[i], x0) - omega_[i] * t + w.phase_rad;
     const double s = std::sin(theta), c = std::cos(theta), qa = q_[i] * w.amplitude_m;
+    const glm::dvec2 g = dw_profile(theta, double(w.power), mean_[i]);  // (g, dg/dθ)
     shift -= qa * d * s;
-    y += w.amplitude_m * c;
-    vxz += qa * d * c * omega_[i];        // d/dt of -Q A d sin θ, dθ/dt = -ω
-    vy += w.amplitude_m * s * omega_[i];  // d/dt of A cos θ
+    y += w.amplitude_m * g.x;
+    vxz += qa * d * c * omega_[i];          // d/dt of -Q A d sin θ, dθ/dt = -ω
+    vy -= w.amplitude_m * g.y * omega_[i];  // d/dt of A g(θ)
     jxx -= qa * k * d.x * d.x * c;
     jxz -= qa * k * d.x * d.y * c;
     jzz -= qa * k * d.y * d.y * c;
-    dy -= w.amplitude_m * k_[i] * s;
+    dy += w.amplitude_m * g.y * k_[i];
   }
   GerstnerPoint p;
   p.position = {x0.x + shift.x, y, x0.y + shift.y};

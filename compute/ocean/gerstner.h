@@ -22,6 +22,9 @@ struct GerstnerWave {
   double direction_deg = 180;  // the direction it travels, compass degrees (as the wind)
   double phase_rad = 0;        // φ
   double steepness = 1;        // Q: 0 = a sum of sines, 1 = the document's circles
+  // The height's profile: 0 = eq. 11's A cos θ; p >= 1 = the sum of sines' A ((1 + sin θ)/2)^p (eqs. 2-3),
+  // less its mean C(2p, p)/4^p (shared/direct_waves_math.h).
+  uint32_t power = 0;
 };
 
 struct GerstnerParams {
@@ -48,6 +51,8 @@ class GerstnerSurface {
   double omega(size_t wave) const { return omega_[wave]; }
   glm::dvec2 wavevector(size_t wave) const { return k_[wave]; }
   double steepness(size_t wave) const { return q_[wave]; }  // after the limit
+  const GerstnerParams& params() const { return params_; }
+  double profile_mean(size_t wave) const { return mean_[wave]; }  // left out of the height (power > 0)
   // Σ Q_i |k_i| A_i: at most 1 with the limit on.
   double steepness_sum() const;
 
@@ -60,7 +65,7 @@ class GerstnerSurface {
  private:
   GerstnerParams params_;
   std::vector<glm::dvec2> k_;
-  std::vector<double> omega_, q_;
+  std::vector<double> omega_, q_, mean_;  // mean_: the profile's, left out
 };
 
 // ω(k) of the chosen law, before quantisation: sqrt(g k) (eq. 7), sqrt(g k tanh(k D)) (eq. 8), or

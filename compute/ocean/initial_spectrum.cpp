@@ -7,6 +7,7 @@
 #include <system_error>
 #include <thread>
 
+#include "ocean/direct_waves.h"
 #include "ocean/dispersion.h"
 #include "ocean/gerstner.h"
 #include "ocean/perlin.h"
@@ -86,6 +87,7 @@ CascadeSpectrum empty_cascade_spectrum(const OceanParams& params, uint32_t casca
 CascadeSpectrum make_cascade_spectrum(const OceanParams& params, uint32_t cascade) {
   CascadeSpectrum out = empty_cascade_spectrum(params, cascade);
   if (out.resolution == 0) return out;
+  if (evaluated_directly(params)) return out;  // summed where drawn (direct_waves.h), not in the spectrum
   if (params.model == SurfaceModel::Gerstner) return gerstner_cascade_spectrum(params, cascade);
   if (params.model == SurfaceModel::Sines) return sines_cascade_spectrum(params, cascade);
   if (params.model == SurfaceModel::Perlin) return perlin_cascade_spectrum(params, cascade);

@@ -2,6 +2,7 @@
 // field with its unit, default and range). Plain data, no Vulkan.
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,7 +35,7 @@ struct SpectrumParams {
 };
 
 // Which surface model makes the sea (issue 15, docs/models.md): the FFT ocean's random spectrum, or an
-// explicit set of Gerstner waves evaluated through the same cascades.
+// explicit set of waves (Gerstner's or sines) evaluated directly where they are drawn (ocean/direct_waves.h).
 enum class SurfaceModel { Fft, Gerstner, Sines, Perlin, Springs };
 
 // Gerstner waves' dispersion (seed 001): eq. 7 deep water, eq. 8 finite depth, eq. 9 capillary.
@@ -45,6 +46,8 @@ struct GerstnerWaveSpec {
   double wavelength_m = 20;
   double direction_deg = 180;  // travels toward, compass degrees
   double phase_deg = 0;
+  std::optional<double>
+      steepness;  // Q_i of eq. 11; none: ocean.choppiness (as every wave sampled from the spectrum)
 };
 
 // Three waves of a moderate swell (Σ k A = 0.37): what a scene switched to model gerstner starts with.

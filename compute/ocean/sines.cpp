@@ -84,11 +84,18 @@ CascadeSpectrum sines_cascade_spectrum(const OceanParams& params, uint32_t casca
 double sines_height(const OceanParams& params, double t, double x, double z) {
   const std::vector<SineLattice> lattice = sines_lattice(params);
   const std::vector<SineWaveSpec> waves = sines_wave_specs(params);
+  const bool exact = params.sines.spectrum_waves == 0;  // summed directly (direct_waves.h): no lattice
   double h = 0;
   for (size_t i = 0; i < lattice.size(); ++i) {
     const SineWaveSpec& w = waves[i];
-    const double s = glm::dot(lattice[i].wave.k, glm::dvec2(x, z)) - lattice[i].omega * t +
-                     w.phase_deg * std::numbers::pi / 180;
+    glm::dvec2 k = lattice[i].wave.k;
+    double omega = lattice[i].omega;
+    if (exact) {
+      k = wave_vector(w.wavelength_m, w.direction_deg);
+      omega = quantise_omega(gerstner_omega(params.sines.dispersion, glm::length(k), params.depth_m),
+                             params.loop_period_s);
+    }
+    const double s = glm::dot(k, glm::dvec2(x, z)) - omega * t + w.phase_deg * std::numbers::pi / 180;
     double mean = 1;  // C(2p, p) / 4^p
     for (uint32_t j = 1; j <= w.steepness; ++j) mean *= double(w.steepness + j) / double(j) / 4.0;
     h += w.amplitude_m * (std::pow(0.5 * (1 + std::sin(s)), double(w.steepness)) - mean);

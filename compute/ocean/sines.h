@@ -32,7 +32,9 @@ std::vector<SineLattice> sines_lattice(const OceanParams& params);
 
 CascadeSpectrum sines_cascade_spectrum(const OceanParams& params, uint32_t cascade);
 
-// Eqs. 2-3 evaluated directly at (x, z) and t for the lattice waves, less the mean level: the reference.
+// Eqs. 2-3 evaluated at (x, z) and t, less the mean level: the reference. For the scene's own waves (summed
+// directly, direct_waves.h) with their exact wave vectors; for waves sampled from the spectrum, on the
+// lattice.
 double sines_height(const OceanParams& params, double time_s, double x, double z);
 
 }  // namespace lagoon::ocean

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "ocean/direct_waves.h"
 #include "ocean/gerstner.h"
 #include "ocean/initial_spectrum.h"
 #include "ocean/model_constraints.h"
@@ -107,6 +108,30 @@ void check_cascades(const OceanParams& p, Problems& problems) {
   }
 }
 
+// Waves evaluated directly (direct_waves.h): each its own Q_i, and no loops (Σ Q_i k_i A_i <= 1).
+void check_direct_steepness(const GerstnerParams& direct, const OceanParams& p, Problems& problems) {
+  double sum = 0, fixed = 0, chopped = 0;  // Σ Q k A; of it, the waves with their own Q and those with λ
+  for (size_t i = 0; i < direct.waves.size(); ++i) {
+    const GerstnerWave& w = direct.waves[i];
+    const double k = 2 * std::numbers::pi / w.wavelength_m;
+    if (!(w.steepness >= 0) || !(w.steepness <= 1))
+      problems.add(
+          "gerstner.waves[" + std::to_string(i) + "].steepness",
+          num(w.steepness) + " must be 0 to 1 (Q of eq. 11: 0 = a sine, 1 = the document's circles)");
+    sum += w.steepness * k * w.amplitude_m;
+    (p.gerstner.waves[i].steepness ? fixed : chopped) += w.steepness * k * w.amplitude_m;
+  }
+  if (sum <= 1 + 1e-12) return;
+  if (chopped > 0)
+    problems.add("choppiness",
+                 num(p.choppiness) + " loops the crests of these Gerstner waves: Σ Q k A = " + num(sum) +
+                     " > 1 (Q = choppiness where a wave sets no steepness); use at most " +
+                     num(std::max(0.0, 1 - fixed) / (chopped / p.choppiness)) + " or lower the amplitudes");
+  else
+    problems.add("gerstner.waves", "their steepness loops the crests: Σ Q_i k_i A_i = " + num(sum) +
+                                       " > 1; lower the waves' steepness or amplitudes");
+}
+
 // Model gerstner: every wave finite and held by some cascade's band, and no loops (Σ λ k A <= 1).
 void check_gerstner(const OceanParams& p, Problems& problems) {
   const std::vector<GerstnerWaveSpec> waves = gerstner_wave_specs(p);
@@ -136,6 +161,10 @@ void check_gerstner(const OceanParams& p, Problems& problems) {
     if (finite) sum += 2 * std::numbers::pi / w.wavelength_m * w.amplitude_m;
   }
   if (!finite) return;
+  if (std::optional<GerstnerParams> direct = direct_wave_params(p)) {
+    check_direct_steepness(*direct, p, problems);
+    return;
+  }
   std::vector<int> cascade_of;
   lattice_gerstner_waves(p, &cascade_of);
   const double shortest = 2 * std::numbers::pi / cascade_bands(p).back().k_max;
@@ -170,6 +199,7 @@ void check_sines(const OceanParams& p, Problems& problems) {
       return;
     }
   }
+  if (evaluated_directly(p)) return;  // exact waves: no lattice to hold them
   const std::vector<SineLattice> lattice = sines_lattice(p);
   const double shortest = 2 * std::numbers::pi / cascade_bands(p).back().k_max;
   for (size_t i = 0; i < lattice.size(); ++i)

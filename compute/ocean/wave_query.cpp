@@ -10,6 +10,8 @@
 
 #include "ocean/band_limit.h"
 #include "ocean/catmull_rom.h"
+#include "ocean/direct_waves.h"
+#include "ocean/gerstner.h"
 #include "ocean/spectral_fields.h"
 
 namespace lagoon::ocean {
@@ -84,6 +86,14 @@ WaveQuery::WaveQuery(const OceanParams& params, std::vector<CascadeSpectrum> spe
       fft_(cpu_inverse_fft(options.threads)) {
   if (params.model == SurfaceModel::Springs) {
     springs_ = std::make_unique<SpringGrid>(params);
+    return;
+  }
+  if (std::optional<GerstnerParams> direct = direct_wave_params(params)) {
+    // The wavelength cut leaves out a wave whose shortest harmonic is above it, as band_limited a mode.
+    std::erase_if(direct->waves, [&](const GerstnerWave& w) {
+      return 2 * std::numbers::pi / w.wavelength_m * std::max(w.power, 1u) >= options_.max_wavenumber;
+    });
+    direct_ = std::make_unique<GerstnerSurface>(*direct);
     return;
   }
   if (spectra_.empty())
@@ -193,7 +203,7 @@ void WaveQuery::keep(std::shared_ptr<const Evaluation> evaluation) {
 }
 
 void WaveQuery::prefetch(double time_s) {
-  if (springs_) return;
+  if (springs_ || direct_) return;
   if (pending_.valid() && pending_time_ == time_s) return;
   for (const auto& e : recent_)
     if (e->time_s == time_s) return;
@@ -203,6 +213,7 @@ void WaveQuery::prefetch(double time_s) {
 }
 
 bool WaveQuery::ready(double time_s) const {
+  if (direct_) return true;
   if (springs_) return false;
   for (const auto& e : recent_)
     if (e->time_s == time_s) return true;
@@ -236,6 +247,12 @@ glm::dvec2 WaveQuery::displacement(glm::dvec2 p) const {
 }
 
 std::vector<WaveSample> WaveQuery::sample(double time_s, std::span<const glm::dvec2> points) {
+  if (direct_) {
+    std::vector<WaveSample> out;
+    out.reserve(points.size());
+    for (const glm::dvec2 q : points) out.push_back(direct_->sample(time_s, q.x, q.y));
+    return out;
+  }
   evaluate(time_s);
   std::vector<WaveSample> out(points.size());
   const double bound = bound_height_ + current_->max_slope * 2 * params_.choppiness * bound_displacement_;

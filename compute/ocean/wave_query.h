@@ -6,6 +6,9 @@
 // periodic Catmull-Rom lookups. The horizontal displacement is inverted by fixed-point iteration: the
 // answer describes the surface point that the waves move to above (x, z), not the one that rests there.
 //
+// Models gerstner and sines with their own waves (ocean/direct_waves.h) are answered from GerstnerSurface,
+// the direct sums in double precision: bound 0, every time at once.
+//
 // Model springs has no spectrum: its grid (ocean/springs.h) is stepped to the time asked and sampled the same
 // way. Its nodes are the model, so the bound is 0; between them the answer is the Catmull-Rom interpolant.
 //
@@ -32,6 +35,8 @@
 #include "ocean/springs.h"
 
 namespace lagoon::ocean {
+
+class GerstnerSurface;
 
 struct WaveSample {
   double height = 0;               // m above the mean water level, at the query's (x, z)
@@ -102,7 +107,8 @@ class WaveQuery {
   glm::dvec2 displacement(glm::dvec2 p) const;
 
   OceanParams params_;
-  std::unique_ptr<SpringGrid> springs_;  // model springs: the grid itself, stepped to each time asked
+  std::unique_ptr<SpringGrid> springs_;      // model springs: the grid itself, stepped to each time asked
+  std::unique_ptr<GerstnerSurface> direct_;  // waves evaluated directly: their sums
   std::vector<CascadeSpectrum> spectra_;
   WaveQueryOptions options_;
   InverseFft2d fft_;        // plans shared by every evaluation, on any thread

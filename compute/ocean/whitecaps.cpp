@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/geometric.hpp>
 
+#include "ocean/direct_waves.h"
 #include "ocean/slope_statistics.h"
 #include "ocean/spectral_fields.h"
 
@@ -45,6 +47,17 @@ std::vector<double> jacobian_samples(const OceanParams& params, const std::vecto
   return out;
 }
 
+// The same for waves summed directly (direct_waves.h): eq. 11's Jacobian at the grid's points.
+std::vector<double> jacobian_samples(const GerstnerSurface& surface, double side) {
+  constexpr uint32_t kGrid = 256;
+  std::vector<double> out;
+  out.reserve(size_t{kGrid} * kGrid);
+  for (uint32_t j = 0; j < kGrid; ++j)
+    for (uint32_t i = 0; i < kGrid; ++i)
+      out.push_back(surface.at_rest(glm::dvec2(i + 0.5, j + 0.5) * (side / kGrid), 0.0).jacobian);
+  return out;
+}
+
 }  // namespace
 
 double monahan_coverage(double wind_speed_mps) {
@@ -55,13 +68,29 @@ FoamRule foam_rule(const OceanParams& params, const std::vector<CascadeSpectrum>
   if (params.foam.coverage == FoamCoverage::Threshold || params.model == SurfaceModel::Springs ||
       spectra.empty())
     return {params.foam.threshold, 1.0};
-  double mss = 0;
-  for (const CascadeSpectrum& s : spectra) mss += mean_square_slope(s);
-  const double sigma = std::max(params.choppiness * std::sqrt(mss), 1e-3);
+  // σ_J² = λ² × the mean square slope; for waves summed directly J - 1 ≈ -Σ Q k A cos θ: Σ (Q k A)²/2.
+  double variance = 0;
+  std::vector<double> j;
+  if (const std::optional<GerstnerParams> direct = direct_wave_params(params)) {
+    const GerstnerSurface surface(*direct);
+    for (size_t i = 0; i < surface.size(); ++i) {
+      const double qka =
+          surface.steepness(i) * glm::length(surface.wavevector(i)) * direct->waves[i].amplitude_m;
+      variance += 0.5 * qka * qka;
+    }
+    j = jacobian_samples(surface, spectra.front().patch_size_m);
+  } else {
+    for (const CascadeSpectrum& s : spectra) variance += mean_square_slope(s);
+    variance *= params.choppiness * params.choppiness;
+    // J's lower tail is not Gaussian (J = (1 + a)(1 + b) - c²): its quantile is read off the sea itself
+    // where the grid holds enough points below it, and taken from the Gaussian only for the calmest seas.
+    j = jacobian_samples(params, spectra);
+  }
+  // A sea that moves only up and down (choppiness 0, the sines) has J = 1 everywhere: nothing squeezes it,
+  // and a rule fitted to no spread would whiten all of it.
+  if (variance == 0) return {0.0, 1.0};
+  const double sigma = std::max(std::sqrt(variance), 1e-3);
   const double coverage = std::clamp(monahan_coverage(params.spectrum.wind_speed_mps), 1e-9, 0.5);
-  // J's lower tail is not Gaussian (J = (1 + a)(1 + b) - c²): its quantile is read off the sea itself where
-  // the grid holds enough points below it, and taken from the Gaussian only for the calmest seas.
-  std::vector<double> j = jacobian_samples(params, spectra);
   const size_t below = size_t(coverage * double(j.size()));
   if (below >= 20) {
     std::nth_element(j.begin(), j.begin() + long(below), j.end());

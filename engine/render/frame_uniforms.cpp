@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ocean/direct_waves.h"
 #include "ocean/short_waves.h"
 #include "ocean/slope_statistics.h"
 #include "optics/colour.h"
@@ -114,6 +115,12 @@ gpu::FrameUniforms frame_uniforms(const FrameInputs& in) {
       .classic_specular = glm::vec4(scene.render.classic.specular, 0.0f),
       .sky = light.sky_model,
       .whitecaps = glm::vec4(scene.render.effects.foam ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f)};
+  if (const ocean::GerstnerSurface* direct = in.ocean.direct_waves()) {
+    const std::vector<gpu::DirectWaveGpu> waves = ocean::direct_waves_gpu(*direct, scene.time_s);
+    const size_t count = std::min<size_t>(waves.size(), LAGOON_DIRECT_MAX_WAVES);  // validate() keeps to it
+    std::copy_n(waves.begin(), count, f.direct_waves);
+    f.direct.x = float(count);
+  }
   for (uint32_t c = 0; c < drawn; ++c) {
     const ocean::CascadeTextures tex = in.ocean.cascade(c);
     f.cascade_patch[c] = float(tex.patch_size_m);

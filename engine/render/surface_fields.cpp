@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "shared/direct_waves.h"
 #include "shared/sediment.h"
 #include "shared/surface.h"
 
@@ -26,7 +27,10 @@ std::vector<vk::Binding> surface_field_bindings(const SurfaceFields& fields, con
 
 std::vector<vk::SpecConstant> with_surface_field_specs(std::vector<vk::SpecConstant> own,
                                                        const SurfaceFields& fields) {
-  own.push_back({LAGOON_SPEC_CASCADE_COUNT, fields.ocean.cascade_count()});
+  // A sea summed where it is drawn samples no cascade (the step's layer is for export and read-backs).
+  const bool direct = fields.ocean.direct_waves() != nullptr;
+  own.push_back({LAGOON_SPEC_CASCADE_COUNT, direct ? 0u : fields.ocean.cascade_count()});
+  own.push_back({LAGOON_SPEC_DIRECT_WAVES, direct ? 1u : 0u});
   own.push_back({LAGOON_SURFACE_SPEC_WAKES, fields.wakes.active() ? 1u : 0u});
   own.push_back({LAGOON_SURFACE_SPEC_SEDIMENT, fields.sediment ? 1u : 0u});
   return own;

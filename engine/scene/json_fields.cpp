@@ -186,6 +186,13 @@ void ObjectReader::number(std::string_view name, float& value, Bounds bounds, st
     value = static_cast<float>(*v);
 }
 
+void ObjectReader::number(std::string_view name, std::optional<double>& value, Bounds bounds,
+                          std::string_view unit, std::string_view doc) {
+  if (describing())
+    return describe(name, "number", unit, value ? format_number(*value) : "", bounds.describe(), doc, bounds);
+  if (const std::optional<double> v = read_number(name, "", bounds, unit, /*as_float=*/false)) value = *v;
+}
+
 void ObjectReader::number(std::string_view name, std::optional<float>& value, Bounds bounds,
                           std::string_view unit, std::string_view doc) {
   if (describing())

@@ -93,6 +93,8 @@ class ObjectReader {
                     std::string_view doc);
   // Optional number: no default; absent leaves `value` empty (e.g. the camera's yaw_deg, an alternative to
   // look_at, where a default would hide which of the two the file chose).
+  void number(std::string_view name, std::optional<double>& value, Bounds bounds, std::string_view unit,
+              std::string_view doc);
   void number(std::string_view name, std::optional<float>& value, Bounds bounds, std::string_view unit,
               std::string_view doc);
   void vec3(std::string_view name, glm::vec3& value, std::string_view unit, std::string_view doc);

@@ -61,21 +61,26 @@ void read_gerstner_wave(ObjectReader& r, ocean::GerstnerWaveSpec& w) {
   r.number("amplitude_m", w.amplitude_m, Bounds::between(0, 100), "m",
            "Amplitude A: the crest's height above the mean level.");
   r.number("wavelength_m", w.wavelength_m, Bounds::above_up_to(0, 100000), "m",
-           "Wavelength 2 pi / k; moved to the nearest wave the cascades tile with (docs/models.md).");
+           "Wavelength 2 pi / k, exact: the waves are summed where they are drawn (docs/models.md).");
   r.number("direction_deg", w.direction_deg, Bounds::between(-360, 360), "deg",
            "Direction it travels toward, clockwise from north (-z) toward east (+x).");
   r.number("phase_deg", w.phase_deg, Bounds::between(-360, 360), "deg", "Phase phi of eq. 11.");
+  r.number("steepness", w.steepness, Bounds::between(0, 1), "",
+           "Q of eq. 11 for this wave: 0 = a sine, 1 = the document's circles; absent = ocean.choppiness. "
+           "Q k A summed over the waves may not exceed 1 (no loops).");
 }
 
 void read_gerstner(ObjectReader& r, ocean::GerstnerSet& g) {
   r.array("waves", g.waves, 1, 64, read_gerstner_wave,
-          "The waves of eq. 11 (seed 001); choppiness is every wave's steepness Q, and Q k A summed over "
-          "the waves may not exceed 1 (no loops).");
+          "The waves of eq. 11 (seed 001), summed directly with their exact wavelengths; a wave without "
+          "its own steepness takes choppiness as its Q, and Q k A summed over the waves may not exceed 1 "
+          "(no loops).");
   r.integer(
       "spectrum_waves", g.spectrum_waves, Bounds::between(0, 64), "",
       "If > 0, this many waves sampled from ocean.spectrum replace waves: frequencies from 0.6 to 4 times "
       "the peak, amplitudes sqrt(2 S(omega) d omega) without a random factor (seed 001 eq. 13), "
-      "directions from the spreading.");
+      "directions from the spreading. They go through the cascades (one FFT, cheaper than a sum per pixel), "
+      "each moved to the cascades' lattice, with choppiness as every Q.");
   dispersion_choice(
       r, g.dispersion,
       "How fast each wave travels: deep = sqrt(g k) (eq. 7), finite-depth = sqrt(g k tanh(k depth_m)) "
@@ -85,7 +90,7 @@ void read_gerstner(ObjectReader& r, ocean::GerstnerSet& g) {
 void read_sine_wave(ObjectReader& r, ocean::SineWaveSpec& w) {
   r.number("amplitude_m", w.amplitude_m, Bounds::between(0, 100), "m", "Amplitude A of eq. 2.");
   r.number("wavelength_m", w.wavelength_m, Bounds::above_up_to(0, 100000), "m",
-           "Wavelength 2 pi / freq; moved to the nearest wave the cascades tile with (docs/models.md).");
+           "Wavelength 2 pi / freq, exact: the waves are summed where they are drawn (docs/models.md).");
   r.number("direction_deg", w.direction_deg, Bounds::between(-360, 360), "deg",
            "Direction it travels toward, clockwise from north (-z) toward east (+x).");
   r.integer("steepness", w.steepness, Bounds::between(1, 8), "",
@@ -101,7 +106,7 @@ void read_sines(ObjectReader& r, ocean::SinesSet& s) {
       "The waves of eqs. 1-3 (seed 001); their sum less its mean level is the surface (needs choppiness 0).");
   r.integer("spectrum_waves", s.spectrum_waves, Bounds::between(0, 64), "",
             "If > 0, this many plain sines (steepness 1) sampled from ocean.spectrum replace waves, as "
-            "gerstner.spectrum_waves samples them.");
+            "gerstner.spectrum_waves samples them (through the cascades, on their lattice).");
   dispersion_choice(r, s.dispersion, "The phase speed of each wave, as gerstner.dispersion.");
 }
 
@@ -211,8 +216,9 @@ void read_ocean(ObjectReader& r, ocean::OceanParams& o) {
              SurfaceModel::Springs}),
       "Surface model: fft = waves from the spectrum; gerstner = the waves listed in gerstner; sines = the "
       "sum of sines in sines (needs choppiness 0); perlin = octaves of gradient noise; springs = a grid of "
-      "masses on springs on the first cascade, excited by drops, gusts or a driven boundary; all through the "
-      "same cascades (docs/models.md).");
+      "masses on springs on the first cascade, excited by drops, gusts or a driven boundary. Gerstner's and "
+      "the sines' own waves are summed where they are drawn, the others go through the cascades "
+      "(docs/models.md).");
   r.block("gerstner", o.gerstner, read_gerstner, "Model gerstner: its waves and dispersion.");
   r.block("sines", o.sines, read_sines, "Model sines: its waves and dispersion.");
   r.block("perlin", o.perlin, read_perlin, "Model perlin: its noise octaves.");

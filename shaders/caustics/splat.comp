@@ -17,6 +17,7 @@ layout(push_constant) uniform Push { CausticsPush p; };
 
 #include "common/cascade_uv.glsl"
 #include "common/wake_fields.glsl"
+#include "common/direct_waves.glsl"
 
 void splat(int slice, ivec2 cell, uint amount) {
   const int n = LAGOON_CAUSTICS_CELLS;
@@ -46,6 +47,9 @@ void main() {
   LAGOON_CASCADE(2)
   LAGOON_CASCADE(3)
 #undef LAGOON_CASCADE
+  DirectSum direct = direct_waves_at(rest, 0.0, cell);
+  d += direct.displacement;
+  slope += direct.slope;
   vec3 wake = wake_at(rest).xyz;
   d.y += wake.x;
   slope += wake.yz;

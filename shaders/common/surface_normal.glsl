@@ -6,6 +6,7 @@
 #ifndef LAGOON_COMMON_SURFACE_NORMAL_GLSL
 #define LAGOON_COMMON_SURFACE_NORMAL_GLSL
 #include "common/cascade_uv.glsl"
+#include "common/direct_waves.glsl"
 #include "common/wake_fields.glsl"
 
 struct SurfaceSample {
@@ -45,6 +46,9 @@ SurfaceSample surface_sample(vec3 to_viewer) {
   LAGOON_CASCADE(2)
   LAGOON_CASCADE(3)
 #undef LAGOON_CASCADE
+  DirectSum direct = direct_waves_at(v_rest, 0.0, footprint);  // models with their own waves
+  slope += direct.slope;
+  terms += direct.terms;
   // Each cascade keeps its own foam with its decay; where the cascades fold the surface only together
   // (long waves squeezing shorter ones), the whole sea's Jacobian adds the foam no single cascade shows.
   float jacobian = (1.0 + terms.x) * (1.0 + terms.y) - terms.z * terms.z;

@@ -12,6 +12,7 @@
 layout(std140, binding = LAGOON_SURFACE_BIND_FRAME) uniform Frame { FrameUniforms frame; };
 layout(binding = LAGOON_SURFACE_BIND_DISPLACEMENT) uniform sampler2DArray displacement[LAGOON_MAX_CASCADES];
 #include "common/cascade_uv.glsl"
+#include "common/direct_waves.glsl"
 #include "common/wake_fields.glsl"
 
 layout(location = 0) out vec3 v_world;
@@ -33,6 +34,7 @@ vec3 clipmap_displacement(vec2 rest, float spacing) {
   LAGOON_CASCADE(2)
   LAGOON_CASCADE(3)
 #undef LAGOON_CASCADE
+  d += direct_waves_at(rest, 0.0, spacing).displacement;  // models with their own waves
   d.y += wake_at(rest).x;  // the wakes, at the rest position (their own motion is vertical)
   return d;
 }

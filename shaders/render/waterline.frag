@@ -15,6 +15,7 @@ layout(binding = LAGOON_SURFACE_BIND_BELOW_DEPTH) uniform sampler2D below_depth;
 
 #include "common/cascade_uv.glsl"
 #include "common/wake_fields.glsl"
+#include "common/direct_waves.glsl"
 
 layout(location = 0) in vec2 v_ndc;
 layout(location = 0) out vec4 out_colour;
@@ -29,6 +30,7 @@ vec3 displacement_at(vec2 rest) {
   LAGOON_CASCADE(2)
   LAGOON_CASCADE(3)
 #undef LAGOON_CASCADE
+  d += direct_waves_at(rest, 0.0, 0.0).displacement;
   d.y += wake_at(rest).x;
   return d;
 }

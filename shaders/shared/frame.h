@@ -2,6 +2,7 @@
 // Radiances are in "white units" (render/sky_light.h): a white Lambertian surface under sun and sky = 1.
 #ifndef LAGOON_SHARED_FRAME_H
 #define LAGOON_SHARED_FRAME_H
+#include "shared/direct_waves.h"
 #include "shared/interop.h"
 #include "shared/limits.h"
 #include "shared/sky_model.h"
@@ -55,6 +56,9 @@ struct FrameUniforms {
   vec4 classic_specular;  // rgb = specular reflectance, w unused
   SkyModelGpu sky;        // the sky's radiance by direction (shared/sky_model.h), white units
   vec4 whitecaps;  // x = 1 when the whitecaps are drawn, 0 when render.effects.foam hides them; yzw unused
+  vec4 direct;  // x = how many of direct_waves the surface sums (0: the cascades carry the sea), yzw unused
+  // Models gerstner and sines with their own waves (common/direct_waves.glsl), phases at the frame's time.
+  DirectWaveGpu direct_waves[LAGOON_DIRECT_MAX_WAVES];
 };
 
 // One point light of the scene's "lights" block (storage buffer, std430).
@@ -67,7 +71,7 @@ struct PointLightGpu {
 LAGOON_GPU_END
 
 #ifdef __cplusplus
-LAGOON_CHECK_SIZE(FrameUniforms, 736);
+LAGOON_CHECK_SIZE(FrameUniforms, 2800);
 LAGOON_CHECK_OFFSET(FrameUniforms, sky, 592);
 LAGOON_CHECK_SIZE(PointLightGpu, 48);
 LAGOON_CHECK_OFFSET(FrameUniforms, camera_pos, 128);

@@ -187,14 +187,61 @@ TEST(Gerstner, NormalAndVelocityAreTheSurfacesDerivatives) {
   }
 }
 
-// Model gerstner through the cascades: WaveQuery (the FFT ocean's CPU query, unchanged) answers eq. 11 of the
-// lattice waves within its own error bound.
-TEST(Gerstner, WaveQueryOfModelGerstnerAnswersEquationEleven) {
+// Model gerstner with the scene's own waves: WaveQuery answers eq. 11 of the exact waves, each with its own
+// steepness (written out here, not through the code under test), to rounding.
+TEST(Gerstner, WaveQueryOfModelGerstnerAnswersEquationElevenOfTheExactWaves) {
   ocean::OceanParams p;
   p.model = ocean::SurfaceModel::Gerstner;
   p.choppiness = 0.9;
   p.cascades = {{200, 128}, {20, 128}};
-  p.gerstner.waves = {{0.6, 37, 20, 30}, {0.2, 9.3, -40, 100}, {0.03, 1.7, 75, 10}};
+  p.gerstner.waves = {{0.6, 37, 20, 30, 0.95}, {0.2, 9.3, -40, 100, 0.2}, {0.03, 1.7, 75, 10}};
+  ocean::WaveQuery query(p);
+  constexpr double kRad = std::numbers::pi / 180;
+  const GerstnerSurface cpu({.waves = {{0.6, 37, 20, 30 * kRad, 0.95},
+                                       {0.2, 9.3, -40, 100 * kRad, 0.2},
+                                       {0.03, 1.7, 75, 10 * kRad, 0.9}},
+                             .limit_steepness = false});
+  double worst = 0;
+  for (int i = 0; i < 40; ++i) {
+    const double x = -50 + 2.71 * i, z = 13 - 1.93 * i, t = 0.37 * i;
+    const ocean::WaveSample a = query.sample(t, x, z), b = cpu.sample(t, x, z);
+    ASSERT_TRUE(b.converged);
+    worst = std::max(worst, std::abs(a.height - b.height) + glm::distance(a.normal, b.normal));
+  }
+  RecordProperty("worst_error", std::to_string(worst));
+  EXPECT_LT(worst, 1e-9);
+}
+
+// A 37 m wave is 37 m long (the cascades' lattice made it 37.14 m): one wave with Q = 0 repeats after exactly
+// its wavelength along its direction and is opposite half a wavelength on.
+TEST(Gerstner, AWaveKeepsItsExactWavelength) {
+  ocean::OceanParams p;
+  p.model = ocean::SurfaceModel::Gerstner;
+  p.choppiness = 0;
+  p.gerstner.waves = {{0.6, 37, 20, 30}};
+  ocean::WaveQuery query(p);
+  const glm::dvec2 d(std::sin(20 * std::numbers::pi / 180), -std::cos(20 * std::numbers::pi / 180));
+  double repeat = 0, opposite = 0;
+  for (int i = 0; i < 20; ++i) {
+    const glm::dvec2 x(-300 + 31.7 * i, 120 - 17.3 * i);
+    const double t = 0.9 * i, h = query.sample(t, x.x, x.y).height;
+    const glm::dvec2 far = x + 10 * 37.0 * d, half = x + 18.5 * d;
+    repeat = std::max(repeat, std::abs(query.sample(t, far.x, far.y).height - h));
+    opposite = std::max(opposite, std::abs(query.sample(t, half.x, half.y).height + h));
+  }
+  RecordProperty("repeat_error_m", std::to_string(repeat));
+  EXPECT_LT(repeat, 1e-9);
+  EXPECT_LT(opposite, 1e-9);
+}
+
+// Waves sampled from the spectrum go through the cascades on their lattice: WaveQuery (the FFT ocean's CPU
+// query) answers eq. 11 of the lattice waves within its own error bound.
+TEST(Gerstner, WaveQueryOfSampledGerstnerWavesAnswersTheLatticeWaves) {
+  ocean::OceanParams p;
+  p.model = ocean::SurfaceModel::Gerstner;
+  p.choppiness = 0.5;
+  p.cascades = {{200, 128}, {20, 128}};
+  p.gerstner.spectrum_waves = 24;
   ocean::WaveQuery query(p);
   const GerstnerSurface cpu(ocean::gerstner_params(p));
   double worst = 0, bound = 0;

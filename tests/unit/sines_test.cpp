@@ -46,7 +46,7 @@ TEST(Sines, WaveQueryOfModelSinesAnswersTheDirectSum) {
   RecordProperty("worst_height_error_m", std::to_string(worst));
   RecordProperty("bound_m", std::to_string(bound));
   EXPECT_GT(largest, 0.3);
-  EXPECT_LE(worst, bound);
+  EXPECT_LE(worst, bound + 1e-12);  // the waves are summed directly: bound 0, rounding only
   EXPECT_LT(worst, 0.01);
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <complex>
 #include <cstring>
 #include <optional>
 #include <stdexcept>
@@ -9,6 +10,7 @@
 #include <glm/gtc/packing.hpp>
 
 #include "lagoon_shaders/shaders.h"
+#include "ocean/direct_waves.h"
 #include "ocean/validate.h"
 #include "shared/limits.h"
 #include "shared/ocean.h"
@@ -25,6 +27,10 @@ struct GpuOcean::Group {
   vk::Buffer spectrum;  // vec4 (h0(k), conj(h0(-k))) per k, cascade after cascade
   vk::Buffer omega;     // float ω(k)
   std::unique_ptr<OceanFftPath> fft;
+  // Cascades with nothing to step (an empty spectrum, and no model writing them): cleared to still water
+  // once, then left alone (model perlin fills only the first cascade; springs and direct waves only write
+  // it).
+  bool still = false;
   vk::Image displacement, normal_jacobian, jacobian_terms;
   std::array<const vk::Image*, 3> images() const {
     return {&displacement, &normal_jacobian, &jacobian_terms};
@@ -139,12 +145,19 @@ void GpuOcean::build(std::vector<CascadeSpectrum> spectra) {
   groups_.clear();
   cascade_slots_.assign(spectra_.size(), {0, 0});
   reset_foam_ = true;
+  const std::optional<GerstnerParams> direct = direct_wave_params(params_);
+  const bool writes_first = direct || params_.model == SurfaceModel::Springs;
   for (uint32_t c = 0; c < spectra_.size(); ++c) {
     const uint32_t n = spectra_[c].resolution;
-    auto it = std::find_if(groups_.begin(), groups_.end(), [&](const auto& g) { return g->n == n; });
+    const bool still = !(writes_first && c == 0) &&
+                       std::all_of(spectra_[c].h0.begin(), spectra_[c].h0.end(),
+                                   [](std::complex<float> h) { return h == std::complex<float>(0.0f); });
+    auto it = std::find_if(groups_.begin(), groups_.end(),
+                           [&](const auto& g) { return g->n == n && g->still == still; });
     if (it == groups_.end()) {
       groups_.push_back(std::make_unique<Group>());
       groups_.back()->n = n;
+      groups_.back()->still = still;
       it = groups_.end() - 1;
     }
     cascade_slots_[c] = {uint32_t(it - groups_.begin()), uint32_t((*it)->cascades.size())};
@@ -155,10 +168,12 @@ void GpuOcean::build(std::vector<CascadeSpectrum> spectra) {
     if (count > LAGOON_MAX_CASCADES)
       vk::throw_usage_error("GpuOcean: more cascades than LAGOON_MAX_CASCADES");
     g->upload_spectra(ctx_, spectra_);
-    if (params_.model != SurfaceModel::Springs) g->fft = make_ocean_fft_path(ctx_, variant_, g->n, count);
+    if (!writes_first && !g->still) g->fft = make_ocean_fft_path(ctx_, variant_, g->n, count);
     g->create_images(ctx_);
   }
   springs_ = params_.model == SurfaceModel::Springs ? std::make_unique<SpringsGpu>(ctx_, params_) : nullptr;
+  direct_surface_ = direct ? std::make_unique<GerstnerSurface>(*direct) : nullptr;
+  direct_ = direct ? std::make_unique<DirectWavesGpu>(ctx_, params_, *direct_surface_) : nullptr;
 }
 
 void GpuOcean::record_step(VkCommandBuffer cmd, double time_s, double dt_s, vk::GpuTimer* timer, Step step) {
@@ -168,6 +183,7 @@ void GpuOcean::record_step(VkCommandBuffer cmd, double time_s, double dt_s, vk::
                            vk::access::kGraphicsSampled.access | VK_ACCESS_2_SHADER_STORAGE_READ_BIT |
                                VK_ACCESS_2_TRANSFER_READ_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT};
   for (auto& g : groups_) {
+    if (g->still) continue;
     const uint32_t n = g->n, count = uint32_t(g->cascades.size());
     gpu::OceanPush push{.patch_size_m = {},
                         .cascades = count,
@@ -185,11 +201,13 @@ void GpuOcean::record_step(VkCommandBuffer cmd, double time_s, double dt_s, vk::
     for (const vk::Image* image : g->images())
       vk::image_barrier(cmd, image->handle(), image->all_subresources(), VK_IMAGE_LAYOUT_GENERAL,
                         VK_IMAGE_LAYOUT_GENERAL, readers, vk::access::kComputeReadWrite);
+    const LayerTarget first{&g->displacement, &g->normal_jacobian, &g->jacobian_terms,
+                            cascade_slots_[0].second};
+    const bool holds_first = g.get() == groups_[cascade_slots_[0].first].get();
     if (springs_) {
-      if (g.get() == groups_[cascade_slots_[0].first].get())
-        springs_->record(
-            cmd, time_s, dt_s, reset_foam_,
-            {&g->displacement, &g->normal_jacobian, &g->jacobian_terms, cascade_slots_[0].second}, timer);
+      if (holds_first) springs_->record(cmd, time_s, dt_s, reset_foam_, first, timer);
+    } else if (direct_) {
+      if (holds_first) direct_->record(cmd, time_s, dt_s, reset_foam_, first, timer);
     } else {
       g->fft->record(cmd,
                      {&g->spectrum, &g->omega, &g->displacement, &g->normal_jacobian, &g->jacobian_terms},
@@ -198,7 +216,9 @@ void GpuOcean::record_step(VkCommandBuffer cmd, double time_s, double dt_s, vk::
     if (step == Step::Full) {
       vk::GpuScope scope(timer, cmd, "ocean mips " + std::to_string(n));
       // Level by level, each from the one above; the three textures in one dispatch per level.
-      for (uint32_t mip = 1; mip < g->displacement.mip_levels(); ++mip) {
+      // None for a direct sum: the renderer samples no cascade of it.
+      const uint32_t levels = direct_ ? 1 : g->displacement.mip_levels();
+      for (uint32_t mip = 1; mip < levels; ++mip) {
         vk::memory_barrier(cmd, vk::access::kComputeWrite, vk::access::kComputeRead);
         auto level = [&](const vk::Image& image, uint32_t m) {
           return vk::ImageRef{image.mip_view(m), VK_IMAGE_LAYOUT_GENERAL};

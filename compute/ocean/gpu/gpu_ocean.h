@@ -1,4 +1,5 @@
-// The FFT ocean's per-frame GPU work (model springs: its grid's step instead, springs_gpu.h). Once per
+// The FFT ocean's per-frame GPU work (model springs: its grid's step instead, springs_gpu.h; models with
+// their own waves: their sum at the first cascade's texels, direct_waves_gpu.h). Once per
 // parameter change the CPU computes h0(k) and ω(k) (initial_spectrum.h) and uploads them; every step records,
 // per group of cascades sharing a resolution, evolve -> inverse FFT of 4 packed fields -> assembly
 // (ocean_fft_path.h: two variants, one per device kind) writing per cascade (one array layer each)
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "core/result.h"
+#include "ocean/gpu/direct_waves_gpu.h"
 #include "ocean/gpu/ocean_fft_path.h"
 #include "ocean/gpu/springs_gpu.h"
 #include "ocean/initial_spectrum.h"
@@ -82,6 +84,9 @@ class GpuOcean {
   const FoamRule& foam_rule() const;
   CascadeTextures cascade(uint32_t index) const;
   uint32_t cascade_count() const { return uint32_t(params_.cascades.size()); }
+  // The waves the surface sums where it is drawn (ocean/direct_waves.h), or null when the cascades carry the
+  // sea: then the renderer samples no cascade at all.
+  const GerstnerSurface* direct_waves() const { return direct_surface_.get(); }
 
   // Reads back mip 0 of one cascade (submits and waits; for tests, export and probes).
   CascadeReadback read_cascade(uint32_t index) const;
@@ -109,6 +114,8 @@ class GpuOcean {
   bool reset_foam_ = true;
   vk::ComputePipeline mips_;             // shaders/ocean/mips.comp: a mip level of a group's three textures
   std::unique_ptr<SpringsGpu> springs_;  // model springs: writes the first cascade in place of the FFT
+  std::unique_ptr<GerstnerSurface> direct_surface_;  // models with their own waves: the sum ...
+  std::unique_ptr<DirectWavesGpu> direct_;           // ... and its step, in place of the FFT
 };
 
 }  // namespace lagoon::ocean

@@ -80,7 +80,7 @@ gpu::SpringsPush SpringsGpu::push(uint64_t step) const {
 }
 
 void SpringsGpu::record(VkCommandBuffer cmd, double time_s, double dt_s, bool reset_foam,
-                        const SpringsTarget& target, vk::GpuTimer* timer) {
+                        const LayerTarget& target, vk::GpuTimer* timer) {
   time_s = std::max(time_s, 0.0);  // the grid rests before t = 0, as SpringGrid::surface_at
   const uint64_t wanted = springs_steps_for(params_.springs, time_s);
   if (wanted < steps_) record_clear(cmd);

@@ -15,8 +15,9 @@
 
 namespace lagoon::ocean {
 
-// Where the picture goes: mip 0 of the ocean's images, one array layer.
-struct SpringsTarget {
+// Where a model that replaces the FFT writes (springs, direct waves): mip 0 of the ocean's images, one
+// array layer.
+struct LayerTarget {
   const vk::Image* displacement = nullptr;
   const vk::Image* normal_jacobian = nullptr;
   const vk::Image* jacobian_terms = nullptr;
@@ -29,7 +30,7 @@ class SpringsGpu {
 
   // Steps to `time_s` (from rest again when it lies before the state's step) and writes the picture.
   // Throws vk::UsageError when that needs more than kSpringsMaxCatchUpSteps steps.
-  void record(VkCommandBuffer cmd, double time_s, double dt_s, bool reset_foam, const SpringsTarget& target,
+  void record(VkCommandBuffer cmd, double time_s, double dt_s, bool reset_foam, const LayerTarget& target,
               vk::GpuTimer* timer);
   uint64_t steps() const { return steps_; }
 

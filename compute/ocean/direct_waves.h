@@ -1,0 +1,31 @@
+// Models gerstner and sines with their own list of waves are evaluated directly (seed 001 eq. 11, eqs. 1-3;
+// docs/models.md): every wave keeps its exact wavelength and direction and, for Gerstner waves, its own
+// steepness Q_i. The renderer sums them where it draws (common/direct_waves.glsl), the step writes them at
+// the first cascade's texels (gpu/direct_waves_gpu.h), and WaveQuery, probe and the bodies answer from
+// GerstnerSurface, the same sums in double precision. The cascades' spectra stay empty.
+//
+// Waves sampled from the spectrum (`spectrum_waves` > 0: up to 64, the case where one FFT is cheaper than a
+// sum per pixel) still go through the cascades, on their lattice (gerstner.h, sines.h), and there the FFT
+// equals the direct sum of those lattice waves.
+#pragma once
+#include <optional>
+#include <vector>
+
+#include "ocean/gerstner.h"
+#include "ocean/ocean_params.h"
+#include "shared/direct_waves.h"
+
+namespace lagoon::ocean {
+
+// The waves the scene's model evaluates directly, or nothing when the cascades carry its sea.
+std::optional<GerstnerParams> direct_wave_params(const OceanParams& params);
+inline bool evaluated_directly(const OceanParams& params) {
+  return direct_wave_params(params).has_value();
+}
+
+// The waves as the shaders read them. With `at_time`, each phase is φ - ω t reduced to [-π, π] in double
+// (the frame's: the shaders add k·x0); without, the phase is φ and ω turns it (the step's).
+std::vector<gpu::DirectWaveGpu> direct_waves_gpu(const GerstnerSurface& surface,
+                                                 std::optional<double> at_time = std::nullopt);
+
+}  // namespace lagoon::ocean
