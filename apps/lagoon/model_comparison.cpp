@@ -36,6 +36,38 @@ double peak_omega(const ocean::GpuOcean& gpu, const ocean::ModeEnergy& e, glm::d
   return s.omega[size_t((iz + n) % n) * e.n + size_t((ix + n) % n)];
 }
 
+// Waves summed directly (ocean/direct_waves.h) hold no lattice: the peak is the largest wave itself, and the
+// tiling is measured on the sum, not on the step's layer (whose grid would wrap onto itself).
+struct DirectPeak {
+  double wavelength_m = 0, omega = 0;
+};
+DirectPeak direct_peak(const ocean::GerstnerSurface& s) {
+  size_t best = 0;
+  for (size_t i = 1; i < s.size(); ++i)
+    if (s.params().waves[i].amplitude_m > s.params().waves[best].amplitude_m) best = i;
+  return {s.params().waves[best].wavelength_m, s.omega(best)};
+}
+
+// The correlation of h(x0) and h(x0 + lag) over 128² rest points of [0, lag)², both axes' lags averaged, as
+// ocean::tiling_correlation does for the cascades' grids.
+double direct_tiling(const ocean::GerstnerSurface& s, double lag, double time_s) {
+  constexpr int kSamples = 128;
+  double sum = 0;
+  for (const glm::dvec2 step : {glm::dvec2(lag, 0), glm::dvec2(0, lag)}) {
+    double sa = 0, sb = 0, saa = 0, sbb = 0, sab = 0;
+    for (int j = 0; j < kSamples; ++j)
+      for (int i = 0; i < kSamples; ++i) {
+        const glm::dvec2 x0 = glm::dvec2(i, j) * (lag / kSamples);
+        const double a = s.at_rest(x0, time_s).position.y, b = s.at_rest(x0 + step, time_s).position.y;
+        sa += a, sb += b, saa += a * a, sbb += b * b, sab += a * b;
+      }
+    const double n = kSamples * kSamples, cov = sab / n - sa * sb / (n * n);
+    const double va = saa / n - sa * sa / (n * n), vb = sbb / n - sb * sb / (n * n);
+    sum += va > 0 && vb > 0 ? cov / std::sqrt(va * vb) : 1.0;
+  }
+  return sum / 2;
+}
+
 bool has_target_spectrum(const ocean::OceanParams& p) {
   using ocean::SurfaceModel;
   return p.model == SurfaceModel::Fft ||
@@ -78,15 +110,25 @@ ModelMeasure measure_model(vk::Context& ctx, const scene::Scene& scene, int roun
 
   auto renderer = render::OceanRenderer::create(ctx, scene);
   if (!renderer) throw std::runtime_error(renderer.error().message);
-  out.render = (*renderer)->render(scene);
+  (*renderer)->render(scene);  // the first frame compiles and warms up
+  std::vector<vk::PassTime> timings;
+  out.render = (*renderer)->render(scene, &timings);
+  for (const vk::PassTime& t : timings)
+    if (t.name == "surface") out.surface_ms += t.ms;
   const ocean::GpuOcean& gpu = (*renderer)->ocean();
   const std::vector<ocean::HeightGrid> grids = read_heights(gpu);
   out.hs_m = ocean::significant_height(grids);
-  out.tiling = ocean::tiling_correlation(grids, grids.front().patch_m);
   out.spectrum = ocean::mode_energy(grids.front());
   const glm::dvec2 k = ocean::peak_wavevector(out.spectrum);
   out.peak_wavelength_m = 2 * std::numbers::pi / std::hypot(k.x, k.y);
-  const double omega = peak_omega(gpu, out.spectrum, k);
+  double omega = peak_omega(gpu, out.spectrum, k);
+  out.tiling = ocean::tiling_correlation(grids, grids.front().patch_m);
+  if (const ocean::GerstnerSurface* direct = gpu.direct_waves()) {
+    const DirectPeak peak = direct_peak(*direct);
+    out.peak_wavelength_m = peak.wavelength_m;
+    omega = peak.omega;
+    out.tiling = direct_tiling(*direct, grids.front().patch_m, scene.time_s);
+  }
   out.peak_period_s = omega > 0 ? 2 * std::numbers::pi / omega : 0.0;
   if (has_target_spectrum(scene.ocean)) {
     const ocean::CascadeBand band = ocean::cascade_bands(scene.ocean).front();

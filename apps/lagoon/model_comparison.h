@@ -18,6 +18,7 @@ struct ModelMeasure {
   std::string note;         // what compare changed for this model (e.g. choppiness 0 for sines)
   double step_ms = 0;       // GPU timestamps, median over the rounds
   double step_wall_ms = 0;  // submit and wait, median
+  double surface_ms = 0;    // the surface pass in the render (GPU), where directly summed waves are evaluated
   double hs_m = 0;          // 4 σ of the summed field
   double peak_wavelength_m = 0;
   double peak_period_s = 0;              // 2π / ω of the peak mode, ω the model's own law
