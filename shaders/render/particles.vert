@@ -4,11 +4,8 @@
 #include "shared/surface.h"
 #include "shared/particles.h"
 
-// Suspended particles (seed 002): one candidate per cell of a world-fixed lattice of LAGOON_PARTICLES_SIDE³
-// cells around the camera, placed in its cell by a hash of the cell and the seed, carried by the drift
-// (wrapping within its cell, so every cell keeps one candidate), and kept where a second hash falls below
-// the local density from 4-D simplex noise over (x, y, z, t). Six vertices per candidate make a quad facing
-// the camera, at least 1.5 pixels across, its alpha the particle's share of it. Lit as a white target of the
+// Suspended particles (seed 002): the candidates of common/particle_candidate.glsl. Six vertices per
+// candidate make a quad facing the camera, at least 1.5 pixels across, its alpha the particle's share of it. Lit as a white target of the
 // particle's albedo at its depth and seen through the water (common/underwater.glsl); tone-mapped here.
 layout(std140, binding = LAGOON_SURFACE_BIND_FRAME) uniform Frame { FrameUniforms frame; };
 layout(binding = LAGOON_SURFACE_BIND_UW_TARGET) uniform sampler2D uw_target;
@@ -17,6 +14,7 @@ layout(binding = LAGOON_SURFACE_BIND_UW_UP) uniform sampler2D uw_up;
 layout(push_constant) uniform Push { ParticlesPush p; };
 
 #include "common/simplex4.glsl"
+#include "common/particle_candidate.glsl"
 #include "common/tonemap.glsl"
 #include "common/underwater.glsl"
 
@@ -34,20 +32,9 @@ void hide() {
 }
 
 void main() {
-  const int n = LAGOON_PARTICLES_SIDE;
-  int particle = gl_VertexIndex / 6;
-  ivec3 cell = ivec3(round(p.lattice.xyz / p.lattice.w)) + ivec3(particle % n, (particle / n) % n, particle / (n * n));
-  uint seed = p.seed.x;
-  uint h = lagoon_hash4(ivec4(cell, 0), seed);
-  uint h1 = lagoon_hash(h), h2 = lagoon_hash(h1), h3 = lagoon_hash(h2);
-  float presence = float(h >> 8) / 16777216.0;
-  // The noise's mean density is 1/2: twice it keeps the scene's mean density.
-  if (presence >= 2.0 * p.look.x) { hide(); return; }
-  float t = p.drift.w;
-  vec3 offset = vec3(float(h1 & 0xffffu), float(h2 & 0xffffu), float(h3 & 0xffffu)) / 65536.0;
-  vec3 pos = (vec3(cell) + fract(offset + p.drift.xyz * t / p.lattice.w)) * p.lattice.w;
-  float density = clamp(0.5 + 0.5 * simplex4(vec4(pos / p.look.z, 0.05 * t), seed), 0.0, 1.0);
-  if (presence >= 2.0 * p.look.x * density || pos.y > -0.02) { hide(); return; }
+  ParticleCandidate candidate = particle_candidate(gl_VertexIndex / 6, p);
+  if (!candidate.kept) { hide(); return; }
+  vec3 pos = candidate.position;
 
   vec3 eye = frame.camera_pos.xyz;
   vec4 clip = frame.view_proj * vec4(pos, 1.0);
