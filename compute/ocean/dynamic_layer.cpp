@@ -50,6 +50,10 @@ int cells_from_edge(int index, int origin, int n) {
 
 }  // namespace
 
+double foam_spread_factor(double spread_m2_s, double cell_m, double dt) {
+  return std::clamp(spread_m2_s * dt / (cell_m * cell_m), 0.0, 0.24);
+}
+
 double foam_decay_factor(double lifetime_s, double dt) {
   return lifetime_s > 0 ? std::exp(-3.0 * dt / lifetime_s) : 0.0;
 }
@@ -130,6 +134,8 @@ void DynamicLayerCpu::step(double dt, std::span<const WakeSource> sources) {
   inverse_.transform(state_, 1, threads_);
   const double width = params_.sponge_m / params_.cell_m;
   const double foam_decay = foam_decay_factor(params_.foam_lifetime_s, dt);
+  const double spread = foam_spread_factor(params_.foam_spread_m2_s, params_.cell_m, dt);
+  if (foam_on_) previous_foam_ = foam_;  // each cell spreads from its neighbours' foam before this step
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       const int from_edge = std::min(cells_from_edge(i, origin_.x, n), cells_from_edge(j, origin_.y, n));
@@ -144,7 +150,10 @@ void DynamicLayerCpu::step(double dt, std::span<const WakeSource> sources) {
       for (const WakeSource& s : local)
         injected += dl_double::dl_foam_injection(xz, s.centre, s.velocity, compass::toward(s.heading),
                                                  s.sigma, s.foam_per_s, dt, period);
-      foam_[c] = dl_double::dl_foam_update(foam_[c], foam_decay, injected) * sponge;
+      const auto at = [&](int a, int b) { return previous_foam_[size_t(b & (n - 1)) * n + (a & (n - 1))]; };
+      const double spread_foam = dl_double::dl_foam_spread(
+          previous_foam_[c], at(i - 1, j) + at(i + 1, j) + at(i, j - 1) + at(i, j + 1), spread);
+      foam_[c] = dl_double::dl_foam_update(spread_foam, foam_decay, injected) * sponge;
     }
 }
 

@@ -30,6 +30,10 @@ struct DynamicLayerParams {
   double sponge_m = 16;         // width of the absorbing border
   double sponge_per_s = 3;      // damping rate at the very edge
   double foam_lifetime_s = 20;  // a trail's foam fades to 5 % (e^-3) in this time
+  // The trails' diffusivity (m²/s): a trail widens as it ages, its variance across growing by 2 D t (seed
+  // 002 §3.3: the trail is the hull's width at its start and wider toward its end). 0 = a band of fixed
+  // width.
+  double foam_spread_m2_s = 0.1;
 };
 
 // A hull's pressure on the water as the still-water depression it makes: a Gaussian of `sigma` (along and
@@ -50,6 +54,9 @@ struct WakeSource {
 uint32_t dynamic_substeps(double dt, std::span<const WakeSource> sources);
 // The share of its foam a cell keeps over dt: e^-3 over the lifetime.
 double foam_decay_factor(double lifetime_s, double dt);
+// D dt / cell² of the trails' explicit diffusion step (shared/dynamic_layer_math.h's dl_foam_spread), held at
+// 0.24, below the scheme's stability limit of 1/4: a longer step or a finer cell spreads no faster than that.
+double foam_spread_factor(double spread_m2_s, double cell_m, double dt);
 
 class DynamicLayerCpu {
  public:
@@ -82,6 +89,7 @@ class DynamicLayerCpu {
   glm::ivec2 origin_{0};
   std::vector<std::complex<double>> state_;  // h + i dh/dt
   std::vector<double> foam_;
+  std::vector<double> previous_foam_;  // the step's foam before it spreads (scratch)
   bool foam_on_ = true;
   // dl_turn of every mode for substeps of turns_dt_ (the same each step while the substep is: the sin, cos,
   // tanh and sqrt of a mode were most of a step's per-cell work).

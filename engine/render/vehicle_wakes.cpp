@@ -18,7 +18,8 @@ Result<VehicleWakes> VehicleWakes::create(const scene::Scene& scene, VehicleTrac
                                             .depth_m = double(scene.ocean.depth_m),
                                             .decay_per_s = double(w.damping_per_s),
                                             .sponge_m = double(w.border_m),
-                                            .foam_lifetime_s = double(w.foam_lifetime_s)};
+                                            .foam_lifetime_s = double(w.foam_lifetime_s),
+                                            .foam_spread_m2_s = double(w.foam_spread_m2_s)};
   wakes.step_s_ = double(w.step_s);
   wakes.history_steps_ = (long long)std::ceil(double(w.history_s) / wakes.step_s_);
   if (!w.enabled) return wakes;

@@ -173,6 +173,7 @@ struct Wakes {
   float step_s = 0.1f;               // the layer's time step
   float history_s = 30.f;            // a frame's layer starts this long before it (or at 0)
   float foam_lifetime_s = 15.f;      // a foam trail fades to 5 % in this time
+  float foam_spread_m2_s = 0.1f;     // and widens as it ages: its variance across grows by 2 this per second
   bool felt_by_bodies = true;        // floating bodies and surface vehicles ride the wakes
   uint32_t bodies_resolution = 128;  // cells per side of the bodies' CPU layer (same window width)
 };

@@ -222,6 +222,11 @@ void read_wakes(ObjectReader& r, Wakes& w) {
            "have left it anyway.");
   r.number("foam_lifetime_s", w.foam_lifetime_s, Bounds::above_up_to(0, 3600), "s",
            "The vehicles' foam trails fade to 5 % (e^-3) of their coverage in this time.");
+  r.number("foam_spread_m2_s", w.foam_spread_m2_s, Bounds::between(0, 100), "m²/s",
+           "How fast a trail widens as it ages (seed 002: as wide as the hull at its start, wider toward its "
+           "end): its foam diffuses sideways, the variance across it growing by 2 x this per second, so a "
+           "trail of beam b is about sqrt(b^2 + 8 x this x age) wide. 0 = a band of fixed width. One step "
+           "spreads at most 0.24 cell^2, so a finer cell_size_m or a longer step_s caps it.");
   r.flag("felt_by_bodies", w.felt_by_bodies,
          "Floating objects and surface vehicles ride the wakes (a vehicle every wake but its own), and "
          "`lagoon probe --at` includes them; the layer then also runs on the CPU, around the bodies.");

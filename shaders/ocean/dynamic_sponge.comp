@@ -21,7 +21,8 @@ layout(rgba32f, binding = LAGOON_DYNAMIC_BIND_FIELDS) writeonly uniform image2D 
 // A uniform block, not a storage buffer: every invocation reads the same sources, and lavapipe loads a
 // uniform block at a uniform offset once for the SIMD vector instead of once per lane.
 layout(std140, binding = LAGOON_DYNAMIC_BIND_SOURCES) uniform Sources { DynamicSource sources[LAGOON_DYNAMIC_MAX_SOURCES]; };
-layout(std430, binding = LAGOON_DYNAMIC_BIND_FOAM) buffer Foam { float foam[]; };
+layout(std430, binding = LAGOON_DYNAMIC_BIND_FOAM_IN) readonly buffer FoamIn { float foam_in[]; };
+layout(std430, binding = LAGOON_DYNAMIC_BIND_FOAM) writeonly buffer Foam { float foam[]; };
 layout(push_constant) uniform Push { DynamicPush p; };
 
 // n is a power of two: wrapping is a mask (two's complement keeps it right for negative values), where a
@@ -50,6 +51,12 @@ float damped_height(int i, int j) {
   return raw[j * n + i].x * sponge_at(i, j);
 }
 
+// The last step's foam at storage index (i, j), wrapped.
+float previous_foam(int i, int j) {
+  int n = int(p.n);
+  return foam_in[(j & (n - 1)) * n + (i & (n - 1))];
+}
+
 void main() {
   int n = int(p.n);
   ivec2 c = ivec2(gl_GlobalInvocationID.xy);
@@ -64,7 +71,10 @@ void main() {
     injected += dl_foam_injection(xz, src.centre, src.velocity, src.along, src.sigma, src.foam_per_s, p.dt,
                                   float(p.n) * p.cell);
   }
-  float trail = dl_foam_update(foam[c.y * n + c.x], p.foam_decay, injected) * keep;
+  float neighbours = previous_foam(c.x - 1, c.y) + previous_foam(c.x + 1, c.y) + previous_foam(c.x, c.y - 1) +
+                     previous_foam(c.x, c.y + 1);
+  float spread = dl_foam_spread(foam_in[c.y * n + c.x], neighbours, p.foam_spread);
+  float trail = dl_foam_update(spread, p.foam_decay, injected) * keep;
   foam[c.y * n + c.x] = trail;
   if (!DL_FIELDS) return;
   float dx = (damped_height(c.x + 1, c.y) - damped_height(c.x - 1, c.y)) / (2.0 * p.cell);

@@ -15,12 +15,14 @@
 #define LAGOON_DYNAMIC_SPEC_NYQUIST 0
 #define LAGOON_DYNAMIC_SPEC_FIELDS 1
 // The sponge, the foam and the fields (dynamic_sponge.comp): the state after the inverse transform in, the
-// damped state, the foam (float per cell, read and written) and the image (h, dh/dx, dh/dz, foam) out. The
+// damped state, the foam (float per cell; the last step's in, this step's out, ping-pong so the trails can
+// spread from their neighbours) and the image (h, dh/dx, dh/dz, foam) out. The
 // step's sources are at LAGOON_DYNAMIC_BIND_SOURCES, as in the evolution.
 #define LAGOON_DYNAMIC_BIND_RAW 0
 #define LAGOON_DYNAMIC_BIND_STATE 1
 #define LAGOON_DYNAMIC_BIND_FIELDS 3
 #define LAGOON_DYNAMIC_BIND_FOAM 4
+#define LAGOON_DYNAMIC_BIND_FOAM_IN 5
 
 LAGOON_GPU_BEGIN
 // A pressure patch on the water: a hull's footprint (a Gaussian of its length and beam) moving at
@@ -50,7 +52,7 @@ struct DynamicPush {
   float sponge_per_s;  // its strongest damping rate, at the edge
   uint foam_sources;   // the first this many sources leave foam (foam_per_s > 0), the others none
   float foam_decay;    // the factor the foam keeps over this step
-  uint pad1;
+  float foam_spread;   // D dt / cell² of the trails' diffusion (dl_foam_spread)
   uint pad2;
 };
 LAGOON_GPU_END

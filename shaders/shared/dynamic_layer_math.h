@@ -109,6 +109,13 @@ LAGOON_FN dl_real dl_foam_injection(dl_real2 cell_xz, dl_real2 centre, dl_real2 
   return rate * dt * shape;
 }
 
+// A cell's foam after the trails' diffusion over a step: explicit, from its own and its four neighbours' foam
+// (their sum), `spread` = D dt / cell² (at most 0.24, below the scheme's limit of 1/4). The foam's total is
+// kept: it only moves sideways, so a trail widens and thins as it ages.
+LAGOON_FN dl_real dl_foam_spread(dl_real foam, dl_real neighbours, dl_real spread) {
+  return foam + spread * (neighbours - dl_real(4) * foam);
+}
+
 // A cell's foam over a step: what it had, decayed by the step's factor, plus what the hulls left, at most 1.
 LAGOON_FN dl_real dl_foam_update(dl_real foam, dl_real decay, dl_real injected) {
   return min(foam * decay + injected, dl_real(1));

@@ -47,8 +47,9 @@ DynamicLayerGpu::DynamicLayerGpu(vk::Context& ctx, const DynamicLayerParams& par
                               vk::MemoryUsage::Device, "dynamic layer state");
   scratch_ = vk::Buffer::create(ctx, bytes, (vk::kStorageUsage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT),
                                 vk::MemoryUsage::Device, "dynamic layer scratch");
-  foam_ = vk::Buffer::create(ctx, bytes / 2, (vk::kStorageUsage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT),
-                             vk::MemoryUsage::Device, "dynamic layer foam");
+  for (vk::Buffer& foam : foam_)
+    foam = vk::Buffer::create(ctx, bytes / 2, (vk::kStorageUsage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT),
+                              vk::MemoryUsage::Device, "dynamic layer foam");
   sources_ = vk::Buffer::create(ctx, kSlotBytes * kStepsInFlight, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                                 vk::MemoryUsage::Upload, "dynamic layer sources");
   fields_ =
@@ -67,7 +68,7 @@ DynamicLayerGpu::DynamicLayerGpu(vk::Context& ctx, const DynamicLayerParams& par
 void DynamicLayerGpu::record_clear(VkCommandBuffer cmd) {
   vk::memory_barrier(cmd, vk::access::kComputeReadWrite, vk::access::kTransferWrite);
   vkCmdFillBuffer(cmd, state_.handle(), 0, VK_WHOLE_SIZE, 0);
-  vkCmdFillBuffer(cmd, foam_.handle(), 0, VK_WHOLE_SIZE, 0);
+  for (const vk::Buffer& foam : foam_) vkCmdFillBuffer(cmd, foam.handle(), 0, VK_WHOLE_SIZE, 0);
   const VkClearColorValue zero{};
   const VkImageSubresourceRange range = fields_.all_subresources();
   vkCmdClearColorImage(cmd, fields_.handle(), VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &range);
@@ -91,19 +92,21 @@ void DynamicLayerGpu::record_step(VkCommandBuffer cmd, double dt, std::span<cons
   for (size_t i = 0, next = foam_sources; i < sources.size(); ++i)
     if (!(sources[i].foam_per_s > 0)) slot[next++] = to_gpu(sources[i], period);
   sources_.flush();
-  const gpu::DynamicPush push{.origin = origin_,
-                              .n = params_.n,
-                              .source_count = uint32_t(sources.size()),
-                              .cell = float(params_.cell_m),
-                              .dt = float(dt),
-                              .substeps = dynamic_substeps(dt, sources),
-                              .gravity = float(params_.gravity),
-                              .depth = float(params_.depth_m),
-                              .decay_per_s = float(params_.decay_per_s),
-                              .sponge_cells = float(params_.sponge_m / params_.cell_m),
-                              .sponge_per_s = float(params_.sponge_per_s),
-                              .foam_sources = foam_sources,
-                              .foam_decay = float(foam_decay_factor(params_.foam_lifetime_s, dt))};
+  const gpu::DynamicPush push{
+      .origin = origin_,
+      .n = params_.n,
+      .source_count = uint32_t(sources.size()),
+      .cell = float(params_.cell_m),
+      .dt = float(dt),
+      .substeps = dynamic_substeps(dt, sources),
+      .gravity = float(params_.gravity),
+      .depth = float(params_.depth_m),
+      .decay_per_s = float(params_.decay_per_s),
+      .sponge_cells = float(params_.sponge_m / params_.cell_m),
+      .sponge_per_s = float(params_.sponge_per_s),
+      .foam_sources = foam_sources,
+      .foam_decay = float(foam_decay_factor(params_.foam_lifetime_s, dt)),
+      .foam_spread = float(foam_spread_factor(params_.foam_spread_m2_s, params_.cell_m, dt))};
   const vk::BufferRef step_sources{sources_.handle(), offset, kSlotBytes};
   const std::array<uint32_t, 3> cells{params_.n, params_.n, 1};
   // The state is in state_; each transform returns its result in the buffer it was given.
@@ -119,12 +122,14 @@ void DynamicLayerGpu::record_step(VkCommandBuffer cmd, double dt, std::span<cons
   vk::memory_barrier(cmd, vk::access::kComputeReadWrite, vk::access::kComputeReadWrite);
   inverse_.record(cmd, scratch_, state_, 1);
   const vk::ComputePipeline& sponge = fields == Fields::Write ? sponge_ : sponge_no_fields_;
-  vk::dispatch(
-      cmd, sponge,
-      {vk::bind(LAGOON_DYNAMIC_BIND_RAW, scratch_), vk::bind(LAGOON_DYNAMIC_BIND_STATE, state_),
-       vk::bind(LAGOON_DYNAMIC_BIND_SOURCES, step_sources), vk::bind(LAGOON_DYNAMIC_BIND_FOAM, foam_),
-       vk::bind(LAGOON_DYNAMIC_BIND_FIELDS, vk::ImageRef{fields_.view(), VK_IMAGE_LAYOUT_GENERAL})},
-      push, vk::groups_for(sponge, cells));
+  vk::dispatch(cmd, sponge,
+               {vk::bind(LAGOON_DYNAMIC_BIND_RAW, scratch_), vk::bind(LAGOON_DYNAMIC_BIND_STATE, state_),
+                vk::bind(LAGOON_DYNAMIC_BIND_SOURCES, step_sources),
+                vk::bind(LAGOON_DYNAMIC_BIND_FOAM_IN, foam_[foam_current_]),
+                vk::bind(LAGOON_DYNAMIC_BIND_FOAM, foam_[1 - foam_current_]),
+                vk::bind(LAGOON_DYNAMIC_BIND_FIELDS, vk::ImageRef{fields_.view(), VK_IMAGE_LAYOUT_GENERAL})},
+               push, vk::groups_for(sponge, cells));
+  foam_current_ = 1 - foam_current_;
   vk::memory_barrier(cmd, vk::access::kComputeReadWrite, vk::access::kComputeReadWrite);
 }
 

@@ -42,14 +42,16 @@ class DynamicLayerGpu {
   // h + i dh/dt per storage index, as the CPU reference's state() (for tests and export).
   const vk::Buffer& state() const { return state_; }
   // The foam trails' coverage (float per storage index), as the CPU reference's foam().
-  const vk::Buffer& foam() const { return foam_; }
+  const vk::Buffer& foam() const { return foam_[foam_current_]; }
   const DynamicLayerParams& params() const { return params_; }
 
  private:
   DynamicLayerParams params_;
   fft::GpuFft2d forward_, inverse_;
   vk::ComputePipeline evolve_, evolve_nyquist_, sponge_, sponge_no_fields_;
-  vk::Buffer state_, scratch_, sources_, foam_;
+  vk::Buffer state_, scratch_, sources_;
+  vk::Buffer foam_[2];  // ping-pong: a step spreads the trails from one into the other
+  uint32_t foam_current_ = 0;
   vk::Image fields_;
   glm::ivec2 origin_{0};
   uint32_t next_slot_ = 0;  // in the sources ring
