@@ -53,8 +53,11 @@ double SedimentCloud::release_at(size_t stirrer, long long step, glm::dvec2* whe
 SedimentPuff SedimentCloud::puff(glm::dvec2 origin, double mass_g, double age_s) const {
   const glm::dvec2 drift = origin + params_.current_mps * age_s;
   SedimentPuff p;
-  p.centre = {drift.x, -floor_(origin) + params_.rise_m - params_.settling_mps * age_s, drift.y};
-  p.sigma = std::sqrt(params_.radius_m * params_.radius_m + 2.0 * params_.diffusivity_m2_s * age_s);
+  // The burst: 0 at release, 1 once the wash has thrown the cloud up and out.
+  const double burst = params_.burst_s > 0 ? 1 - std::exp(-age_s / params_.burst_s) : 1.0;
+  const double size = params_.radius_m * (0.2 + 0.8 * burst);
+  p.centre = {drift.x, -floor_(origin) + params_.rise_m * burst - params_.settling_mps * age_s, drift.y};
+  p.sigma = std::sqrt(size * size + 2.0 * params_.diffusivity_m2_s * age_s);
   p.mass_g = mass_g;
   p.age_s = age_s;
   // Above the floor under its centre: the floor taken as level across the cloud.
@@ -74,6 +77,7 @@ std::vector<SedimentPuff> SedimentCloud::puffs(double time_s) const {
       const double mass = release_at(s, k, &origin);
       if (mass <= 0) continue;
       SedimentPuff p = puff(origin, mass, std::max(time_s - double(k) * params_.interval_s, 0.0));
+      p.release = uint32_t((uint64_t(k) * 1000003u + s) * 2654435761u);
       if (p.suspended_g > kSettledShare * mass) out.push_back(p);
     }
   return out;

@@ -24,6 +24,10 @@ struct SedimentParams {
   glm::dvec2 current_mps{0.0};      // the water's drift (x, z)
   double interval_s = 1.0;          // a stirrer releases one cloud per interval, at multiples of it
   double max_age_s = 600;           // older clouds are dropped (long settled at the defaults)
+  // The wash's burst (seed 002 §3.4: thrown out radially from a point and rising): a new cloud leaves the
+  // floor as a point a fifth of radius_m across and reaches rise_m and radius_m as 1 - e^(-age / burst_s);
+  // diffusion and settling go on as before. 0 = born at its full height and size.
+  double burst_s = 0.5;
 };
 
 // Where a stirrer's lowest point is at time t: (x, y, z), y up, the mean water level at 0.
@@ -32,6 +36,7 @@ using StirrerBottom = std::function<glm::dvec3(double)>;
 using FloorDepth = std::function<double(glm::dvec2)>;
 
 struct SedimentPuff {
+  uint32_t release = 0;    // which release it is (a hash of the stirrer and its step): the same each frame
   glm::dvec3 centre{0.0};  // world m
   double sigma = 0;        // m
   double mass_g = 0;       // released

@@ -83,7 +83,8 @@ Result<void> OceanRenderer::init(const scene::Scene& scene) {
       std::make_unique<SurfacePass>(ctx_, *fields_, *objects_, luts_, samplers_, kColorFormat, kDepthFormat);
   sky_ = std::make_unique<SkyPass>(ctx_, kColorFormat, kDepthFormat);
   caustics_ = std::make_unique<CausticsPass>(ctx_, *fields_, samplers_);
-  particles_ = std::make_unique<ParticlesPass>(ctx_, luts_, samplers_, kColorFormat, kDepthFormat);
+  particles_ = std::make_unique<ParticlesPass>(ctx_, luts_, samplers_, kColorFormat, kDepthFormat,
+                                               !sediment_.empty() && scene.sediment.grains_per_g > 0);
   waterline_ = std::make_unique<WaterlinePass>(ctx_, *fields_, samplers_, kColorFormat, kDepthFormat);
   window_ = std::make_unique<ObjectsPass>(ctx_, *objects_, gpu::MeshMode::Window, "snell window", kHdrFormat,
                                           kDepthFormat);

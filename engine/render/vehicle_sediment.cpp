@@ -1,6 +1,8 @@
 #include "render/vehicle_sediment.h"
 
 #include <algorithm>
+#include <bit>
+#include <cmath>
 #include <string>
 
 #include "gltf/gltf_loader.h"
@@ -41,10 +43,12 @@ Result<VehicleSediment> VehicleSediment::create(const scene::Scene& scene, Vehic
                               .diffusivity_m2_s = s.diffusivity_m2_s,
                               .current_mps = glm::dvec2(s.current_mps),
                               .interval_s = s.interval_s,
-                              .max_age_s = s.max_age_s},
+                              .max_age_s = s.max_age_s,
+                              .burst_s = s.burst_s},
       [height = *floor](glm::dvec2 xz) { return -height(xz.x, xz.y); }, std::move(stirrers));
   out.attenuation_ = s.attenuation_m2_per_g;
   out.colour_ = s.colour;
+  out.grains_per_g_ = s.grains_per_g;
   return out;
 }
 
@@ -62,7 +66,10 @@ uint32_t VehicleSediment::write(double time_s, gpu::SedimentHeader* header,
   for (size_t i = 0; i < kept; ++i) {
     const physics::SedimentPuff& p = all[i];
     puffs[i] = {.centre_sigma = glm::vec4(glm::vec3(p.centre), float(p.sigma)),
-                .strength = glm::vec4(float(p.mass_g * attenuation_), 0, 0, 0)};
+                .strength = glm::vec4(float(p.mass_g * attenuation_),
+                                      std::min(std::round(float(p.suspended_g) * grains_per_g_),
+                                               float(LAGOON_SEDIMENT_MAX_GRAINS)),
+                                      std::bit_cast<float>(p.release), 0)};
   }
   header->colour = glm::vec4(colour_, float(kept));
   return uint32_t(kept);

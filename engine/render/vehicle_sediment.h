@@ -35,6 +35,7 @@ class VehicleSediment {
   std::optional<physics::SedimentCloud> cloud_;
   double attenuation_ = 0;
   glm::vec3 colour_{0.f};
+  float grains_per_g_ = 0;
 };
 
 }  // namespace lagoon::render

@@ -179,7 +179,7 @@ struct Wakes {
 };
 
 // Sediment stirred up from the floor by the vehicles (docs/physics.md, Sediment): Gaussian clouds that
-// drift, spread and settle, drawn as turbidity.
+// burst from the floor, drift, spread and settle, drawn as turbidity and as earth-coloured grains.
 struct Sediment {
   bool enabled = true;                    // vehicles near the floor stir it up
   float release_height_m = 1.5f;          // a hull's lowest point closer to the floor than this stirs it
@@ -193,6 +193,9 @@ struct Sediment {
   float max_age_s = 600.f;                // older clouds are dropped
   float attenuation_m2_per_g = 0.4f;      // mass-specific beam attenuation of the particles
   glm::vec3 colour{0.55f, 0.47f, 0.36f};  // their albedo, linear RGB
+  float burst_s = 0.5f;                   // a new cloud is thrown up and out over about this time
+  float grains_per_g = 4.f;               // grains drawn per gram in the water (seed 002's particles)
+  float grain_size_mm = 10.f;             // their diameter as drawn (clumps: one grain is sub-pixel)
 };
 
 struct PointLight {

@@ -274,6 +274,16 @@ void read_sediment(ObjectReader& r, Sediment& s) {
   r.vec3("colour", s.colour, "[r, g, b]", Bounds::between(0, 1), "",
          "Albedo of the particles (linear RGB): the light a cloud scatters toward the camera is this times "
          "the light at its depth.");
+  r.number("burst_s", s.burst_s, Bounds::between(0, 60), "s",
+           "The wash's burst (seed 002): a new cloud leaves the floor as a point and is thrown up to rise_m "
+           "and out to radius_m as 1 - e^(-age / burst_s); 0 = born at its full height and size.");
+  r.number("grains_per_g", s.grains_per_g, Bounds::between(0, 1000), "1/g",
+           "Earth-coloured grains drawn per gram of a cloud still in the water (seed 002's particles), each "
+           "where the cloud's Gaussian puts it, at most " +
+               std::to_string(LAGOON_SEDIMENT_MAX_GRAINS) + " a cloud; 0 = the turbidity alone.");
+  r.number("grain_size_mm", s.grain_size_mm, Bounds::above_up_to(0, 100), "mm",
+           "The grains' diameter as drawn (at least 1.5 pixels, fainter when smaller, as the suspended "
+           "particles).");
 }
 
 void read_object(ObjectReader& r, Object& o) {

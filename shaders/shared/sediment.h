@@ -7,6 +7,8 @@
 
 // Clouds the frame draws: each costs every water pixel a few exponentials, so the host keeps the densest.
 #define LAGOON_MAX_SEDIMENT_PUFFS 64
+// Grains drawn of one cloud at most (render/sediment_grains.vert).
+#define LAGOON_SEDIMENT_MAX_GRAINS 64
 // The buffer, in the surface shaders' set (shared/surface.h numbering).
 #define LAGOON_SURFACE_BIND_SEDIMENT 18
 // Specialisation constant of the shaders that include common/sediment.glsl: the clouds compiled in (1) or
@@ -18,7 +20,8 @@ LAGOON_GPU_BEGIN
 struct SedimentPuffGpu {
   vec4 centre_sigma;  // xyz world m, w = standard deviation m
   vec4 strength;  // x = mass x mass-specific attenuation (m²): its optical depth integrated over a plane;
-                  // yzw unused
+                  // y = grains drawn of it (render/passes/sediment_grains_pass.h), z = its release's id (uint
+                  // bits: the same grains each frame), w unused
 };
 
 struct SedimentHeader {

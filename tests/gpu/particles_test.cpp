@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <numeric>
 #include <random>
@@ -13,6 +14,7 @@
 
 #include "lagoon_test_shaders/shaders.h"
 #include "render/passes/particles_pass.h"
+#include "shared/sediment.h"
 #include "support/vk_fixture.h"
 #include "vk/barriers.h"
 #include "vk/pipeline.h"
@@ -177,6 +179,51 @@ TEST_F(Particles, TheyMoveWithTheDrift) {
   }
   RecordProperty("worst_error_m", std::to_string(worst));
   EXPECT_LT(worst, 5e-5);  // of a 7.5 mm step; floats at 30 m resolve 2e-6 m
+}
+
+// Seed 002 §3.4's sediment particles: the grains of a cloud sample its Gaussian (the same cloud the
+// turbidity integrates), as many as the renderer asks, the same each time for the same release.
+TEST_F(Particles, SedimentGrainsSampleTheirCloudsGaussian) {
+  constexpr uint32_t kClouds = 64, kPer = LAGOON_SEDIMENT_MAX_GRAINS;
+  const glm::vec3 centre(2.0f, -5.0f, -3.0f);
+  const float sigma = 0.7f;
+  std::vector<gpu::SedimentPuffGpu> puffs(kClouds);
+  for (uint32_t i = 0; i < kClouds; ++i)
+    puffs[i] = {
+        .centre_sigma = glm::vec4(centre, sigma),
+        .strength = glm::vec4(1.0f, i == 0 ? 10.0f : float(kPer), std::bit_cast<float>(i * 7919u + 1u), 0)};
+  vk::Buffer in = vk::Buffer::create(ctx(), kClouds * sizeof(gpu::SedimentPuffGpu), kUsage,
+                                     vk::MemoryUsage::Device, "puffs");
+  vk::Buffer out = vk::Buffer::create(ctx(), kClouds * kPer * sizeof(glm::vec4), kUsage,
+                                      vk::MemoryUsage::Device, "grains");
+  vk::upload_buffer(ctx(), in, vk::as_bytes_of(puffs));
+  const vk::ComputePipeline eval = vk::ComputePipeline::create(ctx(), shaders::gpu_sediment_grains_eval_comp);
+  ctx().submit_and_wait([&](VkCommandBuffer cmd) {
+    vk::memory_barrier(cmd, vk::access::kTransferWrite, vk::access::kComputeReadWrite);
+    vk::dispatch(cmd, eval, {vk::bind(0, in), vk::bind(1, out)}, kClouds,
+                 vk::groups_for(eval, {kClouds * kPer, 1, 1}));
+    vk::memory_barrier(cmd, vk::access::kComputeWrite, vk::access::kTransferRead);
+  });
+  const std::vector<glm::vec4> grains = from_bytes<glm::vec4>(vk::readback_buffer(ctx(), out));
+  int first = 0;
+  for (uint32_t j = 0; j < kPer; ++j) first += grains[j].w > 0 ? 1 : 0;
+  EXPECT_EQ(first, 10) << "the first cloud asks for 10 grains";
+  glm::dvec3 sum(0.0), sum2(0.0);
+  double n = 0;
+  for (uint32_t i = kPer; i < kClouds * kPer; ++i) {
+    ASSERT_GT(grains[i].w, 0.0f);
+    const glm::dvec3 d = glm::dvec3(grains[i]) - glm::dvec3(centre);
+    sum += d, sum2 += d * d, n += 1;
+  }
+  const glm::dvec3 mean = sum / n, deviation = glm::sqrt(sum2 / n - mean * mean);
+  RecordProperty("mean_m",
+                 std::to_string(mean.x) + " " + std::to_string(mean.y) + " " + std::to_string(mean.z));
+  RecordProperty("deviation_m", std::to_string(deviation.x) + " " + std::to_string(deviation.y) + " " +
+                                    std::to_string(deviation.z));
+  for (int a = 0; a < 3; ++a) {
+    EXPECT_LT(std::abs(mean[a]), 0.06 * sigma) << "axis " << a;  // 3 standard errors of 4032 grains
+    EXPECT_NEAR(deviation[a], sigma, 0.05 * sigma) << "axis " << a;
+  }
 }
 
 }  // namespace

@@ -39,6 +39,7 @@ scene::Scene stirred_bay(std::vector<std::string> more) {
                                      "render.gamma=1",
                                      "render.exposure=1.5",
                                      "render.effects.particles=false",
+                                     "sediment.grains_per_g=0",  // the turbidity alone, unless a test asks
                                      "render.effects.caustics=false",
                                      "wakes.enabled=false",
                                      "time_s=30",
@@ -111,6 +112,39 @@ TEST_F(SedimentRender, UnderTheWaterTheCloudsTransmitExpMinusTheirOpticalDepth) 
   RecordProperty("dense_pixels", dense);
   RecordProperty("worst_abs", std::to_string(worst));
   EXPECT_GE(dense, 10);  // the check saw the clouds, not only clear water
+}
+
+// Seed 002 §3.4's earth-coloured particles: the grains show where the clouds are. Every pixel they change
+// looks through a cloud (its optical depth, computed here from the clouds, is not negligible).
+TEST_F(SedimentRender, GrainsAreDrawnWhereTheCloudsAre) {
+  const std::vector<std::string> view{"camera.position=[0,-3,-4]", "camera.look_at=[0,-8,4]",
+                                      "sediment.colour=[1,0.8,0.5]", "sediment.grain_size_mm=30"};
+  std::vector<std::string> grains = view, none = view;
+  grains.push_back("sediment.grains_per_g=10");
+  const scene::Scene with = stirred_bay(grains), without = stirred_bay(none);
+  auto clouds = render::VehicleSediment::create(with);
+  ASSERT_TRUE(clouds) << clouds.error().message;
+  const std::vector<physics::SedimentPuff> puffs = clouds->puffs(with.time_s);
+  auto a = render::OceanRenderer::create(ctx(), with);
+  auto b = render::OceanRenderer::create(ctx(), without);
+  ASSERT_TRUE(a && b);
+  const io::Image8 seen = (*a)->render(with), plain = (*b)->render(without);
+  const glm::dvec3 eye(with.camera.position);
+  int changed = 0, outside = 0;
+  for (uint32_t y = 0; y < kSedimentHeight; ++y)
+    for (uint32_t x = 0; x < kSedimentWidth; ++x) {
+      double difference = 0;
+      for (int c = 0; c < 3; ++c) difference += std::abs(channel(seen, x, y, c) - channel(plain, x, y, c));
+      if (difference < 6.0 / 255) continue;
+      ++changed;
+      const glm::dvec3 dir = pixel_ray(with, x, y);
+      const double reach = dir.y < -0.05 ? (kFloorDepth + eye.y) / -dir.y : 40.0;
+      if (optical_depth(puffs, clouds->attenuation_m2_per_g(), eye, dir, reach) < 0.01) ++outside;
+    }
+  RecordProperty("changed_pixels", changed);
+  RecordProperty("outside_the_clouds", outside);
+  EXPECT_GE(changed, 15) << "no grains drawn";
+  EXPECT_LE(outside, changed / 20) << "grains where no cloud is";
 }
 
 TEST_F(SedimentRender, FromAboveTheWaterOverTheCloudsChangesColourAndNowhereElse) {

@@ -84,6 +84,29 @@ Moments moments(const std::vector<SedimentPuff>& puffs, glm::dvec3 lo, glm::dvec
   return m;
 }
 
+// Seed 002 §3.4: the sediment is thrown out radially from a point and rises. A new cloud leaves the floor a
+// fifth of radius_m across and reaches rise_m and radius_m as 1 - e^(-age / burst_s).
+TEST(Sediment, ANewCloudBurstsUpAndOutFromTheFloor) {
+  const SedimentParams p{
+      .rise_m = 2, .radius_m = 0.5, .settling_mps = 0, .diffusivity_m2_s = 0, .burst_s = 0.4};
+  const SedimentCloud cloud(p, kFlat, {});
+  const SedimentPuff born = cloud.puff({1, 2}, 10, 0);
+  EXPECT_NEAR(born.centre.y, -kFloorDepth, 1e-12) << "released on the floor";
+  EXPECT_NEAR(born.sigma, 0.1, 1e-12);
+  for (const double age : {0.2, 0.4, 1.0}) {
+    const SedimentPuff now = cloud.puff({1, 2}, 10, age);
+    const double burst = 1 - std::exp(-age / 0.4);
+    EXPECT_NEAR(now.centre.y, -kFloorDepth + 2 * burst, 1e-12) << "age " << age;
+    EXPECT_NEAR(now.sigma, 0.5 * (0.2 + 0.8 * burst), 1e-12) << "age " << age;
+  }
+  const SedimentPuff grown = cloud.puff({1, 2}, 10, 4.0);  // ten burst times
+  EXPECT_NEAR(grown.centre.y, -kFloorDepth + 2, 1e-3);
+  EXPECT_NEAR(grown.sigma, 0.5, 1e-3);
+  // burst_s = 0: born at its full height and size, as before the burst.
+  const SedimentCloud at_once({.rise_m = 2, .radius_m = 0.5, .burst_s = 0}, kFlat, {});
+  EXPECT_NEAR(at_once.puff({1, 2}, 10, 0).centre.y, -kFloorDepth + 2, 1e-12);
+}
+
 TEST(Sediment, TheSuspendedMassSinksAtTheSettlingVelocity) {
   // A hull just above the floor for five seconds releases five clouds 5 m up; 30 s apart, their mass centre
   // has sunk by 30 w_s, and all of it is still in the water.

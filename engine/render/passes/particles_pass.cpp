@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "lagoon_shaders/shaders.h"
+#include "shared/sediment.h"
 #include "shared/surface.h"
 #include "vk/rendering.h"
 
@@ -36,30 +37,43 @@ gpu::ParticlesPush particles_push(const scene::Scene& scene) {
 }
 
 ParticlesPass::ParticlesPass(vk::Context& ctx, const WaterLuts& luts, const Samplers& samplers,
-                             VkFormat color_format, VkFormat depth_format)
-    : luts_(luts),
-      samplers_(samplers),
-      pipeline_(vk::GraphicsPipeline::create(ctx, {.vertex = &shaders::render_particles_vert,
-                                                   .fragment = &shaders::render_particles_frag,
-                                                   .color_formats = {color_format},
-                                                   .depth_format = depth_format,
-                                                   .depth_test = true,
-                                                   .depth_write = false,
-                                                   .alpha_blend = true})) {}
+                             VkFormat color_format, VkFormat depth_format, bool grains)
+    : luts_(luts), samplers_(samplers) {
+  vk::GraphicsDesc desc{.vertex = &shaders::render_particles_vert,
+                        .fragment = &shaders::render_particles_frag,
+                        .color_formats = {color_format},
+                        .depth_format = depth_format,
+                        .depth_test = true,
+                        .depth_write = false,
+                        .alpha_blend = true};
+  pipeline_ = vk::GraphicsPipeline::create(ctx, desc);
+  if (!grains) return;
+  desc.vertex = &shaders::render_sediment_grains_vert;
+  grains_ = vk::GraphicsPipeline::create(ctx, desc);
+}
 
 void ParticlesPass::record(const FrameContext& frame, vk::Target color, vk::Target depth) const {
   const scene::Scene& scene = frame.scene;
-  if (!scene.render.effects.particles || scene.underwater.particles.density_per_m3 <= 0) return;
+  const bool particles = scene.render.effects.particles && scene.underwater.particles.density_per_m3 > 0;
+  if (!particles && grains_.empty()) return;
   vk::GpuScope scope(frame.timer(), frame.cmd, "particles");
   vk::begin_rendering(frame.cmd, frame.extent, {{.view = color.view}},
                       vk::DepthTarget{.view = depth.view, .clear = {}});
-  const gpu::ParticlesPush push = particles_push(scene);
-  const std::vector<vk::Binding> bindings{
+  std::vector<vk::Binding> bindings{
       vk::bind(LAGOON_SURFACE_BIND_FRAME, frame.uniforms()),
       vk::bind(LAGOON_SURFACE_BIND_UW_TARGET, sampled(luts_.uw_target, samplers_.clamp)),
       vk::bind(LAGOON_SURFACE_BIND_UW_DOWN, sampled(luts_.uw_down, samplers_.clamp)),
       vk::bind(LAGOON_SURFACE_BIND_UW_UP, sampled(luts_.uw_up, samplers_.clamp))};
-  vk::draw(frame.cmd, pipeline_, bindings, &push, sizeof(push), kCandidates * 6);
+  if (particles) {
+    const gpu::ParticlesPush push = particles_push(scene);
+    vk::draw(frame.cmd, pipeline_, bindings, &push, sizeof(push), kCandidates * 6);
+  }
+  if (!grains_.empty()) {
+    const glm::vec4 look(scene.sediment.grain_size_mm * 1e-3f, 0, 0, 0);
+    bindings.push_back(vk::bind(LAGOON_SURFACE_BIND_SEDIMENT, frame.slot.sediment));
+    vk::draw(frame.cmd, grains_, bindings, &look, sizeof(look),
+             LAGOON_MAX_SEDIMENT_PUFFS * LAGOON_SEDIMENT_MAX_GRAINS * 6);
+  }
   vk::end_rendering(frame.cmd);
 }
 
