@@ -25,7 +25,13 @@ void particle_emit(vec3 pos, float diameter, vec3 albedo) {
   vec4 clip = frame.view_proj * vec4(pos, 1.0);
   if (clip.w <= 1e-3) { particle_hide(); return; }
   vec3 dir = normalize(pos - eye);
-  vec3 side = normalize(abs(dir.y) < 0.99 ? cross(dir, vec3(0.0, 1.0, 0.0)) : cross(dir, vec3(1.0, 0.0, 0.0)));
+  // The diameter measured along the camera's right axis (clip x's row: at right angles to the view axis), so
+  // the edge lies at the particle's own view depth and the quad is the pinhole's D f / z across. A side
+  // across the line of sight instead tilts toward the view axis for a particle off to the side: near the
+  // camera's plane its edge crossed it and the quad grew to cover the frame (tests/render/
+  // particles_render_test.cpp).
+  mat4 m = frame.view_proj;
+  vec3 side = normalize(vec3(m[0][0], m[1][0], m[2][0]));
   vec4 edge = frame.view_proj * vec4(pos + side * diameter, 1.0);
   float size_px = length(edge.xy / edge.w - clip.xy / clip.w) * 0.5 * frame.screen.x;
   float radius_px = max(0.5 * size_px, 0.75);
