@@ -22,6 +22,13 @@ using std::sin;
 
 namespace lagoon::ocean {
 
+double sine_profile_mean(uint32_t power) {
+  if (power == 0) return 0;
+  double mean = 1;
+  for (uint32_t j = 1; j <= power; ++j) mean *= double(power + j) / double(j) / 4.0;
+  return mean;
+}
+
 double gerstner_omega(GerstnerDispersion law, double k, double depth_m) {
   switch (law) {
     case GerstnerDispersion::Deep:
@@ -42,12 +49,7 @@ GerstnerSurface::GerstnerSurface(GerstnerParams params) : params_(std::move(para
     omega_.push_back(
         quantise_omega(gerstner_omega(params_.dispersion, k, params_.depth_m), params_.loop_period_s));
     q_.push_back(w.steepness);
-    double mean = 0;  // C(2p, p) / 4^p
-    if (w.power > 0) {
-      mean = 1;
-      for (uint32_t j = 1; j <= w.power; ++j) mean *= double(w.power + j) / double(j) / 4.0;
-    }
-    mean_.push_back(mean);
+    mean_.push_back(sine_profile_mean(w.power));
     sum += w.steepness * k * w.amplitude_m;
   }
   if (params_.limit_steepness && sum > 1)

@@ -68,6 +68,10 @@ class GerstnerSurface {
   std::vector<double> omega_, q_, mean_;  // mean_: the profile's, left out
 };
 
+// The mean of the sum of sines' profile ((1 + sin θ)/2)^p over a period, C(2p, p) / 4^p, left out of the
+// height so the sea's mean level stays 0 (0 for p = 0, Gerstner's cos θ).
+double sine_profile_mean(uint32_t power);
+
 // ω(k) of the chosen law, before quantisation: sqrt(g k) (eq. 7), sqrt(g k tanh(k D)) (eq. 8), or
 // sqrt(g k (1 + k² L²)) (eq. 9, L = sqrt(σ/(ρg)) the capillary length).
 double gerstner_omega(GerstnerDispersion law, double k, double depth_m);

@@ -96,9 +96,8 @@ double sines_height(const OceanParams& params, double t, double x, double z) {
                              params.loop_period_s);
     }
     const double s = glm::dot(k, glm::dvec2(x, z)) - omega * t + w.phase_deg * std::numbers::pi / 180;
-    double mean = 1;  // C(2p, p) / 4^p
-    for (uint32_t j = 1; j <= w.steepness; ++j) mean *= double(w.steepness + j) / double(j) / 4.0;
-    h += w.amplitude_m * (std::pow(0.5 * (1 + std::sin(s)), double(w.steepness)) - mean);
+    h += w.amplitude_m *
+         (std::pow(0.5 * (1 + std::sin(s)), double(w.steepness)) - sine_profile_mean(w.steepness));
   }
   return h;
 }

@@ -15,6 +15,7 @@
 #include "lagoon_test_shaders/shaders.h"
 #include "render/passes/particles_pass.h"
 #include "shared/sediment.h"
+#include "support/particle_candidates.h"
 #include "support/vk_fixture.h"
 #include "vk/barriers.h"
 #include "vk/pipeline.h"
@@ -79,22 +80,11 @@ double reference_simplex4(std::array<double, 4> p, uint32_t seed) {
 
 constexpr VkBufferUsageFlags kUsage =
     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
-constexpr uint32_t kCandidates = LAGOON_PARTICLES_SIDE * LAGOON_PARTICLES_SIDE * LAGOON_PARTICLES_SIDE;
+constexpr uint32_t kCandidates = kParticleCandidates;
 
 class Particles : public GpuTest {
  protected:
-  // (position, kept) of every candidate, for the push the particles' pass builds from `scene`.
-  std::vector<glm::vec4> candidates(const scene::Scene& scene) {
-    const gpu::ParticlesPush push = render::particles_push(scene);
-    vk::Buffer out = vk::Buffer::create(ctx(), kCandidates * sizeof(glm::vec4), kUsage,
-                                        vk::MemoryUsage::Device, "candidates");
-    const vk::ComputePipeline eval = vk::ComputePipeline::create(ctx(), shaders::gpu_particles_eval_comp);
-    ctx().submit_and_wait([&](VkCommandBuffer cmd) {
-      vk::dispatch(cmd, eval, {vk::bind(0, out)}, push, vk::groups_for(eval, {kCandidates, 1, 1}));
-      vk::memory_barrier(cmd, vk::access::kComputeWrite, vk::access::kTransferRead);
-    });
-    return from_bytes<glm::vec4>(vk::readback_buffer(ctx(), out));
-  }
+  std::vector<glm::vec4> candidates(const scene::Scene& scene) { return particle_candidates(ctx(), scene); }
 };
 
 TEST_F(Particles, TheSimplexNoiseIsGustavsonsAlgorithm) {

@@ -7,37 +7,17 @@
 #include <cmath>
 #include <vector>
 
-#include "lagoon_test_shaders/shaders.h"
 #include "render/ocean_renderer.h"
-#include "render/passes/particles_pass.h"
 #include "render/pinhole.h"
+#include "support/particle_candidates.h"
 #include "support/shipped_scene.h"
 #include "support/vk_fixture.h"
-#include "vk/barriers.h"
-#include "vk/pipeline.h"
-#include "vk/transfer.h"
 
 namespace lagoon::test {
 namespace {
 
 constexpr uint32_t kSizeWidth = 480, kSizeHeight = 270;
-constexpr uint32_t kSizeCandidates = LAGOON_PARTICLES_SIDE * LAGOON_PARTICLES_SIDE * LAGOON_PARTICLES_SIDE;
-
-class ParticleSize : public GpuTest {
- protected:
-  std::vector<glm::vec4> placed(const scene::Scene& scene) {
-    const gpu::ParticlesPush push = render::particles_push(scene);
-    vk::Buffer out = vk::Buffer::create(ctx(), kSizeCandidates * sizeof(glm::vec4),
-                                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                        vk::MemoryUsage::Device, "candidates");
-    const vk::ComputePipeline eval = vk::ComputePipeline::create(ctx(), shaders::gpu_particles_eval_comp);
-    ctx().submit_and_wait([&](VkCommandBuffer cmd) {
-      vk::dispatch(cmd, eval, {vk::bind(0, out)}, push, vk::groups_for(eval, {kSizeCandidates, 1, 1}));
-      vk::memory_barrier(cmd, vk::access::kComputeWrite, vk::access::kTransferRead);
-    });
-    return from_bytes<glm::vec4>(vk::readback_buffer(ctx(), out));
-  }
-};
+using ParticleSize = GpuTest;
 
 TEST_F(ParticleSize, TheyCoverTheDiscsTheirDiameterProjects) {
   for (const double size_mm : {30.0, 60.0}) {
@@ -68,7 +48,7 @@ TEST_F(ParticleSize, TheyCoverTheDiscsTheirDiameterProjects) {
     // quarters of a pixel of blending around it. A diameter drawn 1.3 times too large strays 2.5-6 %; 0.7
     // times leaves 14-20 % of the discs unchanged.
     std::vector<char> must(size_t(kSizeWidth) * kSizeHeight, 0), may(must.size(), 0);
-    for (const glm::vec4& c : placed(with)) {
+    for (const glm::vec4& c : particle_candidates(ctx(), with)) {
       if (c.w == 0.0f) continue;
       const glm::dvec3 q = to_camera * (glm::dvec3(c) - cam.position);
       if (q.z < with.camera.near_m) continue;
