@@ -114,7 +114,8 @@ gpu::FrameUniforms frame_uniforms(const FrameInputs& in) {
       .classic_diffuse = glm::vec4(scene.render.classic.diffuse, scene.render.classic.shininess),
       .classic_specular = glm::vec4(scene.render.classic.specular, 0.0f),
       .sky = light.sky_model,
-      .whitecaps = glm::vec4(scene.render.effects.foam ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f)};
+      .whitecaps = glm::vec4(scene.render.effects.foam ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f),
+      .submerged_rect = in.submerged_rect};
   if (const ocean::GerstnerSurface* direct = in.ocean.direct_waves()) {
     const std::vector<gpu::DirectWaveGpu> waves = ocean::direct_waves_gpu(*direct, scene.time_s);
     const size_t count = std::min<size_t>(waves.size(), LAGOON_DIRECT_MAX_WAVES);  // validate() keeps to it

@@ -35,7 +35,8 @@ struct FrameInputs {
   uint32_t light_count = 0;
   bool under_water = false;
   const CausticsWindow& caustics;
-  glm::vec4 wakes_window{0.0f};  // WakesPass::window()
+  glm::vec4 wakes_window{0.0f};                      // WakesPass::window()
+  glm::vec4 submerged_rect{1.0f, 1.0f, 0.0f, 0.0f};  // SceneObjects::submerged_screen_rect (empty: none)
 };
 gpu::FrameUniforms frame_uniforms(const FrameInputs& in);
 

@@ -267,6 +267,21 @@ void SceneObjects::place(size_t object, const glm::mat4& model_to_world) {
   }
 }
 
+glm::vec4 SceneObjects::submerged_screen_rect(const glm::mat4& view_proj) const {
+  glm::vec4 rect(1.0f, 1.0f, 0.0f, 0.0f);
+  for (const ObjectDraw& o : objects_) {
+    if (o.y_range.x >= 0.0f) continue;  // wholly above the water: not drawn by the refraction pass
+    for (int k = 0; k < 8; ++k) {
+      const glm::vec3 corner(k & 1 ? o.hi.x : o.lo.x, k & 2 ? o.hi.y : o.lo.y, k & 4 ? o.hi.z : o.lo.z);
+      const glm::vec4 clip = view_proj * (o.world * glm::vec4(corner, 1.0f));
+      if (clip.w < 1e-3f) return {0.0f, 0.0f, 1.0f, 1.0f};
+      const glm::vec2 uv(0.5f + 0.5f * clip.x / clip.w, 0.5f - 0.5f * clip.y / clip.w);  // as the shaders map
+      rect = glm::vec4(glm::min(glm::vec2(rect), uv), glm::max(glm::vec2(rect.z, rect.w), uv));
+    }
+  }
+  return rect;
+}
+
 void SceneObjects::draw_mesh(const FrameContext& frame, gpu::MeshMode mode, const GpuMesh& mesh,
                              const gpu::MeshPush& push, const DrawTextures& t, bool blend) const {
   const vk::GraphicsPipeline& pipeline = (blend ? blend_pipelines_ : pipelines_)[uint32_t(mode)];
@@ -320,8 +335,10 @@ SceneObjects::DrawTextures SceneObjects::floor_textures() const {
 
 void SceneObjects::draw_floor(const FrameContext& frame) const {
   if (!floor_) return;
-  const gpu::MeshPush push{
-      .model = glm::mat4(1.0f), .material = floor_material_, .texture_scale = floor_texture_scale_};
+  const gpu::MeshPush push{.model = glm::mat4(1.0f),
+                           .material = floor_material_,
+                           .texture_scale = floor_texture_scale_,
+                           .height_field = 1};
   draw_mesh(frame, gpu::MeshMode::Refraction, *floor_, push, floor_textures(), false);
 }
 

@@ -47,6 +47,11 @@ class SceneObjects {
   // light above the water, render::reference_illuminance_lux); without a glTF range, range_m is where that
   // irradiance falls to 1e-4. Spot lights keep their cone, along their node's −z.
   std::vector<scene::PointLight> gltf_lights(double reference_lux) const;
+  // The screen rectangle (uv: xy least, zw greatest) that holds every object drawn under the water from
+  // `view_proj`, from its bounding box: where the refracted rays can meet something other than the floor
+  // (common/refracted_hit.glsl searches only there). The whole screen when a box reaches behind the camera;
+  // empty (x > z) when nothing is under the water.
+  glm::vec4 submerged_screen_rect(const glm::mat4& view_proj) const;
   // The sky the objects are lit by (their pre-filtered environment); call before the frame's first draw.
   void set_sky(const SkyLight& light) { environment_.update(light); }
 

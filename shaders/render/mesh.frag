@@ -85,7 +85,8 @@ void main() {
   if (m.flags.x == LAGOON_ALPHA_MASK && base.a < m.emissive.w) discard;
   if (m.flags.x != LAGOON_ALPHA_BLEND) base.a = 1.0;
   if (mode == LAGOON_MESH_REFRACTION) {
-    out_colour = base;
+    out_colour = vec4(base.rgb, p.height_field != 0u ? LAGOON_REFRACTION_ALPHA_HEIGHT_FIELD
+                                                        : LAGOON_REFRACTION_ALPHA_OBJECT * base.a);
     return;
   }
   vec3 n = shading_normal(m, front);

@@ -1,6 +1,7 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "shared/frame.h"
+#include "shared/mesh.h"
 #include "shared/surface.h"
 #include "common/light.glsl"
 #include "common/tonemap.glsl"
@@ -50,7 +51,9 @@ vec3 water_radiance(vec3 n, vec3 v, out vec3 lamps, out float seen_m, out float 
   if (frame.lut.z < 0.5) return deep;
   float depth;
   vec2 uv = refracted_hit(v_world, t, seen_m, depth);
-  vec4 albedo = texture(refraction_albedo, uv);
+  // The texel whose depth was read (nearest): a filtered albedo would blend an object's edge into the floor
+  // beside it, and outline every object where the search lands beside it.
+  vec4 albedo = texelFetch(refraction_albedo, refraction_texel(uv), 0);
   if (albedo.a < 0.5) return deep;
   vec3 floor_point = world_of(uv, depth);
   float h = max(v_world.y - floor_point.y, 0.0);

@@ -57,6 +57,8 @@ struct FrameUniforms {
   SkyModelGpu sky;        // the sky's radiance by direction (shared/sky_model.h), white units
   vec4 whitecaps;  // x = 1 when the whitecaps are drawn, 0 when render.effects.foam hides them; yzw unused
   vec4 direct;  // x = how many of direct_waves the surface sums (0: the cascades carry the sea), yzw unused
+  vec4 submerged_rect;  // screen uv (xy least, zw greatest) that bounds every object drawn under the water
+                        // (render/scene_objects.h); empty (x > z) when there is none
   // Models gerstner and sines with their own waves (common/direct_waves.glsl), phases at the frame's time.
   DirectWaveGpu direct_waves[LAGOON_DIRECT_MAX_WAVES];
 };
@@ -71,7 +73,7 @@ struct PointLightGpu {
 LAGOON_GPU_END
 
 #ifdef __cplusplus
-LAGOON_CHECK_SIZE(FrameUniforms, 2800);
+LAGOON_CHECK_SIZE(FrameUniforms, 2816);
 LAGOON_CHECK_OFFSET(FrameUniforms, sky, 592);
 LAGOON_CHECK_SIZE(PointLightGpu, 48);
 LAGOON_CHECK_OFFSET(FrameUniforms, camera_pos, 128);

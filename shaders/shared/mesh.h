@@ -40,13 +40,19 @@
 #define LAGOON_TEX_EMISSIVE 4
 #define LAGOON_TEX_COUNT 5
 
+// The refraction pass's alpha (coverage; above 0.5 = something drawn): 1 for the procedural floor, a height
+// field whose point on a refracted ray the fixed point finds alone; less for objects and glTF floors, which a
+// ray can meet before what it settles on (common/refracted_hit.glsl).
+#define LAGOON_REFRACTION_ALPHA_HEIGHT_FIELD 1.0
+#define LAGOON_REFRACTION_ALPHA_OBJECT 0.75
+
 LAGOON_GPU_BEGIN
 struct MeshPush {
   mat4 model;           // model to world
   uint material;        // index into MaterialGpu[]
   float texture_scale;  // metres per texture repeat for world-space uv (0 = the mesh's uv)
   uint ground_truth;    // what it is in the ground truth (shared/ground_truth.h LAGOON_GT_*)
-  uint pad1;
+  uint height_field;    // 1: the procedural floor, which the refraction pass marks as a height field
 };
 
 // A glTF material (gltf/model.h Material) as the mesh shader reads it.

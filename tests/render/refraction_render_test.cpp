@@ -2,7 +2,9 @@
 // level floor 1.5, 4 and 9 m down under a still sea, found in the picture as the pixels it changes, against a
 // ray trace written here (camera ray to the water, Snell's law, on to the tile's plane). The old screen
 // offset (n.xz · 0.05, nothing under a level surface) drew it where the unrefracted ray meets it, many pixels
-// away: the test checks that the two places differ by far more than its tolerance.
+// away: the test checks that the two places differ by far more than its tolerance. The same tile standing
+// 2, 5 and 8 m down above a 12 m floor must be found before the floor behind it, and shaded by the water
+// above it, not the water down to the floor.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -134,6 +136,68 @@ TEST_F(RefractionRender, ATileOnTheFloorIsSeenWhereTheRefractedRayMeetsIt) {
     EXPECT_NEAR(seen.pixels, expected.pixels, 0.15 * expected.pixels) << "depth " << -c.y;
     EXPECT_NEAR(seen.x, expected.x, 1.0) << "depth " << -c.y;
     EXPECT_NEAR(seen.y, expected.y, 1.0) << "depth " << -c.y;
+  }
+}
+
+// Mean colour of the pixels of `img` inside the traced tile (the blob's pixels more than 2 px from its edge).
+glm::dvec3 tile_colour(const io::Image8& img, const render::Pinhole& cam, glm::dvec3 c, double ior) {
+  const auto inside = [&](int x, int y) {
+    const glm::dvec3 d = cam.ray(uint32_t(x), uint32_t(y));
+    const glm::dvec3 at_surface = cam.position + d * (-cam.position.y / d.y);
+    const double cos_i = -d.y, sin2_t = (1 - cos_i * cos_i) / (ior * ior);
+    const glm::dvec3 t = d / ior + (cos_i / ior - std::sqrt(1 - sin2_t)) * glm::dvec3(0, 1, 0);
+    const glm::dvec3 hit = at_surface + t * ((c.y - at_surface.y) / t.y);
+    return std::abs(hit.x - c.x) <= kTileHalf && std::abs(hit.z - c.z) <= kTileHalf;
+  };
+  glm::dvec3 sum(0.0);
+  int n = 0;
+  for (int y = 2; y < int(kFrameHeight) - 2; ++y)
+    for (int x = 2; x < int(kFrameWidth) - 2; ++x)
+      if (inside(x, y) && inside(x - 2, y) && inside(x + 2, y) && inside(x, y - 2) && inside(x, y + 2)) {
+        const auto* px = img.pixel(uint32_t(x), uint32_t(y));
+        sum += glm::dvec3(px[0], px[1], px[2]);
+        ++n;
+      }
+  return n ? sum / double(n) : glm::dvec3(-1.0);
+}
+
+// A tile standing above a deeper floor (12 m): the refracted ray meets the tile first, so the tile is seen
+// where the trace to its own plane puts it, not where the floor behind it would, and it is shaded by the
+// water column above it (the same colour as a tile lying on a floor at its depth).
+TEST_F(RefractionRender, ATileAboveADeeperFloorIsSeenWhereTheRefractedRayMeetsIt) {
+  const float q = 0.7071068f;
+  write_quads(dir_ / "tile.gltf",
+              {{.material = {{"pbrMetallicRoughness", {{"baseColorFactor", {1, 1, 1, 1}}}}},
+                .rotation = {q, 0, 0, q},
+                .half = float(kTileHalf)}});
+  const double ior = 1.333, floor_m = 12.0;
+  const io::Image8 without = render_with(json::array(), floor_m);
+  for (const glm::dvec3 c :
+       {glm::dvec3(1.0, -2.0, 6.0), glm::dvec3(-1.0, -5.0, 8.0), glm::dvec3(0.0, -8.0, 10.0)}) {
+    const json tile = json::array({json{{"file", "tile.gltf"}, {"position", {c.x, c.y, c.z}}}});
+    const io::Image8 with = render_with(tile, floor_m);
+    ASSERT_EQ(with.width, kFrameWidth);
+    const render::Pinhole cam = render::pinhole(scene_.camera, kFrameWidth, kFrameHeight);
+    const Blob expected = traced_tile(cam, c, ior), seen = changed_pixels(with, without);
+    if (getenv("LAGOON_DEBUG_TILE")) {
+      (void)io::write_png(dir_.path().parent_path() / ("tile_over_" + std::to_string(int(-c.y)) + ".png"),
+                          with);
+      (void)io::write_png(dir_.path().parent_path() / "tile_over_none.png", without);
+    }
+    RecordProperty("tile_" + std::to_string(int(-c.y)) + "m_over_12m",
+                   "seen (" + std::to_string(seen.x) + ", " + std::to_string(seen.y) + ") " +
+                       std::to_string(seen.pixels) + " px, traced (" + std::to_string(expected.x) + ", " +
+                       std::to_string(expected.y) + ") " + std::to_string(expected.pixels) + " px");
+    ASSERT_GT(expected.pixels, 50) << "depth " << -c.y << ": the tile must be in view";
+    EXPECT_NEAR(seen.pixels, expected.pixels, 0.15 * expected.pixels) << "depth " << -c.y;
+    EXPECT_NEAR(seen.x, expected.x, 1.0) << "depth " << -c.y;
+    EXPECT_NEAR(seen.y, expected.y, 1.0) << "depth " << -c.y;
+    // The same tile on a floor at its own depth: the water column above it is the same, so is its colour.
+    const io::Image8 on_floor = render_with(tile, -c.y + 0.01);
+    const glm::dvec3 above = tile_colour(with, cam, c, ior), lying = tile_colour(on_floor, cam, c, ior);
+    ASSERT_GE(above.x, 0.0) << "depth " << -c.y << ": the tile's inside must hold pixels";
+    for (int ch = 0; ch < 3; ++ch)
+      EXPECT_NEAR(above[ch], lying[ch], 3.0) << "depth " << -c.y << ", channel " << ch;
   }
 }
 
