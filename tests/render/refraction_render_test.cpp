@@ -32,24 +32,28 @@ struct Blob {
   int pixels = 0;
 };
 
-// Where the tile (centre c, level, kTileHalf either side) is seen through a level water surface at y = 0
-// with index `ior`, or straight through no water at all (`ior` 1).
+// Whether pixel (x, y)'s ray meets the tile (centre c, level, kTileHalf either side) through a level water
+// surface at y = 0 with index `ior` (`ior` 1: straight through no water at all).
+bool sees_tile(const render::Pinhole& cam, uint32_t x, uint32_t y, glm::dvec3 c, double ior) {
+  const glm::dvec3 d = cam.ray(x, y);
+  if (d.y >= 0) return false;
+  const glm::dvec3 at_surface = cam.position + d * (-cam.position.y / d.y);
+  // Snell's law in vector form: t = d/n + (cos_i/n - cos_t) N with N = +y, cos_i = -d.y.
+  const double cos_i = -d.y, sin2_t = (1 - cos_i * cos_i) / (ior * ior);
+  const glm::dvec3 t = d / ior + (cos_i / ior - std::sqrt(1 - sin2_t)) * glm::dvec3(0, 1, 0);
+  const glm::dvec3 hit = at_surface + t * ((c.y - at_surface.y) / t.y);
+  return std::abs(hit.x - c.x) <= kTileHalf && std::abs(hit.z - c.z) <= kTileHalf;
+}
+
+// Where the tile is seen: the mean pixel of those whose rays meet it.
 Blob traced_tile(const render::Pinhole& cam, glm::dvec3 c, double ior) {
   Blob out;
   for (uint32_t y = 0; y < kFrameHeight; ++y)
-    for (uint32_t x = 0; x < kFrameWidth; ++x) {
-      const glm::dvec3 d = cam.ray(x, y);
-      if (d.y >= 0) continue;
-      const glm::dvec3 at_surface = cam.position + d * (-cam.position.y / d.y);
-      // Snell's law in vector form: t = d/n + (cos_i/n - cos_t) N with N = +y, cos_i = -d.y.
-      const double cos_i = -d.y, sin2_t = (1 - cos_i * cos_i) / (ior * ior);
-      const glm::dvec3 t = d / ior + (cos_i / ior - std::sqrt(1 - sin2_t)) * glm::dvec3(0, 1, 0);
-      const glm::dvec3 hit = at_surface + t * ((c.y - at_surface.y) / t.y);
-      if (std::abs(hit.x - c.x) <= kTileHalf && std::abs(hit.z - c.z) <= kTileHalf) {
+    for (uint32_t x = 0; x < kFrameWidth; ++x)
+      if (sees_tile(cam, x, y, c, ior)) {
         out.x += x, out.y += y;
         ++out.pixels;
       }
-    }
   if (out.pixels) out.x /= out.pixels, out.y /= out.pixels;
   return out;
 }
@@ -141,14 +145,7 @@ TEST_F(RefractionRender, ATileOnTheFloorIsSeenWhereTheRefractedRayMeetsIt) {
 
 // Mean colour of the pixels of `img` inside the traced tile (the blob's pixels more than 2 px from its edge).
 glm::dvec3 tile_colour(const io::Image8& img, const render::Pinhole& cam, glm::dvec3 c, double ior) {
-  const auto inside = [&](int x, int y) {
-    const glm::dvec3 d = cam.ray(uint32_t(x), uint32_t(y));
-    const glm::dvec3 at_surface = cam.position + d * (-cam.position.y / d.y);
-    const double cos_i = -d.y, sin2_t = (1 - cos_i * cos_i) / (ior * ior);
-    const glm::dvec3 t = d / ior + (cos_i / ior - std::sqrt(1 - sin2_t)) * glm::dvec3(0, 1, 0);
-    const glm::dvec3 hit = at_surface + t * ((c.y - at_surface.y) / t.y);
-    return std::abs(hit.x - c.x) <= kTileHalf && std::abs(hit.z - c.z) <= kTileHalf;
-  };
+  const auto inside = [&](int x, int y) { return sees_tile(cam, uint32_t(x), uint32_t(y), c, ior); };
   glm::dvec3 sum(0.0);
   int n = 0;
   for (int y = 2; y < int(kFrameHeight) - 2; ++y)
