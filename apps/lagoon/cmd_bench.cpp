@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_baseline.h"
 #include "bench_bodies.h"
 #include "bench_effects.h"
 #include "bench_report.h"
@@ -238,6 +239,7 @@ nlohmann::json report_render(const RenderTimes& times) {
 int run_bench_render(const ParsedArgs& args, int rounds) {
   const auto size = frame_size_option(args);
   if (!size) return kExitUsage;
+  if (args.has("baseline")) return run_bench_baseline(args, rounds, size->width, size->height);
   ParsedArgs scene_args = args;
   if (!args.has("scene")) scene_args.add("scene", "scenes/default.json");
   auto scene = load_scene_from_args(
@@ -279,7 +281,7 @@ int run_bench_render(const ParsedArgs& args, int rounds) {
 // Options that only bench render (and bench bodies: --scene, --set) reads; the others refuse them rather
 // than silently ignoring them.
 std::optional<std::string> render_only_option(const ParsedArgs& args, const std::string& what) {
-  for (const char* name : {"scene", "set", "width", "height"})
+  for (const char* name : {"scene", "set", "width", "height", "baseline"})
     if (args.has(name) && !(what == "bodies" && (std::string(name) == "scene" || std::string(name) == "set")))
       return std::string(name);
   return std::nullopt;
@@ -364,6 +366,11 @@ const Command& bench_command() {
                  "(device, type, driver, driver version, Vulkan API version, rounds) and "
                  "\"benchmarks\" (median real_time, min_time, max_time in ms; measure = \"gpu "
                  "timestamps\" or \"wall\")"},
+                {"baseline", "OTHER_LAGOON",
+                 "render: run this older build's `lagoon` (e.g. built from another commit in a git "
+                 "worktree) side by side, each build in its own process, and print per-scene ratios "
+                 "(this / baseline) of the frame and of each pass; without --scene, every scenes/*.json "
+                 "of the working directory"},
                 {"rounds", "R",
                  "measured rounds per configuration (default 15 compute, wakes and bodies, 10 render; "
                  "a round of bodies is 60 frames)"}},
@@ -372,6 +379,7 @@ const Command& bench_command() {
                       "dispatch). The machine's noise makes single numbers unreliable; compare ratios.\n"
                       "examples:\n  lagoon bench compute --rounds 5 --json out/compute.json\n"
                       "  lagoon bench render --scene scenes/open-ocean.json --width 640 --height 360\n"
+                      "  lagoon bench render --baseline ../lagoon-base/build/bin/lagoon --rounds 5\n"
                       "  lagoon bench bodies --scene scenes/harbour.json --rounds 5\n"
                       "  lagoon bench effects --width 640 --height 360 --out out/effects\n"},
       .run = run_bench};

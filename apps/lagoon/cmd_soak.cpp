@@ -15,6 +15,7 @@
 #include "commands.h"
 #include "core/free_heap.h"
 #include "gpu_session.h"
+#include "io/atomic_file.h"
 #include "ocean/gpu/field_check.h"
 #include "ocean/gpu/gpu_ocean.h"
 #include "render/ocean_renderer.h"

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -89,6 +90,72 @@ TEST(BenchCli, RenderReportsEveryPassAndTheFrameAtTheGivenSize) {
                                "render/pass/surface", "render/frame", "render/water_colour/frame_physical",
                                "render/water_colour/frame_blinn_phong", "render/water_colour/lut_build"})
     EXPECT_NE(std::find(names.begin(), names.end(), expected), names.end()) << expected << "\n" << r.output;
+}
+
+// A stand-in for an older build: records the arguments it was given and writes a bench render report with
+// known figures (frame 1000 ms, surface 500 ms), so what --baseline prints is checked against numbers the
+// test chose, not against another measurement.
+std::string fake_baseline(const TempDir& dir, const std::string& body) {
+  const std::string path = (dir / "old-lagoon").string();
+  std::ofstream(path) << "#!/bin/sh\necho \"$@\" >> " << (dir / "args.txt").string() << "\n" << body;
+  std::filesystem::permissions(path, std::filesystem::perms::owner_all);
+  return path;
+}
+
+TEST(BenchCli, BaselineRunsTheOtherBuildSideBySideAndPrintsRatios) {
+  TempDir dir;
+  const std::string old_build =
+      fake_baseline(dir,
+                    "while [ $# -gt 0 ]; do [ \"$1\" = --json ] && out=$2; shift; done\n"
+                    "printf '{\"context\":{},\"benchmarks\":[{\"name\":\"render/frame\","
+                    "\"real_time\":1000},{\"name\":\"render/pass/surface\",\"real_time\":500}]}' "
+                    "> \"$out\"\n");
+  const std::string json = (dir / "ratios.json").string(),
+                    scene = std::string(LAGOON_SOURCE_DIR) + "/scenes/open-ocean.json";
+  auto r = lagoon("bench render --baseline " + old_build + " --scene " + scene +
+                  " --width 32 --height 18 --rounds 2 --set time_s=2 --json " + json);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::ifstream args_file(dir / "args.txt");
+  const std::string given((std::istreambuf_iterator<char>(args_file)), std::istreambuf_iterator<char>());
+  for (const std::string& expected : {"bench render --scene " + scene + " --width 32 --height 18 --rounds 2",
+                                      std::string("--set time_s=2")})
+    EXPECT_NE(given.find(expected), std::string::npos) << given;
+  const auto doc = nlohmann::json::parse(std::ifstream(json));
+  EXPECT_EQ(doc["context"]["baseline"], old_build);
+  std::map<std::string, nlohmann::json> rows;
+  for (const auto& b : doc["benchmarks"]) rows[b["name"]] = b;
+  ASSERT_TRUE(rows.count("baseline/open-ocean/frame") && rows.count("baseline/open-ocean/pass/surface"))
+      << doc.dump(1);
+  const auto& frame = rows["baseline/open-ocean/frame"];
+  const auto& surface = rows["baseline/open-ocean/pass/surface"];
+  EXPECT_EQ(frame["baseline_ms"].get<double>(), 1000.0);
+  EXPECT_EQ(surface["baseline_ms"].get<double>(), 500.0);
+  EXPECT_GT(frame["this_ms"].get<double>(), 0.0);
+  EXPECT_NEAR(frame["ratio"].get<double>(), frame["this_ms"].get<double>() / 1000.0, 1e-12);
+  EXPECT_NEAR(surface["ratio"].get<double>(), surface["this_ms"].get<double>() / 500.0, 1e-12);
+  EXPECT_NEAR(doc["context"]["frame_ratio_geometric_mean"].get<double>(), frame["ratio"].get<double>(),
+              1e-12);
+  EXPECT_NE(r.output.find("open-ocean frame (wall)"), std::string::npos) << r.output;
+  // Only passes both builds report get a row: this build's other passes have no baseline figure.
+  EXPECT_FALSE(rows.count("baseline/open-ocean/pass/refraction")) << doc.dump(1);
+}
+
+TEST(BenchCli, BaselineThatIsMissingOrFailsIsNamed) {
+  TempDir dir;
+  const std::string scene = " --scene " + std::string(LAGOON_SOURCE_DIR) + "/scenes/open-ocean.json";
+  auto missing = lagoon("bench render --baseline " + (dir / "nope").string() + scene);
+  EXPECT_EQ(missing.exit_code, 2) << missing.output;
+  EXPECT_NE(missing.output.find("no such program; build the older commit"), std::string::npos)
+      << missing.output;
+  const std::string failing = fake_baseline(dir, "echo 'boom: no device'\nexit 1\n");
+  auto r = lagoon("bench render --baseline " + failing + scene + " --width 32 --height 18 --rounds 1");
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("boom: no device"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("failed (exit 1)"), std::string::npos) << r.output;
+  auto wrong = lagoon("bench compute --baseline " + failing);
+  EXPECT_EQ(wrong.exit_code, 2) << wrong.output;
+  EXPECT_NE(wrong.output.find("--baseline applies to 'bench render' only"), std::string::npos)
+      << wrong.output;
 }
 
 TEST(BenchCli, ComputeReportsWallAndGpuTimeOfTheStep) {
