@@ -29,6 +29,7 @@ struct FrameContext {
   CameraSide camera_side = CameraSide::Above;  // against the displaced surface (render/camera_medium.h)
   uint32_t light_count = 0;                    // point lights in slot.lights
   bool caustics = false;                       // the caustics pass makes a map this frame
+  bool submerged_objects = false;              // something other than the procedural floor is under the water
   vk::BufferRef uniforms() const { return {slot.frame.handle()}; }
   vk::GpuTimer* timer() const { return &slot.timer; }
 };

@@ -185,20 +185,20 @@ FrameContext OceanRenderer::begin_frame(VkCommandBuffer cmd, const scene::Scene&
   slot.surface_index_count = uint32_t(grid.indices.size());
   std::memcpy(slot.surface_indices.mapped(), grid.indices.data(), grid.indices.size() * sizeof(uint32_t));
   slot.surface_indices.flush();
-  const gpu::FrameUniforms uniforms =
-      frame_uniforms({.scene = scene,
-                      .extent = extent,
-                      .ocean = ocean(),
-                      .shading = shading_,
-                      .luts = luts_,
-                      .grid = grid,
-                      .view_proj = cam.view_proj,
-                      .reach_m = reach,
-                      .light_count = light_count,
-                      .under_water = side == CameraSide::Below,
-                      .caustics = caustics,
-                      .wakes_window = wakes_->window(),
-                      .submerged_rect = objects_->submerged_screen_rect(cam.view_proj)});
+  const glm::vec4 submerged = objects_->submerged_screen_rect(cam.view_proj);
+  const gpu::FrameUniforms uniforms = frame_uniforms({.scene = scene,
+                                                      .extent = extent,
+                                                      .ocean = ocean(),
+                                                      .shading = shading_,
+                                                      .luts = luts_,
+                                                      .grid = grid,
+                                                      .view_proj = cam.view_proj,
+                                                      .reach_m = reach,
+                                                      .light_count = light_count,
+                                                      .under_water = side == CameraSide::Below,
+                                                      .caustics = caustics,
+                                                      .wakes_window = wakes_->window(),
+                                                      .submerged_rect = submerged});
   std::memcpy(slot.frame.mapped(), &uniforms, sizeof(uniforms));
   slot.frame.flush();
   // Frames may be recorded while the previous one runs; they share the ocean's textures and the passes'
@@ -211,7 +211,11 @@ FrameContext OceanRenderer::begin_frame(VkCommandBuffer cmd, const scene::Scene&
                       .slot = slot,
                       .camera_side = side,
                       .light_count = light_count,
-                      .caustics = caustics.cells > 0};
+                      .caustics = caustics.cells > 0,
+                      // On the screen at all: the refracted rays can meet them (shared/surface.h).
+                      .submerged_objects = submerged.x <= std::min(submerged.z, 1.0f) &&
+                                           submerged.y <= std::min(submerged.w, 1.0f) &&
+                                           submerged.z >= 0.0f && submerged.w >= 0.0f};
 }
 
 void OceanRenderer::place_floating_objects(double time_s) {

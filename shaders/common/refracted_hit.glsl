@@ -20,6 +20,7 @@ const int kRefractedSteps = 4;
 const int kFirstHitSamples = 6;
 const float kSamplePixels = 8.0;
 const int kRestartSteps = 4;
+layout(constant_id = LAGOON_SURFACE_SPEC_FIRST_HIT) const bool kFirstHitSearch = true;
 
 vec3 world_of(vec2 uv, float depth) {
   vec4 c = frame.inv_view_proj * vec4(uv.x * 2.0 - 1.0, 1.0 - uv.y * 2.0, depth, 1.0);
@@ -109,6 +110,7 @@ vec2 refracted_hit(vec3 p, vec3 t, float max_m, out float depth) {
   ScreenRay r = ScreenRay(view_proj * vec4(p, 1.0), view_proj * vec4(t, 0.0), max(-t.y, 0.05), max_m);
   float below;
   vec2 uv = hit_from_the_pixel(p, r, depth, below);
+  if (!kFirstHitSearch) return uv;  // no object under the water this frame (shared/surface.h)
   // The shallowest level drawn where the ray's samples above that hit are seen.
   float s_end = clamp(below / r.down, 0.0, max_m), top = below;
   vec2 from = gl_FragCoord.xy * frame.screen.zw, to = screen_at(r, s_end);

@@ -30,8 +30,10 @@ SurfacePass::SurfacePass(vk::Context& ctx, const SurfaceFields& fields, const Sc
               .depth_format = depth_format,
               .depth_test = true,
               .depth_write = true,
-              .spec = with_surface_field_specs(
-                  {{LAGOON_SURFACE_SPEC_LAMPS, v & 1u}, {LAGOON_SURFACE_SPEC_CAUSTICS, v >> 1}}, fields)});
+              .spec = with_surface_field_specs({{LAGOON_SURFACE_SPEC_LAMPS, v & 1u},
+                                                {LAGOON_SURFACE_SPEC_CAUSTICS, (v >> 1) & 1u},
+                                                {LAGOON_SURFACE_SPEC_FIRST_HIT, v >> 2}},
+                                               fields)});
 }
 
 void SurfacePass::record(const FrameContext& frame, const Inputs& in, vk::Target color,
@@ -61,7 +63,8 @@ void SurfacePass::record(const FrameContext& frame, const Inputs& in, vk::Target
   objects_.draw(frame, gpu::MeshMode::Lit);  // above-water parts, lit; the surface depth-tests against them
   const vk::GraphicsPipeline& pipeline =
       shading == scene::Shading::Physical
-          ? surface_[(frame.light_count > 0 ? 1u : 0u) | (frame.caustics ? 2u : 0u)]
+          ? surface_[(frame.light_count > 0 ? 1u : 0u) | (frame.caustics ? 2u : 0u) |
+                     (frame.submerged_objects ? 4u : 0u)]
           : classic(shading);
   vk::draw_indexed(frame.cmd, pipeline, bindings, frame.slot.surface_indices.handle(),
                    frame.slot.surface_index_count);

@@ -47,8 +47,8 @@ class SurfacePass {
   VkFormat color_format_, depth_format_;
   // Variants with the lamps' light under the water (bit 0, LAGOON_SURFACE_SPEC_LAMPS) and the caustics
   // (bit 1, LAGOON_SURFACE_SPEC_CAUSTICS) compiled in or out.
-  std::array<vk::GraphicsPipeline, 4> surface_;
-  vk::GraphicsPipeline aov_;  // created on first use
+  std::array<vk::GraphicsPipeline, 8> surface_;  // by lamps (1), caustics (2), submerged objects (4)
+  vk::GraphicsPipeline aov_;                     // created on first use
   // render.shading's classic modes (ocean_surface_classic.*): blinn-phong, gouraud, flat, created on first
   // use.
   const vk::GraphicsPipeline& classic(scene::Shading shading) const;
