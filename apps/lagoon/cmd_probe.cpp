@@ -17,7 +17,7 @@
 #include "ocean/springs.h"
 #include "ocean/wave_query.h"
 #include "render/floating_objects.h"
-#include "render/wake_heights.h"
+#include "render/water_probe.h"
 #include "scene_args.h"
 
 namespace lagoon::cli {
@@ -83,31 +83,6 @@ int probe_object(const ParsedArgs& args, const scene::Scene& scene, double time)
   return kExitOk;
 }
 
-// The vehicles' wakes at time t around the points (render/wake_heights.h), as a frame at t computes them:
-// from wakes.history_s before. Null when the scene makes none or wakes.felt_by_bodies is false.
-Result<std::unique_ptr<render::WakeHeights>> probe_wakes(const scene::Scene& scene, double t,
-                                                         std::span<const glm::dvec2> points) {
-  if (!scene.wakes.felt_by_bodies || points.empty()) return std::unique_ptr<render::WakeHeights>();
-  auto hulls = render::VehicleWakes::create(scene);
-  if (!hulls) return hulls.error();
-  if (hulls->empty()) return std::unique_ptr<render::WakeHeights>();
-  glm::dvec2 centre(0.0);
-  for (const glm::dvec2& p : points) centre += p / double(points.size());
-  const long long first = hulls->first_step_for(t);
-  auto wakes = std::make_unique<render::WakeHeights>(std::move(*hulls), scene.wakes.bodies_resolution);
-  wakes->advance(t, centre, first);
-  return wakes;
-}
-
-// The sea's sample with the wakes added: their height, their slopes in the normal, their rate in the
-// vertical velocity (the layer moves the surface only vertically).
-void add_wake(ocean::WaveSample& s, const render::WakeHeights& wakes, glm::dvec2 p) {
-  const glm::dvec2 slope = glm::dvec2(-s.normal.x, -s.normal.z) / s.normal.y + wakes.slope(p);
-  s.height += wakes.height(p);
-  s.normal = glm::normalize(glm::dvec3(-slope.x, 1.0, -slope.y));
-  s.velocity.y += wakes.rate(p);
-}
-
 int run_probe(const ParsedArgs& args) {
   const auto time = parse_number(*args.get("time"));
   if (!time) {
@@ -170,16 +145,14 @@ int run_probe(const ParsedArgs& args) {
     return kExitUsage;
   }
   ocean::WaveQuery query(scene->ocean);
-  auto samples = query.sample(*time, points);
-  auto wakes = probe_wakes(*scene, *time, points);
-  if (!wakes) {
-    std::fprintf(stderr, "lagoon probe: %s\n", wakes.error().message.c_str());
+  auto water = render::water_at_points(*scene, query, *time, points);
+  if (!water) {
+    std::fprintf(stderr, "lagoon probe: %s\n", water.error().message.c_str());
     return kExitFailure;
   }
-  for (size_t i = 0; i < samples.size(); ++i) {
-    ocean::WaveSample& s = samples[i];
-    const double wake = *wakes ? (*wakes)->height(points[i]) : 0.0;
-    if (*wakes) add_wake(s, **wakes, points[i]);
+  for (size_t i = 0; i < water->samples.size(); ++i) {
+    const ocean::WaveSample& s = water->samples[i];
+    const double wake = water->wake_heights[i];
     const nlohmann::json line{{"x", points[i].x},
                               {"z", points[i].y},
                               {"time_s", *time},
