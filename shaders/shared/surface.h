@@ -41,9 +41,10 @@
 // Specialisation constant of render/ocean_surface_classic.frag: the seed 001 shading it draws,
 // 1 = blinn-phong (per pixel), 2 = gouraud (lit per vertex), 3 = flat (one normal per triangle).
 #define LAGOON_SURFACE_SPEC_SHADING 6
-// Specialisation constant of render/ocean_surface.frag: the search for an object the refracted ray meets before
-// what the fixed point settles on (common/refracted_hit.glsl) compiled in (1: objects are under the water this
-// frame) or not. On lavapipe its mere presence, never entered, made the open ocean's surface pass 15 % slower.
+// Specialisation constant of render/ocean_surface.frag: the search for an object the refracted ray meets
+// before what the fixed point settles on (common/refracted_hit.glsl) compiled in (1: objects are under the
+// water this frame) or not. On lavapipe its mere presence, never entered, made the open ocean's surface pass
+// 15 % slower.
 #define LAGOON_SURFACE_SPEC_FIRST_HIT 8
 
 #endif
