@@ -47,7 +47,7 @@ deps-run:
 configure: deps
 	$(call say,"configuring $(BUILD_DIR)/ with everything")
 	cmake -S . -B $(BUILD_DIR) $(generator_flag) $(CMAKE_FLAGS) -DLAGOON_BUILD_TESTS=ON -DLAGOON_BUILD_DEMO=ON \
-	  -DLAGOON_BUILD_BENCHMARKS=ON
+	  -DLAGOON_BUILD_BENCHMARKS=ON -DLAGOON_BUILD_PYTHON=ON
 
 # A new build folder gets the command alone (install-deps.sh run has not installed what the rest needs); one
 # configured before keeps its settings.
@@ -55,7 +55,7 @@ configure-run: deps-run
 	@if [ -f $(BUILD_DIR)/CMakeCache.txt ]; then echo "configured already: $(BUILD_DIR)/"; else \
 	  printf '\n==> %s\n' "configuring $(BUILD_DIR)/ for the lagoon command"; \
 	  cmake -S . -B $(BUILD_DIR) -G $(GENERATOR) $(CMAKE_FLAGS) -DLAGOON_BUILD_TESTS=OFF -DLAGOON_BUILD_DEMO=OFF \
-	    -DLAGOON_BUILD_BENCHMARKS=OFF; fi
+	    -DLAGOON_BUILD_BENCHMARKS=OFF -DLAGOON_BUILD_PYTHON=OFF; fi
 
 # Keeps the last run's test costs (build/Testing/Temporary/CTestCostData.txt) as the seed of new build folders,
 # so ctest starts the long tests first from the first run on (tests/CMakeLists.txt).

@@ -33,6 +33,8 @@ if [[ $profile == all ]]; then
     libgtest-dev libbenchmark-dev clang-14 libclang-rt-14-dev
     # headless window tests
     xvfb xauth
+    # the Python module (apps/python) and its tests
+    pybind11-dev python3-dev python3-numpy python3-pytest
   )
 fi
 

@@ -76,6 +76,12 @@ if(STEP STREQUAL "install")
   if(NOT configs)
     message(FATAL_ERROR "cmake --install did not install LagoonConfig.cmake")
   endif()
+  # The Python module, when built, lands in the interpreter's packages under the prefix and imports from there.
+  if(PYTHON)
+    set(ENV{PYTHONPATH} ${prefix}/${PYTHON_DIR})
+    run_step("import the installed lagoon module" ${PYTHON} -c
+             "import lagoon, os; assert os.path.dirname(lagoon.__file__) == os.environ['PYTHONPATH'], lagoon.__file__")
+  endif()
 
 elseif(STEP STREQUAL "embed")
   if(NOT EXISTS "${LAGOON}")

@@ -1,0 +1,23 @@
+// The Python module `lagoon` (docs/python.md): each part binds the library code the CLI runs, nothing of its
+// own.
+#pragma once
+#include <pybind11/pybind11.h>
+
+#include <nlohmann/json.hpp>
+
+namespace lagoon::python {
+
+namespace py = pybind11;
+
+// lagoon.SceneError: bad scene files, fields and overrides, with the message the CLI prints.
+extern py::handle scene_error;
+
+// JSON <-> Python (dict, list, str, float, int, bool, None), through Python's own json module.
+py::object to_python(const nlohmann::json& j);
+nlohmann::json from_python(const py::handle& o);
+
+void bind_scene(py::module_& m);
+void bind_renderer(py::module_& m);
+void bind_wave_query(py::module_& m);
+
+}  // namespace lagoon::python

@@ -1,0 +1,102 @@
+// lagoon.Renderer: a Vulkan context and render::OceanRenderer for one scene; render() returns the frame as
+// numpy, the same frame `lagoon render` writes (the same renderer, the same scene checks).
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <cstring>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "bindings.h"
+#include "render/ocean_renderer.h"
+#include "scene/scene.h"
+#include "vk/context.h"
+
+namespace lagoon::python {
+namespace {
+
+class Renderer {
+ public:
+  Renderer(const scene::Scene& scene, const std::optional<std::string>& device) : scene_(scene) {
+    vk::ContextOptions options = vk::ContextOptions::from_environment();
+    if (device) options.device_override = *device;
+    auto ctx = vk::Context::create(options);
+    if (!ctx) throw std::runtime_error(ctx.error().message);
+    ctx_ = std::move(ctx).value();
+    auto renderer = render::OceanRenderer::create(*ctx_, scene_);
+    if (!renderer) throw std::runtime_error(renderer.error().message);
+    renderer_ = std::move(renderer).value();
+  }
+
+  // The frame at `time` (default: the scene's time_s) seen from `camera` (default: the scene's; a dict of
+  // scene.camera's fields, checked as the scene file's are), as an H x W x 3 uint8 array.
+  py::array_t<uint8_t> render(std::optional<double> time, const std::optional<py::dict>& camera) {
+    scene::Scene frame = scene_;
+    if (camera) frame = with_camera(*camera);
+    if (time) frame.time_s = float(*time);
+    io::Image8 image;
+    {
+      py::gil_scoped_release unlocked;  // other Python threads run while the device renders
+      image = renderer_->render(frame);
+    }
+    py::array_t<uint8_t> out({py::ssize_t(image.height), py::ssize_t(image.width), py::ssize_t(3)});
+    uint8_t* dst = out.mutable_data();
+    for (size_t i = 0, n = size_t(image.width) * image.height; i < n; ++i)
+      std::memcpy(dst + 3 * i, image.rgba.data() + 4 * i, 3);
+    return out;
+  }
+
+  py::dict device() const {
+    const vk::DeviceInfo& info = ctx_->device_info();
+    py::dict d;
+    d["name"] = info.name;
+    d["type"] = info.type;
+    d["driver"] = info.driver_name;
+    d["driver_version"] = info.driver_version;
+    return d;
+  }
+
+  const scene::Scene& scene() const { return scene_; }
+  uint32_t validation_errors() const { return ctx_->validation().failures(); }
+
+ private:
+  scene::Scene with_camera(const py::dict& camera) const {
+    nlohmann::ordered_json doc = scene::scene_to_json(scene_, std::filesystem::current_path());
+    nlohmann::json fields = from_python(camera);
+    if (!fields.is_object()) throw py::type_error("camera must be a dict of scene.camera's fields");
+    doc["camera"] = nlohmann::ordered_json(fields);
+    auto scene = scene::parse_scene(nlohmann::json(doc), "render(camera=...)");
+    if (!scene) {
+      PyErr_SetString(scene_error.ptr(), scene.error().message.c_str());
+      throw py::error_already_set();
+    }
+    return *scene;
+  }
+
+  scene::Scene scene_;
+  std::unique_ptr<vk::Context> ctx_;
+  std::unique_ptr<render::OceanRenderer> renderer_;
+};
+
+}  // namespace
+
+void bind_renderer(py::module_& m) {
+  py::class_<Renderer>(m, "Renderer", "Renders one scene's frames on a Vulkan device.")
+      .def(py::init<const scene::Scene&, const std::optional<std::string>&>(), py::arg("scene"),
+           py::arg("device") = py::none(),
+           "Opens the device (None: as LAGOON_DEVICE or the automatic choice; else an index or a name "
+           "substring) and builds the renderer; raises RuntimeError with the reason when it cannot.")
+      .def("render", &Renderer::render, py::arg("time") = py::none(), py::arg("camera") = py::none(),
+           "The frame as an H x W x 3 uint8 array (sRGB, tone-mapped: the PNG `lagoon render` writes). "
+           "`time` in s (default the scene's time_s); `camera` a dict such as {'position': [0, 3, -10], "
+           "'look_at': [0, 0, 20], 'fov_deg': 55}. The GIL is released while the device renders.")
+      .def_property_readonly("device", &Renderer::device, "The device in use: name, type, driver.")
+      .def_property_readonly("scene", &Renderer::scene)
+      .def_property_readonly(
+          "validation_errors", &Renderer::validation_errors,
+          "How many errors the Vulkan validation layer reported so far (LAGOON_VALIDATION=1 "
+          "turns it on; 0 without it).");
+}
+
+}  // namespace lagoon::python

@@ -1,0 +1,205 @@
+"""The Python module `lagoon` (issue 38) against the CLI it must agree with: the same scene checks and
+messages, the same frame, the same water at points. Run by ctest (tests/CMakeLists.txt) with PYTHONPATH set
+to the build's python/ folder and LAGOON_BINARY to the `lagoon` command."""
+import os
+import struct
+import subprocess
+import threading
+import time
+import zlib
+import json
+
+import numpy as np
+import pytest
+
+import lagoon
+
+SOURCE = os.environ.get("LAGOON_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
+LAGOON = os.environ["LAGOON_BINARY"]
+DEFAULT = os.path.join(SOURCE, "scenes", "default.json")
+SMALL = {"render.width": 96, "render.height": 54}
+
+
+def cli(*args):
+    return subprocess.run([LAGOON, *args], capture_output=True, text=True)
+
+
+def read_png(path):
+    """Decodes an 8-bit, non-interlaced RGB or RGBA PNG with the standard library (zlib): a reader
+    independent of Lagoon's writer, for comparing its PNG with the module's array."""
+    data = open(path, "rb").read()
+    assert data[:8] == b"\x89PNG\r\n\x1a\n"
+    pos, idat, header = 8, b"", None
+    while pos < len(data):
+        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        body = data[pos + 8:pos + 8 + length]
+        if kind == b"IHDR":
+            header = struct.unpack(">IIBBBBB", body)
+        elif kind == b"IDAT":
+            idat += body
+        pos += 12 + length
+    width, height, depth, colour, _, _, interlace = header
+    assert depth == 8 and colour in (2, 6) and interlace == 0, header
+    channels = 3 if colour == 2 else 4
+    raw = zlib.decompress(idat)
+    stride = width * channels
+    rows = np.zeros((height, stride), dtype=np.int32)
+    prev = np.zeros(stride, dtype=np.int32)
+    for y in range(height):
+        kind = raw[y * (stride + 1)]
+        line = np.frombuffer(raw, dtype=np.uint8, count=stride, offset=y * (stride + 1) + 1).astype(np.int32)
+        out = np.zeros(stride, dtype=np.int32)
+        for x in range(stride):
+            a = out[x - channels] if x >= channels else 0
+            b = prev[x]
+            c = prev[x - channels] if x >= channels else 0
+            if kind == 0:
+                p = 0
+            elif kind == 1:
+                p = a
+            elif kind == 2:
+                p = b
+            elif kind == 3:
+                p = (a + b) // 2
+            else:
+                pa, pb, pc = abs(b - c), abs(a - c), abs(a + b - 2 * c)
+                p = a if pa <= pb and pa <= pc else (b if pb <= pc else c)
+            out[x] = (line[x] + p) & 0xFF
+        rows[y] = out
+        prev = out
+    return rows.reshape(height, width, channels)[:, :, :3].astype(np.uint8)
+
+
+def test_scene_round_trips_through_a_dict():
+    scene = lagoon.Scene.load(DEFAULT, SMALL)
+    assert (scene.width, scene.height) == (96, 54)
+    d = scene.to_dict()
+    again = lagoon.Scene.from_dict(d)
+    assert again.to_dict() == d
+    d["render"]["width"] = 64
+    assert lagoon.Scene.from_dict(d).width == 64
+
+
+def test_a_bad_field_raises_the_clis_message():
+    with pytest.raises(lagoon.SceneError) as python_error:
+        lagoon.Scene.load(DEFAULT, {"ocean.depth_m": -3})
+    message = str(python_error.value)
+    assert "ocean.depth_m" in message and "default.json" in message
+    r = cli("render", "--scene", DEFAULT, "--set", "ocean.depth_m=-3", "--out", "/nonexistent/x.png")
+    assert r.returncode != 0
+    assert message in r.stderr, (message, r.stderr)
+    with pytest.raises(lagoon.SceneError, match="file not found"):
+        lagoon.Scene.load(os.path.join(SOURCE, "scenes", "no-such-scene.json"))
+    with pytest.raises(lagoon.SceneError, match="render.width"):
+        lagoon.Scene.from_dict({"render": {"width": -5}})
+
+
+def test_a_models_override_warns_what_it_also_changed():
+    with pytest.warns(UserWarning, match="choppiness"):
+        lagoon.Scene.load(os.path.join(SOURCE, "scenes", "harbour.json"), {"ocean.model": "sines", **SMALL})
+
+
+def test_the_frame_is_the_pixels_lagoon_render_writes(tmp_path):
+    scene = lagoon.Scene.load(DEFAULT, SMALL)
+    renderer = lagoon.Renderer(scene)
+    image = renderer.render(time=2.0)
+    assert renderer.validation_errors == 0
+    assert image.shape == (54, 96, 3) and image.dtype == np.uint8
+    png = tmp_path / "frame.png"
+    r = cli("render", "--scene", DEFAULT, "--width", "96", "--height", "54", "--time", "2", "--out", str(png))
+    assert r.returncode == 0, r.stderr
+    written = read_png(png)
+    assert np.array_equal(image, written), np.abs(image.astype(int) - written.astype(int)).max()
+
+
+def test_a_camera_moves_the_view_and_a_bad_one_is_refused():
+    renderer = lagoon.Renderer(lagoon.Scene.load(DEFAULT, SMALL))
+    assert renderer.device["name"]
+    ahead = renderer.render(time=1.0, camera={"position": [0, 3, -10], "look_at": [0, 0, 20], "fov_deg": 55})
+    down = renderer.render(time=1.0, camera={"position": [0, 3, -10], "look_at": [0, -5, -9], "fov_deg": 55})
+    # Looking at the horizon the top half is sky; looking down it is water: the frames differ a lot.
+    assert np.abs(ahead.astype(int) - down.astype(int)).mean() > 10
+    with pytest.raises(lagoon.SceneError, match="camera.fov_deg"):
+        renderer.render(camera={"position": [0, 3, -10], "look_at": [0, 0, 20], "fov_deg": 500})
+    assert renderer.validation_errors == 0
+
+
+def test_rendering_lets_other_python_threads_run():
+    renderer = lagoon.Renderer(lagoon.Scene.load(DEFAULT, {"render.width": 320, "render.height": 180}))
+    renderer.render(time=0.5)  # compile the pipelines first
+    ticks, done = [0], threading.Event()
+
+    def count():
+        while not done.is_set():
+            ticks[0] += 1
+            time.sleep(0.001)
+
+    counter = threading.Thread(target=count)
+    counter.start()
+    started = time.perf_counter()
+    renderer.render(time=1.5)
+    elapsed = time.perf_counter() - started
+    done.set()
+    counter.join()
+    assert renderer.validation_errors == 0
+    # Holding the GIL for the whole frame would leave the counter at most a tick or two.
+    assert ticks[0] >= min(20, int(elapsed / 0.002)), (ticks[0], elapsed)
+
+
+def test_the_water_at_points_is_what_lagoon_probe_prints():
+    harbour = os.path.join(SOURCE, "scenes", "harbour.json")  # vehicles: the wakes are part of the answer
+    points = np.array([[0.0, 0.0], [12.5, -40.0], [-20.0, 35.0], [3.0, 30.0]])
+    water = lagoon.WaveQuery(lagoon.Scene.load(harbour)).sample(6.5, points)
+    args = ["probe", "--scene", harbour, "--time", "6.5"]
+    for x, z in points:
+        args += ["--at", f"{x!r},{z!r}"]
+    r = cli(*args)
+    assert r.returncode == 0, r.stderr
+    lines = [json.loads(line) for line in r.stdout.splitlines()]
+    assert len(lines) == len(points)
+    for i, line in enumerate(lines):
+        assert water["height"][i] == pytest.approx(line["height_m"], abs=1e-12)
+        assert water["wake_height"][i] == pytest.approx(line["wake_height_m"], abs=1e-12)
+        assert water["normal"][i] == pytest.approx(line["normal"], abs=1e-12)
+        assert water["velocity"][i] == pytest.approx(line["velocity_mps"], abs=1e-12)
+        assert water["error_bound"][i] == pytest.approx(line["error_bound_m"], abs=1e-12)
+    assert np.any(water["wake_height"] != 0.0), "a point in the boats' wakes must feel them"
+    assert np.allclose(np.linalg.norm(water["normal"], axis=1), 1.0)
+
+
+def test_a_wavelength_cut_leaves_the_short_waves_out():
+    scene = lagoon.Scene.load(DEFAULT)
+    points = np.random.default_rng(1).uniform(-50, 50, size=(200, 2))
+    full = lagoon.WaveQuery(scene).sample(3.0, points)["height"]
+    long_only = lagoon.WaveQuery(scene, max_wavenumber=0.5).sample(3.0, points)["height"]
+    # The cut sea is smoother: the short waves' share of the height's variance is gone.
+    assert np.std(np.diff(long_only)) < np.std(np.diff(full))
+    assert not np.allclose(full, long_only)
+
+
+def test_bad_points_and_times_are_refused():
+    query = lagoon.WaveQuery(lagoon.Scene.load(DEFAULT))
+    with pytest.raises(ValueError, match="N x 2"):
+        query.sample(1.0, np.zeros((3, 3)))
+    with pytest.raises(ValueError, match="not finite"):
+        query.sample(1.0, np.array([[np.nan, 0.0]]))
+    with pytest.raises(ValueError, match="time"):
+        query.sample(float("inf"), np.zeros((1, 2)))
+    with pytest.raises(ValueError, match="max_wavenumber"):
+        lagoon.WaveQuery(lagoon.Scene.load(DEFAULT), max_wavenumber=-1)
+
+
+def test_the_buoy_example_follows_the_water():
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location("buoy", os.path.join(SOURCE, "examples", "python", "buoy.py"))
+    buoy = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(buoy)
+    times, heave, surface, period = buoy.simulate(DEFAULT, 15.0)
+    settled = times > 3.0
+    # Its natural period is far below the waves' (a quasi-static follower): heave tracks the water's height,
+    # neither amplified (resonance) nor left behind; a sign or stiffness mistake breaks either bound.
+    assert period < 1.0
+    ratio = heave[settled].std() / surface[settled].std()
+    assert 0.8 < ratio < 1.3, ratio
+    assert np.corrcoef(surface[settled], heave[settled])[0, 1] > 0.85
