@@ -7,12 +7,12 @@
 #include <set>
 
 #include "exit_codes.h"
-#include "frame_metadata.h"
 #include "gpu_session.h"
 #include "io/atomic_file.h"
 #include "io/dataset_manifest.h"
 #include "io/npy.h"
 #include "io/png.h"
+#include "render/frame_metadata.h"
 #include "render/ground_truth.h"
 
 namespace lagoon::cli {
@@ -58,29 +58,11 @@ Result<std::vector<std::string>> write_aovs(const DatasetRun& run, const scene::
                                             render::OceanRenderer& renderer, const fs::path& stem) {
   std::vector<std::string> names;
   if (run.aovs.empty()) return names;
-  const render::OceanRenderer::SurfaceAov aov = renderer.render_surface_aov(scene, /*with_objects=*/true);
-  const VkExtent2D extent{scene.render.width, scene.render.height};
-  const render::CameraSide side = renderer.camera_side(scene, extent);
-  const double surface_y = side == render::CameraSide::Waterline
-                               ? renderer.camera_medium().surface_height(
-                                     scene.camera.position.x, scene.camera.position.z, scene.time_s)
-                               : 0.0;
-  render::GroundTruth gt = render::ground_truth(aov, scene, side, surface_y);
-  const auto wanted = [&](const std::string& kind) {
-    return std::find(run.aovs.begin(), run.aovs.end(), kind) != run.aovs.end();
-  };
-  if (wanted("clean") || wanted("transmission") || wanted("backscatter"))
-    render::add_underwater_terms(gt, renderer.render_underwater_terms(scene));
+  const render::GroundTruth gt = render::frame_ground_truth(
+      renderer, scene, std::any_of(run.aovs.begin(), run.aovs.end(), render::GroundTruth::needs_terms));
   const size_t h = gt.height, w = gt.width;
-  const std::map<std::string, const std::vector<float>*> planes = {{"depth", &gt.depth},
-                                                                   {"normal", &gt.normal},
-                                                                   {"water_mask", &gt.water_mask},
-                                                                   {"object_id", &gt.object_id},
-                                                                   {"clean", &gt.clean},
-                                                                   {"transmission", &gt.transmission},
-                                                                   {"backscatter", &gt.backscatter}};
   for (const std::string& kind : run.aovs) {
-    const std::vector<float>& values = *planes.at(kind);
+    const std::vector<float>& values = gt.plane(kind);
     const std::vector<size_t> shape =
         values.size() == 3 * h * w ? std::vector<size_t>{h, w, 3} : std::vector<size_t>{h, w};
     const std::string name = stem.filename().string() + "." + kind + ".npy";
@@ -100,8 +82,8 @@ Result<std::vector<io::ManifestFile>> write_frame(const DatasetRun& run, const s
   if (Result<void> ok = io::write_png(folder / png, image); !ok) return ok.error();
   Result<std::vector<std::string>> aovs = write_aovs(run, scene, renderer, stem);
   if (!aovs) return aovs.error();
-  const FrameFiles listed{.image = png, .aovs = run.aovs, .aov_files = *aovs};
-  const std::string text = frame_metadata(scene, frame, listed).dump(2) + "\n";
+  const render::FrameFiles listed{.image = png, .aovs = run.aovs, .aov_files = *aovs};
+  const std::string text = render::frame_metadata(scene, frame, listed).dump(2) + "\n";
   if (Result<void> ok = io::write_text_atomic(folder / meta, text); !ok) return ok.error();
   std::vector<io::ManifestFile> files;
   std::vector<std::string> names = {png, meta};

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "frame_sequence.h"
+#include "render/ground_truth.h"
 #include "render/ocean_renderer.h"
 #include "scene/camera_path.h"
 #include "scene/scene.h"
@@ -17,8 +18,7 @@
 namespace lagoon::cli {
 
 // The ground truth --aov may ask for (render/ground_truth.h; docs/datasets.md).
-inline const std::vector<std::string> kAovNames = {"depth", "normal",       "water_mask", "object_id",
-                                                   "clean", "transmission", "backscatter"};
+inline const std::vector<std::string>& kAovNames = render::kAovNames;
 
 struct DatasetRun {
   std::string out_png;

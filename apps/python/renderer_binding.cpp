@@ -3,12 +3,16 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <cstring>
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "bindings.h"
+#include "render/frame_metadata.h"
+#include "render/ground_truth.h"
 #include "render/ocean_renderer.h"
 #include "scene/scene.h"
 #include "vk/context.h"
@@ -30,20 +34,46 @@ class Renderer {
   }
 
   // The frame at `time` (default: the scene's time_s) seen from `camera` (default: the scene's; a dict of
-  // scene.camera's fields, checked as the scene file's are), as an H x W x 3 uint8 array.
-  py::array_t<uint8_t> render(std::optional<double> time, const std::optional<py::dict>& camera) {
+  // scene.camera's fields, checked as the scene file's are): {"image": H x W x 3 uint8, "metadata": dict,
+  // <aov>: float32 ...}.
+  py::dict render(std::optional<double> time, const std::optional<py::dict>& camera,
+                  const std::vector<std::string>& aovs) {
+    for (const std::string& name : aovs)
+      if (std::find(render::kAovNames.begin(), render::kAovNames.end(), name) == render::kAovNames.end())
+        throw py::value_error("no AOV named '" + name +
+                              "'; the AOVs are depth, normal, water_mask, object_id, "
+                              "clean, transmission and backscatter (docs/datasets.md)");
     scene::Scene frame = scene_;
     if (camera) frame = with_camera(*camera);
     if (time) frame.time_s = float(*time);
     io::Image8 image;
+    render::GroundTruth gt;
     {
       py::gil_scoped_release unlocked;  // other Python threads run while the device renders
       image = renderer_->render(frame);
+      if (!aovs.empty())
+        gt = render::frame_ground_truth(
+            *renderer_, frame, std::any_of(aovs.begin(), aovs.end(), render::GroundTruth::needs_terms));
     }
-    py::array_t<uint8_t> out({py::ssize_t(image.height), py::ssize_t(image.width), py::ssize_t(3)});
-    uint8_t* dst = out.mutable_data();
+    py::dict out;
+    py::array_t<uint8_t> colour({py::ssize_t(image.height), py::ssize_t(image.width), py::ssize_t(3)});
+    uint8_t* dst = colour.mutable_data();
     for (size_t i = 0, n = size_t(image.width) * image.height; i < n; ++i)
       std::memcpy(dst + 3 * i, image.rgba.data() + 4 * i, 3);
+    out["image"] = colour;
+    // The dataset's frame JSON less what names its files (there are none) and its index in a sequence.
+    nlohmann::ordered_json metadata = render::frame_metadata(frame, 0, {});
+    for (const char* key : {"frame", "image", "aov"}) metadata.erase(key);
+    out["metadata"] = to_python(metadata);
+    for (const std::string& name : aovs) {
+      const std::vector<float>& values = gt.plane(name);
+      const size_t pixels = size_t(gt.width) * gt.height;
+      std::vector<py::ssize_t> shape{py::ssize_t(gt.height), py::ssize_t(gt.width)};
+      if (values.size() == 3 * pixels) shape.push_back(3);  // as the dataset's .npy files
+      py::array_t<float> plane(shape);
+      std::memcpy(plane.mutable_data(), values.data(), values.size() * sizeof(float));
+      out[py::str(name)] = plane;
+    }
     return out;
   }
 
@@ -88,9 +118,15 @@ void bind_renderer(py::module_& m) {
            "Opens the device (None: as LAGOON_DEVICE or the automatic choice; else an index or a name "
            "substring) and builds the renderer; raises RuntimeError with the reason when it cannot.")
       .def("render", &Renderer::render, py::arg("time") = py::none(), py::arg("camera") = py::none(),
-           "The frame as an H x W x 3 uint8 array (sRGB, tone-mapped: the PNG `lagoon render` writes). "
-           "`time` in s (default the scene's time_s); `camera` a dict such as {'position': [0, 3, -10], "
-           "'look_at': [0, 0, 20], 'fov_deg': 55}. The GIL is released while the device renders.")
+           py::arg("aovs") = std::vector<std::string>{},
+           "The frame as a dict: 'image', an H x W x 3 uint8 array (sRGB, tone-mapped: the PNG `lagoon "
+           "render` writes), 'metadata' (intrinsics K, poses in world, ENU and NED, the sun, the water; "
+           "the JSON a sequence writes beside each frame), and each of `aovs` (depth, normal, water_mask, "
+           "object_id, clean, "
+           "transmission, backscatter; docs/datasets.md) as float32, H x W or H x W x 3, the arrays "
+           "`lagoon render --aov` writes. `time` in s (default the scene's time_s); `camera` a dict such "
+           "as {'position': [0, 3, -10], 'look_at': [0, 0, 20], 'fov_deg': 55}. The GIL is released while "
+           "the device renders.")
       .def_property_readonly("device", &Renderer::device, "The device in use: name, type, driver.")
       .def_property_readonly("scene", &Renderer::scene)
       .def_property_readonly(

@@ -2,6 +2,7 @@
 
 #include <glm/geometric.hpp>
 #include <limits>
+#include <stdexcept>
 
 #include "render/pinhole.h"
 #include "shared/ground_truth.h"
@@ -56,6 +57,31 @@ void add_underwater_terms(GroundTruth& gt, const OceanRenderer::UnderwaterTerms&
       gt.backscatter[3 * i + c] = terms.backscatter[i][c];
     }
   }
+}
+
+const std::vector<float>& GroundTruth::plane(const std::string& name) const {
+  const std::vector<float>* planes[] = {&depth, &normal,       &water_mask, &object_id,
+                                        &clean, &transmission, &backscatter};
+  for (size_t i = 0; i < kAovNames.size(); ++i)
+    if (kAovNames[i] == name) return *planes[i];
+  throw std::out_of_range("no AOV named '" + name + "'");
+}
+
+bool GroundTruth::needs_terms(const std::string& name) {
+  return name == "clean" || name == "transmission" || name == "backscatter";
+}
+
+GroundTruth frame_ground_truth(OceanRenderer& renderer, const scene::Scene& scene, bool with_terms) {
+  const OceanRenderer::SurfaceAov aov = renderer.render_surface_aov(scene, /*with_objects=*/true);
+  const VkExtent2D extent{scene.render.width, scene.render.height};
+  const CameraSide side = renderer.camera_side(scene, extent);
+  const double surface_y = side == CameraSide::Waterline
+                               ? renderer.camera_medium().surface_height(
+                                     scene.camera.position.x, scene.camera.position.z, scene.time_s)
+                               : 0.0;
+  GroundTruth gt = ground_truth(aov, scene, side, surface_y);
+  if (with_terms) add_underwater_terms(gt, renderer.render_underwater_terms(scene));
+  return gt;
 }
 
 }  // namespace lagoon::render

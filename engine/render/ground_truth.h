@@ -14,6 +14,7 @@
 // Elsewhere no water acts on the ray before its first surface: transmission 1, backscatter 0 and clean NaN.
 #pragma once
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "render/camera_medium.h"
@@ -22,10 +23,18 @@
 
 namespace lagoon::render {
 
+// The AOVs by name, in the order the docs list them.
+inline const std::vector<std::string> kAovNames = {"depth", "normal",       "water_mask", "object_id",
+                                                   "clean", "transmission", "backscatter"};
+
 struct GroundTruth {
   uint32_t width = 0, height = 0;
   std::vector<float> depth, normal, water_mask, object_id;  // normal: 3 per pixel
   std::vector<float> clean, transmission, backscatter;      // 3 per pixel; empty until add_underwater_terms
+  // The AOV named `name` (one of kAovNames; throws std::out_of_range for another).
+  const std::vector<float>& plane(const std::string& name) const;
+  // Whether `name` needs the image formation terms (frame_ground_truth's with_terms).
+  static bool needs_terms(const std::string& name);
 };
 
 // `side`: where the camera was judged to be for the frame; `surface_y`: the water's height above the camera
@@ -35,5 +44,9 @@ GroundTruth ground_truth(const OceanRenderer::SurfaceAov& aov, const scene::Scen
 
 // Fills clean, transmission and backscatter from `terms` (the same frame's).
 void add_underwater_terms(GroundTruth& gt, const OceanRenderer::UnderwaterTerms& terms);
+
+// The ground truth of the frame `renderer` draws for `scene`, with the image formation terms when
+// `with_terms` (one more pass): what `lagoon render --aov` writes and the Python module returns.
+GroundTruth frame_ground_truth(OceanRenderer& renderer, const scene::Scene& scene, bool with_terms);
 
 }  // namespace lagoon::render

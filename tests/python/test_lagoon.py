@@ -102,7 +102,7 @@ def test_a_models_override_warns_what_it_also_changed():
 def test_the_frame_is_the_pixels_lagoon_render_writes(tmp_path):
     scene = lagoon.Scene.load(DEFAULT, SMALL)
     renderer = lagoon.Renderer(scene)
-    image = renderer.render(time=2.0)
+    image = renderer.render(time=2.0)["image"]
     assert renderer.validation_errors == 0
     assert image.shape == (54, 96, 3) and image.dtype == np.uint8
     png = tmp_path / "frame.png"
@@ -115,13 +115,43 @@ def test_the_frame_is_the_pixels_lagoon_render_writes(tmp_path):
 def test_a_camera_moves_the_view_and_a_bad_one_is_refused():
     renderer = lagoon.Renderer(lagoon.Scene.load(DEFAULT, SMALL))
     assert renderer.device["name"]
-    ahead = renderer.render(time=1.0, camera={"position": [0, 3, -10], "look_at": [0, 0, 20], "fov_deg": 55})
-    down = renderer.render(time=1.0, camera={"position": [0, 3, -10], "look_at": [0, -5, -9], "fov_deg": 55})
+    ahead = renderer.render(time=1.0, camera={"position": [0, 3, -10], "look_at": [0, 0, 20], "fov_deg": 55})["image"]
+    down = renderer.render(time=1.0, camera={"position": [0, 3, -10], "look_at": [0, -5, -9], "fov_deg": 55})["image"]
     # Looking at the horizon the top half is sky; looking down it is water: the frames differ a lot.
     assert np.abs(ahead.astype(int) - down.astype(int)).mean() > 10
     with pytest.raises(lagoon.SceneError, match="camera.fov_deg"):
         renderer.render(camera={"position": [0, 3, -10], "look_at": [0, 0, 20], "fov_deg": 500})
     assert renderer.validation_errors == 0
+
+
+def test_the_aovs_are_the_arrays_lagoon_render_writes(tmp_path):
+    harbour = os.path.join(SOURCE, "scenes", "harbour.json")
+    names = ["depth", "normal", "water_mask", "object_id"]
+    frame = lagoon.Renderer(lagoon.Scene.load(harbour, SMALL)).render(time=3.0, aovs=names)
+    out = tmp_path / "frame.png"
+    r = cli("render", "--scene", harbour, "--width", "96", "--height", "54", "--time", "3", "--aov", ",".join(names),
+            "--out", str(out))
+    assert r.returncode == 0, r.stderr
+    written = sorted(p.name for p in tmp_path.glob("*.npy"))
+    assert len(written) == len(names), written
+    for name in names:
+        (npy,) = [p for p in tmp_path.glob(f"*.{name}.npy")]
+        expected = np.load(npy)
+        assert frame[name].dtype == np.float32 and frame[name].shape == expected.shape, name
+        assert np.array_equal(frame[name], expected, equal_nan=True), name
+    assert np.array_equal(frame["image"], read_png(next(tmp_path.glob("*.png"))))
+    # The metadata is the JSON the CLI writes beside the frame, less the file names and the frame's index.
+    (meta_file,) = [p for p in tmp_path.glob("*.json") if "manifest" not in p.name]
+    written_meta = json.loads(meta_file.read_text())
+    for key in ("frame", "image", "aov"):
+        written_meta.pop(key)
+    assert frame["metadata"] == written_meta
+    k = np.array(frame["metadata"]["camera"]["K"])
+    assert k[0, 2] == pytest.approx((96 - 1) / 2) and k[1, 2] == pytest.approx((54 - 1) / 2)
+    # The harbour's view holds water, floor or objects and sky: the mask and the ids are not one value.
+    assert len(np.unique(frame["water_mask"])) >= 2 and len(np.unique(frame["object_id"])) >= 2
+    with pytest.raises(ValueError, match="no AOV named 'colour'"):
+        lagoon.Renderer(lagoon.Scene.load(DEFAULT, SMALL)).render(aovs=["colour"])
 
 
 def test_rendering_lets_other_python_threads_run():

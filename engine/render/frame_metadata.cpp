@@ -1,4 +1,4 @@
-#include "frame_metadata.h"
+#include "render/frame_metadata.h"
 
 #include <cmath>
 #include <glm/geometric.hpp>
@@ -8,7 +8,7 @@
 #include "render/camera.h"
 #include "render/pinhole.h"
 
-namespace lagoon::cli {
+namespace lagoon::render {
 namespace {
 
 using nlohmann::ordered_json;
@@ -42,13 +42,13 @@ ordered_json axes(const glm::dmat3& m) {
 }  // namespace
 
 ordered_json frame_metadata(const scene::Scene& scene, long long frame, const FrameFiles& files) {
-  const render::Pinhole cam = render::pinhole(scene.camera, scene.render.width, scene.render.height);
+  const Pinhole cam = pinhole(scene.camera, scene.render.width, scene.render.height);
   const glm::dmat3& world_from_optical = cam.world_from_camera;
   const glm::dvec3& position = cam.position;
   const double fy = cam.fy;
   const glm::dmat3 enu = enu_from_world();
   const glm::dmat3 ned_from_enu(glm::dvec3(0, 1, 0), glm::dvec3(1, 0, 0), glm::dvec3(0, 0, -1));
-  const glm::dvec3 sun(render::sun_direction(scene.sun));
+  const glm::dvec3 sun(sun_direction(scene.sun));
 
   ordered_json aovs = ordered_json::object();
   for (size_t i = 0; i < files.aovs.size(); ++i) aovs[files.aovs[i]] = files.aov_files[i];
@@ -88,4 +88,4 @@ ordered_json frame_metadata(const scene::Scene& scene, long long frame, const Fr
   };
 }
 
-}  // namespace lagoon::cli
+}  // namespace lagoon::render
