@@ -14,11 +14,11 @@
 #include "io/atomic_file.h"
 #include "io/disk_space.h"
 #include "io/npy_stream.h"
-#include "moving_pose.h"
 #include "ocean/gpu/dynamic_layer_gpu.h"
 #include "ocean/gpu/gpu_ocean.h"
 #include "ocean/initial_spectrum.h"
 #include "render/floating_objects.h"
+#include "render/moving_pose.h"
 #include "render/vehicle_wakes.h"
 #include "scene_args.h"
 #include "staged_output.h"
@@ -124,7 +124,7 @@ uint64_t export_bytes(const scene::Scene& scene, const render::VehicleWakes& wak
   // meta.json: its fixed part, a time per frame, and a pose of each floating object and vehicle per frame
   // (about 800 characters as dump(2) writes one, names aside).
   uint64_t bytes = 16384 + 32 * uint64_t(frames);
-  for (const MovingTarget& target : moving_targets(scene))
+  for (const render::MovingTarget& target : render::moving_targets(scene))
     bytes += uint64_t(frames) * (1024 + (target.vehicle ? scene.vehicles[target.index].name.size()
                                                         : scene.objects[target.index].name.size()));
   if (!wakes.empty()) bytes += 2 * io::npy_file_bytes(scalar_shape(frames, wakes.params().n)).value();
@@ -327,7 +327,7 @@ int export_fields(vk::Context& ctx, const scene::Scene& scene, const render::Veh
     wake.emplace(std::move(*w));
   }
   // What floats and the vehicles, simulated on the CPU from time 0 (as in a render of each frame).
-  const std::vector<MovingTarget> targets = moving_targets(scene);
+  const std::vector<render::MovingTarget> targets = render::moving_targets(scene);
   std::unique_ptr<render::FloatingObjects> moving;
   if (!targets.empty()) {
     auto m = render::FloatingObjects::create(scene, scene.ocean, gpu.spectra());
@@ -355,7 +355,8 @@ int export_fields(vk::Context& ctx, const scene::Scene& scene, const render::Veh
     if (moving) {
       moving->advance(t);
       nlohmann::json frame = nlohmann::json::array();
-      for (const MovingTarget& target : targets) frame.push_back(moving_pose(scene, *moving, target, t));
+      for (const render::MovingTarget& target : targets)
+        frame.push_back(render::moving_pose(scene, *moving, target, t));
       poses.push_back(std::move(frame));
     }
     if (o.frames > 1) std::fprintf(stderr, "\rlagoon export: frame %lld/%lld", f + 1, o.frames);

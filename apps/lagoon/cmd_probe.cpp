@@ -13,10 +13,10 @@
 #include <vector>
 
 #include "commands.h"
-#include "moving_pose.h"
 #include "ocean/springs.h"
 #include "ocean/wave_query.h"
 #include "render/floating_objects.h"
+#include "render/moving_pose.h"
 #include "render/water_probe.h"
 #include "scene_args.h"
 
@@ -37,12 +37,12 @@ double resolution(double v) {
 }
 
 // The floating object or vehicle called `name`; prints why there is none.
-std::optional<MovingTarget> find_target(const scene::Scene& scene, const std::string& name) {
+std::optional<render::MovingTarget> find_target(const scene::Scene& scene, const std::string& name) {
   std::string names;
   const auto list = [&names](const std::string& n) { names += (names.empty() ? "\"" : ", \"") + n + "\""; };
   for (size_t o = 0; o < scene.objects.size(); ++o) {
     if (scene.objects[o].name == name) {
-      if (scene.objects[o].floating.enabled) return MovingTarget{false, o};
+      if (scene.objects[o].floating.enabled) return render::MovingTarget{false, o};
       std::fprintf(stderr,
                    "lagoon probe: objects[%zu] \"%s\" does not float; set objects[%zu].floating.enabled to "
                    "true (docs/physics.md) to probe its motion\n",
@@ -52,7 +52,7 @@ std::optional<MovingTarget> find_target(const scene::Scene& scene, const std::st
     list(scene.objects[o].name);
   }
   for (size_t v = 0; v < scene.vehicles.size(); ++v) {
-    if (scene.vehicles[v].name == name) return MovingTarget{true, v};
+    if (scene.vehicles[v].name == name) return render::MovingTarget{true, v};
     list(scene.vehicles[v].name);
   }
   std::fprintf(stderr, "lagoon probe: no object or vehicle is named \"%s\"; the scene's: %s\n", name.c_str(),
@@ -78,7 +78,7 @@ int probe_object(const ParsedArgs& args, const scene::Scene& scene, double time)
   for (long long f = 0; f < *frames; ++f) {
     const double t = time + double(f) / *fps;
     (*moving)->advance(t);
-    std::printf("%s\n", moving_pose(scene, **moving, *target, t).dump().c_str());
+    std::printf("%s\n", render::moving_pose(scene, **moving, *target, t).dump().c_str());
   }
   return kExitOk;
 }
@@ -158,8 +158,8 @@ int run_probe(const ParsedArgs& args) {
                               {"time_s", *time},
                               {"height_m", s.height},
                               {"wake_height_m", wake},
-                              {"normal", json_vec3(s.normal)},
-                              {"velocity_mps", json_vec3(s.velocity)},
+                              {"normal", render::json_vec3(s.normal)},
+                              {"velocity_mps", render::json_vec3(s.velocity)},
                               {"rest_position", {s.rest_position.x, s.rest_position.y}},
                               {"error_bound_m", s.error_bound_m},
                               {"converged", s.converged}};

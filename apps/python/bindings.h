@@ -19,5 +19,6 @@ nlohmann::json from_python(const py::handle& o);
 void bind_scene(py::module_& m);
 void bind_renderer(py::module_& m);
 void bind_wave_query(py::module_& m);
+void bind_world(py::module_& m);
 
 }  // namespace lagoon::python

@@ -25,4 +25,5 @@ PYBIND11_MODULE(lagoon, m) {
   bind_scene(m);
   bind_renderer(m);
   bind_wave_query(m);
+  bind_world(m);
 }

@@ -233,3 +233,22 @@ def test_the_buoy_example_follows_the_water():
     ratio = heave[settled].std() / surface[settled].std()
     assert 0.8 < ratio < 1.3, ratio
     assert np.corrcoef(surface[settled], heave[settled])[0, 1] > 0.85
+
+
+def test_the_worlds_bodies_move_as_lagoon_probe_steps_them():
+    harbour = os.path.join(SOURCE, "scenes", "harbour.json")
+    world = lagoon.World(lagoon.Scene.load(harbour))
+    r = cli("probe", "--scene", harbour, "--object", "buoy", "--time", "4", "--frames", "3", "--fps", "10")
+    assert r.returncode == 0, r.stderr
+    expected = [json.loads(line) for line in r.stdout.splitlines()]
+    for i, line in enumerate(expected):
+        world.advance(4.0 + i / 10)
+        (buoy,) = [p for p in world.poses() if p.get("object") == "buoy"]
+        assert buoy == line, (buoy, line)
+    names = [p.get("object") or p.get("vehicle") for p in world.poses()]
+    assert "buoy" in names and len(names) >= 2, names
+    # Going back in time replays from 0 and lands on the same pose.
+    world.advance(4.0)
+    assert [p for p in world.poses() if p.get("object") == "buoy"][0] == expected[0]
+    with pytest.raises(ValueError, match="time"):
+        world.advance(-1.0)

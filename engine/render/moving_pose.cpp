@@ -1,6 +1,6 @@
-#include "moving_pose.h"
+#include "render/moving_pose.h"
 
-namespace lagoon::cli {
+namespace lagoon::render {
 nlohmann::json json_vec3(glm::dvec3 v) {
   return {v.x, v.y, v.z};
 }
@@ -13,8 +13,8 @@ std::vector<MovingTarget> moving_targets(const scene::Scene& scene) {
   return out;
 }
 
-nlohmann::json moving_pose(const scene::Scene& scene, const render::FloatingObjects& moving,
-                           MovingTarget target, double time_s) {
+nlohmann::json moving_pose(const scene::Scene& scene, const FloatingObjects& moving, MovingTarget target,
+                           double time_s) {
   glm::dvec3 origin, centre, velocity, angular;
   glm::dquat q;
   if (target.vehicle) {
@@ -42,4 +42,4 @@ nlohmann::json moving_pose(const scene::Scene& scene, const render::FloatingObje
           {"angular_velocity_radps", json_vec3(angular)}};
 }
 
-}  // namespace lagoon::cli
+}  // namespace lagoon::render

@@ -1,5 +1,5 @@
 // The pose and velocities of what moves in a scene (a floating object or a vehicle) as JSON: one format for
-// `lagoon probe --object` and the "poses" of `lagoon export`'s meta.json.
+// `lagoon probe --object`, the "poses" of `lagoon export`'s meta.json and the Python module's World.poses().
 #pragma once
 #include <cstddef>
 #include <nlohmann/json.hpp>
@@ -8,7 +8,7 @@
 #include "render/floating_objects.h"
 #include "scene/scene.h"
 
-namespace lagoon::cli {
+namespace lagoon::render {
 
 // A floating object (objects[index]) or a vehicle (vehicles[index]).
 struct MovingTarget {
@@ -24,7 +24,7 @@ std::vector<MovingTarget> moving_targets(const scene::Scene& scene);
 
 // {"object"|"vehicle": name, "time_s", "origin", "orientation_wxyz", "centre_of_mass", "velocity_mps",
 //  "angular_velocity_radps"} at the time `moving` was advanced to.
-nlohmann::json moving_pose(const scene::Scene& scene, const render::FloatingObjects& moving,
-                           MovingTarget target, double time_s);
+nlohmann::json moving_pose(const scene::Scene& scene, const FloatingObjects& moving, MovingTarget target,
+                           double time_s);
 
-}  // namespace lagoon::cli
+}  // namespace lagoon::render
