@@ -88,6 +88,23 @@ class Renderer {
   }
 
   const scene::Scene& scene() const { return scene_; }
+
+  // Every device Vulkan offered, in LAGOON_DEVICE's order, with which is in use and why any is unusable.
+  py::list devices() const {
+    py::list out;
+    const std::vector<vk::DeviceCandidate>& all = ctx_->device_candidates();
+    for (size_t i = 0; i < all.size(); ++i) {
+      py::dict d;
+      d["index"] = i;
+      d["name"] = all[i].name;
+      d["type"] = vk::device_type_name(all[i].type);
+      d["usable"] = all[i].unsuitable_reason.empty();
+      d["why_not"] = all[i].unsuitable_reason;
+      d["in_use"] = i == ctx_->device_info().index;
+      out.append(d);
+    }
+    return out;
+  }
   uint32_t validation_errors() const { return ctx_->validation().failures(); }
 
  private:
@@ -129,6 +146,9 @@ void bind_renderer(py::module_& m) {
            "the device renders.")
       .def_property_readonly("device", &Renderer::device, "The device in use: name, type, driver.")
       .def_property_readonly("scene", &Renderer::scene)
+      .def("devices", &Renderer::devices,
+           "Every Vulkan device, as LAGOON_DEVICE and `device=` count them: index, name, type, usable, "
+           "why_not (what it lacks), in_use.")
       .def_property_readonly(
           "validation_errors", &Renderer::validation_errors,
           "How many errors the Vulkan validation layer reported so far (LAGOON_VALIDATION=1 "

@@ -221,6 +221,7 @@ Result<void> Context::pick_device(const ContextOptions& options) {
   }
   auto chosen = choose_device(candidates, options.device_override);
   if (!chosen) return chosen.error();
+  candidates_ = std::move(candidates);
   physical_device_ = devices[*chosen];
   queue_family_ = static_cast<uint32_t>(detail::find_queue_family(physical_device_, surface_));
   read_device_info(static_cast<uint32_t>(*chosen));

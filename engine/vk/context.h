@@ -13,6 +13,7 @@
 
 #include "core/result.h"
 #include "vk/deferred.h"
+#include "vk/device_select.h"
 #include "vk/handle.h"
 #include "vk/validation.h"
 
@@ -119,6 +120,9 @@ class Context {
   const VkPhysicalDeviceProperties& properties() const { return properties_; }
   const VkPhysicalDeviceMemoryProperties& memory_properties() const { return memory_properties_; }
   const DeviceInfo& device_info() const { return info_; }
+  // Every device the instance offered (vkEnumeratePhysicalDevices order, as LAGOON_DEVICE counts) and why a
+  // device was unusable; device_info().index is the one chosen. Empty for an adopted device.
+  const std::vector<DeviceCandidate>& device_candidates() const { return candidates_; }
   VkPipelineCache pipeline_cache() const { return pipeline_cache_; }
   // The core features the device was created with (create(): as RequiredFeatures(physical_device());
   // adopt(): the host's).
@@ -169,6 +173,7 @@ class Context {
   VkPhysicalDeviceProperties properties_{};
   VkPhysicalDeviceMemoryProperties memory_properties_{};
   DeviceInfo info_;
+  std::vector<DeviceCandidate> candidates_;
   VkPhysicalDeviceFeatures enabled_features_{};
   bool adopted_ = false;
   bool debug_utils_ = false;

@@ -115,6 +115,14 @@ def test_the_frame_is_the_pixels_lagoon_render_writes(tmp_path):
 def test_a_camera_moves_the_view_and_a_bad_one_is_refused():
     renderer = lagoon.Renderer(lagoon.Scene.load(DEFAULT, SMALL))
     assert renderer.device["name"]
+    devices = renderer.devices()
+    (used,) = [d for d in devices if d["in_use"]]
+    assert used["name"] == renderer.device["name"] and used["usable"] and used["index"] == devices.index(used)
+    # The same device chosen by its index, as LAGOON_DEVICE would.
+    again = lagoon.Renderer(lagoon.Scene.load(DEFAULT, SMALL), device=str(used["index"]))
+    assert again.device["name"] == used["name"]
+    with pytest.raises(RuntimeError, match="no-such-gpu"):
+        lagoon.Renderer(lagoon.Scene.load(DEFAULT, SMALL), device="no-such-gpu")
     ahead = renderer.render(time=1.0, camera={"position": [0, 3, -10], "look_at": [0, 0, 20], "fov_deg": 55})["image"]
     down = renderer.render(time=1.0, camera={"position": [0, 3, -10], "look_at": [0, -5, -9], "fov_deg": 55})["image"]
     # Looking at the horizon the top half is sky; looking down it is water: the frames differ a lot.
