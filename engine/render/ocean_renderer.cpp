@@ -212,10 +212,9 @@ FrameContext OceanRenderer::begin_frame(VkCommandBuffer cmd, const scene::Scene&
                       .camera_side = side,
                       .light_count = light_count,
                       .caustics = caustics.cells > 0,
-                      // On the screen at all: the refracted rays can meet them (shared/surface.h).
-                      .submerged_objects = submerged.x <= std::min(submerged.z, 1.0f) &&
-                                           submerged.y <= std::min(submerged.w, 1.0f) &&
-                                           submerged.z >= 0.0f && submerged.w >= 0.0f};
+                      // Any object under the water, on the screen or not: switching the variant as one
+                      // comes into view would compile a pipeline in the middle of a run (memory, a stall).
+                      .submerged_objects = submerged.x <= submerged.z};
 }
 
 void OceanRenderer::place_floating_objects(double time_s) {
