@@ -4,6 +4,7 @@
 #include <pybind11/pybind11.h>
 
 #include <nlohmann/json.hpp>
+#include <string>
 
 namespace lagoon::python {
 
@@ -11,6 +12,8 @@ namespace py = pybind11;
 
 // lagoon.SceneError: bad scene files, fields and overrides, with the message the CLI prints.
 extern py::handle scene_error;
+// Raises lagoon.SceneError with `message` (the CLI's text: file, field, fix).
+[[noreturn]] void raise_scene_error(const std::string& message);
 
 // JSON <-> Python (dict, list, str, float, int, bool, None), through Python's own json module.
 py::object to_python(const nlohmann::json& j);

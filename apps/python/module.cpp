@@ -5,6 +5,11 @@ namespace lagoon::python {
 
 py::handle scene_error;
 
+void raise_scene_error(const std::string& message) {
+  PyErr_SetString(scene_error.ptr(), message.c_str());
+  throw py::error_already_set();
+}
+
 py::object to_python(const nlohmann::json& j) {
   return py::module_::import("json").attr("loads")(j.dump());
 }

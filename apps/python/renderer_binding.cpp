@@ -115,8 +115,7 @@ class Renderer {
     doc["camera"] = nlohmann::ordered_json(fields);
     auto scene = scene::parse_scene(nlohmann::json(doc), "render(camera=...)");
     if (!scene) {
-      PyErr_SetString(scene_error.ptr(), scene.error().message.c_str());
-      throw py::error_already_set();
+      raise_scene_error(scene.error().message);
     }
     return *scene;
   }

@@ -12,11 +12,6 @@
 namespace lagoon::python {
 namespace {
 
-[[noreturn]] void raise_scene_error(const std::string& message) {
-  PyErr_SetString(scene_error.ptr(), message.c_str());
-  throw py::error_already_set();
-}
-
 // {"ocean.model": "sines", "camera.position": [0, 3, -10]} as --set's "path=value" strings: a string is
 // taken as it is (as on the command line), anything else as its JSON.
 std::vector<std::string> override_strings(const py::dict& overrides) {

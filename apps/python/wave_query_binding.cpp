@@ -54,8 +54,7 @@ class WaveQuery {
       water = render::water_at_points(scene_, *query_, time_s, at);
     }
     if (!water) {
-      PyErr_SetString(scene_error.ptr(), water.error().message.c_str());
-      throw py::error_already_set();
+      raise_scene_error(water.error().message);
     }
     py::array_t<double> height{py::ssize_t(n)}, wake{py::ssize_t(n)}, bound{py::ssize_t(n)};
     py::array_t<double> normal({py::ssize_t(n), py::ssize_t(3)}), velocity({py::ssize_t(n), py::ssize_t(3)});

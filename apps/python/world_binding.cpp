@@ -19,8 +19,7 @@ class World {
     auto moving =
         render::FloatingObjects::create(scene_, scene_.ocean, ocean::make_cascade_spectra(scene_.ocean));
     if (!moving) {
-      PyErr_SetString(scene_error.ptr(), moving.error().message.c_str());
-      throw py::error_already_set();
+      raise_scene_error(moving.error().message);
     }
     moving_ = std::move(moving).value();
   }
