@@ -53,6 +53,13 @@ glm::dvec3 FloatingBody::model_origin() const {
   return state_.position - state_.orientation * mass_.centre;
 }
 
+std::vector<glm::dvec3> FloatingBody::sample_points_in_world() const {
+  std::vector<glm::dvec3> out;
+  out.reserve(hull_.size());
+  for (const glm::dvec3& p : hull_) out.push_back(state_.position + state_.orientation * p);
+  return out;
+}
+
 double FloatingBody::kinetic_energy() const {
   const glm::dmat3 r = glm::mat3_cast(state_.orientation);
   const glm::dvec3 w = state_.angular_velocity;

@@ -81,6 +81,8 @@ class FloatingBody {
   const FloorPush& last_floor_push() const { return floor_push_; }
   // How many points the water's height is sampled at (the refined hull's vertices).
   size_t sample_points() const { return hull_.size(); }
+  // Those points where the body is now (world coordinates).
+  std::vector<glm::dvec3> sample_points_in_world() const;
   double kinetic_energy() const;
 
  private:

@@ -39,8 +39,18 @@ TrackPoint VehicleTrack::at(double time_s) const {
 
 void VehicleTrack::order(double time_s, HelmOrder order) {
   const double t = std::max(time_s, 0.0);
+  const TrackPoint from = at(t);  // before the erase: a placement at this very time is where it is
   std::erase_if(legs_, [t](const Leg& leg) { return leg.start_s >= t; });
-  legs_.push_back({t, at(t), order});
+  legs_.push_back({t, from, order});
+}
+
+void VehicleTrack::place(double time_s, TrackPoint where, HelmOrder order) {
+  const double t = std::max(time_s, 0.0);
+  std::erase_if(legs_, [t](const Leg& leg) { return leg.start_s >= t; });
+  where.heading = wrap(where.heading);
+  where.velocity = order.speed_mps * compass::toward(where.heading);
+  where.yaw_rate = order.yaw_rate_radps;
+  legs_.push_back({t, where, order});
 }
 
 }  // namespace lagoon::physics

@@ -25,6 +25,10 @@ class VehicleTrack {
   // From time t (>= 0) on, the vehicle runs at the order's speed and rate of turn from where it is then;
   // orders given for later times before are dropped (a replay from an earlier time).
   void order(double time_s, HelmOrder order);
+  // From time t (>= 0) on, the vehicle runs from `where` (its position and heading; the velocity and rate
+  // of turn come from `order`) instead of from where it was: an external controller's pose. Orders given
+  // for later times before are dropped, as order() drops them.
+  void place(double time_s, TrackPoint where, HelmOrder order);
   bool steered() const { return !legs_.empty(); }
   size_t legs() const { return legs_.size(); }
   const WaypointPath& path() const { return path_; }

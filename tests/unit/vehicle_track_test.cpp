@@ -96,5 +96,33 @@ TEST(VehicleTrack, AFullCircleComesBackToItsStart) {
   EXPECT_LT(half.position.x, start.position.x - 29.0);
 }
 
+TEST(VehicleTrack, APlacedVehicleRunsFromWhereItWasPutAndKeepsItsPast) {
+  // An external controller puts the vehicle at (10, -20), heading east (pi/2), at 8 s, turning to starboard
+  // at 3 m/s and 0.2 rad/s: from then on the ordered arc from there (RK4), before then its path.
+  const physics::WaypointPath path = square_loop();
+  physics::VehicleTrack track(path);
+  track.order(4.0, {5.0, 0.1});
+  track.order(9.0, {1.0, 0.0});  // dropped by the placement at 8 s
+  const glm::dvec2 before = track.at(6.0).position;
+  physics::TrackPoint where;
+  where.position = {10.0, -20.0};
+  where.heading = std::numbers::pi / 2 + 2 * std::numbers::pi;  // wrapped
+  track.place(8.0, where, {3.0, 0.2});
+  EXPECT_EQ(track.legs(), 2u);
+  EXPECT_EQ(track.at(6.0).position, before);
+  const physics::TrackPoint at8 = track.at(8.0);
+  EXPECT_NEAR(glm::distance(at8.position, where.position), 0.0, 1e-12);
+  EXPECT_NEAR(at8.heading, std::numbers::pi / 2, 1e-12);
+  EXPECT_NEAR(glm::distance(at8.velocity, glm::dvec2(3.0, 0.0)), 0.0, 1e-12);  // east is +x
+  const glm::dvec3 s = integrate(glm::dvec3(10.0, -20.0, std::numbers::pi / 2), 3.0, 0.2, 4.5);
+  const physics::TrackPoint later = track.at(12.5);
+  EXPECT_NEAR(glm::distance(later.position, glm::dvec2(s.x, s.y)), 0.0, 1e-6);
+  EXPECT_NEAR(wrap_angle(later.heading - s.z), 0.0, 1e-9);
+  // An order at the placement's own time starts from the placed point (a controller that places, then
+  // steers, in one step), not from where the path had it.
+  track.order(8.0, {2.0, 0.0});
+  EXPECT_NEAR(glm::distance(track.at(10.0).position, glm::dvec2(14.0, -20.0)), 0.0, 1e-9);
+}
+
 }  // namespace
 }  // namespace lagoon::test
