@@ -7,6 +7,7 @@
 #include <complex>
 #include <glm/geometric.hpp>
 #include <numbers>
+#include <thread>
 
 #include "ocean/band_limit.h"
 #include "ocean/catmull_rom.h"
@@ -255,8 +256,28 @@ std::vector<WaveSample> WaveQuery::sample(double time_s, std::span<const glm::dv
   }
   evaluate(time_s);
   std::vector<WaveSample> out(points.size());
+  // Each point is its own: large batches are split between the query's threads (the same answers).
+  constexpr size_t kPointsPerThread = 16384;
+  const size_t threads =
+      std::clamp<size_t>(points.size() / kPointsPerThread, 1, std::max(1u, options_.threads));
+  if (threads == 1) {
+    sample_range(points, out, 0, points.size());
+    return out;
+  }
+  std::vector<std::thread> workers;
+  const size_t chunk = (points.size() + threads - 1) / threads;
+  for (size_t t = 1; t < threads; ++t)
+    workers.emplace_back(
+        [&, t] { sample_range(points, out, t * chunk, std::min(points.size(), (t + 1) * chunk)); });
+  sample_range(points, out, 0, chunk);
+  for (std::thread& w : workers) w.join();
+  return out;
+}
+
+void WaveQuery::sample_range(std::span<const glm::dvec2> points, std::vector<WaveSample>& out, size_t begin,
+                             size_t end) const {
   const double bound = bound_height_ + current_->max_slope * 2 * params_.choppiness * bound_displacement_;
-  for (size_t i = 0; i < points.size(); ++i) {
+  for (size_t i = begin; i < end; ++i) {
     const glm::dvec2 q = points[i];
     // Fixed point of p = q - λD(p): the rest position whose displaced position is q.
     glm::dvec2 p = q;
@@ -281,7 +302,6 @@ std::vector<WaveSample> WaveQuery::sample(double time_s, std::span<const glm::dv
     s.normal = glm::normalize(glm::dvec3(-f[kSlopeX], 1.0, -f[kSlopeZ]));
     s.velocity = {params_.choppiness * f[kVx], f[kVy], params_.choppiness * f[kVz]};
   }
-  return out;
 }
 
 WaveSample WaveQuery::sample(double time_s, double x, double z) {

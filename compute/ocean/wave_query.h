@@ -105,6 +105,9 @@ class WaveQuery {
   std::shared_ptr<const Evaluation> evaluate_springs(double time_s);
   void keep(std::shared_ptr<const Evaluation> evaluation);
   glm::dvec2 displacement(glm::dvec2 p) const;
+  // sample()'s answers for points[begin, end), from current_.
+  void sample_range(std::span<const glm::dvec2> points, std::vector<WaveSample>& out, size_t begin,
+                    size_t end) const;
 
   OceanParams params_;
   std::unique_ptr<SpringGrid> springs_;      // model springs: the grid itself, stepped to each time asked

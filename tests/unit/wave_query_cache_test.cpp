@@ -59,5 +59,23 @@ TEST(WaveQueryCache, ATimeAskedAgainAnswersAsTheFirstTime) {
   for (int k = times - 1; k >= 0; --k) expect_same(query.sample(0.2 * k, at), first[size_t(k)], "again");
 }
 
+TEST(WaveQueryCache, ALargeBatchSplitBetweenThreadsAnswersAsOnePointAtATime) {
+  // 50,000 points are split between the query's two threads; each answer is the one a single point gets,
+  // wherever the split falls (the chunks' ends included).
+  std::vector<glm::dvec2> at;
+  for (int i = 0; i < 50000; ++i) at.push_back({-90.0 + 0.0037 * i, 40.0 - 0.0021 * i});
+  ocean::WaveQuery query(small_sea());
+  const std::vector<ocean::WaveSample> batch = query.sample(1.7, at);
+  std::vector<ocean::WaveSample> one_by_one;
+  for (size_t i :
+       {size_t(0), size_t(1), size_t(24999), size_t(25000), size_t(25001), size_t(37777), size_t(49999)})
+    EXPECT_EQ(batch[i].height, query.sample(1.7, at[i].x, at[i].y).height) << "point " << i;
+  for (int i = 0; i < 50000; i += 997)
+    one_by_one.push_back(query.sample(1.7, at[size_t(i)].x, at[size_t(i)].y));
+  std::vector<ocean::WaveSample> strided;
+  for (int i = 0; i < 50000; i += 997) strided.push_back(batch[size_t(i)]);
+  expect_same(strided, one_by_one, "batch against single points");
+}
+
 }  // namespace
 }  // namespace lagoon::test
