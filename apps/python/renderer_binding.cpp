@@ -4,7 +4,6 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
-#include <cstring>
 #include <memory>
 #include <optional>
 #include <string>
@@ -16,19 +15,29 @@
 #include "render/ocean_renderer.h"
 #include "scene/scene.h"
 #include "vk/context.h"
+#include "world_binding.h"
 
 namespace lagoon::python {
 namespace {
 
 class Renderer {
  public:
-  Renderer(const scene::Scene& scene, const std::optional<std::string>& device) : scene_(scene) {
+  Renderer(const scene::Scene& scene, const std::optional<std::string>& device, const World* world)
+      : scene_(scene) {
+    render::VehicleTracks tracks;
+    if (world) {
+      if (world->scene().vehicles.size() != scene_.vehicles.size())
+        throw py::value_error("world= steps a scene with " + std::to_string(world->scene().vehicles.size()) +
+                              " vehicles, this scene has " + std::to_string(scene_.vehicles.size()) +
+                              ": give the Renderer the World's scene (or one with the same vehicles[])");
+      tracks = world->tracks();
+    }
     vk::ContextOptions options = vk::ContextOptions::from_environment();
     if (device) options.device_override = *device;
     auto ctx = vk::Context::create(options);
     if (!ctx) throw std::runtime_error(ctx.error().message);
     ctx_ = std::move(ctx).value();
-    auto renderer = render::OceanRenderer::create(*ctx_, scene_);
+    auto renderer = render::OceanRenderer::create(*ctx_, scene_, tracks);
     if (!renderer) throw std::runtime_error(renderer.error().message);
     renderer_ = std::move(renderer).value();
   }
@@ -58,21 +67,29 @@ class Renderer {
     py::dict out;
     py::array_t<uint8_t> colour({py::ssize_t(image.height), py::ssize_t(image.width), py::ssize_t(3)});
     uint8_t* dst = colour.mutable_data();
-    for (size_t i = 0, n = size_t(image.width) * image.height; i < n; ++i)
-      std::memcpy(dst + 3 * i, image.rgba.data() + 4 * i, 3);
+    // RGBA to RGB: the one copy of the frame, so the image is contiguous (as OpenCV and PIL want it).
+    const uint8_t* src = image.rgba.data();
+    for (size_t i = 0, n = size_t(image.width) * image.height; i < n; ++i, dst += 3, src += 4) {
+      dst[0] = src[0];
+      dst[1] = src[1];
+      dst[2] = src[2];
+    }
     out["image"] = colour;
     // The dataset's frame JSON less what names its files (there are none) and its index in a sequence.
     nlohmann::ordered_json metadata = render::frame_metadata(frame, 0, {});
     for (const char* key : {"frame", "image", "aov"}) metadata.erase(key);
     out["metadata"] = to_python(metadata);
+    // The AOVs are handed over, not copied: the arrays view the ground truth's planes, which a capsule keeps
+    // alive for as long as any of them is.
+    auto owner = std::make_unique<render::GroundTruth>(std::move(gt));
+    const render::GroundTruth& planes = *owner;
+    py::capsule keep(owner.release(), [](void* p) { delete static_cast<render::GroundTruth*>(p); });
     for (const std::string& name : aovs) {
-      const std::vector<float>& values = gt.plane(name);
-      const size_t pixels = size_t(gt.width) * gt.height;
-      std::vector<py::ssize_t> shape{py::ssize_t(gt.height), py::ssize_t(gt.width)};
+      const std::vector<float>& values = planes.plane(name);
+      const size_t pixels = size_t(planes.width) * planes.height;
+      std::vector<py::ssize_t> shape{py::ssize_t(planes.height), py::ssize_t(planes.width)};
       if (values.size() == 3 * pixels) shape.push_back(3);  // as the dataset's .npy files
-      py::array_t<float> plane(shape);
-      std::memcpy(plane.mutable_data(), values.data(), values.size() * sizeof(float));
-      out[py::str(name)] = plane;
+      out[py::str(name)] = py::array_t<float>(shape, values.data(), keep);
     }
     return out;
   }
@@ -129,10 +146,12 @@ class Renderer {
 
 void bind_renderer(py::module_& m) {
   py::class_<Renderer>(m, "Renderer", "Renders one scene's frames on a Vulkan device.")
-      .def(py::init<const scene::Scene&, const std::optional<std::string>&>(), py::arg("scene"),
-           py::arg("device") = py::none(),
+      .def(py::init<const scene::Scene&, const std::optional<std::string>&, const World*>(), py::arg("scene"),
+           py::arg("device") = py::none(), py::arg("world") = nullptr,
            "Opens the device (None: as LAGOON_DEVICE or the automatic choice; else an index or a name "
-           "substring) and builds the renderer; raises RuntimeError with the reason when it cannot.")
+           "substring) and builds the renderer; raises RuntimeError with the reason when it cannot. With "
+           "`world` (a World of the same scene) the vehicles follow that world's tracks: what its helm() and "
+           "set_pose() order is what the frames show.")
       .def("render", &Renderer::render, py::arg("time") = py::none(), py::arg("camera") = py::none(),
            py::arg("aovs") = std::vector<std::string>{},
            "The frame as a dict: 'image', an H x W x 3 uint8 array (sRGB, tone-mapped: the PNG `lagoon "

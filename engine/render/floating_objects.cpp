@@ -233,4 +233,32 @@ const physics::FloatingBody* FloatingObjects::body(size_t object) const {
   return nullptr;
 }
 
+const physics::FloatingBody* FloatingObjects::hull_body(size_t object) const {
+  if (object >= scene_.objects.size()) {
+    const size_t v = object - scene_.objects.size();
+    return v < vehicles_.size() ? vehicles_[v].motion.hull() : nullptr;
+  }
+  return body(object);
+}
+
+std::vector<double> FloatingObjects::water_under(size_t object, const std::vector<glm::dvec2>& points) const {
+  const ocean::LocalHeights* heights = nullptr;
+  size_t own_wake = WakeHeights::kNoVehicle;  // a vehicle does not ride its own wake
+  if (object >= scene_.objects.size()) {
+    const size_t v = object - scene_.objects.size();
+    if (v < vehicles_.size()) heights = vehicles_[v].heights.get();
+    own_wake = v;
+  } else {
+    for (const Body& b : bodies_)
+      if (b.object == object) heights = b.heights.get();
+  }
+  std::vector<double> out;
+  if (!heights) return out;
+  out.reserve(points.size());
+  for (const glm::dvec2& p : points) {
+    out.push_back(heights->height(p.x, p.y) + (wakes_ ? wakes_->height(p, own_wake) : 0.0));
+  }
+  return out;
+}
+
 }  // namespace lagoon::render

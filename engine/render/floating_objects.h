@@ -50,6 +50,14 @@ class FloatingObjects {
   const physics::FloatingBody* body(size_t object) const;
   // The motion of vehicles[vehicle].
   const physics::VehicleMotion& vehicle(size_t vehicle) const { return vehicles_.at(vehicle).motion; }
+  // The water's height as the hull of `object` (numbered as Pose::object) felt it at its last step, at
+  // world (x, z) points near it: the sea around it plus every other vehicle's wake. Empty when it neither
+  // floats nor runs on the surface (a submerged vehicle feels no surface).
+  std::vector<double> water_under(size_t object, const std::vector<glm::dvec2>& points) const;
+  // The body of `object` (a floating object's or a surface vehicle's hull), or nullptr.
+  const physics::FloatingBody* hull_body(size_t object) const;
+  // The vehicles' tracks (one per scene vehicle), shared with whoever created these objects.
+  const VehicleTracks& tracks() const { return tracks_; }
   // The wakes the bodies ride (render/wake_heights.h), or nullptr.
   const WakeHeights* wakes() const { return wakes_.get(); }
 
