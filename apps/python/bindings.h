@@ -23,5 +23,6 @@ void bind_scene(py::module_& m);
 void bind_renderer(py::module_& m);
 void bind_wave_query(py::module_& m);
 void bind_world(py::module_& m);
+void bind_cli(py::module_& m);
 
 }  // namespace lagoon::python

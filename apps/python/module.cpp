@@ -31,4 +31,5 @@ PYBIND11_MODULE(lagoon, m) {
   bind_renderer(m);
   bind_wave_query(m);
   bind_world(m);
+  bind_cli(m);
 }

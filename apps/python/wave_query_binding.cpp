@@ -59,15 +59,18 @@ class WaveQuery {
     py::array_t<double> height{py::ssize_t(n)}, wake{py::ssize_t(n)}, bound{py::ssize_t(n)};
     py::array_t<double> normal({py::ssize_t(n), py::ssize_t(3)}), velocity({py::ssize_t(n), py::ssize_t(3)});
     py::array_t<bool> converged{py::ssize_t(n)};
+    double *h = height.mutable_data(), *w = wake.mutable_data(), *b = bound.mutable_data();
+    double *nrm = normal.mutable_data(), *vel = velocity.mutable_data();
+    bool* c = converged.mutable_data();
     for (size_t i = 0; i < n; ++i) {
       const ocean::WaveSample& s = water->samples[i];
-      height.mutable_at(i) = s.height;
-      wake.mutable_at(i) = water->wake_heights[i];
-      bound.mutable_at(i) = s.error_bound_m;
-      converged.mutable_at(i) = s.converged;
-      for (int c = 0; c < 3; ++c) {
-        normal.mutable_at(i, c) = s.normal[c];
-        velocity.mutable_at(i, c) = s.velocity[c];
+      h[i] = s.height;
+      w[i] = water->wake_heights[i];
+      b[i] = s.error_bound_m;
+      c[i] = s.converged;
+      for (int k = 0; k < 3; ++k) {
+        nrm[3 * i + k] = s.normal[k];
+        vel[3 * i + k] = s.velocity[k];
       }
     }
     py::dict out;
