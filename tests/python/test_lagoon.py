@@ -262,24 +262,27 @@ def test_the_worlds_bodies_move_as_lagoon_probe_steps_them():
         world.advance(-1.0)
 
 
-def test_the_auv_camera_example_moves_renders_and_rewards_from_the_ground_truth():
+def test_the_auv_camera_example_steers_the_auv_renders_and_rewards_from_the_ground_truth():
     import importlib.util
 
     spec = importlib.util.spec_from_file_location("auv", os.path.join(SOURCE, "examples", "python", "auv_camera.py"))
     auv = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(auv)
-    env = auv.AuvCameraEnv(os.path.join(SOURCE, "scenes", "reef-dive.json"), width=64, height=36, max_steps=3)
+    env = auv.AuvCameraEnv(os.path.join(SOURCE, "scenes", "harbour.json"), width=64, height=36, max_steps=3)
     obs = env.reset()
     assert obs["image"].shape == (36, 64, 3) and obs["depth"].shape == (36, 64)
     start = env.position.copy()
+    assert start == pytest.approx([0.0, -4.4, 6.0], abs=1e-6)  # where reset() put it, at its depth_m
     done, rewards = False, []
     while not done:
-        obs, reward, done, info = env.step(0.0)  # straight ahead
+        obs, reward, done, info = env.step((1.0, 0.0))  # straight ahead at 1 m/s
         rewards.append(reward)
-        # The frame was drawn from where the vehicle is: the metadata's camera is the environment's pose.
-        assert obs["metadata"]["camera"]["position"] == pytest.approx(info["position"].tolist(), abs=1e-5)
-    assert np.linalg.norm(env.position - start) == pytest.approx(3 * env.speed * env.dt, rel=1e-9)
-    # Under the reef's water with the floor ahead, some of the view is floor 2-8 m away, not all of it.
+        # The frame was drawn from the AUV's nose: the metadata's camera is the vehicle's pose.
+        nose = info["position"] + env.NOSE_M * np.array([0.0, 0.0, -1.0])
+        assert obs["metadata"]["camera"]["position"] == pytest.approx(nose.tolist(), abs=1e-5)
+    # Heading north (-z) at 1 m/s for 3 steps of 0.5 s, as the helm ordered.
+    assert env.position - start == pytest.approx([0.0, 0.0, -1.5], abs=1e-6)
+    # Under the harbour's water, looking down at the floor: some of the view is floor 2-8 m away, not all.
     assert all(0.0 < r < 1.0 for r in rewards), rewards
     # The camera is under the water: every ray starts in it (2), or meets the surface from below (1); none in air.
     assert set(np.unique(obs["water_mask"])) <= {1.0, 2.0} and np.all(obs["water_mask"][-1] == 2)
