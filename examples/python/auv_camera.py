@@ -4,14 +4,20 @@
 mask and object ids, and the reward comes from the ground truth (here: keep the sea floor in view, 2-8 m
 ahead, while moving).
 
-    PYTHONPATH=build/python python3 examples/python/auv_camera.py [--scene scenes/harbour.json] [--steps 10]
+    python3 examples/python/auv_camera.py [--scene scenes/harbour.json] [--steps 10]
 """
 import argparse
 import math
+import os
+import sys
 
 import numpy as np
 
-import lagoon
+try:
+    import lagoon
+except ImportError:  # in a source tree after `make test` the module is in build/python
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "build", "python"))
+    import lagoon
 
 
 class AuvCameraEnv:

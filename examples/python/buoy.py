@@ -4,14 +4,20 @@ a linear buoyancy spring and a damper, semi-implicit Euler at 25 Hz. A buoy this
 10 cm draught: natural period 0.63 s) follows the bay's waves (periods of 2-4 s), so its heave tracks the
 water's height.
 
-    PYTHONPATH=build/python python3 examples/python/buoy.py [--scene scenes/default.json] [--seconds 30]
+    python3 examples/python/buoy.py [--scene scenes/default.json] [--seconds 30]
 """
 import argparse
 import math
+import os
+import sys
 
 import numpy as np
 
-import lagoon
+try:
+    import lagoon
+except ImportError:  # in a source tree after `make test` the module is in build/python
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "build", "python"))
+    import lagoon
 
 RHO, G = 1025.0, 9.81  # sea water kg/m³, m/s²
 

@@ -6,16 +6,21 @@ robotics pipeline trains on: each frame's depth back-projected through its intri
 a world-space point cloud of the water's surface, the floor and the objects (POINTS/points_KKKK.npy: x, y, z,
 class with class 1 the surface, 2 the floor, 3 an object or vehicle) and a summary table (POINTS/summary.npz).
 
-    PYTHONPATH=build/python python3 examples/python/dataset.py --out out/harbour-set [--frames 6] [--shards 2]
+    python3 examples/python/dataset.py --out out/harbour-set [--frames 6] [--shards 2]
 """
 import argparse
 import glob
 import json
 import os
+import sys
 
 import numpy as np
 
-import lagoon
+try:
+    import lagoon
+except ImportError:  # in a source tree after `make test` the module is in build/python
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "build", "python"))
+    import lagoon
 
 
 def render(scene_path, out, frames, shards, width, height, fps=10.0):

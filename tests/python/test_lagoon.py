@@ -286,3 +286,16 @@ def test_the_auv_camera_example_steers_the_auv_renders_and_rewards_from_the_grou
     assert all(0.0 < r < 1.0 for r in rewards), rewards
     # The camera is under the water: every ray starts in it (2), or meets the surface from below (1); none in air.
     assert set(np.unique(obs["water_mask"])) <= {1.0, 2.0} and np.all(obs["water_mask"][-1] == 2)
+
+
+def test_the_auv_example_runs_from_the_source_folder_as_the_readme_says():
+    # After `make test`, `python3 examples/python/auv_camera.py` from the source folder finds the module in
+    # build/python by itself: no PYTHONPATH, nothing installed.
+    module_dir = os.path.dirname(os.path.realpath(lagoon.__file__))
+    if module_dir != os.path.realpath(os.path.join(SOURCE, "build", "python")):
+        pytest.skip(f"the module was built in {module_dir}, not in the source folder's build/")
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
+    r = subprocess.run(["/usr/bin/python3", "examples/python/auv_camera.py", "--steps", "1"], cwd=SOURCE, env=env,
+                       capture_output=True, text=True, timeout=120)
+    assert r.returncode == 0, r.stderr
+    assert "total reward" in r.stdout, r.stdout
