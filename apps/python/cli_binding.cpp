@@ -133,16 +133,15 @@ std::string render_sequence(const py::object& scene, const py::object& out, int 
   std::vector<std::string> args{
       "render", "--scene", s.path(), "--out", image, "--frames", std::to_string(frames)};
   if (fps) args.insert(args.end(), {"--fps", number(*fps)});
+  // Always a shard (0/1 when none is given): a sequence, with its manifest, even of one frame.
   std::string shard_text = "0/1";
-  if (!shard.is_none()) {
-    if (py::isinstance<py::str>(shard)) {
-      shard_text = shard.cast<std::string>();
-    } else {
-      const auto pair = shard.cast<std::pair<long long, long long>>();
-      shard_text = std::to_string(pair.first) + "/" + std::to_string(pair.second);
-    }
-    args.insert(args.end(), {"--shard", shard_text});
+  if (py::isinstance<py::str>(shard)) {
+    shard_text = shard.cast<std::string>();
+  } else if (!shard.is_none()) {
+    const auto pair = shard.cast<std::pair<long long, long long>>();
+    shard_text = std::to_string(pair.first) + "/" + std::to_string(pair.second);
   }
+  args.insert(args.end(), {"--shard", shard_text});
   if (!aovs.empty()) {
     std::string list;
     for (const std::string& a : aovs) list += (list.empty() ? "" : ",") + a;

@@ -70,6 +70,14 @@ def test_a_sequence_in_shards_is_the_clis_sequence_and_verifies(tmp_path):
     assert os.stat(tmp_path / "py" / "f_0000.png").st_mtime_ns == before
 
 
+def test_a_sequence_of_one_frame_is_a_sequence_with_its_manifest(tmp_path):
+    manifest = lagoon.render_sequence(DEFAULT, tmp_path / "one" / "f.png", overrides=SMALL_FRAME)
+    # As `lagoon render --shard 0/1` writes it: f.png and f.json (one frame needs no number), in the manifest.
+    assert os.path.isfile(manifest) and os.path.isfile(tmp_path / "one" / "f.json")
+    assert "f.png" in open(manifest).read()
+    lagoon.verify_dataset(tmp_path / "one")
+
+
 def test_failures_raise_the_clis_message_and_exit_code(tmp_path):
     lagoon.render_sequence(DEFAULT, tmp_path / "set" / "f.png", frames=2, shard=(0, 2), overrides=SMALL_FRAME)
     with pytest.raises(lagoon.CommandError, match=r"shard 1 of 2 has no manifest; run it \(--shard 1/2\)") as e:
