@@ -2,9 +2,10 @@
 # Soak of the desktop demo (issue 11): lagoon-demo runs under a virtual X server with the validation layer
 # on for SECONDS, and a script edits one random panel field every other frame, with a random value from that
 # field's allowed range, and sets it back to the scene's value the frame after; then SIGTERM closes it as its
-# window's close button would. The fields and ranges come from the field table in docs/scene-format.md, which
-# a unit test keeps identical to the declarations the panel is built from. Resident memory is sampled every
-# 10 s.
+# window's close button would. After every 20 edits the script leaves 40 frames without one, an idle
+# stretch where the demo is at rest. The fields and ranges come from the field table in docs/scene-format.md,
+# which a unit test keeps identical to the declarations the panel is built from. Resident memory is sampled
+# every 2 s.
 #
 #   tools/demo-soak.sh [SECONDS [SEED]]      defaults: 600 s, seed 1
 #
@@ -13,9 +14,10 @@
 # every object the edits rebuild, so memory is best judged without it; docs/reliability.md).
 # Writes OUT/script.txt, OUT/demo.log and OUT/rss.csv (seconds, KiB). Passes (exit 0) when the demo exits 0
 # (which includes no validation error), no edit produced an error other than the loader's rejection of a
-# value, and resident memory at the end (the least of the last three samples) is less than 1 % above that at
-# 10 % of the run (likewise). Edits that rebuild the renderer (spectrum, cascades, water type) make some
-# frames take seconds on lavapipe.
+# value, and resident memory at the end (the least sample of the run's last 10 %) is less than MAX_GROWTH
+# per cent (default 5, issue 36's budget) above that after the warm-up (the least sample from 10 to 20 % of the run): each window holds idle stretches, so both
+# ends measure the demo at rest, not whatever an edit of the moment has rebuilt. Edits that rebuild the
+# renderer (spectrum, cascades, water type) make some frames take seconds on lavapipe.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-600}
@@ -80,7 +82,7 @@ def lookup(path):
             return None
     return json.dumps(node) if not isinstance(node, (dict, list)) else None
 frame = 0
-for line in open(sys.argv[2]):
+for i, line in enumerate(open(sys.argv[2])):
     edit, restore = line.rstrip("\n").split("\t")
     print(frame, edit)
     path, default = restore.split("=", 1)
@@ -90,12 +92,14 @@ for line in open(sys.argv[2]):
     if value is not None:
         print(frame + 1, path + "=" + value)
     frame += 2
+    if i % 20 == 19:
+        frame += 40  # an idle stretch after every 20 edits: the samples there see the demo at rest
 PY
 
 echo "seconds,rss_kib" >"$out/rss.csv"
 start=$(date +%s)
 LAGOON_VALIDATION=${VALIDATION:-1} xvfb-run -a "$demo" --scene scenes/default.json --width "${WIDTH:-640}" --height "${HEIGHT:-360}" \
-  --frames "$((2 * frames))" --script "$out/script.txt" --no-vsync >"$out/demo.log" 2>&1 &
+  --frames "$((4 * frames))" --script "$out/script.txt" --no-vsync >"$out/demo.log" 2>&1 &
 runner=$!
 pid=
 while kill -0 "$runner" 2>/dev/null; do
@@ -106,7 +110,7 @@ while kill -0 "$runner" 2>/dev/null; do
     [[ -n $rss ]] && echo "$now,$rss" >>"$out/rss.csv"
     (( now >= seconds )) && kill -TERM "$pid" 2>/dev/null
   fi
-  sleep 10
+  sleep 2
 done
 status=0
 wait "$runner" || status=$?
@@ -116,19 +120,24 @@ frames=$(sed -n 's/^lagoon-demo: \([0-9]*\) frames at.*/\1/p' "$out/demo.log" | 
 rejected=$(grep -c "^lagoon-demo: script, frame" "$out/demo.log" || true)
 # What would be a fault: a Vulkan or validation error, an exception, a crash, a sanitizer report.
 errors=$(grep -ciE "vulkan error|validation|VUID|terminate called|abort|segmentation|sanitizer" "$out/demo.log" || true)
-awk -F, -v status="$status" -v seconds="$seconds" -v frames="${frames:-0}" -v rejected="$rejected" -v errors="$errors" '
+awk -F, -v max_growth="${MAX_GROWTH:-5}" -v status="$status" -v seconds="$seconds" -v frames="${frames:-0}" -v rejected="$rejected" -v errors="$errors" '
   NR > 1 { t[++n] = $1; r[n] = $2; if ($2 > peak) peak = $2 }
   END {
     if (n < 3) { printf("demo-soak: only %d memory samples; run longer\n", n); exit 1 }
-    # The least of three samples: an edit of the moment (a larger cascade) is undone a frame later.
-    w = int(n / 10) + 1; if (w + 2 > n) w = n - 2
-    a = r[w]; if (r[w + 1] < a) a = r[w + 1]; if (r[w + 2] < a) a = r[w + 2]
-    b = r[n]; if (r[n - 1] < b) b = r[n - 1]; if (r[n - 2] < b) b = r[n - 2]
-    r[w] = a; r[n] = b; growth = 100 * (b - a) / a
+    # Each end is the least sample of a window (10-20 % of the run, and its last 10 %): the windows hold idle
+    # stretches, where the demo is at rest, while a sample during an edit holds what the edit rebuilds (a
+    # larger cascade, a springs grid: tens of MiB that go again when it is undone).
+    w = 0; a = 0; e = 0; b = 0
+    for (i = 1; i <= n; ++i) {
+      if (t[i] >= 0.1 * t[n] && t[i] < 0.2 * t[n] && (a == 0 || r[i] < a)) { a = r[i]; w = i }
+      if (t[i] >= 0.9 * t[n] && (b == 0 || r[i] < b)) { b = r[i]; e = i }
+    }
+    if (w == 0 || e == 0) { printf("demo-soak: too few memory samples; run longer\n"); exit 1 }
+    growth = 100 * (b - a) / a
     printf("demo-soak: %d frames in %d s, exit %d; %d edits rejected by the loader, %d other errors\n",
            frames, seconds, status, rejected, errors)
     printf("demo-soak: RSS %.1f MiB at %d s (after warm-up), %.1f MiB at %d s (end), peak %.1f MiB: %+.2f %%\n",
-           r[w] / 1024, t[w], r[n] / 1024, t[n], peak / 1024, growth)
-    ok = status == 0 && errors == 0 && growth < 1
+           a / 1024, t[w], b / 1024, t[e], peak / 1024, growth)
+    ok = status == 0 && errors == 0 && growth < max_growth
     print(ok ? "demo-soak: healthy" : "demo-soak: NOT healthy"); exit ok ? 0 : 1
   }' "$out/rss.csv"
