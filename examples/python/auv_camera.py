@@ -34,8 +34,6 @@ class AuvCameraEnv:
         self.scene = lagoon.Scene.load(scene_path, {"render.width": width, "render.height": height})
         self.vehicle, self.dt, self.max_steps = vehicle, dt_s, max_steps
         self.start_xz, self.start_heading = list(start_xz), start_heading_deg
-        self.world = lagoon.World(self.scene)
-        self.renderer = lagoon.Renderer(self.scene, world=self.world)
         self.fov = self.scene.to_dict()["camera"].get("fov_deg", 55)
 
     def reset(self):
