@@ -1,6 +1,6 @@
 // The demo at the helm of a vehicle (issue 14): H takes the next vehicle, the arrow keys (or a script's
 // helm.throttle / helm.rudder) steer it, and each changed order goes to the vehicle's track, which its body,
-// wake and sediment follow (render/vehicle_tracks.h).
+// wake and sediment follow (world/vehicle_tracks.h).
 #include <imgui.h>
 
 #include <cmath>

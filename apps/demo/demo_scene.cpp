@@ -37,7 +37,7 @@ Result<void> Demo::rebuild_renderer() {
       safe_dump(scene::scene_to_json(scene_, {}).value("vehicles", nlohmann::ordered_json()));
   const bool keep_tracks = renderer_ && vehicles == vehicles_key_;
   auto renderer = render::OceanRenderer::create(*ctx_, scene_,
-                                                keep_tracks ? renderer_->tracks() : render::VehicleTracks{});
+                                                keep_tracks ? renderer_->tracks() : world::VehicleTracks{});
   if (!renderer) {
     failed_key_ = key;
     return make_error(renderer.error().message);

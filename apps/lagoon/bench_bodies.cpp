@@ -10,8 +10,8 @@
 #include "bench_report.h"
 #include "exit_codes.h"
 #include "ocean/initial_spectrum.h"
-#include "render/floating_objects.h"
 #include "scene_args.h"
+#include "world/floating_objects.h"
 
 namespace lagoon::cli {
 namespace {
@@ -27,7 +27,7 @@ struct BodyTimes {
 // `paced`: each frame starts at its slot of a 60 Hz clock, as in a live loop, so what the physics hands to
 // other threads (the sea's next knot, the wake layers' next step) has the rest of the frame to run; back to
 // back, it competes with the following frames, as in a catch-up to a late time.
-BodyTimes time_bodies(render::FloatingObjects& moving, double t0, int rounds, bool paced) {
+BodyTimes time_bodies(world::FloatingObjects& moving, double t0, int rounds, bool paced) {
   BodyTimes times;
   moving.advance(t0);  // the history up to t0, not measured
   double t = t0;
@@ -74,7 +74,7 @@ int run_bench_bodies(const ParsedArgs& args, int rounds) {
     if (std::string(c.name) == "without_wakes" && !scene->wakes.felt_by_bodies) continue;  // the same run
     scene::Scene s = *scene;
     s.wakes.felt_by_bodies = c.wakes;
-    auto moving = render::FloatingObjects::create(s, s.ocean, spectra);
+    auto moving = world::FloatingObjects::create(s, s.ocean, spectra);
     if (!moving) {
       std::fprintf(stderr, "lagoon bench: %s\n", moving.error().message.c_str());
       return kExitFailure;

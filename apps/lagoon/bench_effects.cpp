@@ -73,8 +73,8 @@ FlightTimes fly(render::OceanRenderer& renderer, scene::Scene scene, const scene
   const scene::Camera lens = scene.camera;
   std::vector<vk::PassTime> timings;
   scene.camera = path.at(0, lens);
-  for (render::CameraSide side :
-       {render::CameraSide::Above, render::CameraSide::Below, render::CameraSide::Waterline}) {
+  for (world::CameraSide side :
+       {world::CameraSide::Above, world::CameraSide::Below, world::CameraSide::Waterline}) {
     renderer.camera_medium().force(side);
     renderer.render(scene, &timings);
   }

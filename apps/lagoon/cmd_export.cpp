@@ -17,12 +17,12 @@
 #include "ocean/gpu/dynamic_layer_gpu.h"
 #include "ocean/gpu/gpu_ocean.h"
 #include "ocean/initial_spectrum.h"
-#include "render/floating_objects.h"
-#include "render/moving_pose.h"
-#include "render/vehicle_wakes.h"
 #include "scene_args.h"
 #include "staged_output.h"
 #include "vk/transfer.h"
+#include "world/floating_objects.h"
+#include "world/moving_pose.h"
+#include "world/vehicle_wakes.h"
 
 namespace lagoon::cli {
 namespace {
@@ -35,7 +35,7 @@ struct CascadeArrays {
 };
 
 // The wakes' part of meta.json: where the layer's window lies and what its arrays hold.
-nlohmann::json wakes_json(const render::VehicleWakes& wakes, glm::ivec2 window) {
+nlohmann::json wakes_json(const world::VehicleWakes& wakes, glm::ivec2 window) {
   const ocean::DynamicLayerParams& p = wakes.params();
   return {
       {"resolution", p.n},
@@ -119,12 +119,12 @@ std::string cascade_prefix(uint32_t c) {
 }
 
 // What the export will put on disk: the arrays exactly, meta.json generously (it lists every frame's time).
-uint64_t export_bytes(const scene::Scene& scene, const render::VehicleWakes& wakes, size_t frames) {
+uint64_t export_bytes(const scene::Scene& scene, const world::VehicleWakes& wakes, size_t frames) {
   const ocean::OceanParams& params = scene.ocean;
   // meta.json: its fixed part, a time per frame, and a pose of each floating object and vehicle per frame
   // (about 800 characters as dump(2) writes one, names aside).
   uint64_t bytes = 16384 + 32 * uint64_t(frames);
-  for (const render::MovingTarget& target : render::moving_targets(scene))
+  for (const world::MovingTarget& target : world::moving_targets(scene))
     bytes += uint64_t(frames) * (1024 + (target.vehicle ? scene.vehicles[target.index].name.size()
                                                         : scene.objects[target.index].name.size()));
   if (!wakes.empty()) bytes += 2 * io::npy_file_bytes(scalar_shape(frames, wakes.params().n)).value();
@@ -189,7 +189,7 @@ struct WakeExport {
 };
 
 Result<WakeExport> open_wake_export(vk::Context& ctx, const StagedOutput& staged,
-                                    const render::VehicleWakes& wakes, const scene::Scene& scene,
+                                    const world::VehicleWakes& wakes, const scene::Scene& scene,
                                     size_t frames) {
   const std::vector<size_t> shape = scalar_shape(frames, wakes.params().n);
   auto height = io::NpyStreamWriter::create(staged.file("wakes_height.npy"), shape);
@@ -207,7 +207,7 @@ Result<WakeExport> open_wake_export(vk::Context& ctx, const StagedOutput& staged
 
 // Steps the layer to time t (in submissions of at most kStepsInFlight steps) and appends its window, in world
 // order, to both arrays.
-Result<void> append_wakes(vk::Context& ctx, const render::VehicleWakes& wakes, WakeExport& w, double t) {
+Result<void> append_wakes(vk::Context& ctx, const world::VehicleWakes& wakes, WakeExport& w, double t) {
   const long long target = wakes.step_at(t);
   do {
     ctx.submit_and_wait([&](VkCommandBuffer cmd) {
@@ -308,7 +308,7 @@ Result<void> commit_export(StagedOutput& staged, std::vector<CascadeStreams>& st
 }
 
 // Steps the GPU ocean frame after frame, streaming every cascade's fields into a staged --out.
-int export_fields(vk::Context& ctx, const scene::Scene& scene, const render::VehicleWakes& wakes,
+int export_fields(vk::Context& ctx, const scene::Scene& scene, const world::VehicleWakes& wakes,
                   const fs::path& out, const ExportOptions& o) {
   // Frames go straight into a staging folder beside the output; it is moved into place only when complete,
   // and removed on any failure or interruption (StagedOutput's destructor), so nothing half-written remains.
@@ -327,10 +327,10 @@ int export_fields(vk::Context& ctx, const scene::Scene& scene, const render::Veh
     wake.emplace(std::move(*w));
   }
   // What floats and the vehicles, simulated on the CPU from time 0 (as in a render of each frame).
-  const std::vector<render::MovingTarget> targets = render::moving_targets(scene);
-  std::unique_ptr<render::FloatingObjects> moving;
+  const std::vector<world::MovingTarget> targets = world::moving_targets(scene);
+  std::unique_ptr<world::FloatingObjects> moving;
   if (!targets.empty()) {
-    auto m = render::FloatingObjects::create(scene, scene.ocean, gpu.spectra());
+    auto m = world::FloatingObjects::create(scene, scene.ocean, gpu.spectra());
     if (!m) return export_failure(m.error().message);
     moving = std::move(*m);
   }
@@ -355,8 +355,8 @@ int export_fields(vk::Context& ctx, const scene::Scene& scene, const render::Veh
     if (moving) {
       moving->advance(t);
       nlohmann::json frame = nlohmann::json::array();
-      for (const render::MovingTarget& target : targets)
-        frame.push_back(render::moving_pose(scene, *moving, target, t));
+      for (const world::MovingTarget& target : targets)
+        frame.push_back(world::moving_pose(scene, *moving, target, t));
       poses.push_back(std::move(frame));
     }
     if (o.frames > 1) std::fprintf(stderr, "\rlagoon export: frame %lld/%lld", f + 1, o.frames);
@@ -390,7 +390,7 @@ int run_export(const ParsedArgs& args) {
   std::error_code ec;
   if (fs::exists(out, ec) && !fs::is_directory(out, ec))  // checked before the GPU work, not after
     return export_failure("--out " + out.string() + " exists and is not a folder");
-  auto wakes = render::VehicleWakes::create(*scene);
+  auto wakes = world::VehicleWakes::create(*scene);
   if (!wakes) return export_failure(wakes.error().message);
   if (auto space = check_space(out, export_bytes(*scene, *wakes, size_t(options->frames))); !space)
     return export_failure(space.error().message);

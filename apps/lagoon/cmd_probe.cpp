@@ -15,10 +15,10 @@
 #include "commands.h"
 #include "ocean/springs.h"
 #include "ocean/wave_query.h"
-#include "render/floating_objects.h"
-#include "render/moving_pose.h"
-#include "render/water_probe.h"
 #include "scene_args.h"
+#include "world/floating_objects.h"
+#include "world/moving_pose.h"
+#include "world/water_probe.h"
 
 namespace lagoon::cli {
 namespace {
@@ -37,12 +37,12 @@ double resolution(double v) {
 }
 
 // The floating object or vehicle called `name`; prints why there is none.
-std::optional<render::MovingTarget> find_target(const scene::Scene& scene, const std::string& name) {
+std::optional<world::MovingTarget> find_target(const scene::Scene& scene, const std::string& name) {
   std::string names;
   const auto list = [&names](const std::string& n) { names += (names.empty() ? "\"" : ", \"") + n + "\""; };
   for (size_t o = 0; o < scene.objects.size(); ++o) {
     if (scene.objects[o].name == name) {
-      if (scene.objects[o].floating.enabled) return render::MovingTarget{false, o};
+      if (scene.objects[o].floating.enabled) return world::MovingTarget{false, o};
       std::fprintf(stderr,
                    "lagoon probe: objects[%zu] \"%s\" does not float; set objects[%zu].floating.enabled to "
                    "true (docs/physics.md) to probe its motion\n",
@@ -52,7 +52,7 @@ std::optional<render::MovingTarget> find_target(const scene::Scene& scene, const
     list(scene.objects[o].name);
   }
   for (size_t v = 0; v < scene.vehicles.size(); ++v) {
-    if (scene.vehicles[v].name == name) return render::MovingTarget{true, v};
+    if (scene.vehicles[v].name == name) return world::MovingTarget{true, v};
     list(scene.vehicles[v].name);
   }
   std::fprintf(stderr, "lagoon probe: no object or vehicle is named \"%s\"; the scene's: %s\n", name.c_str(),
@@ -70,7 +70,7 @@ int probe_object(const ParsedArgs& args, const scene::Scene& scene, double time)
   }
   const auto target = find_target(scene, *args.get("object"));
   if (!target) return kExitFailure;
-  auto moving = render::FloatingObjects::create(scene, scene.ocean, ocean::make_cascade_spectra(scene.ocean));
+  auto moving = world::FloatingObjects::create(scene, scene.ocean, ocean::make_cascade_spectra(scene.ocean));
   if (!moving) {
     std::fprintf(stderr, "lagoon probe: %s\n", moving.error().message.c_str());
     return kExitFailure;
@@ -78,7 +78,7 @@ int probe_object(const ParsedArgs& args, const scene::Scene& scene, double time)
   for (long long f = 0; f < *frames; ++f) {
     const double t = time + double(f) / *fps;
     (*moving)->advance(t);
-    std::printf("%s\n", render::moving_pose(scene, **moving, *target, t).dump().c_str());
+    std::printf("%s\n", world::moving_pose(scene, **moving, *target, t).dump().c_str());
   }
   return kExitOk;
 }
@@ -145,7 +145,7 @@ int run_probe(const ParsedArgs& args) {
     return kExitUsage;
   }
   ocean::WaveQuery query(scene->ocean);
-  auto water = render::water_at_points(*scene, query, *time, points);
+  auto water = world::water_at_points(*scene, query, *time, points);
   if (!water) {
     std::fprintf(stderr, "lagoon probe: %s\n", water.error().message.c_str());
     return kExitFailure;
@@ -158,8 +158,8 @@ int run_probe(const ParsedArgs& args) {
                               {"time_s", *time},
                               {"height_m", s.height},
                               {"wake_height_m", wake},
-                              {"normal", render::json_vec3(s.normal)},
-                              {"velocity_mps", render::json_vec3(s.velocity)},
+                              {"normal", world::json_vec3(s.normal)},
+                              {"velocity_mps", world::json_vec3(s.velocity)},
                               {"rest_position", {s.rest_position.x, s.rest_position.y}},
                               {"error_bound_m", s.error_bound_m},
                               {"converged", s.converged}};

@@ -24,7 +24,7 @@ class Renderer {
  public:
   Renderer(const scene::Scene& scene, const std::optional<std::string>& device, const World* world)
       : scene_(scene) {
-    render::VehicleTracks tracks;
+    world::VehicleTracks tracks;
     if (world) {
       if (world->scene().vehicles.size() != scene_.vehicles.size())
         throw py::value_error("world= steps a scene with " + std::to_string(world->scene().vehicles.size()) +

@@ -1,5 +1,5 @@
 // lagoon.WaveQuery: the water's height, normal and velocity at points, the sea (ocean/wave_query.h) plus the
-// vehicles' wakes (render/water_probe.h): what `lagoon probe` prints, as numpy arrays.
+// vehicles' wakes (world/water_probe.h): what `lagoon probe` prints, as numpy arrays.
 #include <pybind11/numpy.h>
 
 #include <cmath>
@@ -10,8 +10,8 @@
 
 #include "bindings.h"
 #include "ocean/initial_spectrum.h"
-#include "render/water_probe.h"
 #include "scene/scene.h"
+#include "world/water_probe.h"
 
 namespace lagoon::python {
 namespace {
@@ -48,10 +48,10 @@ class WaveQuery {
           std::max(std::abs(at[i].x), std::abs(at[i].y)) > ocean::kWaveQueryMaxCoordinateM)
         throw py::value_error("point " + std::to_string(i) + " is not finite or beyond ±4294967296 m");
     }
-    Result<render::WaterAtPoints> water = render::WaterAtPoints{};
+    Result<world::WaterAtPoints> water = world::WaterAtPoints{};
     {
       py::gil_scoped_release unlocked;
-      water = render::water_at_points(scene_, *query_, time_s, at);
+      water = world::water_at_points(scene_, *query_, time_s, at);
     }
     if (!water) {
       raise_scene_error(water.error().message);

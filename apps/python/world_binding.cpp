@@ -1,5 +1,5 @@
 // lagoon.World: the scene's floating bodies and vehicles stepped on the CPU (no device), as `lagoon probe
-// --object` and `lagoon export` step them (render/floating_objects.h), their poses in the same format; a
+// --object` and `lagoon export` step them (world/floating_objects.h), their poses in the same format; a
 // controller's helm orders and placements go to the vehicles' tracks (physics/vehicle_track.h), which a
 // Renderer built with world= shares, so the frames show the vehicles where the world put them.
 #include <pybind11/numpy.h>
@@ -14,10 +14,10 @@
 
 #include "bindings.h"
 #include "ocean/initial_spectrum.h"
-#include "render/floating_objects.h"
-#include "render/moving_pose.h"
-#include "render/vehicle_tracks.h"
 #include "scene/scene.h"
+#include "world/floating_objects.h"
+#include "world/moving_pose.h"
+#include "world/vehicle_tracks.h"
 #include "world_binding.h"
 
 namespace lagoon::python {
@@ -47,9 +47,9 @@ py::list vec3(glm::dvec3 v) {
 
 }  // namespace
 
-World::World(const scene::Scene& scene) : scene_(scene), targets_(render::moving_targets(scene_)) {
-  auto moving = render::FloatingObjects::create(
-      scene_, scene_.ocean, ocean::make_cascade_spectra(scene_.ocean), render::vehicle_tracks(scene_));
+World::World(const scene::Scene& scene) : scene_(scene), targets_(world::moving_targets(scene_)) {
+  auto moving = world::FloatingObjects::create(
+      scene_, scene_.ocean, ocean::make_cascade_spectra(scene_.ocean), world::vehicle_tracks(scene_));
   if (!moving) raise_scene_error(moving.error().message);
   moving_ = std::move(moving).value();
 }
@@ -64,8 +64,8 @@ void World::advance(double time_s) {
 
 py::list World::poses() const {
   py::list out;
-  for (const render::MovingTarget& target : targets_)
-    out.append(to_python(render::moving_pose(scene_, *moving_, target, time_s_)));
+  for (const world::MovingTarget& target : targets_)
+    out.append(to_python(world::moving_pose(scene_, *moving_, target, time_s_)));
   return out;
 }
 

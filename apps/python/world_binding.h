@@ -6,9 +6,9 @@
 #include <vector>
 
 #include "bindings.h"
-#include "render/floating_objects.h"
-#include "render/moving_pose.h"
 #include "scene/scene.h"
+#include "world/floating_objects.h"
+#include "world/moving_pose.h"
 
 namespace lagoon::python {
 
@@ -29,15 +29,15 @@ class World {
 
   double time_s() const { return time_s_; }
   const scene::Scene& scene() const { return scene_; }
-  const render::VehicleTracks& tracks() const { return moving_->tracks(); }
+  const world::VehicleTracks& tracks() const { return moving_->tracks(); }
 
  private:
   size_t vehicle_index(const py::object& vehicle) const;
   double order_time(std::optional<double> time_s) const;
 
   scene::Scene scene_;
-  std::vector<render::MovingTarget> targets_;
-  std::unique_ptr<render::FloatingObjects> moving_;
+  std::vector<world::MovingTarget> targets_;
+  std::unique_ptr<world::FloatingObjects> moving_;
   double time_s_ = 0;
 };
 

@@ -1,5 +1,5 @@
 // The height of the displaced sea surface above one point, cheaply enough to ask every frame: is the camera
-// above the water or under it (render/camera_medium.h)? WaveQuery answers this and more for any number of
+// above the water or under it (world/camera_medium.h)? WaveQuery answers this and more for any number of
 // points, but first evaluates every field with an FFT per new time (15-30 ms for 3 x 256² on 2 cores). One
 // point needs only the modes that matter: the probe sums Re Σ F(k)e^{ik·x} directly over the modes of the
 // largest amplitude a(k) = |h0(k)| + |h0(-k)| and leaves out the smallest ones. |h̃(k,t)| never exceeds

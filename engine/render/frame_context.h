@@ -3,11 +3,11 @@
 #pragma once
 #include <vulkan/vulkan.h>
 
-#include "render/camera_medium.h"
 #include "scene/scene.h"
 #include "vk/buffer.h"
 #include "vk/gpu_timer.h"
 #include "vk/pipeline.h"
+#include "world/camera_medium.h"
 
 namespace lagoon::render {
 
@@ -26,10 +26,11 @@ struct FrameContext {
   VkExtent2D extent{};
   const scene::Scene& scene;
   FrameSlot& slot;
-  CameraSide camera_side = CameraSide::Above;  // against the displaced surface (render/camera_medium.h)
-  uint32_t light_count = 0;                    // point lights in slot.lights
-  bool caustics = false;                       // the caustics pass makes a map this frame
-  bool submerged_objects = false;              // something other than the procedural floor is under the water
+  world::CameraSide camera_side =
+      world::CameraSide::Above;    // against the displaced surface (world/camera_medium.h)
+  uint32_t light_count = 0;        // point lights in slot.lights
+  bool caustics = false;           // the caustics pass makes a map this frame
+  bool submerged_objects = false;  // something other than the procedural floor is under the water
   vk::BufferRef uniforms() const { return {slot.frame.handle()}; }
   vk::GpuTimer* timer() const { return &slot.timer; }
 };

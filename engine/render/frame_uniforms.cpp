@@ -21,7 +21,8 @@ constexpr double kSunDiscRadiusRad = 0.00465;
 // and for a mesh floor.
 float floor_depth_below(const scene::Scene& scene) {
   if (scene.seafloor.type != scene::SeafloorType::Slope) return 0.0f;
-  return std::max(slope_depth(scene.seafloor, {scene.camera.position.x, scene.camera.position.z}), 0.0f);
+  return std::max(world::slope_depth(scene.seafloor, {scene.camera.position.x, scene.camera.position.z}),
+                  0.0f);
 }
 
 }  // namespace

@@ -9,8 +9,8 @@
 
 namespace lagoon::render {
 
-GroundTruth ground_truth(const OceanRenderer::SurfaceAov& aov, const scene::Scene& scene, CameraSide side,
-                         double surface_y) {
+GroundTruth ground_truth(const OceanRenderer::SurfaceAov& aov, const scene::Scene& scene,
+                         world::CameraSide side, double surface_y) {
   const Pinhole cam = pinhole(scene.camera, aov.width, aov.height);
   const size_t pixels = size_t{aov.width} * aov.height;
   GroundTruth gt{.width = aov.width, .height = aov.height};
@@ -26,8 +26,8 @@ GroundTruth ground_truth(const OceanRenderer::SurfaceAov& aov, const scene::Scen
       const uint32_t what = uint32_t(world.w + 0.5f);
       // Where the pixel's ray starts: in the water when the camera is under it, or, with the lens cutting
       // the surface, when its point on the near plane is below the water there.
-      bool from_water = side == CameraSide::Below;
-      if (side == CameraSide::Waterline) {
+      bool from_water = side == world::CameraSide::Below;
+      if (side == world::CameraSide::Waterline) {
         const glm::dvec3 d = cam.ray(x, y);
         from_water = (cam.position + d * (near / glm::dot(d, cam.forward()))).y < surface_y;
       }
@@ -74,8 +74,8 @@ bool GroundTruth::needs_terms(const std::string& name) {
 GroundTruth frame_ground_truth(OceanRenderer& renderer, const scene::Scene& scene, bool with_terms) {
   const OceanRenderer::SurfaceAov aov = renderer.render_surface_aov(scene, /*with_objects=*/true);
   const VkExtent2D extent{scene.render.width, scene.render.height};
-  const CameraSide side = renderer.camera_side(scene, extent);
-  const double surface_y = side == CameraSide::Waterline
+  const world::CameraSide side = renderer.camera_side(scene, extent);
+  const double surface_y = side == world::CameraSide::Waterline
                                ? renderer.camera_medium().surface_height(
                                      scene.camera.position.x, scene.camera.position.z, scene.time_s)
                                : 0.0;

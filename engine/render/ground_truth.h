@@ -17,9 +17,9 @@
 #include <string>
 #include <vector>
 
-#include "render/camera_medium.h"
 #include "render/ocean_renderer.h"
 #include "scene/scene.h"
+#include "world/camera_medium.h"
 
 namespace lagoon::render {
 
@@ -39,8 +39,8 @@ struct GroundTruth {
 
 // `side`: where the camera was judged to be for the frame; `surface_y`: the water's height above the camera
 // (used when the lens cuts the surface, to tell per pixel on which side its ray starts).
-GroundTruth ground_truth(const OceanRenderer::SurfaceAov& aov, const scene::Scene& scene, CameraSide side,
-                         double surface_y);
+GroundTruth ground_truth(const OceanRenderer::SurfaceAov& aov, const scene::Scene& scene,
+                         world::CameraSide side, double surface_y);
 
 // Fills clean, transmission and backscatter from `terms` (the same frame's).
 void add_underwater_terms(GroundTruth& gt, const OceanRenderer::UnderwaterTerms& terms);

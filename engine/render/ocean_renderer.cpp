@@ -39,9 +39,9 @@ OceanRenderer::OceanRenderer(vk::Context& ctx) : ctx_(ctx), samplers_(Samplers::
 OceanRenderer::~OceanRenderer() = default;
 
 Result<std::unique_ptr<OceanRenderer>> OceanRenderer::create(vk::Context& ctx, const scene::Scene& scene,
-                                                             VehicleTracks tracks) {
+                                                             world::VehicleTracks tracks) {
   std::unique_ptr<OceanRenderer> renderer(new OceanRenderer(ctx));
-  renderer->tracks_ = tracks_or_fresh(scene, std::move(tracks));
+  renderer->tracks_ = world::tracks_or_fresh(scene, std::move(tracks));
   if (auto r = renderer->init(scene); !r) return r.error();
   return renderer;
 }
@@ -64,13 +64,13 @@ Result<void> OceanRenderer::init(const scene::Scene& scene) {
   objects_ = std::move(*objects);
   t_objects.end();
   StageTimer t_world("bodies, wakes, sediment");
-  auto floating = FloatingObjects::create(scene, ocean().params(), ocean().spectra(), tracks_);
+  auto floating = world::FloatingObjects::create(scene, ocean().params(), ocean().spectra(), tracks_);
   if (!floating) return floating.error();
   floating_ = std::move(*floating);
   auto wakes = WakesPass::create(ctx_, scene, tracks_);
   if (!wakes) return wakes.error();
   wakes_ = std::move(*wakes);
-  auto sediment = VehicleSediment::create(scene, tracks_);
+  auto sediment = world::VehicleSediment::create(scene, tracks_);
   if (!sediment) return sediment.error();
   sediment_ = std::move(*sediment);
   t_world.end();
@@ -90,8 +90,8 @@ Result<void> OceanRenderer::init(const scene::Scene& scene) {
                                           kDepthFormat);
   underwater_ =
       std::make_unique<UnderwaterPass>(ctx_, *fields_, luts_, samplers_, kColorFormat, kDepthFormat);
-  camera_medium_ =
-      std::make_unique<CameraMedium>(ocean().params(), ocean().spectra(), double(shading_.bound.vertical_m));
+  camera_medium_ = std::make_unique<world::CameraMedium>(ocean().params(), ocean().spectra(),
+                                                         double(shading_.bound.vertical_m));
   return {};
 }
 
@@ -107,12 +107,12 @@ void OceanRenderer::record_frame(const FrameContext& f, const CausticsWindow& ca
 
   const UnderwaterPass::Inputs below{refraction_->albedo_image(), refraction_->depth_image(),
                                      caustics_->map(), window_->color_image()};
-  if (f.camera_side != CameraSide::Above) {
+  if (f.camera_side != world::CameraSide::Above) {
     vk::use(cmd, {window_->color(), window_->depth()}, Discard, Attachment);
     window_->record(f);
     vk::use(cmd, {window_->color(), window_->depth()}, Attachment, Sampled);
   }
-  if (f.camera_side == CameraSide::Below) {
+  if (f.camera_side == world::CameraSide::Below) {
     vk::use(cmd, {color, depth}, Discard, Attachment);
     underwater_->record(f, below, color, depth);
     vk::use(cmd, {color, depth}, Attachment, Attachment);
@@ -131,7 +131,7 @@ void OceanRenderer::record_frame(const FrameContext& f, const CausticsWindow& ca
       color, depth);
   vk::use(cmd, {color, depth}, Attachment, Attachment);
   sky_->record(f, color, depth);
-  if (f.camera_side != CameraSide::Waterline) return;
+  if (f.camera_side != world::CameraSide::Waterline) return;
 
   vk::use(cmd, {waterline_->below_color(), waterline_->below_depth()}, Discard, Attachment);
   underwater_->record(f, below, waterline_->below_color(), waterline_->below_depth());
@@ -156,7 +156,7 @@ void OceanRenderer::prepare(const scene::Scene& scene) {
   if (bodies.valid()) bodies.get();  // rethrows what the physics threw
 }
 
-CameraSide OceanRenderer::camera_side(const scene::Scene& scene, VkExtent2D extent) {
+world::CameraSide OceanRenderer::camera_side(const scene::Scene& scene, VkExtent2D extent) {
   const float aspect = float(extent.width) / float(extent.height);
   const double lens_m = scene.camera.near_m * std::tan(0.5 * glm::radians(double(scene.camera.fov_deg))) *
                         std::sqrt(1.0 + double(aspect) * aspect);
@@ -166,7 +166,7 @@ CameraSide OceanRenderer::camera_side(const scene::Scene& scene, VkExtent2D exte
 FrameContext OceanRenderer::begin_frame(VkCommandBuffer cmd, const scene::Scene& scene, VkExtent2D extent,
                                         uint32_t slot_index, const CausticsWindow& caustics) {
   FrameSlot& slot = slots_[slot_index % kSlots];
-  const CameraSide side = camera_side(scene, extent);
+  const world::CameraSide side = camera_side(scene, extent);
   place_floating_objects(scene.time_s);
   objects_->set_sky(sky_light(scene.sun));
   wakes_->follow_camera(scene);
@@ -180,7 +180,7 @@ FrameContext OceanRenderer::begin_frame(VkCommandBuffer cmd, const scene::Scene&
   // Under the water the surface is seen through at least as much water as it is far away, and beyond the
   // underwater tables' reach the water lets through less than 1e-3 of any light (optics/underwater.h): the
   // mesh stops there. On lavapipe each triangle's set-up costs ~3 us on one thread; this saves a third.
-  const float mesh_reach = side == CameraSide::Below ? std::min(reach, float(luts_.d_max_m)) : reach;
+  const float mesh_reach = side == world::CameraSide::Below ? std::min(reach, float(luts_.d_max_m)) : reach;
   const SurfaceGrid grid = surface_grid(scene.camera.position, mesh_reach, &cam.view_proj, shading_.bound);
   slot.surface_index_count = uint32_t(grid.indices.size());
   std::memcpy(slot.surface_indices.mapped(), grid.indices.data(), grid.indices.size() * sizeof(uint32_t));
@@ -195,7 +195,7 @@ FrameContext OceanRenderer::begin_frame(VkCommandBuffer cmd, const scene::Scene&
                                                       .view_proj = cam.view_proj,
                                                       .reach_m = reach,
                                                       .light_count = light_count,
-                                                      .under_water = side == CameraSide::Below,
+                                                      .under_water = side == world::CameraSide::Below,
                                                       .caustics = caustics,
                                                       .wakes_window = wakes_->window(),
                                                       .submerged_rect = submerged});
@@ -220,7 +220,7 @@ FrameContext OceanRenderer::begin_frame(VkCommandBuffer cmd, const scene::Scene&
 void OceanRenderer::place_floating_objects(double time_s) {
   if (floating_->empty()) return;
   floating_->advance(time_s);
-  for (const FloatingObjects::Pose& pose : floating_->poses())
+  for (const world::FloatingObjects::Pose& pose : floating_->poses())
     objects_->place(pose.object, pose.model_to_world);
 }
 

@@ -13,8 +13,6 @@
 #include "core/result.h"
 #include "io/png.h"
 #include "ocean/gpu/gpu_ocean.h"
-#include "render/camera_medium.h"
-#include "render/floating_objects.h"
 #include "render/frame_context.h"
 #include "render/frame_uniforms.h"
 #include "render/passes/caustics_pass.h"
@@ -30,13 +28,15 @@
 #include "render/samplers.h"
 #include "render/scene_objects.h"
 #include "render/surface_fields.h"
-#include "render/vehicle_sediment.h"
 #include "render/water_luts.h"
 #include "scene/scene.h"
 #include "vk/buffer.h"
 #include "vk/context.h"
 #include "vk/gpu_timer.h"
 #include "vk/image.h"
+#include "world/camera_medium.h"
+#include "world/floating_objects.h"
+#include "world/vehicle_sediment.h"
 
 namespace lagoon::render {
 
@@ -64,7 +64,7 @@ class OceanRenderer {
   // (model, floor texture, water table) cannot be used. Vulkan failures throw (VK_CHECK). The vehicles follow
   // `tracks` (one per scene vehicle, e.g. the previous renderer's, steered; fresh ones when not given).
   static Result<std::unique_ptr<OceanRenderer>> create(vk::Context& ctx, const scene::Scene& scene,
-                                                       VehicleTracks tracks = {});
+                                                       world::VehicleTracks tracks = {});
   ~OceanRenderer();
 
   // Renders `scene` (same ocean and water as at construction) at scene.render size and time scene.time_s,
@@ -123,15 +123,15 @@ class OceanRenderer {
   const ocean::GpuOcean& ocean() const { return ocean_step_->ocean(); }
   // The vehicles' tracks, shared by their bodies, wakes and sediment: an order given to one (the demo's helm)
   // moves all three from its time on.
-  const VehicleTracks& tracks() const { return tracks_; }
+  const world::VehicleTracks& tracks() const { return tracks_; }
   // The wakes (e.g. for a check of their layer after render()).
   const WakesPass& wakes() const { return *wakes_; }
   // The caustics of the last frame (e.g. for a check of their energy after render()).
   const CausticsPass& caustics() const { return *caustics_; }
   // Where the camera is judged to be (above, below, cutting the surface); tests and tools may force a side.
-  CameraMedium& camera_medium() { return *camera_medium_; }
+  world::CameraMedium& camera_medium() { return *camera_medium_; }
   // The side a frame of `scene` at `extent` is drawn for (its near plane's reach allowed for).
-  CameraSide camera_side(const scene::Scene& scene, VkExtent2D extent);
+  world::CameraSide camera_side(const scene::Scene& scene, VkExtent2D extent);
 
  private:
   explicit OceanRenderer(vk::Context& ctx);
@@ -171,10 +171,10 @@ class OceanRenderer {
   std::unique_ptr<CausticsPass> caustics_;
   std::unique_ptr<WaterlinePass> waterline_;
   std::unique_ptr<ParticlesPass> particles_;
-  std::unique_ptr<CameraMedium> camera_medium_;
-  VehicleTracks tracks_;
-  std::unique_ptr<FloatingObjects> floating_;
-  VehicleSediment sediment_;
+  std::unique_ptr<world::CameraMedium> camera_medium_;
+  world::VehicleTracks tracks_;
+  std::unique_ptr<world::FloatingObjects> floating_;
+  world::VehicleSediment sediment_;
   History history_ = History::Continuous;
   VkExtent2D extent_{};  // of the passes' targets
   std::unique_ptr<OwnTargets> own_;

@@ -11,10 +11,10 @@
 
 #include "render/dfg_table.h"
 #include "render/mesh_material.h"
-#include "render/object_pose.h"
 #include "render/seafloor.h"
 #include "vk/barriers.h"
 #include "vk/transfer.h"
+#include "world/object_pose.h"
 
 namespace lagoon::render {
 namespace {
@@ -73,11 +73,11 @@ Result<std::unique_ptr<SceneObjects>> SceneObjects::load(vk::Context& ctx, const
   for (size_t o = 0; o < scene.objects.size(); ++o) {
     const std::string field = "objects[" + std::to_string(o) + "].file";
     const size_t first = objects->objects_.size();
-    objects->object_world_.push_back(object_transform(scene.objects[o]));
+    objects->object_world_.push_back(world::object_transform(scene.objects[o]));
     const std::optional<size_t> lights_of =
         scene.objects[o].lights_from_gltf ? std::optional(o) : std::nullopt;
-    if (auto r =
-            objects->load_model(scene.objects[o].file, object_transform(scene.objects[o]), field, lights_of);
+    if (auto r = objects->load_model(scene.objects[o].file, world::object_transform(scene.objects[o]), field,
+                                     lights_of);
         !r)
       return r.error();
     objects->object_draws_.push_back({first, objects->objects_.size()});
@@ -88,8 +88,8 @@ Result<std::unique_ptr<SceneObjects>> SceneObjects::load(vk::Context& ctx, const
     const std::string field = "vehicles[" + std::to_string(v) + "].file";
     const size_t first = objects->objects_.size();
     const glm::vec2 start = vehicle.path.waypoints.empty() ? glm::vec2(0.0f) : vehicle.path.waypoints.front();
-    const glm::mat4 at = object_transform(glm::dvec3(start.x, -vehicle.depth_m, start.y),
-                                          glm::dquat(1, 0, 0, 0), vehicle.scale);
+    const glm::mat4 at = world::object_transform(glm::dvec3(start.x, -vehicle.depth_m, start.y),
+                                                 glm::dquat(1, 0, 0, 0), vehicle.scale);
     const size_t object = scene.objects.size() + v;
     objects->object_world_.push_back(at);
     const std::optional<size_t> lights_of = vehicle.lights_from_gltf ? std::optional(object) : std::nullopt;

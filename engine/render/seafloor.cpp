@@ -6,12 +6,6 @@
 
 namespace lagoon::render {
 
-float slope_depth(const scene::Seafloor& floor, glm::vec2 xz) {
-  const glm::vec2 axis = floor.far - floor.near;
-  const float t = std::clamp(glm::dot(xz - floor.near, axis) / glm::dot(axis, axis), 0.0f, 1.0f);
-  return floor.depth_near_m + (floor.depth_far_m - floor.depth_near_m) * t;
-}
-
 FloorMesh build_slope_floor(const scene::Seafloor& floor, glm::vec2 centre, uint32_t cells) {
   FloorMesh mesh;
   const uint32_t n = cells + 1;
@@ -20,7 +14,7 @@ FloorMesh build_slope_floor(const scene::Seafloor& floor, glm::vec2 centre, uint
     const float u = 2.0f * float(i) / float(cells) - 1.0f, v = 2.0f * float(j) / float(cells) - 1.0f;
     const glm::vec2 xz =
         centre + floor.extent_m * glm::vec2(std::copysign(u * u, u), std::copysign(v * v, v));
-    return glm::vec3(xz.x, -slope_depth(floor, xz), xz.y);
+    return glm::vec3(xz.x, -world::slope_depth(floor, xz), xz.y);
   };
   for (uint32_t j = 0; j < n; ++j)
     for (uint32_t i = 0; i < n; ++i) {

@@ -5,11 +5,9 @@
 
 #include "render/gpu_mesh.h"
 #include "scene/scene.h"
+#include "world/slope_depth.h"
 
 namespace lagoon::render {
-
-// Depth below the mean water level (m, > 0 under water) of the slope floor at (x, z).
-float slope_depth(const scene::Seafloor& floor, glm::vec2 xz);
 
 struct FloorMesh {
   std::vector<MeshVertex> vertices;

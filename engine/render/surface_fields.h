@@ -3,7 +3,7 @@
 // repeated) and the wakes' dynamic layer (passes/wakes_pass.h). Shared by every pass that draws or follows
 // the surface (from above, from below, its AOVs, the waterline, the caustics), so none of them can leave the
 // wakes out. Also whether the water carries sediment clouds (the frame's sediment buffer,
-// render/vehicle_sediment.h), which the shaders that look through the water draw.
+// world/vehicle_sediment.h), which the shaders that look through the water draw.
 #pragma once
 #include <vector>
 

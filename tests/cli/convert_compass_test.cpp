@@ -12,10 +12,10 @@
 
 #include "core/compass.h"
 #include "render/camera.h"
-#include "render/object_pose.h"
 #include "scene/scene.h"
 #include "support/run_process.h"
 #include "support/temp_dir.h"
+#include "world/object_pose.h"
 
 namespace lagoon::test {
 namespace {
@@ -89,7 +89,7 @@ TEST(ConvertCompass, EveryAngleNamesTheSameDirectionAndTheLayoutStays) {
   const glm::dquat old = glm::angleAxis(60 * kDeg, glm::dvec3(0, 1, 0)) *
                          glm::angleAxis(-10 * kDeg, glm::dvec3(1, 0, 0)) *
                          glm::angleAxis(5 * kDeg, glm::dvec3(0, 0, 1));
-  const glm::dquat now = render::object_orientation(s.objects[0]);
+  const glm::dquat now = world::object_orientation(s.objects[0]);
   for (const glm::dvec3 axis : {glm::dvec3(1, 0, 0), glm::dvec3(0, 1, 0), glm::dvec3(0, 0, 1)})
     EXPECT_LT(glm::distance(now * axis, old * axis), 1e-6) << "object axis " << axis.x << axis.y << axis.z;
   // The unturned one keeps yaw 0, which now faces north: the script said so above.

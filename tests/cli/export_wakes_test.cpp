@@ -1,6 +1,6 @@
 // lagoon export with vehicles: the wakes' layer and foam trails (wakes_height.npy, wakes_foam.npy) over the
 // window meta.json names, against the CPU reference layer (compute/ocean/dynamic_layer.h, double precision)
-// run here on the same hulls (render/vehicle_wakes.h) and window; and the poses of what moves, per frame, as
+// run here on the same hulls (world/vehicle_wakes.h) and window; and the poses of what moves, per frame, as
 // lagoon probe --object prints them.
 #include <gtest/gtest.h>
 
@@ -12,10 +12,10 @@
 
 #include "io/npy.h"
 #include "ocean/dynamic_layer.h"
-#include "render/vehicle_wakes.h"
 #include "scene/scene.h"
 #include "support/run_process.h"
 #include "support/temp_dir.h"
+#include "world/vehicle_wakes.h"
 
 namespace lagoon::test {
 namespace {
@@ -45,7 +45,7 @@ TEST(ExportWakes, TheLayerAndItsFoamMatchTheCpuReference) {
   // The same layer on the CPU: the scene's hulls, the window meta.json gives, the same steps.
   auto scene = scene::load_scene(harbour, overrides);
   ASSERT_TRUE(scene) << scene.error().message;
-  auto wakes = render::VehicleWakes::create(*scene);
+  auto wakes = world::VehicleWakes::create(*scene);
   ASSERT_TRUE(wakes && !wakes->empty());
   ocean::DynamicLayerCpu cpu(wakes->params(), 2);
   const double cell = meta["wakes"]["cell_size_m"];

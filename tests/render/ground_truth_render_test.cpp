@@ -66,11 +66,11 @@ class GroundTruthRender : public GpuTest {
  protected:
   TempDir dir_{"lagoon_ground_truth_render"};
 
-  render::GroundTruth ground_truth(const scene::Scene& s, render::CameraSide* side_out = nullptr) {
+  render::GroundTruth ground_truth(const scene::Scene& s, world::CameraSide* side_out = nullptr) {
     auto renderer = render::OceanRenderer::create(ctx(), s);
     EXPECT_TRUE(renderer) << renderer.error().message;
     const auto aov = (*renderer)->render_surface_aov(s, true);
-    const render::CameraSide side = (*renderer)->camera_side(s, {s.render.width, s.render.height});
+    const world::CameraSide side = (*renderer)->camera_side(s, {s.render.width, s.render.height});
     if (side_out) *side_out = side;
     const double surface_y =
         (*renderer)->camera_medium().surface_height(s.camera.position.x, s.camera.position.z, s.time_s);
@@ -134,22 +134,22 @@ TEST_F(GroundTruthRender, TheWaterMaskFollowsTheSideOfTheSurfaceTheCameraIsOn) {
   struct Case {
     const char* scene;
     std::vector<std::string> overrides;
-    render::CameraSide side;
+    world::CameraSide side;
     std::set<float> allowed, required;
   } cases[] = {
-      {"harbour", {"wakes.enabled=false"}, render::CameraSide::Above, {0, 1}, {0, 1}},
+      {"harbour", {"wakes.enabled=false"}, world::CameraSide::Above, {0, 1}, {0, 1}},
       {"harbour",
        {"camera.position=[0,-3,0]", "camera.look_at=[4,-3,12]", "wakes.enabled=false"},
-       render::CameraSide::Below,
+       world::CameraSide::Below,
        {1, 2},
        {1, 2}},
-      {"waterline", {}, render::CameraSide::Waterline, {0, 1, 2}, {0, 1, 2}},
+      {"waterline", {}, world::CameraSide::Waterline, {0, 1, 2}, {0, 1, 2}},
   };
   for (Case& c : cases) {
     c.overrides.insert(c.overrides.end(), {"render.width=96", "render.height=54"});
     auto s = scene::load_scene(std::string(LAGOON_SOURCE_DIR) + "/scenes/" + c.scene + ".json", c.overrides);
     ASSERT_TRUE(s) << s.error().message;
-    render::CameraSide side;
+    world::CameraSide side;
     const render::GroundTruth gt = ground_truth(*s, &side);
     ASSERT_EQ(side, c.side) << c.scene;
     std::set<float> seen(gt.water_mask.begin(), gt.water_mask.end());
@@ -161,7 +161,7 @@ TEST_F(GroundTruthRender, TheWaterMaskFollowsTheSideOfTheSurfaceTheCameraIsOn) {
       ASSERT_TRUE(std::isfinite(gt.depth[i])) << c.scene;
       ASSERT_EQ(gt.object_id[i], 0.0f) << c.scene;
     }
-    if (c.side == render::CameraSide::Waterline) {  // the lens cuts the surface: air above, water below
+    if (c.side == world::CameraSide::Waterline) {  // the lens cuts the surface: air above, water below
       EXPECT_EQ(gt.water_mask[gt.width / 2], 0.0f);
       EXPECT_EQ(gt.water_mask[gt.water_mask.size() - gt.width / 2], 2.0f);
     }
@@ -181,7 +181,7 @@ TEST_F(GroundTruthRender, UnderTheWaterThePictureIsCleanTimesTransmissionPlusBac
   ASSERT_TRUE(renderer) << renderer.error().message;
   const io::Image8 image = (*renderer)->render(*s);
   render::GroundTruth gt =
-      render::ground_truth((*renderer)->render_surface_aov(*s, true), *s, render::CameraSide::Below, 0.0);
+      render::ground_truth((*renderer)->render_surface_aov(*s, true), *s, world::CameraSide::Below, 0.0);
   render::add_underwater_terms(gt, (*renderer)->render_underwater_terms(*s));
   optics::ToneMapParams tone;
   tone.world_adaptation_luminance = s->render.tone_map_adaptation;

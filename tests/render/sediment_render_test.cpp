@@ -13,8 +13,8 @@
 #include "physics/sediment.h"
 #include "render/camera.h"
 #include "render/ocean_renderer.h"
-#include "render/vehicle_sediment.h"
 #include "support/vk_fixture.h"
+#include "world/vehicle_sediment.h"
 
 namespace lagoon::test {
 namespace {
@@ -84,7 +84,7 @@ TEST_F(SedimentRender, UnderTheWaterTheCloudsTransmitExpMinusTheirOpticalDepth) 
   black.push_back("sediment.colour=[0,0,0]");
   clear.push_back("sediment.enabled=false");
   const scene::Scene with = stirred_bay(black), without = stirred_bay(clear);
-  auto clouds = render::VehicleSediment::create(with);
+  auto clouds = world::VehicleSediment::create(with);
   ASSERT_TRUE(clouds) << clouds.error().message;
   const std::vector<physics::SedimentPuff> puffs = clouds->puffs(with.time_s);
   ASSERT_GE(puffs.size(), 20u);  // one a second, none settled yet
@@ -122,7 +122,7 @@ TEST_F(SedimentRender, GrainsAreDrawnWhereTheCloudsAre) {
   std::vector<std::string> grains = view, none = view;
   grains.push_back("sediment.grains_per_g=10");
   const scene::Scene with = stirred_bay(grains), without = stirred_bay(none);
-  auto clouds = render::VehicleSediment::create(with);
+  auto clouds = world::VehicleSediment::create(with);
   ASSERT_TRUE(clouds) << clouds.error().message;
   const std::vector<physics::SedimentPuff> puffs = clouds->puffs(with.time_s);
   auto a = render::OceanRenderer::create(ctx(), with);
@@ -155,7 +155,7 @@ TEST_F(SedimentRender, FromAboveTheWaterOverTheCloudsChangesColourAndNowhereElse
   black.push_back("sediment.colour=[0,0,0]");
   clear.push_back("sediment.enabled=false");
   const scene::Scene with = stirred_bay(white), dark = stirred_bay(black), without = stirred_bay(clear);
-  auto clouds = render::VehicleSediment::create(with);
+  auto clouds = world::VehicleSediment::create(with);
   ASSERT_TRUE(clouds);
   const std::vector<physics::SedimentPuff> puffs = clouds->puffs(with.time_s);
   auto a = render::OceanRenderer::create(ctx(), with);
@@ -209,7 +209,7 @@ TEST(SedimentScene, TheHarbourAuvStirsTheFloorAndRaisedItDoesNot) {
     const std::vector<std::string> overrides{std::string("vehicles[1].depth_m=") + depth};
     auto s = scene::load_scene(harbour, overrides);
     ASSERT_TRUE(s) << s.error().message;
-    auto clouds = render::VehicleSediment::create(*s);
+    auto clouds = world::VehicleSediment::create(*s);
     ASSERT_TRUE(clouds) << clouds.error().message;
     ASSERT_FALSE(clouds->empty());
     EXPECT_EQ(clouds->cloud().released_g(60) > 0, stirs) << "depth " << depth;
@@ -223,7 +223,7 @@ TEST(SedimentScene, TheHarbourAuvStirsTheFloorAndRaisedItDoesNot) {
   for (const char* off : {"sediment.enabled=false", "seafloor.type=none"}) {
     auto s = scene::load_scene(harbour, std::vector<std::string>{off});
     ASSERT_TRUE(s);
-    auto clouds = render::VehicleSediment::create(*s);
+    auto clouds = world::VehicleSediment::create(*s);
     ASSERT_TRUE(clouds);
     EXPECT_TRUE(clouds->empty()) << off;
   }

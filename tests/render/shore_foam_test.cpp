@@ -90,7 +90,7 @@ TEST_F(ShoreFoam, TheBandCoversWaterShallowerThanTheWavesBreakIn) {
                                               1.0 - (y + 0.5) / (kFoamHeight / 2.0), 1.0, 1.0);
       const glm::dvec3 dir = glm::normalize(glm::dvec3(far) / far.w - eye);
       const glm::dvec3 at = eye + dir * (eye.y / -dir.y);
-      pixels.push_back({x, y, double(render::slope_depth(on.seafloor, glm::vec2(at.x, at.z)))});
+      pixels.push_back({x, y, double(world::slope_depth(on.seafloor, glm::vec2(at.x, at.z)))});
     }
   // The foam's own brightness: where the water is a few centimetres deep the band is solid.
   double white = 0;

@@ -153,7 +153,7 @@ TEST_F(SurfaceNormal, TheDatasetsNormalAovAgreesWithWaveQuery) {
   auto renderer = render::OceanRenderer::create(ctx(), scene_);
   ASSERT_TRUE(renderer) << renderer.error().message;
   const render::GroundTruth gt = render::ground_truth((*renderer)->render_surface_aov(scene_, true), scene_,
-                                                      render::CameraSide::Above, 0.0);
+                                                      world::CameraSide::Above, 0.0);
   const render::Pinhole cam = render::pinhole(scene_.camera, gt.width, gt.height);
   render::OceanRenderer::SurfaceAov rebuilt{.width = gt.width, .height = gt.height};
   for (uint32_t y = 0; y < gt.height; ++y)

@@ -16,11 +16,11 @@
 #include "optics/colour.h"
 #include "optics/underwater.h"
 #include "render/camera.h"
-#include "render/camera_medium.h"
 #include "render/ocean_renderer.h"
 #include "render/sky_light.h"
 #include "support/shipped_scene.h"
 #include "support/vk_fixture.h"
+#include "world/camera_medium.h"
 
 namespace lagoon::test {
 namespace {
@@ -35,7 +35,7 @@ TEST(CameraMedium, AskTheWavesNotTheMeanLevel) {
     for (double z = 0; z < 60 && height < 0.3; z += 0.5)
       if (const double h = query.sample(s.time_s, x, z).height; h > height) height = h, crest = {x, z};
   ASSERT_GT(height, 0.3);
-  render::CameraMedium medium(s.ocean, ocean::make_cascade_spectra(s.ocean), 20.0);
+  world::CameraMedium medium(s.ocean, ocean::make_cascade_spectra(s.ocean), 20.0);
   const float x = float(crest.x), z = float(crest.y);
   // Above the mean level but inside the crest: under the water, which y < 0 would get wrong.
   EXPECT_TRUE(medium.under_water({x, float(height - 0.05), z}, s.time_s));
@@ -401,9 +401,9 @@ TEST_F(Underwater, TheWaterlineFollowsTheSurfaceAcrossTheLens) {
   EXPECT_TRUE(std::any_of(timings.begin(), timings.end(), [](const vk::PassTime& t) {
     return t.name == "waterline";
   })) << "the camera was not judged to be at the waterline";
-  (*renderer)->camera_medium().force(render::CameraSide::Above);
+  (*renderer)->camera_medium().force(world::CameraSide::Above);
   const io::Image8 above = (*renderer)->render(s);
-  (*renderer)->camera_medium().force(render::CameraSide::Below);
+  (*renderer)->camera_medium().force(world::CameraSide::Below);
   const io::Image8 below = (*renderer)->render(s);
 
   const render::CameraMatrices cam = render::camera_matrices(s.camera, float(width) / float(height));

@@ -1,8 +1,8 @@
-// Floating objects in scenes (objects[].floating; engine/render/floating_objects.h): the shipped buoy rides
+// Floating objects in scenes (objects[].floating; engine/world/floating_objects.h): the shipped buoy rides
 // the default scene's sea, a frame's time gives the same poses however it is reached, a mesh that
 // encloses nothing is refused with the field named, and a buoy too dense to float rests on the harbour's
 // floor (issue 33).
-#include "render/floating_objects.h"
+#include "world/floating_objects.h"
 
 #include <gtest/gtest.h>
 
@@ -12,13 +12,13 @@
 #include <limits>
 
 #include "ocean/wave_query.h"
-#include "render/floor_height.h"
-#include "render/vehicle_sediment.h"
-#include "render/vehicle_tracks.h"
-#include "render/vehicle_wakes.h"
 #include "support/gltf_quads.h"
 #include "support/shipped_scene.h"
 #include "support/temp_dir.h"
+#include "world/floor_height.h"
+#include "world/vehicle_sediment.h"
+#include "world/vehicle_tracks.h"
+#include "world/vehicle_wakes.h"
 
 namespace lagoon::test {
 namespace {
@@ -30,7 +30,7 @@ const std::string kFloatingBuoy =
 TEST(FloatingObjects, TheBuoyRidesTheScenesSea) {
   const scene::Scene s = shipped_scene("default", {kFloatingBuoy});
   const auto spectra = ocean::make_cascade_spectra(s.ocean);
-  auto floating = render::FloatingObjects::create(s, s.ocean, spectra);
+  auto floating = world::FloatingObjects::create(s, s.ocean, spectra);
   ASSERT_TRUE(floating) << floating.error().message;
   ASSERT_FALSE((*floating)->empty());
   ocean::WaveQuery query(s.ocean, spectra);
@@ -67,16 +67,16 @@ TEST(FloatingObjects, TheBuoyRidesTheScenesSea) {
 }
 
 // The demo's helm orders a vehicle's track; its body, its wake and the sediment it stirs all follow the
-// order, because they share the track (render/vehicle_tracks.h).
+// order, because they share the track (world/vehicle_tracks.h).
 TEST(FloatingObjects, ASteeredVehiclesBodyWakeAndSedimentFollowItsTrack) {
   const scene::Scene s = shipped_scene("harbour", {"sediment.current_mps=[0,0]"});
-  render::VehicleTracks tracks = render::vehicle_tracks(s);
+  world::VehicleTracks tracks = world::vehicle_tracks(s);
   ASSERT_EQ(tracks.size(), 2u);  // the boat, the AUV
   tracks[0]->order(2.0, {8.0, -0.3});
   tracks[1]->order(2.0, {1.5, 0.4});
-  auto floating = render::FloatingObjects::create(s, s.ocean, ocean::make_cascade_spectra(s.ocean), tracks);
-  auto wakes = render::VehicleWakes::create(s, tracks);
-  auto sediment = render::VehicleSediment::create(s, tracks);
+  auto floating = world::FloatingObjects::create(s, s.ocean, ocean::make_cascade_spectra(s.ocean), tracks);
+  auto wakes = world::VehicleWakes::create(s, tracks);
+  auto sediment = world::VehicleSediment::create(s, tracks);
   ASSERT_TRUE(floating && wakes && sediment);
   ASSERT_FALSE(sediment->empty());
   const double t = 9.0;
@@ -99,14 +99,14 @@ TEST(FloatingObjects, ASteeredVehiclesBodyWakeAndSedimentFollowItsTrack) {
   }
   EXPECT_GT(steered, 3) << "clouds released after the order";
   // And the fresh path is somewhere else by then.
-  EXPECT_GT(glm::distance(render::vehicle_tracks(s)[1]->at(t).position, tracks[1]->at(t).position), 1.0);
+  EXPECT_GT(glm::distance(world::vehicle_tracks(s)[1]->at(t).position, tracks[1]->at(t).position), 1.0);
 }
 
 TEST(FloatingObjects, AnEarlierTimeIsSimulatedAgainFromZero) {
   const scene::Scene s = shipped_scene("default", {kFloatingBuoy});
   const auto spectra = ocean::make_cascade_spectra(s.ocean);
-  auto a = render::FloatingObjects::create(s, s.ocean, spectra);
-  auto b = render::FloatingObjects::create(s, s.ocean, spectra);
+  auto a = world::FloatingObjects::create(s, s.ocean, spectra);
+  auto b = world::FloatingObjects::create(s, s.ocean, spectra);
   ASSERT_TRUE(a && b);
   (*a)->advance(3.0);
   (*a)->advance(1.5);  // back in time
@@ -123,9 +123,9 @@ TEST(FloatingObjects, ABuoyTooDenseToFloatRestsOnTheHarbourFloor) {
       shipped_scene("harbour", {R"(objects=[{"file":"assets/buoy.gltf","position":[2,0,12],)"
                                 R"("floating":{"enabled":true,"density_kg_m3":20000}}])",
                                 "vehicles=[]"});
-  auto floating = render::FloatingObjects::create(s, s.ocean, ocean::make_cascade_spectra(s.ocean));
+  auto floating = world::FloatingObjects::create(s, s.ocean, ocean::make_cascade_spectra(s.ocean));
   ASSERT_TRUE(floating) << floating.error().message;
-  auto floor = render::floor_height(s);
+  auto floor = world::floor_height(s);
   ASSERT_TRUE(floor);
   (*floating)->advance(60.0);
   const physics::FloatingBody* body = (*floating)->body(0);
@@ -147,7 +147,7 @@ TEST(FloatingObjects, ABuoyTooDenseToFloatRestsOnTheHarbourFloor) {
 // square laid flat 7 m down; nothing beyond it), and with none the sea's depth.
 TEST(FloatingObjects, TheFloorIsKnownOnTheCpuForEveryKindOfFloor) {
   scene::Scene s = shipped_scene("harbour", {});
-  auto slope = render::floor_height(s);
+  auto slope = world::floor_height(s);
   ASSERT_TRUE(slope);
   EXPECT_NEAR((*slope)(0.0, -30.0), -0.8, 1e-6);
   EXPECT_NEAR((*slope)(5.0, 200.0), -30.0, 1e-5);
@@ -158,14 +158,14 @@ TEST(FloatingObjects, TheFloorIsKnownOnTheCpuForEveryKindOfFloor) {
                                     .rotation = {-0.70710678, 0, 0, 0.70710678}}});
   s.seafloor.type = scene::SeafloorType::Gltf;
   s.seafloor.file = (dir / "floor.gltf").string();
-  auto mesh = render::floor_height(s);
+  auto mesh = world::floor_height(s);
   ASSERT_TRUE(mesh) << mesh.error().message;
   EXPECT_NEAR((*mesh)(0.5, 1.5), -7.0, 1e-5);
   EXPECT_NEAR((*mesh)(-0.9, -1.9), -7.0, 1e-5);
   EXPECT_EQ((*mesh)(3.5, 0.0), -std::numeric_limits<double>::infinity());
 
   s.seafloor.type = scene::SeafloorType::None;
-  auto none = render::floor_height(s);
+  auto none = world::floor_height(s);
   ASSERT_TRUE(none);
   EXPECT_EQ((*none)(3.0, 4.0), -s.ocean.depth_m);
 }
@@ -184,7 +184,7 @@ TEST(FloatingObjects, AGltfFloorIsStirredAsTheSlopeIs) {
                         .rotation = {-0.70710678, 0, 0, 0.70710678},
                         .half = 100}});
     s.seafloor.file = file;
-    auto sediment = render::VehicleSediment::create(s);
+    auto sediment = world::VehicleSediment::create(s);
     EXPECT_TRUE(sediment) << sediment.error().message;
     return sediment ? sediment->puffs(10.0) : std::vector<physics::SedimentPuff>{};
   };
@@ -209,7 +209,7 @@ TEST(FloatingObjects, AMeshThatEnclosesNothingIsRefusedNamingTheField) {
   scene::Scene s = shipped_scene("default", {});
   s.objects = {scene::Object{.file = (dir / "sheet.gltf").string()}};
   s.objects[0].floating.enabled = true;
-  auto floating = render::FloatingObjects::create(s, s.ocean, ocean::make_cascade_spectra(s.ocean));
+  auto floating = world::FloatingObjects::create(s, s.ocean, ocean::make_cascade_spectra(s.ocean));
   ASSERT_FALSE(floating);
   EXPECT_NE(floating.error().message.find("objects[0].floating"), std::string::npos)
       << floating.error().message;

@@ -1,7 +1,7 @@
-// The wakes under the hulls (render/wake_heights.h): the bodies' coarse CPU layer holds the picture's layer
+// The wakes under the hulls (world/wake_heights.h): the bodies' coarse CPU layer holds the picture's layer
 // without its shortest waves, the layers add up per vehicle, a box rides a wake, and a floating object feels
 // a passing boat only once its wake has come.
-#include "render/wake_heights.h"
+#include "world/wake_heights.h"
 
 #include <gtest/gtest.h>
 
@@ -12,9 +12,9 @@
 
 #include "fft/cpu_fft.h"
 #include "physics/floating_body.h"
-#include "render/floating_objects.h"
 #include "support/box_mesh.h"
 #include "support/shipped_scene.h"
+#include "world/floating_objects.h"
 
 namespace lagoon::test {
 namespace {
@@ -25,15 +25,15 @@ const std::string kBoat =
 const std::string kCrossing =
     R"({"name":"crossing","file":"assets/boat.gltf","path":{"waypoints":[[10,-40],[10,60]],"speed_mps":4}})";
 
-render::VehicleWakes wakes_of(const scene::Scene& s) {
-  auto w = render::VehicleWakes::create(s);
+world::VehicleWakes wakes_of(const scene::Scene& s) {
+  auto w = world::VehicleWakes::create(s);
   EXPECT_TRUE(w) << w.error().message;
-  return w ? *w : render::VehicleWakes{};
+  return w ? *w : world::VehicleWakes{};
 }
 
 TEST(WakeHeights, TheBodiesLayerIsThePicturesLayerWithoutItsShortestWaves) {
   const scene::Scene s = shipped_scene("default", {"vehicles=[" + kBoat + "]"});
-  const render::VehicleWakes wakes = wakes_of(s);
+  const world::VehicleWakes wakes = wakes_of(s);
   ASSERT_FALSE(wakes.empty());
   // The picture's layer: 512 cells of 0.25 m, the window centred on the origin as the bodies' is.
   const ocean::DynamicLayerParams fine = wakes.params();
@@ -45,7 +45,7 @@ TEST(WakeHeights, TheBodiesLayerIsThePicturesLayerWithoutItsShortestWaves) {
     const auto sources = wakes.sources(k * wakes.step_s());
     picture.step(wakes.step_s(), sources);
   }
-  render::WakeHeights bodies(wakes, 128);
+  world::WakeHeights bodies(wakes, 128);
   bodies.advance(steps * wakes.step_s(), glm::dvec2(0.0));
   ASSERT_DOUBLE_EQ(bodies.params().cell_m, 1.0);
 
@@ -81,9 +81,9 @@ TEST(WakeHeights, AVehicleFeelsEveryWakeButItsOwn) {
   const scene::Scene both = shipped_scene("default", {"vehicles=[" + kBoat + "," + kCrossing + "]"});
   const scene::Scene first = shipped_scene("default", {"vehicles=[" + kBoat + "]"});
   const scene::Scene second = shipped_scene("default", {"vehicles=[" + kCrossing + "]"});
-  render::WakeHeights all(wakes_of(both), 64), one(wakes_of(first), 64), two(wakes_of(second), 64);
+  world::WakeHeights all(wakes_of(both), 64), one(wakes_of(first), 64), two(wakes_of(second), 64);
   const double t = 7.35;  // between two steps
-  for (render::WakeHeights* w : {&all, &one, &two}) w->advance(t, glm::dvec2(5, 5));
+  for (world::WakeHeights* w : {&all, &one, &two}) w->advance(t, glm::dvec2(5, 5));
   double largest = 0;
   for (double x = -40; x <= 40; x += 3.7)
     for (double z = -40; z <= 40; z += 4.1) {
@@ -100,7 +100,7 @@ TEST(WakeHeights, AVehicleFeelsEveryWakeButItsOwn) {
 
 TEST(WakeHeights, BetweenStepsTheHeightFollowsItsRate) {
   const scene::Scene s = shipped_scene("default", {"vehicles=[" + kBoat + "]"});
-  render::WakeHeights w(wakes_of(s), 64);
+  world::WakeHeights w(wakes_of(s), 64);
   // Across a step boundary (t = 6.0) the interpolated height is smooth and its rate is its derivative.
   const glm::dvec2 p(4, -14);
   const double e = 1e-4;
@@ -120,20 +120,20 @@ TEST(WakeHeights, ACellLookedUpBeforeAnAdvanceAnswersAsAFreshLayerAfterIt) {
   // step and across steps) must answer as a fresh layer advanced straight to the last time, everywhere,
   // and no height may exceed highest(), the bound the hulls' culling trusts.
   const scene::Scene s = shipped_scene("default", {"vehicles=[" + kBoat + "," + kCrossing + "]"});
-  render::WakeHeights used(wakes_of(s), 64), fresh(wakes_of(s), 64);
+  world::WakeHeights used(wakes_of(s), 64), fresh(wakes_of(s), 64);
   std::vector<glm::dvec2> at;
   for (double x = -40; x <= 40; x += 2.7)
     for (double z = -40; z <= 40; z += 3.1) at.push_back({x, z});
   for (double t = 4.0; t < 6.02; t += 1.0 / 120.0) {
     used.advance(t, glm::dvec2(5, 5));
     for (size_t i = 0; i < at.size(); i += 7)
-      used.height(at[i], i % 3 == 0 ? 0 : render::WakeHeights::kNoVehicle);
+      used.height(at[i], i % 3 == 0 ? 0 : world::WakeHeights::kNoVehicle);
   }
   const double t = 6.02;
   used.advance(t, glm::dvec2(5, 5));
   fresh.advance(t, glm::dvec2(5, 5));
   double largest = 0;
-  for (size_t skip : {render::WakeHeights::kNoVehicle, size_t{0}, size_t{1}})
+  for (size_t skip : {world::WakeHeights::kNoVehicle, size_t{0}, size_t{1}})
     for (const glm::dvec2& p : at) {
       // The same arithmetic on the same states: equal to the bit.
       ASSERT_EQ(used.height(p, skip), fresh.height(p, skip)) << p.x << ", " << p.y << " skipping " << skip;
@@ -149,7 +149,7 @@ TEST(WakeHeights, ASmallBoxRidesAPassingWake) {
   // heaves with the wake under it (its resonance, ω0 = sqrt(g / draught) = 14 rad/s, is well above the wake's
   // 2-5 rad/s, so it follows the surface to within (ω/ω0)² ~ 10 %).
   const scene::Scene s = shipped_scene("default", {"vehicles=[" + kBoat + "]"});
-  render::WakeHeights w(wakes_of(s), 128);
+  world::WakeHeights w(wakes_of(s), 128);
   const physics::TriangleMesh hull = box(glm::dvec3(0.25, 0.05, 0.25));
   physics::FloatingBody body(hull, physics::solid_mass_properties(hull, 500.0), {.linear = 1.0}, {});
   body.place(glm::dvec3(10, 0, 4), glm::dquat(1, 0, 0, 0));
@@ -186,7 +186,7 @@ TEST(WakeHeights, AFloatingBuoyFeelsTheBoatOnlyOnceItsWakeArrives) {
     const scene::Scene s = shipped_scene(
         "default",
         {buoy, "vehicles=[" + kBoat + "]", std::string("wakes.felt_by_bodies=") + (felt ? "true" : "false")});
-    auto floating = render::FloatingObjects::create(s, s.ocean, ocean::make_cascade_spectra(s.ocean));
+    auto floating = world::FloatingObjects::create(s, s.ocean, ocean::make_cascade_spectra(s.ocean));
     EXPECT_TRUE(floating) << floating.error().message;
     std::vector<double> y;
     for (int i = 0; i <= 80; ++i) {

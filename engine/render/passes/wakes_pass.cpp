@@ -16,8 +16,8 @@ constexpr long long kStepsPerFrame = 8;
 }  // namespace
 
 Result<std::unique_ptr<WakesPass>> WakesPass::create(vk::Context& ctx, const scene::Scene& scene,
-                                                     VehicleTracks tracks) {
-  auto hulls = VehicleWakes::create(scene, std::move(tracks));
+                                                     world::VehicleTracks tracks) {
+  auto hulls = world::VehicleWakes::create(scene, std::move(tracks));
   if (!hulls) return hulls.error();
   std::unique_ptr<WakesPass> pass(new WakesPass(std::move(*hulls)));
   pass->idle_ = vk::Image::create(ctx, {.format = VK_FORMAT_R32G32B32A32_SFLOAT,

@@ -1,6 +1,6 @@
 // The wakes (issue 14, docs/physics.md "Wakes"): the dynamic wave layer
 // (compute/ocean/gpu/dynamic_layer_gpu.h) on a window where the camera looks, forced by every vehicle's hull
-// along its path (render/vehicle_wakes.h), stepped at wakes.step_s to the frame's time. Its fields (h, dh/dx,
+// along its path (world/vehicle_wakes.h), stepped at wakes.step_s to the frame's time. Its fields (h, dh/dx,
 // dh/dz, foam trails) are added to the ocean's wherever the surface is drawn (render/surface_fields.h,
 // shaders/common/wake_fields.glsl). Without vehicles, or with wakes.enabled false, it is inactive: a 1 x 1
 // zero image is bound and the shaders compile the lookups out.
@@ -13,10 +13,10 @@
 #include "core/result.h"
 #include "ocean/gpu/dynamic_layer_gpu.h"
 #include "render/frame_context.h"
-#include "render/vehicle_wakes.h"
 #include "scene/scene.h"
 #include "vk/context.h"
 #include "vk/image.h"
+#include "world/vehicle_wakes.h"
 
 namespace lagoon::render {
 
@@ -24,7 +24,7 @@ class WakesPass {
  public:
   // Fails naming the field when a vehicle's model cannot be read. The hulls follow `tracks`.
   static Result<std::unique_ptr<WakesPass>> create(vk::Context& ctx, const scene::Scene& scene,
-                                                   VehicleTracks tracks = {});
+                                                   world::VehicleTracks tracks = {});
 
   bool active() const { return layer_ != nullptr; }
   // (h, dh/dx, dh/dz, foam trails) of the layer (ocean/gpu/dynamic_layer_gpu.h), or a 1 x 1 zero image.
@@ -48,10 +48,10 @@ class WakesPass {
   const ocean::DynamicLayerGpu* layer() const { return layer_.get(); }
 
  private:
-  explicit WakesPass(VehicleWakes hulls) : hulls_(std::move(hulls)) {}
+  explicit WakesPass(world::VehicleWakes hulls) : hulls_(std::move(hulls)) {}
   void record_steps(VkCommandBuffer cmd, long long to);
 
-  VehicleWakes hulls_;
+  world::VehicleWakes hulls_;
   std::unique_ptr<ocean::DynamicLayerGpu> layer_;
   vk::Image idle_;
   long long steps_done_ = -1;    // the layer is at steps_done_ · step_s; < 0 before the first prepare

@@ -1,4 +1,4 @@
-// A lens cutting the water surface (render/camera_medium.h CameraSide::Waterline): the frame is drawn from
+// A lens cutting the water surface (world/camera_medium.h CameraSide::Waterline): the frame is drawn from
 // above into the frame's targets and from below into this pass's own, then shaders/render/waterline.frag
 // puts the pixels whose near-plane point is under the displaced surface from the second over the first,
 // with a thin meniscus along the split.

@@ -7,7 +7,7 @@
 
 #include "scene/scene.h"
 
-namespace lagoon::render {
+namespace lagoon::world {
 
 // The rotation part, model to world.
 glm::dquat object_orientation(const scene::Object& object);
@@ -17,4 +17,4 @@ inline glm::mat4 object_transform(const scene::Object& object) {
   return object_transform(glm::dvec3(object.position), object_orientation(object), object.scale);
 }
 
-}  // namespace lagoon::render
+}  // namespace lagoon::world

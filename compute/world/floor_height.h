@@ -6,9 +6,9 @@
 #include "physics/floor_contact.h"
 #include "scene/scene.h"
 
-namespace lagoon::render {
+namespace lagoon::world {
 
 // Fails naming seafloor.file when a glTF floor cannot be read.
 Result<physics::FloorHeight> floor_height(const scene::Scene& scene);
 
-}  // namespace lagoon::render
+}  // namespace lagoon::world

@@ -1,11 +1,11 @@
-#include "render/water_probe.h"
+#include "world/water_probe.h"
 
 #include <glm/geometric.hpp>
 #include <memory>
 
-#include "render/wake_heights.h"
+#include "world/wake_heights.h"
 
-namespace lagoon::render {
+namespace lagoon::world {
 namespace {
 
 // Null when the scene makes no wakes or its bodies do not feel them.
@@ -43,4 +43,4 @@ Result<WaterAtPoints> water_at_points(const scene::Scene& scene, ocean::WaveQuer
   return out;
 }
 
-}  // namespace lagoon::render
+}  // namespace lagoon::world

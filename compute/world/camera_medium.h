@@ -13,7 +13,7 @@
 #include "ocean/initial_spectrum.h"
 #include "ocean/ocean_params.h"
 
-namespace lagoon::render {
+namespace lagoon::world {
 
 enum class CameraSide { Above, Below, Waterline };
 
@@ -47,4 +47,4 @@ class CameraMedium {
   std::optional<CameraSide> forced_;
 };
 
-}  // namespace lagoon::render
+}  // namespace lagoon::world

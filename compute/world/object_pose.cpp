@@ -1,10 +1,10 @@
-#include "render/object_pose.h"
+#include "world/object_pose.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/compass.h"
 
-namespace lagoon::render {
+namespace lagoon::world {
 
 glm::dquat object_orientation(const scene::Object& object) {
   const glm::dvec3 r = glm::radians(glm::dvec3(object.rotation_deg));
@@ -18,4 +18,4 @@ glm::mat4 object_transform(glm::dvec3 origin, const glm::dquat& orientation, dou
   return glm::mat4(m);
 }
 
-}  // namespace lagoon::render
+}  // namespace lagoon::world

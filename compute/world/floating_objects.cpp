@@ -1,4 +1,4 @@
-#include "render/floating_objects.h"
+#include "world/floating_objects.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,11 +8,11 @@
 #include <string>
 
 #include "gltf/gltf_loader.h"
-#include "render/floor_height.h"
-#include "render/object_pose.h"
-#include "render/vehicle_tracks.h"
+#include "world/floor_height.h"
+#include "world/object_pose.h"
+#include "world/vehicle_tracks.h"
 
-namespace lagoon::render {
+namespace lagoon::world {
 namespace {
 
 // The model's meshes as one triangle soup in its own coordinates, scaled: the body's hull.
@@ -261,4 +261,4 @@ std::vector<double> FloatingObjects::water_under(size_t object, const std::vecto
   return out;
 }
 
-}  // namespace lagoon::render
+}  // namespace lagoon::world

@@ -1,6 +1,6 @@
-#include "render/vehicle_tracks.h"
+#include "world/vehicle_tracks.h"
 
-namespace lagoon::render {
+namespace lagoon::world {
 
 physics::WaypointPath vehicle_path(const scene::VehiclePath& path) {
   std::vector<glm::dvec2> points;
@@ -19,4 +19,4 @@ VehicleTracks tracks_or_fresh(const scene::Scene& scene, VehicleTracks tracks) {
   return tracks.size() == scene.vehicles.size() ? std::move(tracks) : vehicle_tracks(scene);
 }
 
-}  // namespace lagoon::render
+}  // namespace lagoon::world

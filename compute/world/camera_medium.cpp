@@ -1,8 +1,8 @@
-#include "render/camera_medium.h"
+#include "world/camera_medium.h"
 
 #include <cmath>
 
-namespace lagoon::render {
+namespace lagoon::world {
 namespace {
 
 // The height's error bound: well inside the 2 cm margin of the waterline band.
@@ -29,4 +29,4 @@ double CameraMedium::surface_height(double x, double z, double time_s) {
   return probe_->height(time_s, x, z).height;
 }
 
-}  // namespace lagoon::render
+}  // namespace lagoon::world

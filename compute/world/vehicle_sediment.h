@@ -1,5 +1,5 @@
 // The scene's vehicles as stirrers of the floor (docs/physics.md, Sediment): each hull's lowest point along
-// its path, over the floor's heights (render/floor_height.h: the slope, a glTF floor), releases clouds
+// its path, over the floor's heights (world/floor_height.h: the slope, a glTF floor), releases clouds
 // (physics/sediment.h) with the scene's `sediment` parameters. Shared by the frame (its sediment buffer,
 // shared/sediment.h) and the tools, so both see the same clouds.
 #pragma once
@@ -8,11 +8,11 @@
 
 #include "core/result.h"
 #include "physics/sediment.h"
-#include "render/vehicle_tracks.h"
 #include "scene/scene.h"
 #include "shared/sediment.h"
+#include "world/vehicle_tracks.h"
 
-namespace lagoon::render {
+namespace lagoon::world {
 
 class VehicleSediment {
  public:
@@ -38,4 +38,4 @@ class VehicleSediment {
   float grains_per_g_ = 0;
 };
 
-}  // namespace lagoon::render
+}  // namespace lagoon::world

@@ -1,9 +1,9 @@
 // What moves in the scene (docs/physics.md): the floating objects (objects[].floating), each a rigid body
 // (physics/floating_body.h) on the sea's heights around it (ocean/local_heights.h), and the vehicles
 // (vehicles[], physics/vehicle_motion.h), stepped together at a fixed 120 Hz from time 0, when they are at
-// rest where the scene puts them. The floating objects rest on the scene's sea floor (render/floor_height.h)
+// rest where the scene puts them. The floating objects rest on the scene's sea floor (world/floor_height.h)
 // when they sink. With wakes.felt_by_bodies they ride the vehicles' wakes too
-// (render/wake_heights.h), a vehicle every wake but its own. advance() brings them to a frame's time,
+// (world/wake_heights.h), a vehicle every wake but its own. advance() brings them to a frame's time,
 // simulating again from 0 when asked for an earlier one, so a frame at time t shows the same poses however it
 // was reached.
 #pragma once
@@ -17,11 +17,11 @@
 #include "ocean/local_heights.h"
 #include "physics/floating_body.h"
 #include "physics/vehicle_motion.h"
-#include "render/vehicle_tracks.h"
-#include "render/wake_heights.h"
 #include "scene/scene.h"
+#include "world/vehicle_tracks.h"
+#include "world/wake_heights.h"
 
-namespace lagoon::render {
+namespace lagoon::world {
 
 class FloatingObjects {
  public:
@@ -58,7 +58,7 @@ class FloatingObjects {
   const physics::FloatingBody* hull_body(size_t object) const;
   // The vehicles' tracks (one per scene vehicle), shared with whoever created these objects.
   const VehicleTracks& tracks() const { return tracks_; }
-  // The wakes the bodies ride (render/wake_heights.h), or nullptr.
+  // The wakes the bodies ride (world/wake_heights.h), or nullptr.
   const WakeHeights* wakes() const { return wakes_.get(); }
 
  private:
@@ -94,4 +94,4 @@ class FloatingObjects {
   long long steps_ = 0;                 // taken since time 0
 };
 
-}  // namespace lagoon::render
+}  // namespace lagoon::world

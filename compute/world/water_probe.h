@@ -1,5 +1,5 @@
 // The water at points, as `lagoon probe` prints it and the Python module returns it: WaveQuery's sea
-// (ocean/wave_query.h) plus the vehicles' wakes at that time (render/wake_heights.h), their height added,
+// (ocean/wave_query.h) plus the vehicles' wakes at that time (world/wake_heights.h), their height added,
 // their slopes in the normal and their rate in the vertical velocity (the layer moves the surface only
 // vertically).
 #pragma once
@@ -11,7 +11,7 @@
 #include "ocean/wave_query.h"
 #include "scene/scene.h"
 
-namespace lagoon::render {
+namespace lagoon::world {
 
 struct WaterAtPoints {
   std::vector<ocean::WaveSample> samples;  // the sea with the wakes
@@ -24,4 +24,4 @@ struct WaterAtPoints {
 Result<WaterAtPoints> water_at_points(const scene::Scene& scene, ocean::WaveQuery& query, double time_s,
                                       std::span<const glm::dvec2> points);
 
-}  // namespace lagoon::render
+}  // namespace lagoon::world

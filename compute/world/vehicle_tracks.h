@@ -8,7 +8,7 @@
 #include "physics/vehicle_track.h"
 #include "scene/scene.h"
 
-namespace lagoon::render {
+namespace lagoon::world {
 
 // One per scene vehicle, in order.
 using VehicleTracks = std::vector<std::shared_ptr<physics::VehicleTrack>>;
@@ -19,4 +19,4 @@ VehicleTracks vehicle_tracks(const scene::Scene& scene);
 // `tracks` when it has one per scene vehicle, else fresh ones.
 VehicleTracks tracks_or_fresh(const scene::Scene& scene, VehicleTracks tracks);
 
-}  // namespace lagoon::render
+}  // namespace lagoon::world

@@ -1,6 +1,6 @@
-#include "render/moving_pose.h"
+#include "world/moving_pose.h"
 
-namespace lagoon::render {
+namespace lagoon::world {
 nlohmann::json json_vec3(glm::dvec3 v) {
   return {v.x, v.y, v.z};
 }
@@ -42,4 +42,4 @@ nlohmann::json moving_pose(const scene::Scene& scene, const FloatingObjects& mov
           {"angular_velocity_radps", json_vec3(angular)}};
 }
 
-}  // namespace lagoon::render
+}  // namespace lagoon::world

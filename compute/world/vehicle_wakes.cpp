@@ -1,4 +1,4 @@
-#include "render/vehicle_wakes.h"
+#include "world/vehicle_wakes.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,9 +6,9 @@
 #include <string>
 
 #include "gltf/gltf_loader.h"
-#include "render/vehicle_tracks.h"
+#include "world/vehicle_tracks.h"
 
-namespace lagoon::render {
+namespace lagoon::world {
 
 Result<VehicleWakes> VehicleWakes::create(const scene::Scene& scene, VehicleTracks tracks) {
   VehicleWakes wakes;
@@ -77,4 +77,4 @@ long long VehicleWakes::first_step_for(double t) const {
   return std::max(0LL, step_at(t) - history_steps_);
 }
 
-}  // namespace lagoon::render
+}  // namespace lagoon::world

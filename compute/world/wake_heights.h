@@ -20,9 +20,9 @@
 #include <vector>
 
 #include "ocean/dynamic_layer.h"
-#include "render/vehicle_wakes.h"
+#include "world/vehicle_wakes.h"
 
-namespace lagoon::render {
+namespace lagoon::world {
 
 class WakeHeights {
  public:
@@ -100,4 +100,4 @@ class WakeHeights {
   std::future<Stepped> next_;
 };
 
-}  // namespace lagoon::render
+}  // namespace lagoon::world

@@ -1,4 +1,4 @@
-#include "render/wake_heights.h"
+#include "world/wake_heights.h"
 
 #include <algorithm>
 #include <array>
@@ -7,7 +7,7 @@
 
 #include "ocean/catmull_rom.h"
 
-namespace lagoon::render {
+namespace lagoon::world {
 namespace {
 
 ocean::DynamicLayerParams coarse(ocean::DynamicLayerParams p, uint32_t resolution) {
@@ -210,4 +210,4 @@ double WakeHeights::rate(glm::dvec2 p) const {
   return layers_.empty() ? 0.0 : lookup(view(kNoVehicle), true, p);
 }
 
-}  // namespace lagoon::render
+}  // namespace lagoon::world

@@ -1,12 +1,12 @@
-#include "render/floor_height.h"
+#include "world/floor_height.h"
 
 #include <memory>
 
 #include "gltf/gltf_loader.h"
 #include "physics/mesh_floor.h"
-#include "render/seafloor.h"
+#include "world/slope_depth.h"
 
-namespace lagoon::render {
+namespace lagoon::world {
 namespace {
 
 // The floor model's triangles where SceneObjects draws them (identity transform, its nodes' own).
@@ -45,4 +45,4 @@ Result<physics::FloorHeight> floor_height(const scene::Scene& scene) {
   return physics::FloorHeight([depth](double, double) { return -depth; });
 }
 
-}  // namespace lagoon::render
+}  // namespace lagoon::world

@@ -1,4 +1,4 @@
-#include "render/vehicle_sediment.h"
+#include "world/vehicle_sediment.h"
 
 #include <algorithm>
 #include <bit>
@@ -6,10 +6,10 @@
 #include <string>
 
 #include "gltf/gltf_loader.h"
-#include "render/floor_height.h"
-#include "render/vehicle_tracks.h"
+#include "world/floor_height.h"
+#include "world/vehicle_tracks.h"
 
-namespace lagoon::render {
+namespace lagoon::world {
 
 Result<VehicleSediment> VehicleSediment::create(const scene::Scene& scene, VehicleTracks tracks) {
   VehicleSediment out;
@@ -75,4 +75,4 @@ uint32_t VehicleSediment::write(double time_s, gpu::SedimentHeader* header,
   return uint32_t(kept);
 }
 
-}  // namespace lagoon::render
+}  // namespace lagoon::world

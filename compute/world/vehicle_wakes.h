@@ -7,10 +7,10 @@
 
 #include "core/result.h"
 #include "ocean/dynamic_layer.h"
-#include "render/vehicle_tracks.h"
 #include "scene/scene.h"
+#include "world/vehicle_tracks.h"
 
-namespace lagoon::render {
+namespace lagoon::world {
 
 class VehicleWakes {
  public:
@@ -51,4 +51,4 @@ class VehicleWakes {
   long long history_steps_ = 300;
 };
 
-}  // namespace lagoon::render
+}  // namespace lagoon::world

@@ -5,10 +5,10 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
-#include "render/floating_objects.h"
 #include "scene/scene.h"
+#include "world/floating_objects.h"
 
-namespace lagoon::render {
+namespace lagoon::world {
 
 // A floating object (objects[index]) or a vehicle (vehicles[index]).
 struct MovingTarget {
@@ -27,4 +27,4 @@ std::vector<MovingTarget> moving_targets(const scene::Scene& scene);
 nlohmann::json moving_pose(const scene::Scene& scene, const FloatingObjects& moving, MovingTarget target,
                            double time_s);
 
-}  // namespace lagoon::render
+}  // namespace lagoon::world
