@@ -3,11 +3,11 @@
 # pkg-config files. Included at the very end of the top-level CMakeLists.txt, once every target exists.
 #
 # Two export sets, so a host can use the plain-C++ ocean without Vulkan being installed at all:
-#   LagoonPlainTargets.cmake   the targets that reach no Vulkan: core, ocean, optics, fft_cpu, ...
-#   LagoonVulkanTargets.cmake  the rest: vk, io, scene, gltf, shaders, fft, ocean_gpu, render, ...
+#   LagoonPlainTargets.cmake   the targets that reach no Vulkan: core, ocean, optics, fft_cpu, physics, io,
+#                              scene, gltf, world, ...
+#   LagoonVulkanTargets.cmake  the rest: vk, shaders, fft, ocean_gpu, render, ...
 # The sets are computed (everything the roots below link, split with LagoonLayering's Vulkan search), so a
-# module added to the graph is exported without editing this file. engine/ modules all link lagoon_vk_headers
-# (engine/CMakeLists.txt), so io and scene land in the Vulkan set.
+# module added to the graph is exported without editing this file.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
@@ -67,7 +67,7 @@ foreach(target IN LISTS exported)
     list(APPEND LAGOON_PLAIN_TARGETS ${target})
   endif()
 endforeach()
-foreach(target lagoon_ocean lagoon_optics)
+foreach(target lagoon_ocean lagoon_optics lagoon_world)
   if(NOT target IN_LIST LAGOON_PLAIN_TARGETS)
     message(FATAL_ERROR "LagoonInstall: ${target} reaches Vulkan, but hosts must be able to use it without")
   endif()

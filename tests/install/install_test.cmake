@@ -6,7 +6,8 @@
 #                    validation error fails) and compare its frame with `lagoon render`'s; link
 #                    embed_render again from lagoon.pc's flags; build and run adopt_check/
 #                    (Context::adopt's refusals and ownership)
-#   STEP=no-vulkan   build embed_ocean with only Lagoon::ocean, Vulkan's find module disabled and a
+#   STEP=no-vulkan   build embed_ocean and embed_world with only Lagoon::ocean and Lagoon::world, Vulkan's
+#                    find module disabled and a
 #                    vulkan/vulkan.h that #errors first on the include path, through CMake and through
 #                    lagoon-ocean.pc; run it
 # Build folders under WORK_DIR are kept between runs, so a rerun only rebuilds what changed.
@@ -128,6 +129,13 @@ elseif(STEP STREQUAL "no-vulkan")
   build_against_prefix(${example} ocean-only -DEMBED_OCEAN_ONLY=ON -DCMAKE_DISABLE_FIND_PACKAGE_Vulkan=ON
                 -DEMBED_POISON_INCLUDE_DIR=${poison})
   run_step("embed_ocean (CMake, no Vulkan)" ${WORK_DIR}/ocean-only/embed_ocean)
+  # Lagoon::world steps the harbour's bodies and vehicles (glTF hulls, the floor, the wakes they feel).
+  run_step("embed_world (CMake, no Vulkan)" ${WORK_DIR}/ocean-only/embed_world ${SOURCE_DIR}/scenes/harbour.json)
+  foreach(name buoy boat auv)
+    if(NOT step_output MATCHES "\"${name}\"")
+      message(FATAL_ERROR "embed_world printed no pose of '${name}':\n${step_output}")
+    endif()
+  endforeach()
   pkg_config_flags(lagoon-ocean ocean_flags)
   if(ocean_flags MATCHES "vulkan")
     message(FATAL_ERROR "lagoon-ocean.pc brings in Vulkan: ${ocean_flags}")
