@@ -119,6 +119,17 @@ void print_row(const std::string& name, double base, double ours) {
 
 int run_bench_baseline(const ParsedArgs& args, int rounds, long long width, long long height) {
   const std::string baseline = *args.get("baseline");
+  // This build is measured by running its own executable again, which only the `lagoon` command is (the
+  // Python module's lagoon.run() runs in the interpreter's process).
+  const std::string self = fs::read_symlink("/proc/self/exe").string();
+  if (fs::path(self).filename() != "lagoon") {
+    std::fprintf(
+        stderr,
+        "lagoon bench render: --baseline runs this build's `lagoon` executable beside the other one, "
+        "and this process is %s, not `lagoon`; run `lagoon bench render --baseline ...` from a shell\n",
+        self.c_str());
+    return kExitUsage;
+  }
   if (auto why = usable_program(baseline)) {
     std::fprintf(stderr, "lagoon bench render: %s\n", why->c_str());
     return kExitUsage;
@@ -136,7 +147,6 @@ int run_bench_baseline(const ParsedArgs& args, int rounds, long long width, long
                  fs::temp_directory_path().c_str());
     return kExitFailure;
   }
-  const std::string self = fs::read_symlink("/proc/self/exe").string();
   std::printf(
       "this build %s against --baseline %s; %lldx%lld, %d frames a scene and build, medians; ratio = "
       "this / baseline (each build in its own process, their order alternating by scene)\n",

@@ -101,6 +101,8 @@ def test_run_is_the_lagoon_command():
     assert lagoon.run(["no-such-command"]) == 2
     assert lagoon.run(["render", "--scene"]) == 2
     assert lagoon.run(["dataset", "verify", "/nonexistent/folder"]) == 1
+    # Comparing builds needs this build's executable, which the interpreter is not: refused, not run.
+    assert lagoon.run(["bench", "render", "--baseline", LAGOON, "--scene", DEFAULT, "--rounds", "1"]) == 2
 
 
 def test_the_dataset_example_back_projects_its_depth_onto_the_sea(tmp_path):
