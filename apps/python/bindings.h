@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 namespace lagoon::python {
 
@@ -18,6 +19,12 @@ extern py::handle scene_error;
 // JSON <-> Python (dict, list, str, float, int, bool, None), through Python's own json module.
 py::object to_python(const nlohmann::json& j);
 nlohmann::json from_python(const py::handle& o);
+
+// {"ocean.model": "sines", "camera.position": [0, 3, -10]} as --set's "path=value" strings: a string is
+// taken as it is (as on the command line), anything else as its JSON.
+std::vector<std::string> override_strings(const py::dict& overrides);
+// A str or os.PathLike as a path string (os.fspath).
+std::string fspath(const py::handle& path);
 
 void bind_scene(py::module_& m);
 void bind_renderer(py::module_& m);

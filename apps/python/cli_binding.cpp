@@ -39,7 +39,7 @@ class SceneArgument {
       path_ = (folder_ / "scene.json").string();
       std::ofstream(path_) << scene::scene_to_json(s, folder_).dump(2) << "\n";
     } else {
-      path_ = py::str(py::module_::import("os").attr("fspath")(scene));
+      path_ = fspath(scene);
     }
   }
   ~SceneArgument() {
@@ -61,11 +61,8 @@ std::string number(double value) {
 }
 
 void add_overrides(std::vector<std::string>& args, const py::dict& overrides) {
-  for (const auto& [key, value] : overrides) {
-    args.push_back("--set");
-    args.push_back(std::string(py::str(key)) + "=" +
-                   (py::isinstance<py::str>(value) ? value.cast<std::string>() : from_python(value).dump()));
-  }
+  for (const std::string& assignment : override_strings(overrides))
+    args.insert(args.end(), {"--set", assignment});
 }
 
 // Runs `args` as `lagoon ARGS` would (stdout and stderr as the command writes them); raises CommandError
@@ -111,7 +108,7 @@ int run(const std::vector<std::string>& args) {
 py::object export_fields(const py::object& scene, const py::object& out, int frames, std::optional<double> dt,
                          std::optional<double> t0, const py::dict& overrides) {
   SceneArgument s(scene);
-  const std::string folder = py::str(py::module_::import("os").attr("fspath")(out));
+  const std::string folder = fspath(out);
   std::vector<std::string> args{
       "export", "--scene", s.path(), "--out", folder, "--frames", std::to_string(frames)};
   if (dt) args.insert(args.end(), {"--dt", number(*dt)});
@@ -129,7 +126,7 @@ std::string render_sequence(const py::object& scene, const py::object& out, int 
                             const std::vector<std::string>& aovs, const py::object& path,
                             std::optional<double> time, const py::dict& overrides) {
   SceneArgument s(scene);
-  const std::string image = py::str(py::module_::import("os").attr("fspath")(out));
+  const std::string image = fspath(out);
   std::vector<std::string> args{
       "render", "--scene", s.path(), "--out", image, "--frames", std::to_string(frames)};
   if (fps) args.insert(args.end(), {"--fps", number(*fps)});
@@ -147,8 +144,7 @@ std::string render_sequence(const py::object& scene, const py::object& out, int 
     for (const std::string& a : aovs) list += (list.empty() ? "" : ",") + a;
     args.insert(args.end(), {"--aov", list});
   }
-  if (!path.is_none())
-    args.insert(args.end(), {"--path", py::str(py::module_::import("os").attr("fspath")(path))});
+  if (!path.is_none()) args.insert(args.end(), {"--path", fspath(path)});
   if (time) args.insert(args.end(), {"--time", number(*time)});
   add_overrides(args, overrides);
   run_or_raise(args);
@@ -161,7 +157,7 @@ std::string render_sequence(const py::object& scene, const py::object& out, int 
 }
 
 void verify_dataset(const py::object& folder) {
-  run_or_raise({"dataset", "verify", py::str(py::module_::import("os").attr("fspath")(folder))});
+  run_or_raise({"dataset", "verify", fspath(folder)});
 }
 
 }  // namespace

@@ -14,6 +14,20 @@ py::object to_python(const nlohmann::json& j) {
   return py::module_::import("json").attr("loads")(j.dump());
 }
 
+std::vector<std::string> override_strings(const py::dict& overrides) {
+  std::vector<std::string> out;
+  for (const auto& [key, value] : overrides) {
+    const std::string path = py::str(key);
+    out.push_back(path + "=" +
+                  (py::isinstance<py::str>(value) ? value.cast<std::string>() : from_python(value).dump()));
+  }
+  return out;
+}
+
+std::string fspath(const py::handle& path) {
+  return py::str(py::module_::import("os").attr("fspath")(path));
+}
+
 nlohmann::json from_python(const py::handle& o) {
   return nlohmann::json::parse(py::str(py::module_::import("json").attr("dumps")(o)).cast<std::string>());
 }

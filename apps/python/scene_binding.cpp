@@ -10,21 +10,6 @@
 #include "scene/scene.h"
 
 namespace lagoon::python {
-namespace {
-
-// {"ocean.model": "sines", "camera.position": [0, 3, -10]} as --set's "path=value" strings: a string is
-// taken as it is (as on the command line), anything else as its JSON.
-std::vector<std::string> override_strings(const py::dict& overrides) {
-  std::vector<std::string> out;
-  for (const auto& [key, value] : overrides) {
-    const std::string path = py::str(key);
-    out.push_back(path + "=" +
-                  (py::isinstance<py::str>(value) ? value.cast<std::string>() : from_python(value).dump()));
-  }
-  return out;
-}
-
-}  // namespace
 
 void bind_scene(py::module_& m) {
   py::class_<scene::Scene>(m, "Scene", "A validated scene (docs/scene-format.md).")

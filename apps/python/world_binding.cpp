@@ -27,8 +27,9 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 
 double finite(double value, const char* what, double bound) {
   if (!std::isfinite(value) || std::abs(value) > bound)
-    throw py::value_error(std::string(what) + " must be a number from " + std::to_string(-bound) + " to " +
-                          std::to_string(bound));
+    throw py::value_error(std::string(what) + " must be a finite number from " +
+                          py::str(py::float_(-bound)).cast<std::string>() + " to " +
+                          py::str(py::float_(bound)).cast<std::string>());
   return value;
 }
 
