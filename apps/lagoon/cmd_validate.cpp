@@ -14,6 +14,7 @@
 #include "validate_light.h"
 #include "validate_report.h"
 #include "validate_sea.h"
+#include "validate_shore.h"
 #include "validate_wakes.h"
 
 namespace lagoon::cli {
@@ -40,6 +41,9 @@ const std::vector<std::pair<std::string, std::string>>& broken_variants() {
       {"quasi-static",
        "the sphere feels the height above each point, not linear theory's pressure under the wave: "
        "bodies.sphere-rao"},
+      {"no-shoaling",
+       "waves that do not feel the floor: shore.wavelength, shore.snell, shore.shoaling, "
+       "shore.breaking-onset"},
       {"shallow-wakes",
        "the wakes in water of depth Froude number 0.9 instead of deep water: wakes.kelvin-angle, "
        "wakes.transverse-wavelength"}};
@@ -76,6 +80,7 @@ int run_validate(const ParsedArgs& args) {
   add(body_laws(options));
   add(light_laws(*ctx, options));
   add(wake_laws(options));
+  add(shore_laws(options));
   add(foam_laws(*ctx, options));
   if (laws.empty()) {
     std::fprintf(stderr,

@@ -10,6 +10,8 @@ std::optional<GerstnerParams> direct_wave_params(const OceanParams& params) {
   constexpr double kRadians = std::numbers::pi / 180;
   GerstnerParams out{
       .depth_m = params.depth_m, .loop_period_s = params.loop_period_s, .limit_steepness = false};
+  if (params.shoaling) out.floor = params.floor;
+  out.breaker_index = params.breaker_index;
   if (params.model == SurfaceModel::Gerstner && params.gerstner.spectrum_waves == 0) {
     out.dispersion = params.gerstner.dispersion;
     for (const GerstnerWaveSpec& w : params.gerstner.waves)

@@ -54,6 +54,17 @@ GerstnerSurface::GerstnerSurface(GerstnerParams params) : params_(std::move(para
   }
   if (params_.limit_steepness && sum > 1)
     for (double& q : q_) q /= sum;
+  if (!params_.floor) return;
+  ShoalingInputs in{.floor = params_.floor, .breaker_index = params_.breaker_index};
+  if (params_.dispersion == GerstnerDispersion::FiniteDepth) in.reference_depth_m = params_.depth_m;
+  for (size_t i = 0; i < k_.size(); ++i)
+    in.waves.push_back({.k = k_[i],
+                        .omega = omega_[i],
+                        .amplitude_m = params_.waves[i].amplitude_m,
+                        .height_per_amplitude = params_.waves[i].power == 0 ? 2.0 : 1.0,
+                        .steepness = q_[i]});
+  auto shoaling = std::make_shared<Shoaling>(std::move(in));
+  if (shoaling->active()) shoaling_ = std::move(shoaling);
 }
 
 double GerstnerSurface::steepness_sum() const {
@@ -62,35 +73,46 @@ double GerstnerSurface::steepness_sum() const {
   return sum;
 }
 
-GerstnerPoint GerstnerSurface::at_rest(glm::dvec2 x0, double t) const {
-  glm::dvec2 shift(0.0);
-  double y = 0, vy = 0;
-  glm::dvec2 vxz(0.0);
-  // ∂(x, z)/∂(x0, z0) = I - Σ Q A |k| d dᵀ cos θ; ∂y/∂x0 = -Σ A k sin θ.
-  double jxx = 1, jxz = 0, jzz = 1;
-  glm::dvec2 dy(0.0);
+GerstnerSurface::Sum GerstnerSurface::sum_at(glm::dvec2 x0, double t) const {
+  Sum out;
+  // Over the floor each wave has its local wavevector, amplitude and phase offset (ocean/shoaling.h).
+  const double q_scale = shoaling_ ? shoaling_->ground(x0).z : 1.0;
   for (size_t i = 0; i < k_.size(); ++i) {
     const GerstnerWave& w = params_.waves[i];
-    const double k = glm::length(k_[i]);
-    const glm::dvec2 d = k_[i] / k;
-    const double theta = glm::dot(k_[i], x0) - omega_[i] * t + w.phase_rad;
-    const double s = std::sin(theta), c = std::cos(theta), qa = q_[i] * w.amplitude_m;
+    glm::dvec2 kv = k_[i];
+    double a = w.amplitude_m, offset = 0;
+    if (shoaling_) {
+      const glm::dvec4 local = shoaling_->wave(i, x0);
+      kv = shoaling_->wavevector(i, local);
+      a = local.y;
+      offset = local.x;
+    }
+    const double k = glm::length(kv);
+    const glm::dvec2 d = kv / k;
+    const double theta = glm::dot(k_[i], x0) + offset - omega_[i] * t + w.phase_rad;
+    const double s = std::sin(theta), c = std::cos(theta), qa = q_[i] * q_scale * a;
     const glm::dvec2 g = dw_profile(theta, double(w.power), mean_[i]);  // (g, dg/dθ)
-    shift -= qa * d * s;
-    y += w.amplitude_m * g.x;
-    vxz += qa * d * c * omega_[i];          // d/dt of -Q A d sin θ, dθ/dt = -ω
-    vy -= w.amplitude_m * g.y * omega_[i];  // d/dt of A g(θ)
-    jxx -= qa * k * d.x * d.x * c;
-    jxz -= qa * k * d.x * d.y * c;
-    jzz -= qa * k * d.y * d.y * c;
-    dy += w.amplitude_m * g.y * k_[i];
+    // ∂(x, z)/∂(x0, z0) = I - Σ Q A |k| d dᵀ cos θ; ∂y/∂x0 = Σ A g' k (the amplitude's own change is slow).
+    out.shift -= qa * d * s;
+    out.y += a * g.x;
+    out.vxz += qa * d * c * omega_[i];  // d/dt of -Q A d sin θ, dθ/dt = -ω
+    out.vy -= a * g.y * omega_[i];      // d/dt of A g(θ)
+    out.jxx -= qa * k * d.x * d.x * c;
+    out.jxz -= qa * k * d.x * d.y * c;
+    out.jzz -= qa * k * d.y * d.y * c;
+    out.dy += a * g.y * kv;
   }
+  return out;
+}
+
+GerstnerPoint GerstnerSurface::at_rest(glm::dvec2 x0, double t) const {
+  const Sum sum = sum_at(x0, t);
   GerstnerPoint p;
-  p.position = {x0.x + shift.x, y, x0.y + shift.y};
-  p.velocity = {vxz.x, vy, vxz.y};
-  p.jacobian = jxx * jzz - jxz * jxz;
+  p.position = {x0.x + sum.shift.x, sum.y, x0.y + sum.shift.y};
+  p.velocity = {sum.vxz.x, sum.vy, sum.vxz.y};
+  p.jacobian = sum.jxx * sum.jzz - sum.jxz * sum.jxz;
   // Tangents along x0 and z0: (jxx, dy.x, jxz) and (jxz, dy.y, jzz); the normal is their cross product, up.
-  const glm::dvec3 tx(jxx, dy.x, jxz), tz(jxz, dy.y, jzz);
+  const glm::dvec3 tx(sum.jxx, sum.dy.x, sum.jxz), tz(sum.jxz, sum.dy.y, sum.jzz);
   const glm::dvec3 n = glm::cross(tz, tx);
   p.normal = glm::length(n) > 0 ? glm::normalize(n.y < 0 ? -n : n) : glm::dvec3(0, 1, 0);
   return p;
@@ -101,21 +123,12 @@ WaveSample GerstnerSurface::sample(double t, double x, double z) const {
   glm::dvec2 p = q;
   bool converged = false;
   for (int iteration = 0; iteration < 64 && !converged; ++iteration) {
-    const GerstnerPoint at = at_rest(p, t);
-    const glm::dvec2 miss = glm::dvec2(at.position.x, at.position.z) - q;
+    const Sum sum = sum_at(p, t);
+    const glm::dvec2 miss = p + sum.shift - q;
     converged = glm::length(miss) < 1e-10;
     if (converged) break;
     // Newton on the horizontal map; where it is nearly singular (a sharp crest) a fixed-point step instead.
-    double jxx = 1, jxz = 0, jzz = 1;
-    for (size_t i = 0; i < k_.size(); ++i) {
-      const double k = glm::length(k_[i]);
-      const glm::dvec2 d = k_[i] / k;
-      const double c = std::cos(glm::dot(k_[i], p) - omega_[i] * t + params_.waves[i].phase_rad);
-      const double qa = q_[i] * params_.waves[i].amplitude_m;
-      jxx -= qa * k * d.x * d.x * c;
-      jxz -= qa * k * d.x * d.y * c;
-      jzz -= qa * k * d.y * d.y * c;
-    }
+    const double jxx = sum.jxx, jxz = sum.jxz, jzz = sum.jzz;
     const double det = jxx * jzz - jxz * jxz;
     if (det > 1e-3)
       p -= glm::dvec2(jzz * miss.x - jxz * miss.y, -jxz * miss.x + jxx * miss.y) / det;

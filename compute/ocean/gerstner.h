@@ -10,8 +10,10 @@
 #pragma once
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <memory>
 #include <vector>
 
+#include "ocean/shoaling.h"
 #include "ocean/wave_query.h"
 
 namespace lagoon::ocean {
@@ -33,6 +35,9 @@ struct GerstnerParams {
   double depth_m = 1000;        // D of eq. 8
   double loop_period_s = 0;     // > 0: eq. 10, every ω a multiple of 2π/T (the surface repeats with T)
   bool limit_steepness = true;  // scale the Q_i so that Σ Q k A <= 1 (no loops)
+  // The floor the waves feel (ocean/shoaling.h); none: depth_m everywhere.
+  std::shared_ptr<const DepthProfile> floor;
+  double breaker_index = kBreakerIndex;
 };
 
 // One rest point x0 at time t: where it has moved and the surface's local frame there.
@@ -52,6 +57,8 @@ class GerstnerSurface {
   glm::dvec2 wavevector(size_t wave) const { return k_[wave]; }
   double steepness(size_t wave) const { return q_[wave]; }  // after the limit
   const GerstnerParams& params() const { return params_; }
+  // The waves' transformation over the floor, or null where no floor is shallow enough to change them.
+  const Shoaling* shoaling() const { return shoaling_.get(); }
   double profile_mean(size_t wave) const { return mean_[wave]; }  // left out of the height (power > 0)
   // Σ Q_i |k_i| A_i: at most 1 with the limit on.
   double steepness_sum() const;
@@ -63,7 +70,15 @@ class GerstnerSurface {
   WaveSample sample(double time_s, double x, double z) const;
 
  private:
+  // The sums of eq. 11 at a rest point, and the derivatives the point, its normal and Newton need.
+  struct Sum {
+    glm::dvec2 shift{0.0}, vxz{0.0}, dy{0.0};
+    double y = 0, vy = 0, jxx = 1, jxz = 0, jzz = 1;
+  };
+  Sum sum_at(glm::dvec2 x0, double time_s) const;
+
   GerstnerParams params_;
+  std::shared_ptr<const Shoaling> shoaling_;
   std::vector<glm::dvec2> k_;
   std::vector<double> omega_, q_, mean_;  // mean_: the profile's, left out
 };

@@ -2,11 +2,14 @@
 // field with its unit, default and range). Plain data, no Vulkan.
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace lagoon::ocean {
+
+struct DepthProfile;  // ocean/depth_profile.h
 
 inline constexpr double kGravity = 9.81;  // m/s²
 
@@ -158,6 +161,12 @@ struct OceanParams {
   SpectrumParams spectrum;
   std::vector<CascadeParams> cascades{{1000.0, 256}, {100.0, 256}, {10.0, 256}};
   FoamParams foam;
+  // Waves that feel the floor (ocean/shoaling.h): `floor` is the scene's, set from its seafloor block by
+  // world/floor_profile.h (none: the sea is depth_m deep everywhere); `shoaling` false leaves the waves as
+  // they are over it; the breaker index γ is the height over depth at which they break.
+  std::shared_ptr<const DepthProfile> floor;
+  bool shoaling = true;
+  double breaker_index = 0.78;
 };
 
 const char* to_string(

@@ -8,6 +8,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/compass.h"
+
 namespace lagoon::ocean {
 namespace {
 
@@ -23,7 +25,6 @@ glm::dvec2 floor(glm::dvec2 v) {
   return glm::floor(v);
 }
 #define LAGOON_FN inline
-#include "core/compass.h"
 #include "shared/springs_math.h"
 #undef LAGOON_FN
 

@@ -13,6 +13,8 @@
 #include "ocean/catmull_rom.h"
 #include "ocean/direct_waves.h"
 #include "ocean/gerstner.h"
+#include "ocean/shoaling.h"
+#include "ocean/slope_statistics.h"
 #include "ocean/spectral_fields.h"
 
 namespace lagoon::ocean {
@@ -100,6 +102,17 @@ WaveQuery::WaveQuery(const OceanParams& params, std::vector<CascadeSpectrum> spe
   if (spectra_.empty())
     for (uint32_t c = 0; c < params.cascades.size(); ++c)
       spectra_.push_back(make_cascade_spectrum(params, c));
+  if (params.floor && params.shoaling) {
+    // Over the floor the random sea keeps its waves but not their height (ocean/shoaling.h): its significant
+    // height is the whole spectrum's, as the renderer's.
+    double variance = 0;
+    for (const CascadeSpectrum& s : spectra_) variance += height_variance(s);
+    auto floor =
+        std::make_shared<Shoaling>(ShoalingInputs{.floor = params.floor,
+                                                  .breaker_index = params.breaker_index,
+                                                  .sea_significant_height_m = 4 * std::sqrt(variance)});
+    if (floor->active()) sea_floor_ = std::move(floor);
+  }
   if (std::isfinite(options_.max_wavenumber)) {
     std::vector<CascadeSpectrum> kept;
     for (const CascadeSpectrum& s : spectra_)
@@ -241,10 +254,14 @@ void WaveQuery::evaluate(double time_s) {
   keep(current_);
 }
 
+double WaveQuery::sea_scale(glm::dvec2 p) const {
+  return sea_floor_ ? sea_floor_->ground(p).y : 1.0;
+}
+
 glm::dvec2 WaveQuery::displacement(glm::dvec2 p) const {
   double d[3] = {0, 0, 0};
   for (const auto& g : current_->grids) g->sample(p, kDx, 3, d);
-  return params_.choppiness * glm::dvec2(d[0], d[2]);
+  return sea_scale(p) * params_.choppiness * glm::dvec2(d[0], d[2]);
 }
 
 std::vector<WaveSample> WaveQuery::sample(double time_s, std::span<const glm::dvec2> points) {
@@ -292,15 +309,16 @@ void WaveQuery::sample_range(std::span<const glm::dvec2> points, std::vector<Wav
     s.rest_position = p;
     s.error_bound_m = bound;
     s.converged = converged;
+    const double scale = sea_scale(p);  // over the floor (ocean/shoaling.h); its own slope is left out
     if (options_.heights_only) {
       for (const auto& g : current_->grids) g->sample(p, kHeight, 1, &f[kHeight]);
-      s.height = f[kHeight];
+      s.height = scale * f[kHeight];
       continue;
     }
     for (const auto& g : current_->grids) g->sample(p, 0, kFieldCount, f);
-    s.height = f[kHeight];
-    s.normal = glm::normalize(glm::dvec3(-f[kSlopeX], 1.0, -f[kSlopeZ]));
-    s.velocity = {params_.choppiness * f[kVx], f[kVy], params_.choppiness * f[kVz]};
+    s.height = scale * f[kHeight];
+    s.normal = glm::normalize(glm::dvec3(-scale * f[kSlopeX], 1.0, -scale * f[kSlopeZ]));
+    s.velocity = scale * glm::dvec3(params_.choppiness * f[kVx], f[kVy], params_.choppiness * f[kVz]);
   }
 }
 

@@ -37,6 +37,7 @@
 namespace lagoon::ocean {
 
 class GerstnerSurface;
+class Shoaling;
 
 struct WaveSample {
   double height = 0;               // m above the mean water level, at the query's (x, z)
@@ -105,13 +106,15 @@ class WaveQuery {
   std::shared_ptr<const Evaluation> evaluate_springs(double time_s);
   void keep(std::shared_ptr<const Evaluation> evaluation);
   glm::dvec2 displacement(glm::dvec2 p) const;
+  double sea_scale(glm::dvec2 p) const;  // the random sea's height over the floor, 1 where it is deep
   // sample()'s answers for points[begin, end), from current_.
   void sample_range(std::span<const glm::dvec2> points, std::vector<WaveSample>& out, size_t begin,
                     size_t end) const;
 
   OceanParams params_;
-  std::unique_ptr<SpringGrid> springs_;      // model springs: the grid itself, stepped to each time asked
-  std::unique_ptr<GerstnerSurface> direct_;  // waves evaluated directly: their sums
+  std::unique_ptr<SpringGrid> springs_;        // model springs: the grid itself, stepped to each time asked
+  std::unique_ptr<GerstnerSurface> direct_;    // waves evaluated directly: their sums
+  std::shared_ptr<const Shoaling> sea_floor_;  // the random sea's depth-limited height, where a floor is
   std::vector<CascadeSpectrum> spectra_;
   WaveQueryOptions options_;
   InverseFft2d fft_;        // plans shared by every evaluation, on any thread

@@ -116,7 +116,9 @@ gpu::FrameUniforms frame_uniforms(const FrameInputs& in) {
       .classic_specular = glm::vec4(scene.render.classic.specular, 0.0f),
       .sky = light.sky_model,
       .whitecaps = glm::vec4(scene.render.effects.foam ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f),
-      .submerged_rect = in.submerged_rect};
+      .submerged_rect = in.submerged_rect,
+      .shoaling_axis = in.ocean.shoaling_gpu().axis(),
+      .shoaling_grid = in.ocean.shoaling_gpu().grid()};
   if (const ocean::GerstnerSurface* direct = in.ocean.direct_waves()) {
     const std::vector<gpu::DirectWaveGpu> waves = ocean::direct_waves_gpu(*direct, scene.time_s);
     const size_t count = std::min<size_t>(waves.size(), LAGOON_DIRECT_MAX_WAVES);  // validate() keeps to it

@@ -122,6 +122,7 @@ Result<void> SceneObjects::load_floor(const scene::Scene& scene) {
   const FloorMesh mesh =
       build_slope_floor(floor, glm::vec2(scene.camera.position.x, scene.camera.position.z));
   floor_ = upload_mesh(ctx_, mesh.vertices, mesh.indices);
+  floor_above_water_ = floor.depth_near_m < 0.0f;
   floor_texture_scale_ = floor.texture_scale_m;
   gltf::Material material;
   material.base_color_factor = glm::vec4(floor.albedo, 1.0f);
@@ -323,6 +324,8 @@ void SceneObjects::draw(const FrameContext& frame, gpu::MeshMode mode) const {
                    [](const auto& a, const auto& b) { return a.first > b.first; });
   for (const auto& [distance, o] : blended)
     draw_mesh(frame, mode, o->mesh, {.model = o->world, .material = o->material}, o->textures, true);
+  // A beach: the slope floor's dry land, above the water and in its reflection (mesh.frag clips the rest).
+  if (floor_ && floor_above_water_ && mode != gpu::MeshMode::Refraction) draw_floor_as(frame, mode);
 }
 
 SceneObjects::DrawTextures SceneObjects::floor_textures() const {
@@ -334,12 +337,15 @@ SceneObjects::DrawTextures SceneObjects::floor_textures() const {
 }
 
 void SceneObjects::draw_floor(const FrameContext& frame) const {
-  if (!floor_) return;
+  if (floor_) draw_floor_as(frame, gpu::MeshMode::Refraction);
+}
+
+void SceneObjects::draw_floor_as(const FrameContext& frame, gpu::MeshMode mode) const {
   const gpu::MeshPush push{.model = glm::mat4(1.0f),
                            .material = floor_material_,
                            .texture_scale = floor_texture_scale_,
                            .height_field = 1};
-  draw_mesh(frame, gpu::MeshMode::Refraction, *floor_, push, floor_textures(), false);
+  draw_mesh(frame, mode, *floor_, push, floor_textures(), false);
 }
 
 void SceneObjects::draw_ground_truth(const FrameContext& frame) const {

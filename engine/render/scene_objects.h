@@ -35,6 +35,7 @@ class SceneObjects {
   void draw(const FrameContext& frame, gpu::MeshMode mode) const;
   // The procedural slope floor (refraction only; a glTF floor is an object). No-op without one.
   void draw_floor(const FrameContext& frame) const;
+  void draw_floor_as(const FrameContext& frame, gpu::MeshMode mode) const;
   // Every mesh and the floor, above and below the water, into ground-truth targets (two kGroundTruthFormat
   // colour targets and the depth format, as the water surface's: shaders/render/mesh_aov.frag).
   static constexpr VkFormat kGroundTruthFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
@@ -116,6 +117,7 @@ class SceneObjects {
   vk::Image floor_texture_;
   uint32_t floor_material_ = 0;
   float floor_texture_scale_ = 1;
+  bool floor_above_water_ = false;  // the slope rises out of the water (a beach): drawn above it too
   // One per gpu::MeshMode (LAGOON_MESH_SPEC_MODE): Lit into the displayed frame, the others into HDR targets;
   // opaque and MASK materials, then BLEND ones (blending, no depth writes).
   std::array<vk::GraphicsPipeline, 4> pipelines_;

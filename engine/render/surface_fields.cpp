@@ -4,6 +4,7 @@
 
 #include "shared/direct_waves.h"
 #include "shared/sediment.h"
+#include "shared/shoaling.h"
 #include "shared/surface.h"
 
 namespace lagoon::render {
@@ -22,6 +23,9 @@ std::vector<vk::Binding> surface_field_bindings(const SurfaceFields& fields, con
   }
   // Repeat addressing: the layer's storage is toroidal (ocean/dynamic_layer.h).
   bindings.push_back(vk::bind(LAGOON_SURFACE_BIND_WAKES, sampled(fields.wakes.fields(), samplers.repeat)));
+  // Read with texelFetch: the sampler is never used to filter.
+  bindings.push_back(
+      vk::bind(LAGOON_SURFACE_BIND_SHOALING, sampled(ocean.shoaling_gpu().table(), samplers.repeat)));
   return bindings;
 }
 
@@ -32,6 +36,7 @@ std::vector<vk::SpecConstant> with_surface_field_specs(std::vector<vk::SpecConst
   own.push_back({LAGOON_SPEC_CASCADE_COUNT, direct ? 0u : fields.ocean.cascade_count()});
   own.push_back({LAGOON_SPEC_DIRECT_WAVES, direct ? 1u : 0u});
   own.push_back({LAGOON_SURFACE_SPEC_WAKES, fields.wakes.active() ? 1u : 0u});
+  own.push_back({LAGOON_SURFACE_SPEC_SHOALING, fields.ocean.shoaling_gpu().active() ? 1u : 0u});
   own.push_back({LAGOON_SURFACE_SPEC_SEDIMENT, fields.sediment ? 1u : 0u});
   return own;
 }

@@ -209,6 +209,14 @@ void read_ocean(ObjectReader& r, ocean::OceanParams& o) {
   r.number("loop_period_s", o.loop_period_s, Bounds::between(0, 3600), "s",
            "If > 0, wave frequencies are rounded so the whole sea repeats exactly with this period (seamless "
            "loops); 0 = no loop.");
+  r.flag(
+      "shoaling", o.shoaling,
+      "Waves feel the slope floor (docs/ocean.md, Waves over the floor): over it they shorten, slow, turn "
+      "toward the shallows, grow and break where their height reaches breaker_index x depth, and end at "
+      "the shoreline; the random sea's height is limited by the depth. false = the floor changes nothing.");
+  r.number(
+      "breaker_index", o.breaker_index, Bounds::between(0.3, 1.5), "",
+      "Wave height over water depth at which waves break (McCowan's 0.78); the broken waves stay at it.");
   using ocean::SurfaceModel;
   r.choice(
       "model", o.model,

@@ -1,6 +1,7 @@
 #include "scene/scene.h"
 
 #include "core/compass.h"
+#include "scene/floor_profile.h"
 #include "scene/gltf_camera.h"
 
 #include <glm/geometric.hpp>
@@ -147,6 +148,7 @@ Result<Scene> validate(const json& document, Diagnostics& diag) {
       if (!line.empty()) diag.file_error(line, "");
     return diag.to_error();
   }
+  scene.ocean.floor = floor_profile(scene.seafloor);  // the floor the waves feel (ocean/shoaling.h)
   return scene;
 }
 

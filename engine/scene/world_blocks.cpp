@@ -67,8 +67,9 @@ void read_seafloor(ObjectReader& r, Seafloor& f) {
                {"none", SeafloorType::None}, {"slope", SeafloorType::Slope}, {"gltf", SeafloorType::Gltf}},
            "\"none\" = open ocean with no visible floor; \"slope\" = a procedural sandy bay (see Seafloor "
            "below); \"gltf\" = a mesh from `file`.");
-  r.number("depth_near_m", f.depth_near_m, Bounds::between(0, 11000), "m",
-           "slope: depth of the floor below the mean water level at `near`.");
+  r.number("depth_near_m", f.depth_near_m, Bounds::between(-100, 11000), "m",
+           "slope: depth of the floor below the mean water level at `near`; < 0 rises above the water (a "
+           "beach: the waves break on it and end at the shoreline).");
   r.number("depth_far_m", f.depth_far_m, Bounds::between(0, 11000), "m",
            "slope: depth at `far` and beyond; the floor is flat past both ends.");
   r.rule("depth_far_m", f.depth_far_m >= f.depth_near_m, ">= depth_near_m",

@@ -47,6 +47,9 @@ void main() {
   LAGOON_CASCADE(2)
   LAGOON_CASCADE(3)
 #undef LAGOON_CASCADE
+  float sea = sea_over_floor(rest);  // the random sea's depth-limited height (common/shoaling.glsl)
+  d *= sea;
+  slope *= sea;
   DirectSum direct = direct_waves_at(rest, 0.0, cell);
   d += direct.displacement;
   slope += direct.slope;

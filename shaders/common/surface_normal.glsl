@@ -46,6 +46,9 @@ SurfaceSample surface_sample(vec3 to_viewer) {
   LAGOON_CASCADE(2)
   LAGOON_CASCADE(3)
 #undef LAGOON_CASCADE
+  float sea = sea_over_floor(v_rest);  // the random sea's depth-limited height (common/shoaling.glsl)
+  slope *= sea;
+  terms *= sea;
   DirectSum direct = direct_waves_at(v_rest, 0.0, footprint);  // models with their own waves
   slope += direct.slope;
   terms += direct.terms;
@@ -53,6 +56,7 @@ SurfaceSample surface_sample(vec3 to_viewer) {
   // (long waves squeezing shorter ones), the whole sea's Jacobian adds the foam no single cascade shows.
   float jacobian = (1.0 + terms.x) * (1.0 + terms.y) - terms.z * terms.z;
   foam = max(foam, clamp((frame.glint.y - jacobian) / frame.glint.w, 0.0, 1.0));
+  foam = max(foam, direct.breaking);  // waves breaking over the floor
   foam *= frame.whitecaps.x;  // render.effects.foam = false hides the whitecaps
   vec4 wake = wake_at(v_rest);
   slope += wake.yz;

@@ -34,6 +34,7 @@ vec3 clipmap_displacement(vec2 rest, float spacing) {
   LAGOON_CASCADE(2)
   LAGOON_CASCADE(3)
 #undef LAGOON_CASCADE
+  d *= sea_over_floor(rest);  // the random sea's depth-limited height (common/shoaling.glsl)
   d += direct_waves_at(rest, 0.0, spacing).displacement;  // models with their own waves
   d.y += wake_at(rest).x;  // the wakes, at the rest position (their own motion is vertical)
   return d;

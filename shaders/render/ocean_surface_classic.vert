@@ -30,6 +30,7 @@ vec3 vertex_normal(vec2 rest, float spacing) {
   LAGOON_CASCADE(2)
   LAGOON_CASCADE(3)
 #undef LAGOON_CASCADE
+  slope *= sea_over_floor(rest);  // the random sea's depth-limited height (common/shoaling.glsl)
   slope += direct_waves_at(rest, 0.0, spacing).slope;
   slope += wake_at(rest).yz;
   return normalize(vec3(-slope.x, 1.0, -slope.y));

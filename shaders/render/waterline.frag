@@ -30,6 +30,7 @@ vec3 displacement_at(vec2 rest) {
   LAGOON_CASCADE(2)
   LAGOON_CASCADE(3)
 #undef LAGOON_CASCADE
+  d *= sea_over_floor(rest);  // the random sea's depth-limited height (common/shoaling.glsl)
   d += direct_waves_at(rest, 0.0, 0.0).displacement;
   d.y += wake_at(rest).x;
   return d;

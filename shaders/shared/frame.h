@@ -59,6 +59,10 @@ struct FrameUniforms {
   vec4 direct;  // x = how many of direct_waves the surface sums (0: the cascades carry the sea), yzw unused
   vec4 submerged_rect;  // screen uv (xy least, zw greatest) that bounds every object drawn under the water
                         // (render/scene_objects.h); empty (x > z) when there is none
+  // The waves' transformation over the floor (common/shoaling.glsl): xy = world xz where its profile starts,
+  // zw = the profile's axis; and x = its spacing m, y = its samples, zw unused.
+  vec4 shoaling_axis;
+  vec4 shoaling_grid;
   // Models gerstner and sines with their own waves (common/direct_waves.glsl), phases at the frame's time.
   DirectWaveGpu direct_waves[LAGOON_DIRECT_MAX_WAVES];
 };
@@ -73,7 +77,7 @@ struct PointLightGpu {
 LAGOON_GPU_END
 
 #ifdef __cplusplus
-LAGOON_CHECK_SIZE(FrameUniforms, 2816);
+LAGOON_CHECK_SIZE(FrameUniforms, 2848);
 LAGOON_CHECK_OFFSET(FrameUniforms, sky, 592);
 LAGOON_CHECK_SIZE(PointLightGpu, 48);
 LAGOON_CHECK_OFFSET(FrameUniforms, camera_pos, 128);

@@ -260,10 +260,10 @@ TEST(OceanCli, ProbeAtAPointIncludesTheWakes) {
 
 // Model gerstner through the tools: lagoon probe answers eq. 11 of the exact waves (summed directly, bound
 // 0), and lagoon export's cascades sum to eq. 11's displacement at the texels' rest points (ocean/gerstner.h,
-// docs/models.md).
+// docs/models.md). Eq. 11 as written: the bay's floor left out (its waves over it: shoaling_test.cpp).
 TEST(OceanCli, ModelGerstnerThroughProbeAndExport) {
   const std::vector<std::string> sets{
-      "ocean.model=gerstner", "ocean.choppiness=0.9",
+      "ocean.model=gerstner", "ocean.choppiness=0.9", "ocean.shoaling=false",
       R"(ocean.cascades=[{"patch_size_m":200,"resolution":64},{"patch_size_m":20,"resolution":64}])",
       R"(ocean.gerstner.waves=[{"amplitude_m":0.6,"wavelength_m":37,"direction_deg":20,"phase_deg":30},)"
       R"({"amplitude_m":0.05,"wavelength_m":2.3,"direction_deg":75}])"};
@@ -302,15 +302,15 @@ TEST(OceanCli, ModelGerstnerThroughProbeAndExport) {
   EXPECT_LT(worst, 1e-4);
 }
 
-// Model sines through lagoon probe: eqs. 2-3's direct sum within the query's bound; picking the model with
-// --set also sets the choppiness it needs.
+// Model sines through lagoon probe: eqs. 2-3's direct sum within the query's bound (the bay's floor left
+// out); picking the model with --set also sets the choppiness it needs.
 TEST(OceanCli, ModelSinesThroughProbe) {
-  const std::vector<std::string> sets{"ocean.model=sines", "ocean.choppiness=0"};
+  const std::vector<std::string> sets{"ocean.model=sines", "ocean.choppiness=0", "ocean.shoaling=false"};
   auto scene = scene::load_scene(kDefaultScene, sets);
   ASSERT_TRUE(scene) << scene.error().message;
   auto r = lagoon("probe --scene " + kDefaultScene +
                   " --time 4.5 --at 3,4 --at -17.5,8.25 --set ocean.model=sines "
-                  "--set ocean.choppiness=0");
+                  "--set ocean.choppiness=0 --set ocean.shoaling=false");
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const std::vector<nlohmann::json> points = json_lines(r.output);
   EXPECT_EQ(points.size(), 2u);
@@ -322,7 +322,8 @@ TEST(OceanCli, ModelSinesThroughProbe) {
   // The same probe without the choppiness: the override that picks sines sets it (issue 39; the refusals
   // are SceneCli.PickingAModelWithSetAlsoSetsWhatTheModelNeedsAndSaysSo's), with the same heights.
   const ProcessResult implied = lagoon("probe --scene " + kDefaultScene +
-                                       " --time 4.5 --at 3,4 --at -17.5,8.25 --set ocean.model=sines");
+                                       " --time 4.5 --at 3,4 --at -17.5,8.25 --set ocean.model=sines "
+                                       "--set ocean.shoaling=false");
   ASSERT_EQ(implied.exit_code, 0) << implied.output;
   EXPECT_NE(implied.output.find("also sets ocean.choppiness 0.8 -> 0"), std::string::npos) << implied.output;
   const std::vector<nlohmann::json> same = json_lines(implied.output);

@@ -89,7 +89,8 @@ TEST(SceneCli, FramesWriteOneNumberedPngEach) {
 // (choppiness 0, ocean/model_constraints.h), as the demo's selector does, and says so; a choppiness the user
 // sets too, or a scene file that picks sines itself with another choppiness, is still refused.
 TEST(SceneCli, PickingAModelWithSetAlsoSetsWhatTheModelNeedsAndSaysSo) {
-  for (const char* name : {"default", "harbour", "open-ocean", "reef-dive", "tropical-lagoon", "waterline"}) {
+  for (const char* name :
+       {"default", "harbour", "open-ocean", "reef-dive", "tropical-lagoon", "waterline", "beach"}) {
     const std::string scene = shell_quote(std::string(LAGOON_SOURCE_DIR) + "/scenes/" + name + ".json");
     const ProcessResult r = lagoon("probe --scene " + scene + " --time 1 --at 0,0 --set ocean.model=sines");
     EXPECT_EQ(r.exit_code, 0) << name << "\n" << r.output;

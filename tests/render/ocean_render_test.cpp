@@ -175,7 +175,7 @@ TEST_P(ShippedScenes, MatchGolden) {
 
 INSTANTIATE_TEST_SUITE_P(Scenes, ShippedScenes,
                          ::testing::Values("default", "open-ocean", "tropical-lagoon", "reef-dive",
-                                           "waterline", "harbour"),
+                                           "waterline", "harbour", "beach"),
                          [](const auto& info) {
                            std::string n = info.param;
                            std::replace(n.begin(), n.end(), '-', '_');

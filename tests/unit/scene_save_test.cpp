@@ -20,7 +20,8 @@ fs::path temp_folder(const std::string& name) {
 }
 
 TEST(SceneSave, ShippedScenesRoundTrip) {
-  for (const char* name : {"default", "open-ocean", "tropical-lagoon", "reef-dive", "waterline", "harbour"}) {
+  for (const char* name :
+       {"default", "open-ocean", "tropical-lagoon", "reef-dive", "waterline", "harbour", "beach"}) {
     const fs::path source = fs::path(LAGOON_SOURCE_DIR) / "scenes" / (std::string(name) + ".json");
     auto scene = scene::load_scene(source);
     ASSERT_TRUE(scene) << scene.error().message;

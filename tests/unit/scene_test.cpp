@@ -927,8 +927,10 @@ TEST(SceneWorld, GltfSeafloorAndDefaultElements) {
 
 TEST(SceneWorld, OutOfRangeValues) {
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {R"({"seafloor": {"depth_near_m": -1}})",
-       "seafloor.depth_near_m: -1 is out of range; allowed: number 0 to 11000 m (default 0.5)"},
+      {R"({"seafloor": {"depth_near_m": -101}})",
+       "seafloor.depth_near_m: -101 is out of range; allowed: number -100 to 11000 m (default 0.5)"},
+      {R"({"ocean": {"breaker_index": 0.1}})",
+       "ocean.breaker_index: 0.1 is out of range; allowed: number 0.3 to 1.5 (default 0.78)"},
       {R"({"seafloor": {"depth_far_m": 11001}})",
        "seafloor.depth_far_m: 11001 is out of range; allowed: number 0 to 11000 m (default 30)"},
       {R"({"seafloor": {"extent_m": 0}})",

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <complex>
 #include <cstring>
 #include <optional>
@@ -11,6 +12,7 @@
 
 #include "lagoon_shaders/shaders.h"
 #include "ocean/direct_waves.h"
+#include "ocean/slope_statistics.h"
 #include "ocean/validate.h"
 #include "shared/limits.h"
 #include "shared/ocean.h"
@@ -174,6 +176,24 @@ void GpuOcean::build(std::vector<CascadeSpectrum> spectra) {
   springs_ = params_.model == SurfaceModel::Springs ? std::make_unique<SpringsGpu>(ctx_, params_) : nullptr;
   direct_surface_ = direct ? std::make_unique<GerstnerSurface>(*direct) : nullptr;
   direct_ = direct ? std::make_unique<DirectWavesGpu>(ctx_, params_, *direct_surface_) : nullptr;
+  shoaling_ = sea_over_floor();
+  shoaling_gpu_ = std::make_unique<ShoalingGpu>(ctx_, shoaling_.get());
+}
+
+std::shared_ptr<const Shoaling> GpuOcean::sea_over_floor() const {
+  if (direct_surface_) {
+    const Shoaling* own = direct_surface_->shoaling();
+    // Shared with the surface that owns it, which lives as long as this ocean.
+    return own ? std::shared_ptr<const Shoaling>(std::shared_ptr<const void>(), own) : nullptr;
+  }
+  if (!params_.floor || !params_.shoaling || params_.model == SurfaceModel::Springs) return nullptr;
+  // The random sea's significant height, as WaveQuery and the renderer's shading compute it.
+  double variance = 0;
+  for (const CascadeSpectrum& s : spectra_) variance += height_variance(s);
+  auto sea = std::make_shared<Shoaling>(ShoalingInputs{.floor = params_.floor,
+                                                       .breaker_index = params_.breaker_index,
+                                                       .sea_significant_height_m = 4 * std::sqrt(variance)});
+  return sea->active() ? sea : nullptr;
 }
 
 void GpuOcean::record_step(VkCommandBuffer cmd, double time_s, double dt_s, vk::GpuTimer* timer, Step step) {

@@ -14,6 +14,7 @@
 #include "core/result.h"
 #include "ocean/gpu/direct_waves_gpu.h"
 #include "ocean/gpu/ocean_fft_path.h"
+#include "ocean/gpu/shoaling_gpu.h"
 #include "ocean/gpu/springs_gpu.h"
 #include "ocean/initial_spectrum.h"
 #include "ocean/ocean_params.h"
@@ -87,6 +88,10 @@ class GpuOcean {
   // The waves the surface sums where it is drawn (ocean/direct_waves.h), or null when the cascades carry the
   // sea: then the renderer samples no cascade at all.
   const GerstnerSurface* direct_waves() const { return direct_surface_.get(); }
+  // The waves' transformation over the scene's floor (ocean/shoaling.h; the direct waves' own, or the random
+  // sea's depth-limited height), null where nothing changes; and its table for the shaders.
+  const Shoaling* shoaling() const { return shoaling_.get(); }
+  const ShoalingGpu& shoaling_gpu() const { return *shoaling_gpu_; }
 
   // Reads back mip 0 of one cascade (submits and waits; for tests, export and probes).
   CascadeReadback read_cascade(uint32_t index) const;
@@ -103,6 +108,7 @@ class GpuOcean {
  private:
   struct Group;
   void build(std::vector<CascadeSpectrum> spectra);
+  std::shared_ptr<const Shoaling> sea_over_floor() const;
 
   vk::Context& ctx_;
   OceanParams params_;
@@ -116,6 +122,8 @@ class GpuOcean {
   std::unique_ptr<SpringsGpu> springs_;  // model springs: writes the first cascade in place of the FFT
   std::unique_ptr<GerstnerSurface> direct_surface_;  // models with their own waves: the sum ...
   std::unique_ptr<DirectWavesGpu> direct_;           // ... and its step, in place of the FFT
+  std::shared_ptr<const Shoaling> shoaling_;
+  std::unique_ptr<ShoalingGpu> shoaling_gpu_;
 };
 
 }  // namespace lagoon::ocean

@@ -2,6 +2,7 @@
 
 #include "lagoon_shaders/shaders.h"
 #include "render/surface_fields.h"
+#include "shared/shoaling.h"
 #include "shared/surface.h"
 #include "vk/rendering.h"
 
@@ -40,13 +41,15 @@ void WaterlinePass::record(const FrameContext& frame, vk::Target color, vk::Targ
   vk::GpuScope scope(frame.timer(), frame.cmd, "waterline");
   vk::begin_rendering(frame.cmd, frame.extent, {{.view = color.view}},
                       vk::DepthTarget{.view = depth.view, .clear = {}});
-  // Only the displacement of the cascades (the vertex stage's array, without the normals) and the wakes.
+  // Only the displacement of the cascades (the vertex stage's array, without the normals), the wakes and the
+  // floor's transformation table.
   std::vector<vk::Binding> bindings{
       vk::bind(LAGOON_SURFACE_BIND_FRAME, frame.uniforms()),
       vk::bind(LAGOON_SURFACE_BIND_BELOW_COLOR, sampled(color_, samplers_.nearest)),
       vk::bind(LAGOON_SURFACE_BIND_BELOW_DEPTH, sampled(depth_, samplers_.nearest))};
   for (const vk::Binding& b : surface_field_bindings(fields_, samplers_))
-    if (b.binding == LAGOON_SURFACE_BIND_DISPLACEMENT || b.binding == LAGOON_SURFACE_BIND_WAKES)
+    if (b.binding == LAGOON_SURFACE_BIND_DISPLACEMENT || b.binding == LAGOON_SURFACE_BIND_WAKES ||
+        b.binding == LAGOON_SURFACE_BIND_SHOALING)
       bindings.push_back(b);
   vk::draw(frame.cmd, composite_, bindings, nullptr, 0, 3);
   vk::end_rendering(frame.cmd);

@@ -1,0 +1,81 @@
+// Waves over the floor (issue 37; docs/ocean.md "Waves over the floor"): linear wave theory's transformation
+// of each directly evaluated wave over a depth profile (ocean/depth_profile.h), and the random sea's
+// depth-limited height. Plain C++, double precision; the table the shaders read is its float copy
+// (shared/shoaling.h), interpolated by the same arithmetic (shared/shoaling_math.h).
+//
+// A wave of frequency ω keeps ω and its wavenumber along the depth contours k_v (Snell's law over contours
+// that are straight and parallel); its wavenumber k(h) follows ω² = g k tanh(k h) (seed 001 eq. 8), so it
+// turns toward the shallows (k_u = sqrt(k² - k_v²)); its energy flux E c_g cos θ is conserved between rays,
+// so its amplitude is A0 K_s K_r with K_s = sqrt(c_g0 / c_g) and K_r = sqrt(cos θ0 / cos θ); and where the
+// wave height would exceed γ h (McCowan's breaker index γ = 0.78) it breaks and stays at γ h, down to the
+// shoreline where it ends. The phase is θ = k0·x + φ(s) - ω t + φ0 with φ(s) = ∫ (k_u - k_u0) ds, so a
+// crest's spacing is the local wavelength. The wave's own (k0, ω) holds wherever the floor is deeper than
+// half its wavelength (or than ocean.depth_m, the depth a finite-depth wave is given at): there nothing
+// changes, and a sea with no shallower floor is not transformed at all.
+//
+// The random sea (the FFT cascades) cannot bend its lattice waves; it is scaled by its depth-limited height
+// instead: a significant height of at most 0.6 h (Thornton & Guza 1983: H_rms <= 0.42 h in the surf zone),
+// falling to nothing at the shoreline.
+#pragma once
+#include <cmath>
+#include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
+#include <memory>
+#include <vector>
+
+#include "ocean/depth_profile.h"
+
+namespace lagoon::ocean {
+
+inline constexpr double kBreakerIndex = 0.78;       // H / h at breaking (McCowan 1894)
+inline constexpr double kSurfZoneHsPerDepth = 0.6;  // the random sea's H_s / h in the surf zone
+
+struct ShoalingWave {
+  glm::dvec2 k{0.0};                // its own wavevector (rad/m): where the floor is deep
+  double omega = 0;                 // rad/s
+  double amplitude_m = 0;           // its own amplitude
+  double height_per_amplitude = 2;  // crest-to-trough height / amplitude: 2 for cos θ, 1 for the sines'
+  double steepness = 0;             // Q (horizontal displacement Q A)
+};
+
+struct ShoalingInputs {
+  std::shared_ptr<const DepthProfile> floor;
+  std::vector<ShoalingWave> waves;
+  double reference_depth_m = HUGE_VAL;  // where the waves' (k, ω) hold: ocean.depth_m for finite-depth waves
+  double breaker_index = kBreakerIndex;
+  double sea_significant_height_m = 0;  // of the random sea, 0 when there is none
+};
+
+// The transformation: a table over the profile's samples, row 0 for the floor, one row per wave.
+class Shoaling {
+ public:
+  explicit Shoaling(ShoalingInputs inputs);
+
+  // Whether any value differs from the untransformed sea's (a floor shallow enough for some wave or the sea).
+  bool active() const { return active_; }
+  const DepthProfile& floor() const { return *inputs_.floor; }
+  size_t wave_count() const { return inputs_.waves.size(); }
+  size_t samples() const { return inputs_.floor->depth_m.size(); }
+  // Row 0 at (x, z): (depth m, the random sea's height scale, the waves' steepness scale, breaking ratio:
+  // the summed linear height over γ h, >= 1 where the waves break).
+  glm::dvec4 ground(glm::dvec2 xz) const;
+  // Wave i at (x, z): (phase offset φ rad, amplitude m, k_u rad/m, amplitude before breaking m).
+  glm::dvec4 wave(size_t i, glm::dvec2 xz) const;
+  // Its local wavevector there: k_u along the axis, its own k_v across.
+  glm::dvec2 wavevector(size_t i, const glm::dvec4& value) const;
+  // The table, row-major (samples() texels per row, 1 + wave_count() rows), for the GPU.
+  const std::vector<glm::dvec4>& table() const { return table_; }
+
+  // Linear theory's pieces, exposed for tests: k solving ω² = g k tanh(k h), and c_g there.
+  static double wavenumber(double omega, double depth_m);
+  static double group_velocity(double omega, double depth_m);
+
+ private:
+  glm::dvec4 locate(glm::dvec2 xz) const;
+  void build_wave(size_t i, std::vector<double>& linear_height);
+  ShoalingInputs inputs_;
+  std::vector<glm::dvec4> table_;
+  bool active_ = false;
+};
+
+}  // namespace lagoon::ocean

@@ -1,0 +1,16 @@
+// Waves that feel the floor (issue 37; ocean/shoaling.h, docs/ocean.md "Waves over the floor"): the
+// transformation's table as the surface shaders read it (common/shoaling.glsl). One RGBA32F texel per profile
+// sample and row: row 0 = (depth m, the random sea's height scale, the waves' steepness scale, breaking
+// ratio), row 1 + i = direct wave i's (phase offset rad, amplitude m, wavenumber along the axis rad/m,
+// amplitude before breaking m). Read with texelFetch and interpolated by shared/shoaling_math.h, the same
+// arithmetic as the CPU's.
+#ifndef LAGOON_SHARED_SHOALING_H
+#define LAGOON_SHARED_SHOALING_H
+
+#define LAGOON_SURFACE_BIND_SHOALING 19
+// Specialisation constant of the shaders that sum the water's motion: the transformation compiled in (1) or
+// not (no floor shallow enough to matter: the deep sea's code, bit for bit).
+#define LAGOON_SURFACE_SPEC_SHOALING 10
+#define LAGOON_SHOALING_MAX_SAMPLES 4096
+
+#endif

@@ -1,0 +1,86 @@
+// Waves over the floor as drawn (issue 37): the beach scene's surface, read back per pixel
+// (OceanRenderer::render_surface_aov), against WaveQuery's height at the same world point (the same table in
+// double, ocean/shoaling.h): one surface for the renderer, probes, bodies and datasets. The comparison would
+// also pass if neither transformed the waves, so it is checked to tell the beach from the untransformed sea.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <vector>
+
+#include "ocean/wave_query.h"
+#include "render/ocean_renderer.h"
+#include "support/vk_fixture.h"
+
+namespace lagoon::test {
+namespace {
+
+struct HeightError {
+  double rms = 0, worst = 0, rms_untransformed = 0;
+  int pixels = 0;
+};
+
+class ShoalingRender : public GpuTest {
+ protected:
+  // Looking down on the surf zone and the slope beyond it from 25 m up.
+  HeightError compare(const std::vector<std::string>& extra) {
+    std::vector<std::string> o{"render.width=240", "render.height=135", "camera.position=[0,25,30]",
+                               "camera.look_at=[0,0,110]", "time_s=5"};
+    o.insert(o.end(), extra.begin(), extra.end());
+    auto s = scene::load_scene(std::string(LAGOON_SOURCE_DIR) + "/scenes/beach.json", o);
+    EXPECT_TRUE(s) << s.error().message;
+    auto renderer = render::OceanRenderer::create(ctx(), *s);
+    EXPECT_TRUE(renderer) << renderer.error().message;
+    const auto aov = (*renderer)->render_surface_aov(*s);
+    ocean::WaveQuery query(s->ocean);
+    scene::Scene flat = *s;
+    flat.ocean.shoaling = false;
+    ocean::WaveQuery untransformed(flat.ocean);
+    std::vector<glm::dvec2> points;
+    std::vector<double> drawn;
+    for (uint32_t y = 0; y < aov.height; y += 2)
+      for (uint32_t x = 0; x < aov.width; x += 2) {
+        const glm::vec4 w = aov.world_at(x, y);
+        // The water within 120 m, where the mesh's triangles are well under a metre.
+        if (w.w < 0.5f || glm::length(glm::vec3(w) - s->camera.position) > 120.f) continue;
+        points.emplace_back(w.x, w.z);
+        drawn.push_back(w.y);
+      }
+    const std::vector<ocean::WaveSample> a = query.sample(s->time_s, points);
+    const std::vector<ocean::WaveSample> b = untransformed.sample(s->time_s, points);
+    HeightError e;
+    double sum = 0, sum_b = 0;
+    for (size_t i = 0; i < points.size(); ++i) {
+      const double d = drawn[i] - a[i].height;
+      sum += d * d;
+      sum_b += (drawn[i] - b[i].height) * (drawn[i] - b[i].height);
+      e.worst = std::max(e.worst, std::abs(d));
+    }
+    e.pixels = int(points.size());
+    e.rms = std::sqrt(sum / std::max<size_t>(points.size(), 1));
+    e.rms_untransformed = std::sqrt(sum_b / std::max<size_t>(points.size(), 1));
+    std::printf("beach: %d pixels, rms %.4f m, worst %.4f m; against the untransformed sea rms %.3f m\n",
+                e.pixels, e.rms, e.worst, e.rms_untransformed);
+    return e;
+  }
+};
+
+TEST_F(ShoalingRender, TheDrawnSurfaceIsWaveQuerysOverTheFloor) {
+  const HeightError e = compare({});
+  EXPECT_GT(e.pixels, 3000);
+  // The mesh's triangles and its fading of the 5 m and 11 m waves where its spacing nears their length leave
+  // 3.3 cm rms and 12 cm at worst with or without the floor (next test); the floor adds 0.1 cm and 4 cm.
+  EXPECT_LT(e.rms, 0.05);
+  EXPECT_LT(e.worst, 0.25);
+  // The waves over the slope are not the deep sea's: the comparison can tell them apart.
+  EXPECT_GT(e.rms_untransformed, 10 * e.rms);
+}
+
+TEST_F(ShoalingRender, ShoalingOffDrawsTheUntransformedSea) {
+  const HeightError e = compare({"ocean.shoaling=false"});
+  EXPECT_LT(e.rms, 0.05);
+  EXPECT_LT(e.rms_untransformed, 0.05);
+}
+
+}  // namespace
+}  // namespace lagoon::test
