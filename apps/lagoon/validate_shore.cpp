@@ -66,7 +66,7 @@ class Beach {
     }
     p.waves.push_back({.amplitude_m = s.amplitude_m,
                        .wavelength_m = 2 * kPi / s.k0(),
-                       .direction_deg = 180 + s.angle_deg,
+                       .direction_deg = s.angle_deg,  // toward -z, the beach: north (core/compass.h)
                        .steepness = 0});
     surface_ = std::make_unique<ocean::GerstnerSurface>(std::move(p));
   }

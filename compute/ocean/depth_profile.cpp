@@ -1,21 +1,30 @@
 #include "ocean/depth_profile.h"
 
 #include <algorithm>
-#include <cmath>
 #include <glm/geometric.hpp>
 
 namespace lagoon::ocean {
 
-double DepthProfile::s_of(glm::dvec2 xz) const {
-  return glm::dot(xz - origin, axis);
+glm::dvec2 DepthProfile::local(glm::dvec2 xz) const {
+  return {glm::dot(xz - origin, axis), glm::dot(xz - origin, across())};
 }
 
-double DepthProfile::depth_at(double s) const {
-  if (depth_m.empty()) return 0.0;
-  const double t = std::clamp(s / spacing_m, 0.0, double(depth_m.size() - 1));
-  const size_t i = std::min(size_t(t), depth_m.size() - 1);
-  const size_t j = std::min(i + 1, depth_m.size() - 1);
-  return depth_m[i] + (depth_m[j] - depth_m[i]) * (t - double(i));
+double DepthProfile::depth_at(glm::dvec2 s) const {
+  const size_t nu = columns(), nv = rows;
+  if (nu == 0) return 0.0;
+  auto axis_at = [&](double t, size_t n, size_t& i, size_t& next, double& f) {
+    t = std::clamp(t / spacing_m, 0.0, double(n - 1));
+    i = std::min(size_t(t), n - 1);
+    next = std::min(i + 1, n - 1);
+    f = t - double(i);
+  };
+  size_t i0, i1, j0, j1;
+  double fu, fv;
+  axis_at(s.x, nu, i0, i1, fu);
+  axis_at(s.y, nv, j0, j1, fv);
+  const double a = depth(i0, j0) + (depth(i1, j0) - depth(i0, j0)) * fu;
+  const double b = depth(i0, j1) + (depth(i1, j1) - depth(i0, j1)) * fu;
+  return a + (b - a) * fv;
 }
 
 double DepthProfile::shallowest_m() const {

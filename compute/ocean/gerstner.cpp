@@ -83,7 +83,7 @@ GerstnerSurface::Sum GerstnerSurface::sum_at(glm::dvec2 x0, double t) const {
     double a = w.amplitude_m, offset = 0;
     if (shoaling_) {
       const glm::dvec4 local = shoaling_->wave(i, x0);
-      kv = shoaling_->wavevector(i, local);
+      kv = shoaling_->wavevector(local);
       a = local.y;
       offset = local.x;
     }

@@ -13,6 +13,13 @@
 // half its wavelength (or than ocean.depth_m, the depth a finite-depth wave is given at): there nothing
 // changes, and a sea with no shallower floor is not transformed at all.
 //
+// Over a floor sampled in two dimensions (a glTF floor) the same laws are solved on the grid: the phase from
+// the eikonal equation |∇S| = k(h) by fast marching from where the wave is its own (the cells deeper than
+// half its wavelength; where the grid has none, its upwind edges, an approximation), the direction from ∇S,
+// and the amplitude from the energy flux's conservation
+// ∇·(E c_g k̂) = 0 marched along the rays in the same order (first-order accurate; where rays cross, behind
+// a shoal, the amplitude is held to 4 a0 and the phase is the first arrival's).
+//
 // The random sea (the FFT cascades) cannot bend its lattice waves; it is scaled by its depth-limited height
 // instead: a significant height of at most 0.6 h (Thornton & Guza 1983: H_rms <= 0.42 h in the surf zone),
 // falling to nothing at the shoreline.
@@ -46,7 +53,7 @@ struct ShoalingInputs {
   double sea_significant_height_m = 0;  // of the random sea, 0 when there is none
 };
 
-// The transformation: a table over the profile's samples, row 0 for the floor, one row per wave.
+// The transformation: a table over the profile's samples, layer 0 for the floor, one layer per wave.
 class Shoaling {
  public:
   explicit Shoaling(ShoalingInputs inputs);
@@ -55,15 +62,15 @@ class Shoaling {
   bool active() const { return active_; }
   const DepthProfile& floor() const { return *inputs_.floor; }
   size_t wave_count() const { return inputs_.waves.size(); }
-  size_t samples() const { return inputs_.floor->depth_m.size(); }
-  // Row 0 at (x, z): (depth m, the random sea's height scale, the waves' steepness scale, breaking ratio:
+  size_t samples() const { return inputs_.floor->depth_m.size(); }  // per layer
+  // Layer 0 at (x, z): (depth m, the random sea's height scale, the waves' steepness scale, breaking ratio:
   // the summed linear height over γ h, >= 1 where the waves break).
   glm::dvec4 ground(glm::dvec2 xz) const;
-  // Wave i at (x, z): (phase offset φ rad, amplitude m, k_u rad/m, amplitude before breaking m).
+  // Wave i at (x, z): (phase offset φ rad, amplitude m, k_u, k_v rad/m).
   glm::dvec4 wave(size_t i, glm::dvec2 xz) const;
-  // Its local wavevector there: k_u along the axis, its own k_v across.
-  glm::dvec2 wavevector(size_t i, const glm::dvec4& value) const;
-  // The table, row-major (samples() texels per row, 1 + wave_count() rows), for the GPU.
+  // Its local wavevector in world (x, z).
+  glm::dvec2 wavevector(const glm::dvec4& value) const;
+  // The table, layer after layer (samples() texels each, rows of columns), for the GPU.
   const std::vector<glm::dvec4>& table() const { return table_; }
 
   // Linear theory's pieces, exposed for tests: k solving ω² = g k tanh(k h), and c_g there.
@@ -71,8 +78,15 @@ class Shoaling {
   static double group_velocity(double omega, double depth_m);
 
  private:
-  glm::dvec4 locate(glm::dvec2 xz) const;
-  void build_wave(size_t i, std::vector<double>& linear_height);
+  struct Where {
+    size_t i0, i1, j0, j1;
+    double fu, fv, beyond_u, beyond_v;
+  };
+  Where locate(glm::dvec2 xz) const;
+  glm::dvec4 at(size_t layer, const Where& w) const;
+  // Each fills its wave's layer and returns the wave's amplitude before breaking at every sample.
+  std::vector<double> build_profile_wave(size_t i);  // one row: straight contours, closed form along u
+  std::vector<double> build_grid_wave(size_t i);     // rows: the eikonal and the energy flux on the grid
   ShoalingInputs inputs_;
   std::vector<glm::dvec4> table_;
   bool active_ = false;

@@ -148,7 +148,6 @@ Result<Scene> validate(const json& document, Diagnostics& diag) {
       if (!line.empty()) diag.file_error(line, "");
     return diag.to_error();
   }
-  scene.ocean.floor = floor_profile(scene.seafloor);  // the floor the waves feel (ocean/shoaling.h)
   return scene;
 }
 
@@ -192,6 +191,7 @@ Result<Scene> load_scene(const std::filesystem::path& path, std::span<const std:
     if (scene) {
       scene->source = path;
       resolve_files(*scene, path.parent_path());
+      attach_floor(*scene);  // the floor the waves feel (ocean/shoaling.h), once its file is resolved
       if (Result<void> camera = apply_gltf_camera(*scene, path.string()); !camera) return camera.error();
     }
     return scene;
@@ -203,7 +203,9 @@ Result<Scene> load_scene(const std::filesystem::path& path, std::span<const std:
 Result<Scene> parse_scene(const nlohmann::json& document, const std::string& source_name) {
   try {
     Diagnostics diag(source_name);
-    return validate(document, diag);
+    Result<Scene> scene = validate(document, diag);
+    if (scene) attach_floor(*scene);
+    return scene;
   } catch (const std::exception& e) {
     return Error{source_name + ": internal error while reading the scene: " + e.what()};
   }

@@ -56,9 +56,9 @@ DirectSum direct_waves_at(vec2 rest, float t, float filter_m) {
     float amplitude = w.wave.w, offset = 0.0, q = w.shape.x;
 #ifdef LAGOON_DIRECT_OVER_FLOOR
     if (kShoaling) {
-      vec2 u = frame.shoaling_axis.zw, v = vec2(-u.y, u.x);
-      vec4 local = shoal_wave(floor_here, i, dot(kv, u));
-      kv = local.z * u + dot(kv, v) * v;
+      vec2 u = frame.shoaling_axis.zw;
+      vec4 local = shoal_wave(floor_here, i, kv);
+      kv = local.z * u + local.w * vec2(-u.y, u.x);
       amplitude = local.y;
       offset = local.x;
       q *= floor_here.ground.z;
@@ -76,7 +76,7 @@ DirectSum direct_waves_at(vec2 rest, float t, float filter_m) {
     dy += a * g.y * kv;
     s.terms -= qa * k * cs * vec3(d.x * d.x, d.y * d.y, d.x * d.y);
 #ifdef LAGOON_DIRECT_OVER_FLOOR
-    crest += a * pow(0.5 + 0.5 * cs, 4.0);
+    crest += a * pow(0.5 + 0.5 * cs, 6.0);
     weight += a;
 #endif
   }
@@ -84,8 +84,8 @@ DirectSum direct_waves_at(vec2 rest, float t, float filter_m) {
   // Breaking starts where the summed height reaches γ h (ratio 1): white on the crests as they spill, and the
   // surf behind them churned.
   if (kShoaling) {
-    float onset = smoothstep(0.9, 1.3, floor_here.ground.w);
-    s.breaking = onset * (0.08 + 0.92 * crest / max(weight, 1e-6)) * step(0.0, floor_here.ground.x);
+    float onset = smoothstep(0.95, 1.4, floor_here.ground.w);
+    s.breaking = onset * smoothstep(0.35, 0.85, crest / max(weight, 1e-6)) * step(0.0, floor_here.ground.x);
   }
 #endif
   // The displaced surface's slope: ∇h through the inverse of the horizontal map's Jacobian (symmetric).

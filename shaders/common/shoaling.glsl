@@ -8,28 +8,51 @@
 #include "shared/shoaling.h"
 
 layout(constant_id = LAGOON_SURFACE_SPEC_SHOALING) const bool kShoaling = false;
-layout(binding = LAGOON_SURFACE_BIND_SHOALING) uniform sampler2D shoaling_table;
+layout(binding = LAGOON_SURFACE_BIND_SHOALING) uniform sampler2DArray shoaling_table;
 
 #define sh_real float
 #define sh_real4 vec4
 #include "shared/shoaling_math.h"
 
 struct ShoalPoint {
-  vec4 at;      // sh_locate's (sample, fraction, s beyond the table)
-  vec4 ground;  // row 0: (depth, the random sea's height scale, the waves' steepness scale, breaking ratio)
+  ivec4 texels;  // the samples around the point: (u below, u above, v below, v above)
+  vec4 at;       // (fraction along u, along v, metres beyond the grid along u, along v)
+  vec4 ground;   // layer 0: (depth, the random sea's height scale, the waves' steepness scale, breaking ratio)
 };
 
-ShoalPoint shoal_point(vec2 xz) {
-  float s = dot(xz - frame.shoaling_axis.xy, frame.shoaling_axis.zw);
-  vec4 at = sh_locate(s, frame.shoaling_grid.x, frame.shoaling_grid.y);
-  ivec2 i = ivec2(int(at.x), 0);
-  return ShoalPoint(at, sh_value(texelFetch(shoaling_table, i, 0), texelFetch(shoaling_table, i + ivec2(1, 0), 0), at));
+vec4 shoal_layer(ShoalPoint p, int layer) {
+  vec4 a00 = texelFetch(shoaling_table, ivec3(p.texels.x, p.texels.z, layer), 0);
+  vec4 a10 = texelFetch(shoaling_table, ivec3(p.texels.y, p.texels.z, layer), 0);
+  if (frame.shoaling_grid.z < 1.5) return a00 + (a10 - a00) * p.at.x;  // one row: contours along v
+  vec4 a01 = texelFetch(shoaling_table, ivec3(p.texels.x, p.texels.w, layer), 0);
+  vec4 a11 = texelFetch(shoaling_table, ivec3(p.texels.y, p.texels.w, layer), 0);
+  return sh_bilinear(a00, a10, a01, a11, p.at.x, p.at.y);
 }
 
-// Direct wave `wave` there: (phase offset, amplitude, k along the axis, amplitude before breaking).
-vec4 shoal_wave(ShoalPoint p, int wave, float k_u0) {
-  ivec2 i = ivec2(int(p.at.x), wave + 1);
-  return sh_wave_value(texelFetch(shoaling_table, i, 0), texelFetch(shoaling_table, i + ivec2(1, 0), 0), p.at, k_u0);
+ShoalPoint shoal_point(vec2 xz) {
+  vec2 d = xz - frame.shoaling_axis.xy, u = frame.shoaling_axis.zw;
+  vec4 au = sh_locate(dot(d, u), frame.shoaling_grid.x, frame.shoaling_grid.y);
+  vec4 av = sh_locate(dot(d, vec2(-u.y, u.x)), frame.shoaling_grid.x, frame.shoaling_grid.z);
+  int last_u = int(frame.shoaling_grid.y) - 1, last_v = int(frame.shoaling_grid.z) - 1;
+  ShoalPoint p;
+  p.texels = ivec4(int(au.x), min(int(au.x) + 1, last_u), int(av.x), min(int(av.x) + 1, last_v));
+  p.at = vec4(au.y, av.y, au.z, av.z);
+  p.ground = shoal_layer(p, 0);
+  return p;
+}
+
+// Direct wave `wave` there: (phase offset, amplitude, k along the axis, k across it); k0: its own wavevector.
+vec4 shoal_wave(ShoalPoint p, int wave, vec2 k0) {
+  vec2 u = frame.shoaling_axis.zw;
+  return sh_wave_value(shoal_layer(p, wave + 1), p.at.z, p.at.w, dot(k0, u), dot(k0, vec2(-u.y, u.x)));
+}
+
+// Whether the floor at a rest position is above the mean water level (a beach's dry sand): the surface is not
+// drawn there, so its plane never shows through the sand along the shoreline. The callers discard at the end
+// of main: the derivatives before it need every lane of the quad.
+bool over_dry_land(vec2 xz) {
+  if (!kShoaling) return false;
+  return shoal_point(xz).ground.x < 0.0;
 }
 
 // The random sea's (the cascades') height scale over the floor at a rest position: 1 in deep water.

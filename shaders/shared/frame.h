@@ -60,7 +60,7 @@ struct FrameUniforms {
   vec4 submerged_rect;  // screen uv (xy least, zw greatest) that bounds every object drawn under the water
                         // (render/scene_objects.h); empty (x > z) when there is none
   // The waves' transformation over the floor (common/shoaling.glsl): xy = world xz where its profile starts,
-  // zw = the profile's axis; and x = its spacing m, y = its samples, zw unused.
+  // zw = the grid's axis; and x = its spacing m, y = its columns (along the axis), z = its rows, w unused.
   vec4 shoaling_axis;
   vec4 shoaling_grid;
   // Models gerstner and sines with their own waves (common/direct_waves.glsl), phases at the frame's time.

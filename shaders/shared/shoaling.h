@@ -1,9 +1,9 @@
 // Waves that feel the floor (issue 37; ocean/shoaling.h, docs/ocean.md "Waves over the floor"): the
-// transformation's table as the surface shaders read it (common/shoaling.glsl). One RGBA32F texel per profile
-// sample and row: row 0 = (depth m, the random sea's height scale, the waves' steepness scale, breaking
-// ratio), row 1 + i = direct wave i's (phase offset rad, amplitude m, wavenumber along the axis rad/m,
-// amplitude before breaking m). Read with texelFetch and interpolated by shared/shoaling_math.h, the same
-// arithmetic as the CPU's.
+// transformation's table as the surface shaders read it (common/shoaling.glsl): an RGBA32F array texture, one
+// texel per sample of the floor's grid (columns along its axis, rows across it) and a layer per quantity:
+// layer 0 = (depth m, the random sea's height scale, the waves' steepness scale, breaking ratio), layer 1 + i
+// = direct wave i's (phase offset rad, amplitude m, its wavevector along and across the axis rad/m). Read
+// with texelFetch and interpolated by shared/shoaling_math.h, the same arithmetic as the CPU's.
 #ifndef LAGOON_SHARED_SHOALING_H
 #define LAGOON_SHARED_SHOALING_H
 

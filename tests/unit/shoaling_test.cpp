@@ -9,7 +9,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <glm/geometric.hpp>
 #include <memory>
@@ -18,6 +20,9 @@
 
 #include "core/compass.h"
 #include "ocean/gerstner.h"
+#include "scene/floor_profile.h"
+#include "support/gltf_quads.h"
+#include "support/temp_dir.h"
 
 namespace lagoon::test {
 namespace {
@@ -35,6 +40,28 @@ std::shared_ptr<const ocean::DepthProfile> planar_beach(double near_m = -1, doub
   for (size_t i = 0; i < n; ++i) p->depth_m.push_back(near_m + (far_m - near_m) * double(i) / double(n - 1));
   return p;
 }
+// The same beach, 1:30 on to 100 m deep (z = 3030 m), sampled on a grid of `spacing_m` whose axes are
+// turned `turn_deg` from the world's, so its contours cross the grid's lines: as a glTF floor is sampled
+// (scene/floor_profile.h) and solved in two dimensions (the eikonal and the energy flux) from the deep water
+// where the waves are their own.
+std::shared_ptr<const ocean::DepthProfile> grid_beach(double turn_deg, double spacing_m) {
+  auto p = std::make_shared<ocean::DepthProfile>();
+  const double a = turn_deg * kPi / 180;
+  p->axis = {std::cos(a), std::sin(a)};
+  const glm::dvec2 centre(0, 1500), u = p->axis, v = p->across();
+  const double half = 1800;  // the turned square covers x in ±600 m, z from -150 to 3150 m
+  p->origin = centre - half * u - half * v;
+  p->spacing_m = spacing_m;
+  const size_t n = size_t(2 * half / spacing_m) + 1;
+  p->rows = n;
+  for (size_t j = 0; j < n; ++j)
+    for (size_t i = 0; i < n; ++i) {
+      const glm::dvec2 x = p->origin + spacing_m * (double(i) * u + double(j) * v);
+      p->depth_m.push_back(std::clamp(-1 + 21 * x.y / 630, -1.0, 100.0));
+    }
+  return p;
+}
+
 double beach_z(double depth_m) {
   return (depth_m + 1) / 21.0 * 630;
 }
@@ -73,10 +100,10 @@ ocean::GerstnerSurface beach_surface(const Swell& s, double breaker = ocean::kBr
   p.limit_steepness = false;
   p.floor = std::move(floor);
   p.breaker_index = breaker;
-  // Toward the beach (-z), angle_deg off its normal.
+  // Toward the beach (-z: north, core/compass.h), angle_deg off its normal.
   p.waves.push_back({.amplitude_m = s.amplitude_m,
                      .wavelength_m = 2 * kPi / s.k0(),
-                     .direction_deg = 180 + s.angle_deg,
+                     .direction_deg = s.angle_deg,
                      .steepness = 0});
   return ocean::GerstnerSurface(std::move(p));
 }
@@ -209,6 +236,70 @@ TEST(Shoaling, ASeaOverAFloorDeeperThanHalfItsLongestWaveIsUnchangedToTheBit) {
     }
   // Just shallower than that, the floor matters.
   EXPECT_NE(beach_surface(s, ocean::kBreakerIndex, planar_beach(70, 200, 400)).shoaling(), nullptr);
+}
+
+// A floor sampled on a grid (a glTF floor's path) is solved in two dimensions, to first order: the same laws
+// hold with the same tolerances, on a grid turned 25° from the beach's contours, 4 m apart.
+TEST(Shoaling, OnAGridTheSameLawsHold) {
+  const auto grid = grid_beach(25, 4.0);
+  for (const Swell& s : {Swell{8, 30, 0.4}, Swell{10, 20, 0.3}}) {  // both find their own depth on the grid
+    const ocean::GerstnerSurface surface = beach_surface(s, ocean::kBreakerIndex, grid);
+    ASSERT_NE(surface.shoaling(), nullptr);
+    double worst_length = 0, worst_angle = 0, worst_amplitude = 0;
+    for (double h : kDepths) {
+      const double k = theory_k(s.omega(), h);
+      const double kz = std::sqrt(k * k - s.k_along_shore() * s.k_along_shore());
+      const Crossings c = crossings_around(surface, beach_z(h), 2.5 * 2 * kPi / kz);
+      const double expected = 2 * kPi / theory_mean_kz(s, c);
+      worst_length = std::max(worst_length, std::abs(c.spacing() / expected - 1));
+      EXPECT_NEAR(c.spacing(), expected, 0.05 * expected) << "T " << s.period_s << " s, h " << h << " m";
+      const double angle = std::atan2(s.k_along_shore(), 2 * kPi / c.spacing()) * 180 / kPi;
+      const double h_mid = 0.5 * (c.z1 + c.z2) / 630 * 21 - 1;
+      worst_angle = std::max(worst_angle, std::abs(angle - s.theta_deg(h_mid)));
+      EXPECT_NEAR(angle, s.theta_deg(h_mid), 2.0) << "T " << s.period_s << " s, h " << h << " m";
+      if (2 * s.amplitude(h) > 0.78 * h) continue;
+      const double a = measured_amplitude(surface, s, beach_z(h));
+      worst_amplitude = std::max(worst_amplitude, std::abs(a / s.amplitude(h) - 1));
+      EXPECT_NEAR(a, s.amplitude(h), 0.1 * s.amplitude(h)) << "T " << s.period_s << " s, h " << h << " m";
+    }
+    EXPECT_NEAR(breaking_onset_ratio(surface, s), 0.78, 0.1) << "T " << s.period_s << " s";
+    std::printf("grid, T %.0f s at %.0f deg: wavelength %.2f %%, direction %.2f deg, amplitude %.2f %%\n",
+                s.period_s, s.angle_deg, 100 * worst_length, worst_angle, 100 * worst_amplitude);
+  }
+}
+
+// A glTF floor (scene/floor_profile.h): the same beach as a 1200 m square tilted 1:30 (dry at z = 0, 39 m
+// deep at z = 1200), rasterised onto its grid, with the open sea beyond it: the depths are the plane's, and a
+// 6 s swell (its own beyond 28 m) obeys the same laws over it as over the slope floor.
+TEST(Shoaling, AGltfFloorIsSampledAndTheWavesFeelIt) {
+  TempDir dir;
+  const double alpha = std::atan(1.0 / 30), theta = kPi / 2 + alpha;  // the quad's y axis down the slope
+  write_quads(dir / "beach.gltf", {{.material = nlohmann::json::object(),
+                                    .translation = {0, 1 - 600.0 / 30, 600},
+                                    .rotation = {std::sin(theta / 2), 0, 0, std::cos(theta / 2)},
+                                    .half = float(600 / std::cos(alpha))}});
+  scene::Seafloor floor;
+  floor.type = scene::SeafloorType::Gltf;
+  floor.file = (dir / "beach.gltf").string();
+  const auto grid = scene::floor_profile(floor, 1000);
+  ASSERT_NE(grid, nullptr);
+  EXPECT_GT(grid->rows, 200u);
+  for (double z : {30.0, 300.0, 900.0})
+    EXPECT_NEAR(grid->depth_at(grid->local({17, z})), -1 + z / 30, 1e-3) << z;
+  EXPECT_EQ(grid->depth_at(grid->local({0, 1300})), 1000);  // beyond the mesh: the open sea
+
+  const Swell s{6, 20, 0.2};
+  const ocean::GerstnerSurface surface = beach_surface(s, ocean::kBreakerIndex, grid);
+  ASSERT_NE(surface.shoaling(), nullptr);
+  for (double h : {15.0, 8.0, 4.0}) {
+    const double k = theory_k(s.omega(), h);
+    const double kz = std::sqrt(k * k - s.k_along_shore() * s.k_along_shore());
+    const Crossings c = crossings_around(surface, beach_z(h), 2.5 * 2 * kPi / kz);
+    const double expected = 2 * kPi / theory_mean_kz(s, c);
+    EXPECT_NEAR(c.spacing(), expected, 0.05 * expected) << "h " << h << " m";
+    EXPECT_NEAR(measured_amplitude(surface, s, beach_z(h)), s.amplitude(h), 0.1 * s.amplitude(h))
+        << "h " << h;
+  }
 }
 
 TEST(Shoaling, TheWaveNumberSolvesTheDispersionRelation) {

@@ -8,19 +8,22 @@
 namespace lagoon::ocean {
 
 ShoalingGpu::ShoalingGpu(vk::Context& ctx, const Shoaling* shoaling) : active_(shoaling != nullptr) {
-  const uint32_t width = active_ ? uint32_t(shoaling->samples()) : 1;
-  const uint32_t rows = active_ ? uint32_t(1 + shoaling->wave_count()) : 1;
-  std::vector<float> texels(size_t(width) * rows * 4, 0.0f);
+  const uint32_t width = active_ ? uint32_t(shoaling->floor().columns()) : 1;
+  const uint32_t height = active_ ? uint32_t(shoaling->floor().rows) : 1;
+  const uint32_t layers = active_ ? uint32_t(1 + shoaling->wave_count()) : 1;
+  std::vector<float> texels(size_t(width) * height * layers * 4, 0.0f);
   if (active_) {
     const std::vector<glm::dvec4>& table = shoaling->table();
     for (size_t i = 0; i < table.size(); ++i)
       for (int c = 0; c < 4; ++c) texels[i * 4 + c] = float(table[i][c]);
     const DepthProfile& floor = shoaling->floor();
     axis_ = glm::vec4(float(floor.origin.x), float(floor.origin.y), float(floor.axis.x), float(floor.axis.y));
-    grid_ = glm::vec4(float(floor.spacing_m), float(width), 0.0f, 0.0f);
+    grid_ = glm::vec4(float(floor.spacing_m), float(width), float(height), 0.0f);
   }
   table_ = vk::Image::create(ctx, {.format = VK_FORMAT_R32G32B32A32_SFLOAT,
-                                   .extent = {width, rows},
+                                   .extent = {width, height},
+                                   .layers = layers,
+                                   .array_view = true,
                                    .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                                    .debug_name = "shoaling table"});
   // Read by the surface's vertex and fragment shaders and by the caustics' compute pass.
