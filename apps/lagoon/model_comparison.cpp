@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "bench_report.h"
+#include "ocean/direct_waves.h"
 #include "ocean/gpu/gpu_ocean.h"
 #include "ocean/initial_spectrum.h"
 #include "ocean/springs.h"
@@ -123,7 +124,8 @@ ModelMeasure measure_model(vk::Context& ctx, const scene::Scene& scene, int roun
   out.peak_wavelength_m = 2 * std::numbers::pi / std::hypot(k.x, k.y);
   double omega = peak_omega(gpu, out.spectrum, k);
   out.tiling = ocean::tiling_correlation(grids, grids.front().patch_m);
-  if (const ocean::GerstnerSurface* direct = gpu.direct_waves()) {
+  if (const ocean::GerstnerSurface* direct =
+          ocean::evaluated_directly(scene.ocean) ? gpu.direct_waves() : nullptr) {
     const DirectPeak peak = direct_peak(*direct);
     out.peak_wavelength_m = peak.wavelength_m;
     omega = peak.omega;

@@ -36,6 +36,31 @@ std::optional<GerstnerParams> direct_wave_params(const OceanParams& params) {
   return std::nullopt;
 }
 
+std::optional<GerstnerParams> swell_wave_params(const OceanParams& params, double sea_significant_height_m) {
+  if (params.swell_waves.empty() || evaluated_directly(params) || params.model == SurfaceModel::Springs)
+    return std::nullopt;
+  constexpr double kRadians = std::numbers::pi / 180;
+  GerstnerParams out{.dispersion = GerstnerDispersion::Deep,
+                     .depth_m = params.depth_m,
+                     .loop_period_s = params.loop_period_s,
+                     .limit_steepness = false,
+                     .breaker_index = params.breaker_index,
+                     .sea_significant_height_m = sea_significant_height_m};
+  if (params.shoaling) out.floor = params.floor;
+  for (const GerstnerWaveSpec& w : params.swell_waves)
+    out.waves.push_back({.amplitude_m = w.amplitude_m,
+                         .wavelength_m = w.wavelength_m,
+                         .direction_deg = w.direction_deg,
+                         .phase_rad = w.phase_deg * kRadians,
+                         .steepness = w.steepness.value_or(params.choppiness)});
+  return out;
+}
+
+std::optional<GerstnerParams> summed_wave_params(const OceanParams& params, double sea_significant_height_m) {
+  if (std::optional<GerstnerParams> own = direct_wave_params(params)) return own;
+  return swell_wave_params(params, sea_significant_height_m);
+}
+
 std::vector<gpu::DirectWaveGpu> direct_waves_gpu(const GerstnerSurface& surface,
                                                  std::optional<double> at_time) {
   std::vector<gpu::DirectWaveGpu> out;

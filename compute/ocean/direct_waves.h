@@ -23,6 +23,13 @@ inline bool evaluated_directly(const OceanParams& params) {
   return direct_wave_params(params).has_value();
 }
 
+// Swell trains over the random sea (OceanParams::swell_waves), or nothing: for the cascade models only. Their
+// table over the floor holds the random sea's depth-limited scale too, for its significant height
+// `sea_significant_height_m`.
+std::optional<GerstnerParams> swell_wave_params(const OceanParams& params, double sea_significant_height_m);
+// The waves the surface sums where it is drawn: the model's own, or the swell over the cascades.
+std::optional<GerstnerParams> summed_wave_params(const OceanParams& params, double sea_significant_height_m);
+
 // The waves as the shaders read them. With `at_time`, each phase is φ - ω t reduced to [-π, π] in double
 // (the frame's: the shaders add k·x0); without, the phase is φ and ω turns it (the step's).
 std::vector<gpu::DirectWaveGpu> direct_waves_gpu(const GerstnerSurface& surface,

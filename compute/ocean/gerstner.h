@@ -38,6 +38,9 @@ struct GerstnerParams {
   // The floor the waves feel (ocean/shoaling.h); none: depth_m everywhere.
   std::shared_ptr<const DepthProfile> floor;
   double breaker_index = kBreakerIndex;
+  // The random sea's significant height when these waves are swell over it: its depth-limited scale goes in
+  // the same table (ocean/shoaling.h).
+  double sea_significant_height_m = 0;
 };
 
 // One rest point x0 at time t: where it has moved and the surface's local frame there.
@@ -59,6 +62,7 @@ class GerstnerSurface {
   const GerstnerParams& params() const { return params_; }
   // The waves' transformation over the floor, or null where no floor is shallow enough to change them.
   const Shoaling* shoaling() const { return shoaling_.get(); }
+  const std::shared_ptr<const Shoaling>& shared_shoaling() const { return shoaling_; }
   double profile_mean(size_t wave) const { return mean_[wave]; }  // left out of the height (power > 0)
   // Σ Q_i |k_i| A_i: at most 1 with the limit on.
   double steepness_sum() const;

@@ -159,6 +159,10 @@ struct OceanParams {
   PerlinParams perlin;    // model perlin
   SpringsParams springs;  // model springs
   SpectrumParams spectrum;
+  // Swell trains over the random sea (model fft and the other cascade models): Gerstner waves summed where
+  // they are drawn, as model gerstner's, so that over the floor they shoal, turn and break (ocean/shoaling.h)
+  // as the cascades' lattice waves cannot. Deep-water dispersion; a wave's steepness absent = choppiness.
+  std::vector<GerstnerWaveSpec> swell_waves;
   std::vector<CascadeParams> cascades{{1000.0, 256}, {100.0, 256}, {10.0, 256}};
   FoamParams foam;
   // Waves that feel the floor (ocean/shoaling.h): `floor` is the scene's, set from its seafloor block by

@@ -102,15 +102,23 @@ WaveQuery::WaveQuery(const OceanParams& params, std::vector<CascadeSpectrum> spe
   if (spectra_.empty())
     for (uint32_t c = 0; c < params.cascades.size(); ++c)
       spectra_.push_back(make_cascade_spectrum(params, c));
-  if (params.floor && params.shoaling) {
-    // Over the floor the random sea keeps its waves but not their height (ocean/shoaling.h): its significant
-    // height is the whole spectrum's, as the renderer's.
-    double variance = 0;
-    for (const CascadeSpectrum& s : spectra_) variance += height_variance(s);
-    auto floor =
-        std::make_shared<Shoaling>(ShoalingInputs{.floor = params.floor,
-                                                  .breaker_index = params.breaker_index,
-                                                  .sea_significant_height_m = 4 * std::sqrt(variance)});
+  // Over the floor the random sea keeps its waves but not their height (ocean/shoaling.h): its significant
+  // height is the whole spectrum's, as the renderer's. Swell trains over it are summed as model gerstner's
+  // waves, and their table holds the sea's scale too.
+  double variance = 0;
+  for (const CascadeSpectrum& s : spectra_) variance += height_variance(s);
+  const double hs = 4 * std::sqrt(variance);
+  if (std::optional<GerstnerParams> swell = swell_wave_params(params, hs)) {
+    std::erase_if(swell->waves, [&](const GerstnerWave& w) {
+      return 2 * std::numbers::pi / w.wavelength_m >= options_.max_wavenumber;
+    });
+    if (!swell->waves.empty()) swell_ = std::make_unique<GerstnerSurface>(*swell);
+  }
+  if (swell_) {
+    sea_floor_ = swell_->shared_shoaling();
+  } else if (params.floor && params.shoaling) {
+    auto floor = std::make_shared<Shoaling>(ShoalingInputs{
+        .floor = params.floor, .breaker_index = params.breaker_index, .sea_significant_height_m = hs});
     if (floor->active()) sea_floor_ = std::move(floor);
   }
   if (std::isfinite(options_.max_wavenumber)) {
@@ -261,7 +269,12 @@ double WaveQuery::sea_scale(glm::dvec2 p) const {
 glm::dvec2 WaveQuery::displacement(glm::dvec2 p) const {
   double d[3] = {0, 0, 0};
   for (const auto& g : current_->grids) g->sample(p, kDx, 3, d);
-  return sea_scale(p) * params_.choppiness * glm::dvec2(d[0], d[2]);
+  glm::dvec2 out = sea_scale(p) * params_.choppiness * glm::dvec2(d[0], d[2]);
+  if (swell_) {
+    const glm::dvec3 moved = swell_->at_rest(p, current_->time_s).position;
+    out += glm::dvec2(moved.x, moved.z) - p;
+  }
+  return out;
 }
 
 std::vector<WaveSample> WaveQuery::sample(double time_s, std::span<const glm::dvec2> points) {
@@ -310,15 +323,21 @@ void WaveQuery::sample_range(std::span<const glm::dvec2> points, std::vector<Wav
     s.error_bound_m = bound;
     s.converged = converged;
     const double scale = sea_scale(p);  // over the floor (ocean/shoaling.h); its own slope is left out
+    // Swell trains over the sea: their sums at the same rest point, added (their slopes to the sea's).
+    GerstnerPoint swell;
+    if (swell_) swell = swell_->at_rest(p, current_->time_s);
     if (options_.heights_only) {
       for (const auto& g : current_->grids) g->sample(p, kHeight, 1, &f[kHeight]);
-      s.height = scale * f[kHeight];
+      s.height = scale * f[kHeight] + swell.position.y;
       continue;
     }
     for (const auto& g : current_->grids) g->sample(p, 0, kFieldCount, f);
-    s.height = scale * f[kHeight];
-    s.normal = glm::normalize(glm::dvec3(-scale * f[kSlopeX], 1.0, -scale * f[kSlopeZ]));
-    s.velocity = scale * glm::dvec3(params_.choppiness * f[kVx], f[kVy], params_.choppiness * f[kVz]);
+    s.height = scale * f[kHeight] + swell.position.y;
+    const glm::dvec2 slope = scale * glm::dvec2(f[kSlopeX], f[kSlopeZ]) -
+                             glm::dvec2(swell.normal.x, swell.normal.z) / swell.normal.y;
+    s.normal = glm::normalize(glm::dvec3(-slope.x, 1.0, -slope.y));
+    s.velocity =
+        scale * glm::dvec3(params_.choppiness * f[kVx], f[kVy], params_.choppiness * f[kVz]) + swell.velocity;
   }
 }
 

@@ -114,6 +114,7 @@ class WaveQuery {
   OceanParams params_;
   std::unique_ptr<SpringGrid> springs_;        // model springs: the grid itself, stepped to each time asked
   std::unique_ptr<GerstnerSurface> direct_;    // waves evaluated directly: their sums
+  std::unique_ptr<GerstnerSurface> swell_;     // swell trains over the cascades' sea
   std::shared_ptr<const Shoaling> sea_floor_;  // the random sea's depth-limited height, where a floor is
   std::vector<CascadeSpectrum> spectra_;
   WaveQueryOptions options_;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "ocean/direct_waves.h"
 #include "shared/direct_waves.h"
 #include "shared/sediment.h"
 #include "shared/shoaling.h"
@@ -23,20 +24,20 @@ std::vector<vk::Binding> surface_field_bindings(const SurfaceFields& fields, con
   }
   // Repeat addressing: the layer's storage is toroidal (ocean/dynamic_layer.h).
   bindings.push_back(vk::bind(LAGOON_SURFACE_BIND_WAKES, sampled(fields.wakes.fields(), samplers.repeat)));
-  // Read with texelFetch: the sampler is never used to filter.
-  bindings.push_back(
-      vk::bind(LAGOON_SURFACE_BIND_SHOALING, sampled(ocean.shoaling_gpu().table(), samplers.repeat)));
+  bindings.push_back(vk::bind(LAGOON_SURFACE_BIND_SHOALING, ocean.shoaling_gpu().table()));
   return bindings;
 }
 
 std::vector<vk::SpecConstant> with_surface_field_specs(std::vector<vk::SpecConstant> own,
                                                        const SurfaceFields& fields) {
   // A sea summed where it is drawn samples no cascade (the step's layer is for export and read-backs).
-  const bool direct = fields.ocean.direct_waves() != nullptr;
+  const bool direct = ocean::evaluated_directly(fields.ocean.params());
   own.push_back({LAGOON_SPEC_CASCADE_COUNT, direct ? 0u : fields.ocean.cascade_count()});
-  own.push_back({LAGOON_SPEC_DIRECT_WAVES, direct ? 1u : 0u});
+  const ocean::GerstnerSurface* waves = fields.ocean.direct_waves();
+  own.push_back({LAGOON_SPEC_DIRECT_WAVES,
+                 waves ? uint32_t(std::min<size_t>(waves->size(), LAGOON_DIRECT_MAX_WAVES)) : 0u});
   own.push_back({LAGOON_SURFACE_SPEC_WAKES, fields.wakes.active() ? 1u : 0u});
-  own.push_back({LAGOON_SURFACE_SPEC_SHOALING, fields.ocean.shoaling_gpu().active() ? 1u : 0u});
+  own.push_back({LAGOON_SURFACE_SPEC_SHOALING, fields.ocean.shoaling_gpu().mode()});
   own.push_back({LAGOON_SURFACE_SPEC_SEDIMENT, fields.sediment ? 1u : 0u});
   return own;
 }

@@ -24,7 +24,7 @@ std::vector<vk::Binding> surface_field_bindings(const SurfaceFields& fields, con
 
 // `own` with the constants the shaders that sum the fields take: the cascade count
 // (LAGOON_SPEC_CASCADE_COUNT; 0 when the waves are summed directly), whether they are
-// (LAGOON_SPEC_DIRECT_WAVES), whether the wakes are compiled in (LAGOON_SURFACE_SPEC_WAKES) and the
+// (LAGOON_SPEC_DIRECT_WAVES: how many), whether the wakes are compiled in (LAGOON_SURFACE_SPEC_WAKES) and the
 // sediment (LAGOON_SURFACE_SPEC_SEDIMENT; shaders without it ignore the constant).
 std::vector<vk::SpecConstant> with_surface_field_specs(std::vector<vk::SpecConstant> own,
                                                        const SurfaceFields& fields);

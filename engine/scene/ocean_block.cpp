@@ -209,9 +209,14 @@ void read_ocean(ObjectReader& r, ocean::OceanParams& o) {
   r.number("loop_period_s", o.loop_period_s, Bounds::between(0, 3600), "s",
            "If > 0, wave frequencies are rounded so the whole sea repeats exactly with this period (seamless "
            "loops); 0 = no loop.");
+  r.array("swell_waves", o.swell_waves, 0, 16, read_gerstner_wave,
+          "Swell trains over the random sea (models fft and perlin): Gerstner waves with deep-water "
+          "dispersion summed where they are drawn, which over the floor shoal, turn toward the shallows and "
+          "break (docs/ocean.md, Waves over the floor); [] = none. Ignored by the models with their own "
+          "waves.");
   r.flag(
       "shoaling", o.shoaling,
-      "Waves feel the slope floor (docs/ocean.md, Waves over the floor): over it they shorten, slow, turn "
+      "Waves feel the floor (docs/ocean.md, Waves over the floor): over it they shorten, slow, turn "
       "toward the shallows, grow and break where their height reaches breaker_index x depth, and end at "
       "the shoreline; the random sea's height is limited by the depth. false = the floor changes nothing.");
   r.number(

@@ -10,7 +10,7 @@
 #include "shared/direct_waves.h"
 #ifndef LAGOON_DIRECT_WAVE
 #define LAGOON_DIRECT_WAVE(i) frame.direct_waves[i]
-#define LAGOON_DIRECT_COUNT frame.direct.x
+#define LAGOON_DIRECT_COUNT kDirectWaveCount
 // The frame's waves are drawn over the floor (common/shoaling.glsl); the step's layer is the deep sea's.
 #define LAGOON_DIRECT_OVER_FLOOR 1
 #include "common/shoaling.glsl"
@@ -20,7 +20,12 @@
 #define dw_real2 vec2
 #include "shared/direct_waves_math.h"
 
-layout(constant_id = LAGOON_SPEC_DIRECT_WAVES) const bool kDirectWaves = false;
+// How many waves the frame sums (0: none; the step's shader says 1 and takes its count from its push
+// constants). A constant, not the frame's uniform: lavapipe (Mesa 22.3) re-inlines the uniforms a vertex
+// shader's loop or branch depends on at every draw and kept each variant (model gerstner's frames grew
+// 0.2 MiB each in `lagoon soak`).
+layout(constant_id = LAGOON_SPEC_DIRECT_WAVES) const int kDirectWaveCount = 0;
+const bool kDirectWaves = kDirectWaveCount > 0;
 
 struct DirectSum {
   vec3 displacement;  // (Dx, h, Dz): where the point resting at the rest position has moved

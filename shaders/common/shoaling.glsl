@@ -7,8 +7,18 @@
 #define LAGOON_COMMON_SHOALING_GLSL
 #include "shared/shoaling.h"
 
-layout(constant_id = LAGOON_SURFACE_SPEC_SHOALING) const bool kShoaling = false;
-layout(binding = LAGOON_SURFACE_BIND_SHOALING) uniform sampler2DArray shoaling_table;
+// 0: nothing transformed; 1: a profile (one row, straight contours); 2: a grid. A constant, not a branch on
+// the frame's uniforms: lavapipe (Mesa 22.3) re-inlines the uniforms a vertex shader branches on at every
+// draw and kept each variant (0.17 MiB more resident a frame in `lagoon soak`).
+layout(constant_id = LAGOON_SURFACE_SPEC_SHOALING) const int kShoalingMode = 0;
+const bool kShoaling = kShoalingMode > 0;
+layout(std430, binding = LAGOON_SURFACE_BIND_SHOALING) readonly buffer ShoalingTable { vec4 shoaling_table[]; };
+
+// Sample (u, v) of a layer.
+vec4 shoal_texel(int u, int v, int layer) {
+  int columns = int(frame.shoaling_grid.y), rows = int(frame.shoaling_grid.z);
+  return shoaling_table[(layer * rows + v) * columns + u];
+}
 
 #define sh_real float
 #define sh_real4 vec4
@@ -21,11 +31,11 @@ struct ShoalPoint {
 };
 
 vec4 shoal_layer(ShoalPoint p, int layer) {
-  vec4 a00 = texelFetch(shoaling_table, ivec3(p.texels.x, p.texels.z, layer), 0);
-  vec4 a10 = texelFetch(shoaling_table, ivec3(p.texels.y, p.texels.z, layer), 0);
-  if (frame.shoaling_grid.z < 1.5) return a00 + (a10 - a00) * p.at.x;  // one row: contours along v
-  vec4 a01 = texelFetch(shoaling_table, ivec3(p.texels.x, p.texels.w, layer), 0);
-  vec4 a11 = texelFetch(shoaling_table, ivec3(p.texels.y, p.texels.w, layer), 0);
+  vec4 a00 = shoal_texel(p.texels.x, p.texels.z, layer);
+  vec4 a10 = shoal_texel(p.texels.y, p.texels.z, layer);
+  if (kShoalingMode == 1) return a00 + (a10 - a00) * p.at.x;  // one row: contours along v
+  vec4 a01 = shoal_texel(p.texels.x, p.texels.w, layer);
+  vec4 a11 = shoal_texel(p.texels.y, p.texels.w, layer);
   return sh_bilinear(a00, a10, a01, a11, p.at.x, p.at.y);
 }
 

@@ -8,8 +8,9 @@
 
 #define LAGOON_DIRECT_MAX_WAVES 64
 // The step (direct_waves.comp): the waves in, the ocean's three images out (the first cascade's layer).
-// Specialisation constant of the shaders that include common/direct_waves.glsl: the sum compiled in (1) or
-// not (the cascades carry the sea). Ids 0-6 are the surface's (shared/surface.h, limits.h, sediment.h).
+// Specialisation constant of the shaders that include common/direct_waves.glsl: how many waves the sum has
+// (0: none; the step says 1 and counts its own). Ids 0-6 are the surface's (shared/surface.h, limits.h,
+// sediment.h).
 #define LAGOON_SPEC_DIRECT_WAVES 7
 #define LAGOON_DIRECT_BIND_WAVES 0
 #define LAGOON_DIRECT_BIND_DISPLACEMENT 1

@@ -68,18 +68,19 @@ class ShoalingRender : public GpuTest {
 TEST_F(ShoalingRender, TheDrawnSurfaceIsWaveQuerysOverTheFloor) {
   const HeightError e = compare({});
   EXPECT_GT(e.pixels, 3000);
-  // The mesh's triangles and its fading of the 5 m and 11 m waves where its spacing nears their length leave
-  // 3.3 cm rms and 12 cm at worst with or without the floor (next test); the floor adds 0.1 cm and 4 cm.
-  EXPECT_LT(e.rms, 0.05);
-  EXPECT_LT(e.worst, 0.25);
+  // The mesh's triangles and its filtering of the wind sea's short waves (mips for the cascades, a fade for
+  // summed waves) leave 5.3 cm rms and 23 cm at worst with or without the floor (next test); the floor adds
+  // 0.3 cm rms.
+  EXPECT_LT(e.rms, 0.08);
+  EXPECT_LT(e.worst, 0.35);
   // The waves over the slope are not the deep sea's: the comparison can tell them apart.
-  EXPECT_GT(e.rms_untransformed, 10 * e.rms);
+  EXPECT_GT(e.rms_untransformed, 5 * e.rms);
 }
 
 TEST_F(ShoalingRender, ShoalingOffDrawsTheUntransformedSea) {
   const HeightError e = compare({"ocean.shoaling=false"});
-  EXPECT_LT(e.rms, 0.05);
-  EXPECT_LT(e.rms_untransformed, 0.05);
+  EXPECT_LT(e.rms, 0.08);
+  EXPECT_LT(e.rms_untransformed, 0.08);
 }
 
 }  // namespace

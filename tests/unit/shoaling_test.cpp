@@ -19,7 +19,9 @@
 #include <vector>
 
 #include "core/compass.h"
+#include "ocean/direct_waves.h"
 #include "ocean/gerstner.h"
+#include "ocean/wave_query.h"
 #include "scene/floor_profile.h"
 #include "support/gltf_quads.h"
 #include "support/temp_dir.h"
@@ -300,6 +302,31 @@ TEST(Shoaling, AGltfFloorIsSampledAndTheWavesFeelIt) {
     EXPECT_NEAR(measured_amplitude(surface, s, beach_z(h)), s.amplitude(h), 0.1 * s.amplitude(h))
         << "h " << h;
   }
+}
+
+// Swell trains over the random sea (ocean.swell_waves): WaveQuery answers the cascades' sea plus the swell's
+// sum at the same rest point, with its slopes added; a swell without steepness moves no water sideways, so
+// the rest point is the sea's own.
+TEST(Shoaling, SwellOverTheRandomSeaIsAddedToIt) {
+  ocean::OceanParams sea;
+  sea.cascades = {{200.0, 64}, {20.0, 64}};
+  ocean::OceanParams with_swell = sea;
+  with_swell.swell_waves = {{.amplitude_m = 0.4, .wavelength_m = 90, .direction_deg = 30, .steepness = 0.0}};
+  ocean::WaveQuery alone(sea), both(with_swell);
+  const ocean::GerstnerSurface swell(*ocean::swell_wave_params(with_swell, 0));
+  for (const glm::dvec2 q : {glm::dvec2(3, 4), glm::dvec2(-40, 17.5), glm::dvec2(120, -60)}) {
+    const ocean::WaveSample a = alone.sample(2.5, q.x, q.y), b = both.sample(2.5, q.x, q.y);
+    const ocean::GerstnerPoint s = swell.at_rest(a.rest_position, 2.5);
+    EXPECT_NEAR(b.height, a.height + s.position.y, 1e-9);
+    EXPECT_NEAR(glm::length(b.rest_position - a.rest_position), 0.0, 1e-9);
+    const glm::dvec2 slope =
+        -glm::dvec2(a.normal.x, a.normal.z) / a.normal.y - glm::dvec2(s.normal.x, s.normal.z) / s.normal.y;
+    EXPECT_NEAR(glm::length(-glm::dvec2(b.normal.x, b.normal.z) / b.normal.y - slope), 0.0, 1e-9);
+    EXPECT_GT(std::abs(s.position.y), 0.0);
+  }
+  // The models with their own waves ignore it.
+  with_swell.model = ocean::SurfaceModel::Gerstner;
+  EXPECT_FALSE(ocean::swell_wave_params(with_swell, 0).has_value());
 }
 
 TEST(Shoaling, TheWaveNumberSolvesTheDispersionRelation) {

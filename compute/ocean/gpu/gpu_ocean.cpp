@@ -174,25 +174,27 @@ void GpuOcean::build(std::vector<CascadeSpectrum> spectra) {
     g->create_images(ctx_);
   }
   springs_ = params_.model == SurfaceModel::Springs ? std::make_unique<SpringsGpu>(ctx_, params_) : nullptr;
-  direct_surface_ = direct ? std::make_unique<GerstnerSurface>(*direct) : nullptr;
+  // The waves the surface sums: the model's own (and then their step replaces the FFT's), or swell trains
+  // over the cascades.
+  double variance = 0;
+  for (const CascadeSpectrum& s : spectra_) variance += height_variance(s);
+  sea_significant_height_m_ = 4 * std::sqrt(variance);
+  const std::optional<GerstnerParams> summed = summed_wave_params(params_, sea_significant_height_m_);
+  direct_surface_ = summed ? std::make_unique<GerstnerSurface>(*summed) : nullptr;
   direct_ = direct ? std::make_unique<DirectWavesGpu>(ctx_, params_, *direct_surface_) : nullptr;
   shoaling_ = sea_over_floor();
   shoaling_gpu_ = std::make_unique<ShoalingGpu>(ctx_, shoaling_.get());
 }
 
 std::shared_ptr<const Shoaling> GpuOcean::sea_over_floor() const {
-  if (direct_surface_) {
-    const Shoaling* own = direct_surface_->shoaling();
-    // Shared with the surface that owns it, which lives as long as this ocean.
-    return own ? std::shared_ptr<const Shoaling>(std::shared_ptr<const void>(), own) : nullptr;
-  }
+  // The summed waves' table holds the random sea's scale too.
+  if (direct_surface_) return direct_surface_->shared_shoaling();
   if (!params_.floor || !params_.shoaling || params_.model == SurfaceModel::Springs) return nullptr;
   // The random sea's significant height, as WaveQuery and the renderer's shading compute it.
-  double variance = 0;
-  for (const CascadeSpectrum& s : spectra_) variance += height_variance(s);
-  auto sea = std::make_shared<Shoaling>(ShoalingInputs{.floor = params_.floor,
-                                                       .breaker_index = params_.breaker_index,
-                                                       .sea_significant_height_m = 4 * std::sqrt(variance)});
+  auto sea =
+      std::make_shared<Shoaling>(ShoalingInputs{.floor = params_.floor,
+                                                .breaker_index = params_.breaker_index,
+                                                .sea_significant_height_m = sea_significant_height_m_});
   return sea->active() ? sea : nullptr;
 }
 

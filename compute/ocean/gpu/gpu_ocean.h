@@ -85,8 +85,8 @@ class GpuOcean {
   const FoamRule& foam_rule() const;
   CascadeTextures cascade(uint32_t index) const;
   uint32_t cascade_count() const { return uint32_t(params_.cascades.size()); }
-  // The waves the surface sums where it is drawn (ocean/direct_waves.h), or null when the cascades carry the
-  // sea: then the renderer samples no cascade at all.
+  // The waves the surface sums where it is drawn (ocean/direct_waves.h): the model's own (then the renderer
+  // samples no cascade at all), swell trains over the cascades, or null.
   const GerstnerSurface* direct_waves() const { return direct_surface_.get(); }
   // The waves' transformation over the scene's floor (ocean/shoaling.h; the direct waves' own, or the random
   // sea's depth-limited height), null where nothing changes; and its table for the shaders.
@@ -123,6 +123,7 @@ class GpuOcean {
   std::unique_ptr<GerstnerSurface> direct_surface_;  // models with their own waves: the sum ...
   std::unique_ptr<DirectWavesGpu> direct_;           // ... and its step, in place of the FFT
   std::shared_ptr<const Shoaling> shoaling_;
+  double sea_significant_height_m_ = 0;  // of the cascades' spectra
   std::unique_ptr<ShoalingGpu> shoaling_gpu_;
 };
 

@@ -1,12 +1,12 @@
-// The waves' transformation over the floor (ocean/shoaling.h) as the surface shaders read it: its table in an
-// RGBA32F array texture, a layer for the floor and one per wave (shared/shoaling.h), and where the grid lies,
-// for the frame's uniforms. A 1 x 1 texture when nothing is transformed, so every pass can bind it.
+// The waves' transformation over the floor (ocean/shoaling.h) as the surface shaders read it: its table in a
+// storage buffer of vec4, a layer for the floor and one per wave (shared/shoaling.h), and where the grid
+// lies, for the frame's uniforms. One texel when nothing is transformed, so every pass can bind it.
 #pragma once
 #include <glm/vec4.hpp>
 
 #include "ocean/shoaling.h"
+#include "vk/buffer.h"
 #include "vk/context.h"
-#include "vk/image.h"
 
 namespace lagoon::ocean {
 
@@ -16,7 +16,9 @@ class ShoalingGpu {
   ShoalingGpu(vk::Context& ctx, const Shoaling* shoaling);
 
   bool active() const { return active_; }
-  const vk::Image& table() const { return table_; }
+  // The shaders' LAGOON_SURFACE_SPEC_SHOALING: 0 nothing transformed, 1 a profile (one row), 2 a grid.
+  uint32_t mode() const { return active_ ? (grid_.z > 1.5f ? 2u : 1u) : 0u; }
+  const vk::Buffer& table() const { return table_; }
   // For the frame (shared/frame.h): xy = the profile's origin (world xz), zw = its axis.
   glm::vec4 axis() const { return axis_; }
   // x = spacing m, y = samples along the axis (columns), z = across it (rows), w unused.
@@ -24,8 +26,8 @@ class ShoalingGpu {
 
  private:
   bool active_ = false;
-  vk::Image table_;
-  glm::vec4 axis_{0.0f}, grid_{1.0f, 1.0f, 0.0f, 0.0f};
+  vk::Buffer table_;
+  glm::vec4 axis_{0.0f}, grid_{1.0f, 1.0f, 1.0f, 0.0f};
 };
 
 }  // namespace lagoon::ocean
