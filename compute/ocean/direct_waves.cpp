@@ -5,9 +5,22 @@
 #include <numbers>
 
 namespace lagoon::ocean {
+namespace {
+
+constexpr double kRadians = std::numbers::pi / 180;
+
+// A Gerstner wave as the scene states it; without its own steepness, the sea's choppiness.
+GerstnerWave gerstner_wave(const GerstnerWaveSpec& w, double choppiness) {
+  return {.amplitude_m = w.amplitude_m,
+          .wavelength_m = w.wavelength_m,
+          .direction_deg = w.direction_deg,
+          .phase_rad = w.phase_deg * kRadians,
+          .steepness = w.steepness.value_or(choppiness)};
+}
+
+}  // namespace
 
 std::optional<GerstnerParams> direct_wave_params(const OceanParams& params) {
-  constexpr double kRadians = std::numbers::pi / 180;
   GerstnerParams out{
       .depth_m = params.depth_m, .loop_period_s = params.loop_period_s, .limit_steepness = false};
   if (params.shoaling) out.floor = params.floor;
@@ -15,11 +28,7 @@ std::optional<GerstnerParams> direct_wave_params(const OceanParams& params) {
   if (params.model == SurfaceModel::Gerstner && params.gerstner.spectrum_waves == 0) {
     out.dispersion = params.gerstner.dispersion;
     for (const GerstnerWaveSpec& w : params.gerstner.waves)
-      out.waves.push_back({.amplitude_m = w.amplitude_m,
-                           .wavelength_m = w.wavelength_m,
-                           .direction_deg = w.direction_deg,
-                           .phase_rad = w.phase_deg * kRadians,
-                           .steepness = w.steepness.value_or(params.choppiness)});
+      out.waves.push_back(gerstner_wave(w, params.choppiness));
     return out;
   }
   if (params.model == SurfaceModel::Sines && params.sines.spectrum_waves == 0) {
@@ -39,7 +48,6 @@ std::optional<GerstnerParams> direct_wave_params(const OceanParams& params) {
 std::optional<GerstnerParams> swell_wave_params(const OceanParams& params, double sea_significant_height_m) {
   if (params.swell_waves.empty() || evaluated_directly(params) || params.model == SurfaceModel::Springs)
     return std::nullopt;
-  constexpr double kRadians = std::numbers::pi / 180;
   GerstnerParams out{.dispersion = GerstnerDispersion::Deep,
                      .depth_m = params.depth_m,
                      .loop_period_s = params.loop_period_s,
@@ -48,11 +56,7 @@ std::optional<GerstnerParams> swell_wave_params(const OceanParams& params, doubl
                      .sea_significant_height_m = sea_significant_height_m};
   if (params.shoaling) out.floor = params.floor;
   for (const GerstnerWaveSpec& w : params.swell_waves)
-    out.waves.push_back({.amplitude_m = w.amplitude_m,
-                         .wavelength_m = w.wavelength_m,
-                         .direction_deg = w.direction_deg,
-                         .phase_rad = w.phase_deg * kRadians,
-                         .steepness = w.steepness.value_or(params.choppiness)});
+    out.waves.push_back(gerstner_wave(w, params.choppiness));
   return out;
 }
 
