@@ -57,14 +57,6 @@ vec4 shoal_wave(ShoalPoint p, int wave, vec2 k0) {
   return sh_wave_value(shoal_layer(p, wave + 1), p.at.z, p.at.w, dot(k0, u), dot(k0, vec2(-u.y, u.x)));
 }
 
-// Whether the floor at a rest position is above the mean water level (a beach's dry sand): the surface is not
-// drawn there, so its plane never shows through the sand along the shoreline. The callers discard at the end
-// of main: the derivatives before it need every lane of the quad.
-bool over_dry_land(vec2 xz) {
-  if (!kShoaling) return false;
-  return shoal_point(xz).ground.x < 0.0;
-}
-
 // The random sea's (the cascades') height scale over the floor at a rest position: 1 in deep water.
 float sea_over_floor(vec2 xz) {
   if (!kShoaling) return 1.0;

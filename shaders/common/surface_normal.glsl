@@ -9,10 +9,13 @@
 #include "common/direct_waves.glsl"
 #include "common/wake_fields.glsl"
 
+layout(location = 3) in vec2 v_floor;  // (the random sea's height scale, depth) from the vertices
+
 struct SurfaceSample {
   vec3 normal;  // unit, world space, facing the viewer
   float foam;   // 0..1
   float mss;    // mean square slope of the waves the textures do not resolve here (glint width)
+  bool dry;     // over a beach's sand above the water: the caller discards the fragment
 };
 
 SurfaceSample surface_sample(vec3 to_viewer) {
@@ -46,7 +49,7 @@ SurfaceSample surface_sample(vec3 to_viewer) {
   LAGOON_CASCADE(2)
   LAGOON_CASCADE(3)
 #undef LAGOON_CASCADE
-  float sea = sea_over_floor(v_rest);  // the random sea's depth-limited height (common/shoaling.glsl)
+  float sea = v_floor.x;  // the random sea's depth-limited height (common/surface_vertex.glsl)
   slope *= sea;
   terms *= sea;
   DirectSum direct = direct_waves_at(v_rest, 0.0, footprint);  // models with their own waves
@@ -64,7 +67,7 @@ SurfaceSample surface_sample(vec3 to_viewer) {
   vec3 n = normalize(vec3(-slope.x, 1.0, -slope.y));  // slope = (∂h/∂x, ∂h/∂z) summed over cascades
   vec3 v = to_viewer;
   if (dot(n, v) < 0.02) n = normalize(n + v * (0.02 - dot(n, v)));  // back-facing slopes seen at grazing angles
-  return SurfaceSample(n, foam, mss);
+  return SurfaceSample(n, foam, mss, v_floor.y < 0.0);
 }
 
 #endif

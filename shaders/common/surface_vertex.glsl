@@ -17,6 +17,15 @@ layout(binding = LAGOON_SURFACE_BIND_DISPLACEMENT) uniform sampler2DArray displa
 
 layout(location = 0) out vec3 v_world;
 layout(location = 1) out vec2 v_rest;
+// The floor under the vertex (common/shoaling.glsl): x = the random sea's height scale, y = the depth (< 0:
+// dry sand). Slow over a triangle, so the fragments interpolate it instead of each reading the table.
+layout(location = 3) out vec2 v_floor;
+
+vec2 floor_under(vec2 rest) {
+  if (!kShoaling) return vec2(1.0);
+  vec4 ground = shoal_point(rest).ground;
+  return vec2(ground.y, ground.x);
+}
 
 vec3 clipmap_displacement(vec2 rest, float spacing) {
   // Constant indices into the sampler array (a loop index would be dynamic descriptor indexing). A cascade

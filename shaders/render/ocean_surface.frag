@@ -117,5 +117,5 @@ void main() {
   float haze = 1.0 - exp(-dist / frame.grid.z);
   surface = mix(surface, sky_radiance(frame, vec3(-v.x, 0.0, -v.z), false), haze);
   out_colour = vec4(display_encode(frame, surface), 1.0);
-  if (over_dry_land(v_rest)) discard;  // a beach's sand above the water (common/shoaling.glsl)
+  if (ss.dry) discard;  // a beach's sand above the water (common/shoaling.glsl), after the derivatives
 }

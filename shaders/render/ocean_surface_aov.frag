@@ -21,5 +21,5 @@ void main() {
   SurfaceSample s = surface_sample(normalize(frame.camera_pos.xyz - v_world));
   out_normal_foam = vec4(s.normal, s.foam);
   out_world = vec4(v_world, 1.0);
-  if (over_dry_land(v_rest)) discard;  // a beach's sand above the water (common/shoaling.glsl)
+  if (s.dry) discard;  // a beach's sand above the water (common/shoaling.glsl), after the derivatives
 }

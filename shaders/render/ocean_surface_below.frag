@@ -79,5 +79,5 @@ void main() {
                   vec3(0.0));
   surface = sediment_veil(surface, eye, -v, d, frame.water_volume.w > 0.5);
   out_colour = vec4(display_encode(frame, surface), 1.0);
-  if (over_dry_land(v_rest)) discard;  // a beach's sand above the water (common/shoaling.glsl)
+  if (ss.dry) discard;  // a beach's sand above the water (common/shoaling.glsl), after the derivatives
 }

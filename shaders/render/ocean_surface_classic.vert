@@ -39,6 +39,7 @@ vec3 vertex_normal(vec2 rest, float spacing) {
 void main() {
   ClipmapVertex v = clipmap_indexed_vertex(gl_VertexIndex, frame.camera_pos.xz, frame.grid, frame.clipmap);
   v_rest = v.rest;
+  v_floor = floor_under(v.rest);
   v_world = clipmap_displaced(v);
   v_colour = vec3(0.0);
   if (kShading == 2)
