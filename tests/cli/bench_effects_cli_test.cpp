@@ -60,7 +60,8 @@ TEST(BenchEffectsCli, ATwoSecondFlightWritesEveryOutputForEveryConfiguration) {
     EXPECT_TRUE(tests["all"].contains(pass)) << pass;
   }
   // The reflection pass runs in both (it draws the objects only when reflection is on; that its time is then
-  // larger is not asserted: under load, with the suite's other tests beside it, it read 0.63 against 1.00 ms).
+  // larger is not asserted: under load, with the suite's other tests beside it, it read 0.63 against 1.00
+  // ms).
   EXPECT_TRUE(tests["reflection"].contains("reflection"));
   EXPECT_TRUE(tests["none"].contains("reflection"));
 
