@@ -1,6 +1,11 @@
 #include "world/camera_medium.h"
 
+#include <algorithm>
 #include <cmath>
+
+#include "ocean/direct_waves.h"
+#include "ocean/shoaling.h"
+#include "ocean/slope_statistics.h"
 
 namespace lagoon::world {
 namespace {
@@ -9,6 +14,30 @@ namespace {
 constexpr double kToleranceM = 0.01;
 
 }  // namespace
+
+CameraMedium::CameraMedium(const ocean::OceanParams& params, std::vector<ocean::CascadeSpectrum> spectra,
+                           double reach_m)
+    : params_(params), spectra_(std::move(spectra)), reach_m_(reach_m) {
+  double variance = 0;
+  for (const ocean::CascadeSpectrum& s : spectra_) variance += ocean::height_variance(s);
+  const double hs = 4 * std::sqrt(variance);
+  if (std::optional<ocean::GerstnerParams> summed = ocean::summed_wave_params(params_, hs)) {
+    summed_ = std::make_unique<ocean::GerstnerSurface>(*summed);
+    floor_ = summed_->shared_shoaling();
+    // Their crests reach at most the sum of their largest amplitudes (over the floor, the table's).
+    for (size_t i = 0; i < summed_->size(); ++i) {
+      double largest = summed->waves[i].amplitude_m;
+      if (floor_)
+        for (size_t j = 0; j < floor_->samples(); ++j)
+          largest = std::max(largest, floor_->table()[(1 + i) * floor_->samples() + j].y);
+      reach_m_ += largest;
+    }
+  } else if (params_.floor && params_.shoaling) {
+    auto sea = std::make_shared<ocean::Shoaling>(ocean::ShoalingInputs{
+        .floor = params_.floor, .breaker_index = params_.breaker_index, .sea_significant_height_m = hs});
+    if (sea->active()) floor_ = std::move(sea);
+  }
+}
 
 CameraSide CameraMedium::side(const glm::vec3& camera, double lens_m, double time_s) {
   last_queried_ = false;
@@ -26,7 +55,10 @@ CameraSide CameraMedium::side(const glm::vec3& camera, double lens_m, double tim
 
 double CameraMedium::surface_height(double x, double z, double time_s) {
   if (!probe_) probe_ = std::make_unique<ocean::HeightProbe>(params_, spectra_, kToleranceM);
-  return probe_->height(time_s, x, z).height;
+  double height = probe_->height(time_s, x, z).height;
+  if (floor_) height *= floor_->ground({x, z}).y;
+  if (summed_) height += summed_->sample(time_s, x, z).height;
+  return height;
 }
 
 }  // namespace lagoon::world

@@ -9,6 +9,7 @@
 #include <optional>
 #include <vector>
 
+#include "ocean/gerstner.h"
 #include "ocean/height_probe.h"
 #include "ocean/initial_spectrum.h"
 #include "ocean/ocean_params.h"
@@ -20,8 +21,9 @@ enum class CameraSide { Above, Below, Waterline };
 class CameraMedium {
  public:
   // `reach_m`: a height the surface does not pass (the renderer's 6σ + 1 m displacement bound).
-  CameraMedium(const ocean::OceanParams& params, std::vector<ocean::CascadeSpectrum> spectra, double reach_m)
-      : params_(params), spectra_(std::move(spectra)), reach_m_(reach_m) {}
+  // The waves summed where they are drawn (model gerstner's and sines', and swell over the cascades) and the
+  // floor's transformation (ocean/shoaling.h) are added to the cascades' sea, and to `reach_m`.
+  CameraMedium(const ocean::OceanParams& params, std::vector<ocean::CascadeSpectrum> spectra, double reach_m);
 
   // `lens_m`: how far the near plane reaches from the camera's point (half its diagonal). Within that of
   // the surface, allowing for the surface's slope across it, the frame is drawn on both sides of the
@@ -43,6 +45,10 @@ class CameraMedium {
   std::vector<ocean::CascadeSpectrum> spectra_;
   double reach_m_;
   std::unique_ptr<ocean::HeightProbe> probe_;  // made on first need (sorting the modes takes ~50 ms)
+  // The waves summed where they are drawn, over the floor, and the table that scales the cascades' sea there;
+  // the sea's height is the probe's (its own inversion) times that scale, plus the sums (theirs).
+  std::unique_ptr<ocean::GerstnerSurface> summed_;
+  std::shared_ptr<const ocean::Shoaling> floor_;
   bool last_queried_ = false;
   std::optional<CameraSide> forced_;
 };

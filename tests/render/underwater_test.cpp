@@ -48,6 +48,31 @@ TEST(CameraMedium, AskTheWavesNotTheMeanLevel) {
   EXPECT_FALSE(medium.last_queried());
 }
 
+// Over the beach the camera's side is judged against the same waves WaveQuery answers (the swell over the
+// floor, the wind sea's depth-limited height), not the untransformed sea's: 5.5 cm at worst in the surf zone
+// and offshore (the probe inverts the wind sea's displacement and the sum the swell's, each on its own, where
+// WaveQuery inverts them together), where the untransformed sea is off by 1.2 m.
+TEST(CameraMedium, OverTheBeachItAsksTheWavesOverTheFloor) {
+  const scene::Scene s = shipped_scene("beach", {});
+  ocean::WaveQuery query(s.ocean);
+  world::CameraMedium medium(s.ocean, ocean::make_cascade_spectra(s.ocean), 1.0);
+  scene::Scene flat = s;
+  flat.ocean.shoaling = false;
+  world::CameraMedium untransformed(flat.ocean, ocean::make_cascade_spectra(flat.ocean), 1.0);
+  double worst = 0, worst_untransformed = 0;
+  for (double z = 40; z <= 200; z += 7.5)
+    for (double x : {-20.0, 3.0, 31.0}) {
+      const double reference = query.sample(s.time_s, x, z).height;
+      worst = std::max(worst, std::abs(medium.surface_height(x, z, s.time_s) - reference));
+      worst_untransformed =
+          std::max(worst_untransformed, std::abs(untransformed.surface_height(x, z, s.time_s) - reference));
+    }
+  std::printf("beach: camera medium against WaveQuery worst %.4f m (untransformed %.3f m)\n", worst,
+              worst_untransformed);
+  EXPECT_LT(worst, 0.08);
+  EXPECT_GT(worst_untransformed, 0.5);
+}
+
 class Underwater : public GpuTest {};
 
 optics::UnderwaterSample at_or_die(const optics::LutInputs& in, double d, double z) {
