@@ -4,6 +4,8 @@
 #include <glm/geometric.hpp>
 #include <numbers>
 
+#include "ocean/slope_statistics.h"
+
 namespace lagoon::ocean {
 namespace {
 
@@ -58,6 +60,20 @@ std::optional<GerstnerParams> swell_wave_params(const OceanParams& params, doubl
   for (const GerstnerWaveSpec& w : params.swell_waves)
     out.waves.push_back(gerstner_wave(w, params.choppiness));
   return out;
+}
+
+double sea_significant_height(const std::vector<CascadeSpectrum>& spectra) {
+  double variance = 0;
+  for (const CascadeSpectrum& s : spectra) variance += height_variance(s);
+  return 4 * std::sqrt(variance);
+}
+
+std::shared_ptr<const Shoaling> sea_over_floor(const OceanParams& params, double sea_significant_height_m) {
+  if (!params.floor || !params.shoaling || params.model == SurfaceModel::Springs) return nullptr;
+  auto sea = std::make_shared<Shoaling>(ShoalingInputs{.floor = params.floor,
+                                                       .breaker_index = params.breaker_index,
+                                                       .sea_significant_height_m = sea_significant_height_m});
+  return sea->active() ? sea : nullptr;
 }
 
 std::optional<GerstnerParams> summed_wave_params(const OceanParams& params, double sea_significant_height_m) {

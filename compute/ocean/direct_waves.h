@@ -12,7 +12,9 @@
 #include <vector>
 
 #include "ocean/gerstner.h"
+#include "ocean/initial_spectrum.h"
 #include "ocean/ocean_params.h"
+#include "ocean/shoaling.h"
 #include "shared/direct_waves.h"
 
 namespace lagoon::ocean {
@@ -29,6 +31,13 @@ inline bool evaluated_directly(const OceanParams& params) {
 std::optional<GerstnerParams> swell_wave_params(const OceanParams& params, double sea_significant_height_m);
 // The waves the surface sums where it is drawn: the model's own, or the swell over the cascades.
 std::optional<GerstnerParams> summed_wave_params(const OceanParams& params, double sea_significant_height_m);
+
+// The random sea's significant height, 4σ over its spectra, as the renderer's shading takes it: what its
+// depth limit over the floor is computed from (ocean/shoaling.h).
+double sea_significant_height(const std::vector<CascadeSpectrum>& spectra);
+// The random sea's depth-limited scale over the floor on its own (when no waves are summed, whose table holds
+// it too), or null where the floor changes nothing.
+std::shared_ptr<const Shoaling> sea_over_floor(const OceanParams& params, double sea_significant_height_m);
 
 // The waves as the shaders read them. With `at_time`, each phase is φ - ω t reduced to [-π, π] in double
 // (the frame's: the shaders add k·x0); without, the phase is φ and ω turns it (the step's).

@@ -105,22 +105,14 @@ WaveQuery::WaveQuery(const OceanParams& params, std::vector<CascadeSpectrum> spe
   // Over the floor the random sea keeps its waves but not their height (ocean/shoaling.h): its significant
   // height is the whole spectrum's, as the renderer's. Swell trains over it are summed as model gerstner's
   // waves, and their table holds the sea's scale too.
-  double variance = 0;
-  for (const CascadeSpectrum& s : spectra_) variance += height_variance(s);
-  const double hs = 4 * std::sqrt(variance);
+  const double hs = sea_significant_height(spectra_);
   if (std::optional<GerstnerParams> swell = swell_wave_params(params, hs)) {
     std::erase_if(swell->waves, [&](const GerstnerWave& w) {
       return 2 * std::numbers::pi / w.wavelength_m >= options_.max_wavenumber;
     });
     if (!swell->waves.empty()) swell_ = std::make_unique<GerstnerSurface>(*swell);
   }
-  if (swell_) {
-    sea_floor_ = swell_->shared_shoaling();
-  } else if (params.floor && params.shoaling) {
-    auto floor = std::make_shared<Shoaling>(ShoalingInputs{
-        .floor = params.floor, .breaker_index = params.breaker_index, .sea_significant_height_m = hs});
-    if (floor->active()) sea_floor_ = std::move(floor);
-  }
+  sea_floor_ = swell_ ? swell_->shared_shoaling() : sea_over_floor(params, hs);
   if (std::isfinite(options_.max_wavenumber)) {
     std::vector<CascadeSpectrum> kept;
     for (const CascadeSpectrum& s : spectra_)

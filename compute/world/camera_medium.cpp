@@ -5,7 +5,6 @@
 
 #include "ocean/direct_waves.h"
 #include "ocean/shoaling.h"
-#include "ocean/slope_statistics.h"
 
 namespace lagoon::world {
 namespace {
@@ -18,9 +17,7 @@ constexpr double kToleranceM = 0.01;
 CameraMedium::CameraMedium(const ocean::OceanParams& params, std::vector<ocean::CascadeSpectrum> spectra,
                            double reach_m)
     : params_(params), spectra_(std::move(spectra)), reach_m_(reach_m) {
-  double variance = 0;
-  for (const ocean::CascadeSpectrum& s : spectra_) variance += ocean::height_variance(s);
-  const double hs = 4 * std::sqrt(variance);
+  const double hs = ocean::sea_significant_height(spectra_);
   if (std::optional<ocean::GerstnerParams> summed = ocean::summed_wave_params(params_, hs)) {
     summed_ = std::make_unique<ocean::GerstnerSurface>(*summed);
     floor_ = summed_->shared_shoaling();
@@ -32,10 +29,8 @@ CameraMedium::CameraMedium(const ocean::OceanParams& params, std::vector<ocean::
           largest = std::max(largest, floor_->table()[(1 + i) * floor_->samples() + j].y);
       reach_m_ += largest;
     }
-  } else if (params_.floor && params_.shoaling) {
-    auto sea = std::make_shared<ocean::Shoaling>(ocean::ShoalingInputs{
-        .floor = params_.floor, .breaker_index = params_.breaker_index, .sea_significant_height_m = hs});
-    if (sea->active()) floor_ = std::move(sea);
+  } else {
+    floor_ = ocean::sea_over_floor(params_, hs);
   }
 }
 

@@ -176,26 +176,13 @@ void GpuOcean::build(std::vector<CascadeSpectrum> spectra) {
   springs_ = params_.model == SurfaceModel::Springs ? std::make_unique<SpringsGpu>(ctx_, params_) : nullptr;
   // The waves the surface sums: the model's own (and then their step replaces the FFT's), or swell trains
   // over the cascades.
-  double variance = 0;
-  for (const CascadeSpectrum& s : spectra_) variance += height_variance(s);
-  sea_significant_height_m_ = 4 * std::sqrt(variance);
-  const std::optional<GerstnerParams> summed = summed_wave_params(params_, sea_significant_height_m_);
+  const double hs = sea_significant_height(spectra_);
+  const std::optional<GerstnerParams> summed = summed_wave_params(params_, hs);
   direct_surface_ = summed ? std::make_unique<GerstnerSurface>(*summed) : nullptr;
   direct_ = direct ? std::make_unique<DirectWavesGpu>(ctx_, params_, *direct_surface_) : nullptr;
-  shoaling_ = sea_over_floor();
-  shoaling_gpu_ = std::make_unique<ShoalingGpu>(ctx_, shoaling_.get());
-}
-
-std::shared_ptr<const Shoaling> GpuOcean::sea_over_floor() const {
   // The summed waves' table holds the random sea's scale too.
-  if (direct_surface_) return direct_surface_->shared_shoaling();
-  if (!params_.floor || !params_.shoaling || params_.model == SurfaceModel::Springs) return nullptr;
-  // The random sea's significant height, as WaveQuery and the renderer's shading compute it.
-  auto sea =
-      std::make_shared<Shoaling>(ShoalingInputs{.floor = params_.floor,
-                                                .breaker_index = params_.breaker_index,
-                                                .sea_significant_height_m = sea_significant_height_m_});
-  return sea->active() ? sea : nullptr;
+  shoaling_ = direct_surface_ ? direct_surface_->shared_shoaling() : ocean::sea_over_floor(params_, hs);
+  shoaling_gpu_ = std::make_unique<ShoalingGpu>(ctx_, shoaling_.get());
 }
 
 void GpuOcean::record_step(VkCommandBuffer cmd, double time_s, double dt_s, vk::GpuTimer* timer, Step step) {

@@ -108,7 +108,6 @@ class GpuOcean {
  private:
   struct Group;
   void build(std::vector<CascadeSpectrum> spectra);
-  std::shared_ptr<const Shoaling> sea_over_floor() const;
 
   vk::Context& ctx_;
   OceanParams params_;
@@ -123,7 +122,6 @@ class GpuOcean {
   std::unique_ptr<GerstnerSurface> direct_surface_;  // models with their own waves: the sum ...
   std::unique_ptr<DirectWavesGpu> direct_;           // ... and its step, in place of the FFT
   std::shared_ptr<const Shoaling> shoaling_;
-  double sea_significant_height_m_ = 0;  // of the cascades' spectra
   std::unique_ptr<ShoalingGpu> shoaling_gpu_;
 };
 
