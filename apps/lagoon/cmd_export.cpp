@@ -326,7 +326,7 @@ int export_fields(vk::Context& ctx, const scene::Scene& scene, const world::Vehi
     if (!w) return export_failure(w.error().message);
     wake.emplace(std::move(*w));
   }
-  // What floats and the vehicles, simulated on the CPU from time 0 (as in a render of each frame).
+  // What floats and the vehicles, simulated on the CPU from bodies_start_s (as in a render of each frame).
   const std::vector<world::MovingTarget> targets = world::moving_targets(scene);
   std::unique_ptr<world::FloatingObjects> moving;
   if (!targets.empty()) {

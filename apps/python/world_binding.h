@@ -16,8 +16,8 @@ class World {
  public:
   explicit World(const scene::Scene& scene);
 
-  // Brings every body and vehicle to `time_s` in the physics' fixed steps (from time 0 again for an earlier
-  // time), the wakes they ride included.
+  // Brings every body and vehicle to `time_s` in the physics' fixed steps (from bodies_start_s again for an
+  // earlier time), the wakes they ride included.
   void advance(double time_s);
   // One dict per floating object, then per vehicle: what `lagoon probe --object NAME` prints for it.
   py::list poses() const;

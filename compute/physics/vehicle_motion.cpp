@@ -30,8 +30,8 @@ VehicleMotion::VehicleMotion(std::shared_ptr<const VehicleTrack> track, double d
   reset();
 }
 
-void VehicleMotion::reset() {
-  track_ = route_->at(0.0);
+void VehicleMotion::reset(double t0) {
+  track_ = route_->at(t0);
   if (!hull_) return;
   hull_->place(glm::dvec3(track_.position.x, 0.0, track_.position.y), yaw(track_.heading));
   hull_->settle_vertically(0.0);

@@ -29,8 +29,9 @@ class VehicleMotion {
   VehicleMotion(WaypointPath path, double depth_m)
       : VehicleMotion(std::make_shared<const VehicleTrack>(std::move(path)), depth_m) {}
 
-  // To time 0: on the path's start, at rest at its still-water draught (surface) or at its depth.
-  void reset();
+  // To time t0 (0: the path's start): where the path puts it then, at rest at its still-water draught
+  // (surface) or at its depth.
+  void reset(double t0 = 0.0);
   // From time t to t + dt; `water` is the sea's height at t (unused when submerged).
   void step(double t, double dt, const WaterHeight& water,
             double water_top = std::numeric_limits<double>::infinity());

@@ -79,6 +79,10 @@ ocean::LocalHeightsOptions lattice_for(const physics::TriangleMesh& hull) {
   return options;
 }
 
+long long step_at(double time_s) {
+  return (long long)std::floor(std::max(time_s, 0.0) / FloatingObjects::kStepS + 1e-9);
+}
+
 }  // namespace
 
 Result<std::unique_ptr<FloatingObjects>> FloatingObjects::create(
@@ -107,9 +111,11 @@ Result<std::unique_ptr<FloatingObjects>> FloatingObjects::create(
     if (!hull) return make_error(hull.error().message + ", or run it submerged (depth_m > 0)");
     out->vehicle_hulls_.push_back(std::move(*hull));
   }
+  out->first_step_ = step_at(scene.bodies_start_s);
   if (scene.wakes.felt_by_bodies && !(out->hulls_.empty() && out->vehicle_hulls_.empty())) {
     auto wakes = VehicleWakes::create(scene, out->tracks_);
     if (!wakes) return wakes.error();
+    out->wakes_first_step_ = wakes->first_step_for(out->start_s());
     if (!wakes->empty()) out->wakes_ = std::make_unique<WakeHeights>(*wakes, scene.wakes.bodies_resolution);
   }
   out->reset();
@@ -149,28 +155,22 @@ void FloatingObjects::reset() {
                          physics::VehicleMotion(tracks_[v], make_body(hull, vehicle.body)),
                          std::make_unique<ocean::LocalHeights>(sea_, lattice_for(hull))});
   }
-  steps_ = 0;
+  steps_ = first_step_;
+  if (first_step_ > 0)
+    for (Vehicle& v : vehicles_) v.motion.reset(start_s());
 }
-
-namespace {
-
-long long step_at(double time_s) {
-  return (long long)std::floor(std::max(time_s, 0.0) / FloatingObjects::kStepS + 1e-9);
-}
-
-}  // namespace
 
 long long FloatingObjects::steps_to(double time_s) const {
-  const long long target = step_at(time_s);
-  return target < steps_ ? target : target - steps_;
+  const long long target = std::max(step_at(time_s), first_step_);
+  return target < steps_ ? target - first_step_ : target - steps_;
 }
 
 void FloatingObjects::advance(double time_s) {
-  const long long target = step_at(time_s);
+  const long long target = std::max(step_at(time_s), first_step_);
   if (target < steps_) reset();
   for (; steps_ < target; ++steps_) {
     const double t = double(steps_) * kStepS;
-    if (wakes_) wakes_->advance(t, centre());
+    if (wakes_) wakes_->advance(t, centre(), wakes_first_step_);
     const WakeHeights* wakes = wakes_.get();
     for (Body& b : bodies_) {
       const glm::dvec3 at = b.body.state().position;

@@ -1,11 +1,11 @@
 // What moves in the scene (docs/physics.md): the floating objects (objects[].floating), each a rigid body
 // (physics/floating_body.h) on the sea's heights around it (ocean/local_heights.h), and the vehicles
-// (vehicles[], physics/vehicle_motion.h), stepped together at a fixed 120 Hz from time 0, when they are at
-// rest where the scene puts them. The floating objects rest on the scene's sea floor (world/floor_height.h)
-// when they sink. With wakes.felt_by_bodies they ride the vehicles' wakes too
-// (world/wake_heights.h), a vehicle every wake but its own. advance() brings them to a frame's time,
-// simulating again from 0 when asked for an earlier one, so a frame at time t shows the same poses however it
-// was reached.
+// (vehicles[], physics/vehicle_motion.h), stepped together at a fixed 120 Hz from the scene's bodies_start_s
+// (0 unless set), when they are at rest where the scene puts them. The floating objects rest on the scene's
+// sea floor (world/floor_height.h) when they sink. With wakes.felt_by_bodies they ride the vehicles' wakes
+// too (world/wake_heights.h), a vehicle every wake but its own. advance() brings them to a frame's time,
+// simulating again from the start when asked for an earlier one, so a frame at time t shows the same poses
+// however it was reached.
 #pragma once
 #include <memory>
 #include <vector>
@@ -38,8 +38,10 @@ class FloatingObjects {
 
   bool empty() const { return bodies_.empty() && vehicles_.empty(); }
   void advance(double time_s);
-  // The steps advance(time_s) would take (from time 0 when time_s is before the bodies' time).
+  // The steps advance(time_s) would take (from the start when time_s is before the bodies' time).
   long long steps_to(double time_s) const;
+  // The time they start at rest (scene.bodies_start_s, on the step grid).
+  double start_s() const { return double(first_step_) * kStepS; }
 
   struct Pose {
     size_t object;             // index into the scene's objects, then its vehicles (objects.size() + v)
@@ -91,7 +93,9 @@ class FloatingObjects {
   std::vector<Vehicle> vehicles_;
   VehicleTracks tracks_;
   std::unique_ptr<WakeHeights> wakes_;  // null when the bodies do not feel the wakes
-  long long steps_ = 0;                 // taken since time 0
+  long long first_step_ = 0;            // the start, in steps from time 0
+  long long wakes_first_step_ = 0;      // the step the bodies' wake layer starts from at rest
+  long long steps_ = 0;                 // the bodies are at step steps_ (time steps_ · kStepS)
 };
 
 }  // namespace lagoon::world

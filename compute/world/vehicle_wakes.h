@@ -31,10 +31,14 @@ class VehicleWakes {
   glm::ivec2 window_for(const scene::Camera& camera) const;
 
   // The layer steps at step_s() from time 0: the last step not after time t, and the step a layer for time t
-  // starts from (history_s before it, or 0).
+  // starts from, at rest: the first checkpoint at least 5/6 of history_s before it (or 0). Checkpoints lie
+  // every sixth of history_s from time 0, so the frames between two of them share their start, and a
+  // sequence steps on from its last frame instead of replaying the history for each (issue 35): the layer
+  // at t is the same however it was reached, and never costs more than history_s of steps.
   double step_s() const { return step_s_; }
   long long step_at(double t) const;
   long long first_step_for(double t) const;
+  long long checkpoint_steps() const;
 
  private:
   struct Hull {

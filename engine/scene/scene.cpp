@@ -95,6 +95,33 @@ void read_sun(ObjectReader& r, Sun& s) {
            "Multiplier on the sun's brightness; 1 is the reference sun, 0 turns it off.");
 }
 
+// The floating objects and surface vehicles replay their physics from bodies_start_s to the frame's time
+// (issue 36): the harbour's three hulls took 23 s for a 96 x 54 frame at 120 s, so a frame may ask for at
+// most 300 hull-seconds (about 20 s on lavapipe, 100 s of the harbour) and is refused above that with the
+// fix.
+constexpr double kMaxBodyHullSecondsPerFrame = 300;
+
+void check_bodies_cost(ObjectReader& r, const Scene& s) {
+  double hulls = 0;
+  for (const Object& o : s.objects) hulls += o.floating.enabled ? 1 : 0;
+  for (const Vehicle& v : s.vehicles) hulls += v.depth_m > 0 ? 0 : 1;
+  const double seconds = std::max(0.0, double(s.time_s) - double(s.bodies_start_s));
+  const double cost = seconds * hulls;
+  const bool holds = cost <= kMaxBodyHullSecondsPerFrame;
+  const double settle = kMaxBodyHullSecondsPerFrame / std::max(hulls, 1.0);
+  r.rule("time_s", holds, "(time_s - bodies_start_s) x floating hulls <= 300 hull-seconds",
+         holds
+             ? std::string()
+             : "the floating objects and surface vehicles are simulated from rest at bodies_start_s = " +
+                   format_number(s.bodies_start_s) + " s: " + format_number(seconds) + " s of " +
+                   format_number(hulls) + " hulls is " + format_number(std::round(cost)) +
+                   " hull-seconds of physics, more than the 300 a frame may take (about 20 s on lavapipe); "
+                   "set bodies_start_s to " +
+                   format_number(std::ceil(double(s.time_s) - settle)) + " or later (they then settle for " +
+                   format_number(std::floor(settle)) + " s before the frame), or choose time_s <= " +
+                   format_number(std::floor(double(s.bodies_start_s) + settle)));
+}
+
 // New blocks: write read_<block>() above (or, for a large block, in its own file like ocean_block.cpp or
 // world_blocks.cpp) and add one r.block() line here.
 void read_scene(ObjectReader& r, Scene& s) {
@@ -119,6 +146,11 @@ void read_scene(ObjectReader& r, Scene& s) {
   r.block("render", s.render, read_render, "Output image settings and effects.");
   r.number("time_s", s.time_s, Bounds::between(0, 86400), "s",
            "Simulation time of the rendered frame (at most one day: wave phases are 32-bit floats).");
+  r.number("bodies_start_s", s.bodies_start_s, Bounds::between(0, 86400), "s",
+           "The floating objects and surface vehicles start at rest where the scene puts them at this time, "
+           "and are simulated from it (docs/physics.md); a frame before it shows them there. A frame at "
+           "time_s costs (time_s - this) x the hulls of physics: a late frame needs a late start.");
+  check_bodies_cost(r, s);
   // Model springs steps its grid from rest to the frame's time, a bounded number of steps at once.
   const double springs_reach = double(ocean::kSpringsMaxCatchUpSteps) * s.ocean.springs.step_s;
   r.rule("time_s", s.ocean.model != ocean::SurfaceModel::Springs || s.time_s < springs_reach,

@@ -226,6 +226,9 @@ struct Scene {
   Underwater underwater;
   RenderSettings render;
   float time_s = 0.f;  // simulation time of the rendered frame
+  // The floating objects and surface vehicles start at rest where the scene puts them at this time (a frame
+  // before it shows them there), and are simulated from it at a fixed step (world/floating_objects.h).
+  float bodies_start_s = 0.f;
 };
 
 // Reads and validates a scene. `overrides` are "a.b.c=value" strings applied to the JSON before validation

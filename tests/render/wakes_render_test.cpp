@@ -14,6 +14,7 @@
 #include "ocean/wave_query.h"
 #include "render/ocean_renderer.h"
 #include "support/vk_fixture.h"
+#include "vk/transfer.h"
 
 namespace lagoon::test {
 namespace {
@@ -107,6 +108,46 @@ TEST_F(WakesRender, TheShadedSurfaceCarriesTheReferenceLayersSlopes) {
   RecordProperty("pixels", std::to_string(count));
   EXPECT_GT(rms, 0.01) << "no wake where the camera looks: nothing was compared";
   EXPECT_LT(relative, 0.05);
+}
+
+// A sequence (History::Replay) steps the layer on from its last frame while the frames share a checkpoint
+// (world/vehicle_wakes.h), with the bits of the frame drawn alone by a fresh renderer; past the next
+// checkpoint it runs again from rest there.
+TEST_F(WakesRender, ASequenceStepsOnFromItsLastFrameUntilTheNextCheckpoint) {
+  scene::Scene s = calm_bay_with_a_boat();
+  s.render.width = 64;
+  s.render.height = 36;
+  s.wakes.history_s = 2.0f;  // 20 steps of 0.1 s: checkpoints every 3 steps
+  auto layer_bits = [&](const render::OceanRenderer& r) {
+    std::vector<std::byte> bits = vk::readback_buffer(ctx(), r.wakes().layer()->state());
+    const std::vector<std::byte> foam = vk::readback_buffer(ctx(), r.wakes().layer()->foam());
+    bits.insert(bits.end(), foam.begin(), foam.end());
+    return bits;
+  };
+  auto alone = [&](float t) {
+    scene::Scene at = s;
+    at.time_s = t;
+    auto r = render::OceanRenderer::create(ctx(), at);
+    EXPECT_TRUE(r) << r.error().message;
+    (*r)->set_history(render::OceanRenderer::History::Replay);
+    (*r)->render(at);
+    return layer_bits(**r);
+  };
+  auto sequence = render::OceanRenderer::create(ctx(), s);
+  ASSERT_TRUE(sequence) << sequence.error().message;
+  (*sequence)->set_history(render::OceanRenderer::History::Replay);
+  const render::WakesPass& wakes = (*sequence)->wakes();
+  ASSERT_TRUE(wakes.active());
+  // (time, steps recorded in all): 3.0 s runs steps 12-29 (the checkpoint at least 17 steps back), 3.2 s
+  // steps on by two, 3.4 s runs 15-33 from the next checkpoint.
+  const std::vector<std::pair<float, long long>> frames{{3.0f, 18}, {3.2f, 20}, {3.4f, 39}};
+  for (const auto& [t, recorded] : frames) {
+    s.time_s = t;
+    (*sequence)->render(s);
+    EXPECT_EQ(wakes.steps_recorded(), recorded) << "at " << t << " s";
+    const std::vector<std::byte> stepped = layer_bits(**sequence);
+    EXPECT_TRUE(stepped == alone(t)) << "the sequence's layer at " << t << " s differs from a fresh one's";
+  }
 }
 
 }  // namespace

@@ -116,6 +116,44 @@ TEST(FloatingObjects, AnEarlierTimeIsSimulatedAgainFromZero) {
   EXPECT_EQ(0, std::memcmp(&pa[0].model_to_world, &pb[0].model_to_world, sizeof(glm::mat4)));
 }
 
+// With bodies_start_s the bodies and vehicles start at rest where the scene puts them at that time, and are
+// simulated from it: before it they stand there, after it they move, and an earlier time after a later one is
+// simulated again from the start, not from 0 (issue 36: a late frame needs a late start).
+TEST(FloatingObjects, ALateStartPutsThemAtRestThenAndSimulatesFromIt) {
+  const scene::Scene late = shipped_scene("harbour", {"wakes.felt_by_bodies=false", "bodies_start_s=40"});
+  const scene::Scene early = shipped_scene("harbour", {"wakes.felt_by_bodies=false"});
+  const auto spectra = ocean::make_cascade_spectra(late.ocean);
+  auto a = world::FloatingObjects::create(late, late.ocean, spectra);
+  auto b = world::FloatingObjects::create(late, late.ocean, spectra);
+  auto from_zero = world::FloatingObjects::create(early, early.ocean, spectra);
+  ASSERT_TRUE(a && b && from_zero);
+  EXPECT_DOUBLE_EQ((*a)->start_s(), 40.0);
+  EXPECT_EQ((*a)->steps_to(41.0), 120);  // not 4920
+  // Before the start: the floating objects where a start at 0 has them at 0, the boat where its path has it
+  // at 40 s.
+  (*a)->advance(30.0);
+  (*from_zero)->advance(0.0);
+  const auto pa = (*a)->poses(), p0 = (*from_zero)->poses();
+  ASSERT_EQ(pa.size(), 4u);  // buoy, moored boat, boat, AUV
+  for (size_t i = 0; i < 2; ++i)
+    EXPECT_EQ(0, std::memcmp(&pa[i].model_to_world, &p0[i].model_to_world, sizeof(glm::mat4))) << i;
+  const glm::dvec3 boat = (*a)->vehicle(0).model_origin();
+  EXPECT_NEAR(glm::distance(glm::dvec2(boat.x, boat.z), (*a)->tracks()[0]->at(40.0).position), 0.0, 1e-9);
+  // After it: the buoy moves from rest, afloat.
+  const glm::dvec3 placed = (*a)->body(0)->model_origin();
+  (*a)->advance(43.0);
+  const physics::FloatingBody& buoy = *(*a)->body(0);
+  EXPECT_GT(glm::length(buoy.state().velocity), 1e-3);
+  EXPECT_NE(buoy.model_origin(), placed);
+  EXPECT_NEAR(buoy.model_origin().y, 0.3, 0.6) << "the buoy sank or flew";
+  // Back in time: from the start again, the bits of a fresh run.
+  (*a)->advance(41.5);
+  (*b)->advance(41.5);
+  const auto back = (*a)->poses(), fresh = (*b)->poses();
+  for (size_t i = 0; i < back.size(); ++i)
+    EXPECT_EQ(0, std::memcmp(&back[i].model_to_world, &fresh[i].model_to_world, sizeof(glm::mat4))) << i;
+}
+
 // The harbour's buoy at 20000 kg/m³ sinks to the slope floor (6 m down where it is) and stays there. The
 // scene is cut to that one body, without the vehicles.
 TEST(FloatingObjects, ABuoyTooDenseToFloatRestsOnTheHarbourFloor) {

@@ -126,6 +126,30 @@ TEST(SceneParse, WakeSettingsThatWouldTakeMinutesAreRefusedWithTheirCost) {
                   .ok());
 }
 
+// A frame replays the floating bodies' physics from bodies_start_s (issue 36: the harbour at 600 s took
+// minutes): over 300 hull-seconds is refused with its cost and both fixes; a late start, a time within the
+// bound, or no floating hulls load.
+TEST(SceneParse, ALateFrameWithFloatingBodiesNeedsALateStart) {
+  const std::string buoy = R"({"file": "b.gltf", "floating": {"enabled": true}})";
+  const std::string boat = R"({"file": "v.gltf", "path": {"waypoints": [[0, 0], [10, 0]]}})";
+  const std::string auv = R"({"file": "v.gltf", "depth_m": 3, "path": {"waypoints": [[0, 0], [10, 0]]}})";
+  const std::string three =
+      R"("objects": [)" + buoy + "," + buoy + R"(], "vehicles": [)" + boat + "," + auv + "]";
+  const std::string late = ParseError("{" + three + R"(, "time_s": 600})");
+  EXPECT_TRUE(
+      Contains(late, "time_s: must be (time_s - bodies_start_s) x floating hulls <= 300 hull-seconds"))
+      << late;
+  EXPECT_TRUE(Contains(late, "600 s of 3 hulls is 1800 hull-seconds")) << late;
+  EXPECT_TRUE(Contains(late, "set bodies_start_s to 500 or later")) << late;
+  EXPECT_TRUE(Contains(late, "or choose time_s <= 100")) << late;
+  EXPECT_TRUE(
+      parse_scene(json::parse("{" + three + R"(, "time_s": 600, "bodies_start_s": 500})"), kSource).ok());
+  EXPECT_TRUE(parse_scene(json::parse("{" + three + R"(, "time_s": 100})"), kSource).ok());
+  EXPECT_FALSE(parse_scene(json::parse("{" + three + R"(, "time_s": 101})"), kSource).ok());
+  // The AUV is submerged: it follows its path and costs nothing; without floating hulls any time loads.
+  EXPECT_TRUE(parse_scene(json::parse(R"({"vehicles": [)" + auv + R"(], "time_s": 86400})"), kSource).ok());
+}
+
 TEST(SceneParse, EmptyBlocksGiveDefaults) {
   Result<Scene> scene = parse_scene(json::parse(R"({"camera": {}, "sun": {}, "render": {}})"), kSource);
   ASSERT_TRUE(scene.ok()) << scene.error().message;

@@ -45,7 +45,10 @@ glm::vec4 WakesPass::window() const {
 }
 
 void WakesPass::follow_camera(const scene::Scene& scene) {
-  if (layer_) layer_->set_window(hulls_.window_for(scene.camera));
+  if (!layer_) return;
+  const glm::ivec2 window = hulls_.window_for(scene.camera);
+  if (window != layer_->window()) run_from_ = -1;
+  layer_->set_window(window);
 }
 
 void WakesPass::record_steps(VkCommandBuffer cmd, long long to) {
@@ -54,22 +57,23 @@ void WakesPass::record_steps(VkCommandBuffer cmd, long long to) {
     layer_->record_step(
         cmd, hulls_.step_s(), now,
         steps_done_ + 1 == to ? ocean::DynamicLayerGpu::Fields::Write : ocean::DynamicLayerGpu::Fields::Keep);
+    ++steps_recorded_;
   }
 }
 
 void WakesPass::prepare(vk::Context& ctx, const scene::Scene& scene, bool replay) {
   if (!layer_) return;
   const long long target = hulls_.step_at(scene.time_s);
+  const long long from = hulls_.first_step_for(scene.time_s);
   const glm::ivec2 window = hulls_.window_for(scene.camera);
-  // Replay re-derives the layer for this step and window, unless it already is that (a second frame at the
-  // same time from the same camera, such as the ground truth's).
-  if (replay ? replayed_for_ == target && steps_done_ == target && window == replayed_window_
-             : steps_done_ >= 0 && target >= steps_done_ && target - steps_done_ <= kStepsPerFrame)
-    return;
+  const bool steps_on = run_from_ == from && run_window_ == window && steps_done_ <= target;
+  // Without replay a few steps ahead are the frame's own, whatever the window did.
+  if (!replay && steps_done_ >= 0 && target >= steps_done_ && target - steps_done_ <= kStepsPerFrame) return;
+  if (steps_on && steps_done_ == target) return;
   follow_camera(scene);
-  steps_done_ = hulls_.first_step_for(scene.time_s);
+  bool clear = !steps_on;
+  if (clear) steps_done_ = from;
   // The sources ring holds kStepsInFlight steps: a longer history is run in several submissions.
-  bool clear = true;
   while (clear || steps_done_ < target) {
     ctx.submit_and_wait([&](VkCommandBuffer cmd) {
       if (clear) layer_->record_clear(cmd);
@@ -77,15 +81,14 @@ void WakesPass::prepare(vk::Context& ctx, const scene::Scene& scene, bool replay
     });
     clear = false;
   }
-  replayed_for_ = replay ? target : -1;
-  replayed_window_ = window;
+  run_from_ = from;
+  run_window_ = window;
 }
 
 void WakesPass::record(const FrameContext& frame) {
   if (!layer_) return;
   vk::GpuScope scope(frame.timer(), frame.cmd, "wakes");
   record_steps(frame.cmd, std::min(hulls_.step_at(frame.scene.time_s), steps_done_ + kStepsPerFrame));
-  if (steps_done_ != replayed_for_) replayed_for_ = -1;
   // Drawn by the vertex and fragment stages, and read by the caustics' compute pass.
   vk::memory_barrier(frame.cmd, vk::access::kComputeWrite,
                      {vk::access::kGraphicsSampled.stage | vk::access::kComputeRead.stage,

@@ -32,20 +32,24 @@ class WakesPass {
   // FrameUniforms.wakes: the window's corner (x, z) in metres, its width, the cell size.
   glm::vec4 window() const;
 
-  // When the frame's time jumps (the first frame, backwards, or more than a few steps ahead), runs the layer
-  // from wakes.history_s before it in its own submission and waits (always with `replay`, so the frame
-  // depends on its time alone). Call before recording the frame.
+  // When the frame's time jumps (the first frame, backwards, or more than a few steps ahead), brings the
+  // layer to it in its own submission and waits; with `replay` always, so the frame depends on its time
+  // alone. The layer for a time starts at rest at its checkpoint (VehicleWakes::first_step_for): when the
+  // layer already is that run, from the same checkpoint in the same window and not past the frame, it steps
+  // on; else it runs again from the checkpoint. Call before recording the frame.
   void prepare(vk::Context& ctx, const scene::Scene& scene, bool replay = false);
   // Puts the window where the camera looks (VehicleWakes::window_for; waves in the cells both windows share
-  // are kept). Call before the frame's uniforms are written (window()).
+  // are kept, so the layer is no longer a run from a checkpoint in one window). Call before the frame's
+  // uniforms are written (window()).
   void follow_camera(const scene::Scene& scene);
   // Steps the layer to the frame's time.
   void record(const FrameContext& frame);
 
   // The vehicles' hulls on the water at time t.
   std::vector<ocean::WakeSource> sources(double t) const { return hulls_.sources(t); }
-  // For tests: the layer itself (null when inactive).
+  // For tests: the layer itself (null when inactive), and the steps recorded since it was made.
   const ocean::DynamicLayerGpu* layer() const { return layer_.get(); }
+  long long steps_recorded() const { return steps_recorded_; }
 
  private:
   explicit WakesPass(world::VehicleWakes hulls) : hulls_(std::move(hulls)) {}
@@ -54,9 +58,11 @@ class WakesPass {
   world::VehicleWakes hulls_;
   std::unique_ptr<ocean::DynamicLayerGpu> layer_;
   vk::Image idle_;
-  long long steps_done_ = -1;    // the layer is at steps_done_ · step_s; < 0 before the first prepare
-  long long replayed_for_ = -1;  // the step a replay derived the layer for, while it still is; else < 0
-  glm::ivec2 replayed_window_{0};
+  long long steps_done_ = -1;  // the layer is at steps_done_ · step_s; < 0 before the first prepare
+  // The checkpoint the layer ran from at rest in window run_window_, while it still is that run; else < 0.
+  long long run_from_ = -1;
+  glm::ivec2 run_window_{0};
+  long long steps_recorded_ = 0;
 };
 
 }  // namespace lagoon::render
