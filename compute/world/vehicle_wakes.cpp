@@ -73,16 +73,8 @@ long long VehicleWakes::step_at(double t) const {
   return (long long)std::floor(std::max(t, 0.0) / step_s_ + 1e-4);
 }
 
-long long VehicleWakes::checkpoint_steps() const {
-  return std::max(1LL, history_steps_ / 6);
-}
-
 long long VehicleWakes::first_step_for(double t) const {
-  // The earliest checkpoint not before step_at(t) - history: at most history_steps_ back, at least
-  // history_steps_ - checkpoint_steps() (ceil of a division that may be negative, then 0 at the latest).
-  const long long earliest = step_at(t) - history_steps_, every = checkpoint_steps();
-  if (earliest <= 0) return 0;
-  return (earliest + every - 1) / every * every;
+  return std::max(0LL, step_at(t) - history_steps_);
 }
 
 }  // namespace lagoon::world

@@ -74,8 +74,8 @@ class OceanRenderer {
   // How a frame's state that builds up over time (foam, the wakes' waves) is reached. Continuous (the
   // default, for real time): from the last frame's. Replay: every frame runs its warm-up again from still
   // water, so its pixels depend only on the scene and its time, not on which frames came before (datasets,
-  // sharded renders: docs/datasets.md). The wakes start at their checkpoint
-  // (world/vehicle_wakes.h), so a sequence's frames step on from each other between checkpoints. Floating
+  // sharded renders: docs/datasets.md). Frames that share the wakes' start
+  // (world/vehicle_wakes.h: all those before wakes.history_s) step on from each other. Floating
   // bodies and vehicles are always simulated from scene.bodies_start_s at a fixed step, and sediment and
   // particles are functions of time, so they need nothing.
   enum class History { Continuous, Replay };

@@ -218,10 +218,10 @@ void read_wakes(ObjectReader& r, Wakes& w) {
            "Time step of the layer; any step is stable (each wave is advanced exactly), shorter ones follow "
            "the hulls more closely in time and cost more.");
   r.number("history_s", w.history_s, Bounds::between(0, 3600), "s",
-           "A frame's layer is computed from still water at a checkpoint between 5/6 of this and this long "
-           "before the frame's time (or from time 0; checkpoints every sixth of it from 0, so a sequence's "
-           "frames between two of them step on from each other), so a still frame at a late time costs at "
-           "most history_s / step_s steps; waves older than the window's crossing time have left it anyway.");
+           "A frame's layer is computed from still water this long before the frame's time (or from time 0, "
+           "so a sequence's frames before this time step on from each other), so a still frame at a late "
+           "time costs history_s / step_s steps. Waves older than this are left out: the harbour's boat "
+           "leaves waves in the window for longer (docs/datasets.md).");
   r.number("foam_lifetime_s", w.foam_lifetime_s, Bounds::above_up_to(0, 3600), "s",
            "The vehicles' foam trails fade to 5 % (e^-3) of their coverage in this time.");
   r.number("foam_spread_m2_s", w.foam_spread_m2_s, Bounds::between(0, 100), "m²/s",

@@ -110,14 +110,14 @@ TEST_F(WakesRender, TheShadedSurfaceCarriesTheReferenceLayersSlopes) {
   EXPECT_LT(relative, 0.05);
 }
 
-// A sequence (History::Replay) steps the layer on from its last frame while the frames share a checkpoint
-// (world/vehicle_wakes.h), with the bits of the frame drawn alone by a fresh renderer; past the next
-// checkpoint it runs again from rest there.
-TEST_F(WakesRender, ASequenceStepsOnFromItsLastFrameUntilTheNextCheckpoint) {
+// A sequence (History::Replay) steps the layer on from its last frame while the frames share their start
+// (world/vehicle_wakes.h: from 0 before history_s), with the bits of the frame drawn alone by a fresh
+// renderer; a frame whose start is later runs again from rest there.
+TEST_F(WakesRender, ASequenceStepsOnFromItsLastFrameWhileItsStartStays) {
   scene::Scene s = calm_bay_with_a_boat();
   s.render.width = 64;
   s.render.height = 36;
-  s.wakes.history_s = 2.0f;  // 20 steps of 0.1 s: checkpoints every 3 steps
+  s.wakes.history_s = 3.1f;  // 31 steps of 0.1 s
   auto layer_bits = [&](const render::OceanRenderer& r) {
     std::vector<std::byte> bits = vk::readback_buffer(ctx(), r.wakes().layer()->state());
     const std::vector<std::byte> foam = vk::readback_buffer(ctx(), r.wakes().layer()->foam());
@@ -138,9 +138,8 @@ TEST_F(WakesRender, ASequenceStepsOnFromItsLastFrameUntilTheNextCheckpoint) {
   (*sequence)->set_history(render::OceanRenderer::History::Replay);
   const render::WakesPass& wakes = (*sequence)->wakes();
   ASSERT_TRUE(wakes.active());
-  // (time, steps recorded in all): 3.0 s runs steps 12-29 (the checkpoint at least 17 steps back), 3.2 s
-  // steps on by two, 3.4 s runs 15-33 from the next checkpoint.
-  const std::vector<std::pair<float, long long>> frames{{3.0f, 18}, {3.2f, 20}, {3.4f, 39}};
+  // (time, steps recorded in all): 3.0 s runs steps 0-29, 3.1 s steps on by one, 3.2 s runs 1-31.
+  const std::vector<std::pair<float, long long>> frames{{3.0f, 30}, {3.1f, 31}, {3.2f, 62}};
   for (const auto& [t, recorded] : frames) {
     s.time_s = t;
     (*sequence)->render(s);

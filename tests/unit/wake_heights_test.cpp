@@ -31,33 +31,6 @@ world::VehicleWakes wakes_of(const scene::Scene& s) {
   return w ? *w : world::VehicleWakes{};
 }
 
-// A frame's layer starts at rest at a checkpoint (world/vehicle_wakes.h): one every sixth of history_s from
-// time 0, the first at least 5/6 of history_s before the frame, so frames between two checkpoints share
-// their start and the layer never runs longer than history_s.
-TEST(VehicleWakes, AFramesLayerStartsAtTheCheckpointAtLeastFiveSixthsOfTheHistoryBefore) {
-  const world::VehicleWakes wakes = wakes_of(shipped_scene("default", {"vehicles=[" + kBoat + "]"}));
-  ASSERT_EQ(wakes.checkpoint_steps(), 50);  // history_s 30 in steps of 0.1 s: 300 steps
-  EXPECT_EQ(wakes.first_step_for(6.0), 0);
-  EXPECT_EQ(wakes.first_step_for(30.0), 0);
-  EXPECT_EQ(wakes.first_step_for(30.1), 50);
-  EXPECT_EQ(wakes.first_step_for(35.0), 50);
-  EXPECT_EQ(wakes.first_step_for(35.1), 100);
-  for (int k = 0; k < 2000; ++k) {
-    const double t = 0.037 * k;
-    const long long first = wakes.first_step_for(t), frame = wakes.step_at(t);
-    EXPECT_EQ(first % 50, 0) << t;
-    EXPECT_LE(frame - first, 300) << t;
-    if (frame >= 300) {
-      EXPECT_GE(frame - first, 250) << t;
-    }
-    EXPECT_LE(first, wakes.first_step_for(t + 0.037)) << t;
-  }
-  // No history: the frame's own step.
-  const world::VehicleWakes none =
-      wakes_of(shipped_scene("default", {"vehicles=[" + kBoat + "]", "wakes.history_s=0"}));
-  EXPECT_EQ(none.first_step_for(12.34), none.step_at(12.34));
-}
-
 TEST(WakeHeights, TheBodiesLayerIsThePicturesLayerWithoutItsShortestWaves) {
   const scene::Scene s = shipped_scene("default", {"vehicles=[" + kBoat + "]"});
   const world::VehicleWakes wakes = wakes_of(s);

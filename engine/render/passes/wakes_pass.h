@@ -34,12 +34,12 @@ class WakesPass {
 
   // When the frame's time jumps (the first frame, backwards, or more than a few steps ahead), brings the
   // layer to it in its own submission and waits; with `replay` always, so the frame depends on its time
-  // alone. The layer for a time starts at rest at its checkpoint (VehicleWakes::first_step_for): when the
-  // layer already is that run, from the same checkpoint in the same window and not past the frame, it steps
-  // on; else it runs again from the checkpoint. Call before recording the frame.
+  // alone. The layer for a time starts at rest at VehicleWakes::first_step_for: when the layer already is
+  // that run, from the same start in the same window and not past the frame, it steps on; else it runs
+  // again from the start. Call before recording the frame.
   void prepare(vk::Context& ctx, const scene::Scene& scene, bool replay = false);
   // Puts the window where the camera looks (VehicleWakes::window_for; waves in the cells both windows share
-  // are kept, so the layer is no longer a run from a checkpoint in one window). Call before the frame's
+  // are kept, so the layer is no longer a run from its start in one window). Call before the frame's
   // uniforms are written (window()).
   void follow_camera(const scene::Scene& scene);
   // Steps the layer to the frame's time.
@@ -59,7 +59,7 @@ class WakesPass {
   std::unique_ptr<ocean::DynamicLayerGpu> layer_;
   vk::Image idle_;
   long long steps_done_ = -1;  // the layer is at steps_done_ · step_s; < 0 before the first prepare
-  // The checkpoint the layer ran from at rest in window run_window_, while it still is that run; else < 0.
+  // The step the layer ran from at rest in window run_window_, while it still is that run; else < 0.
   long long run_from_ = -1;
   glm::ivec2 run_window_{0};
   long long steps_recorded_ = 0;
