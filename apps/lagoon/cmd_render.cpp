@@ -231,9 +231,11 @@ const Command& render_command() {
                        {"set", "PATH=VALUE", "override a scene field, e.g. --set camera.fov_deg=40", false,
                         true}},
            .details =
-               "A sequence's frame k depends only on the scene and its time t = time_s + k/fps: each "
-               "frame re-runs its foam warm-up and wakes from still water, so frames drawn by different "
-               "shards, or after a restart, are byte-identical to those of one run.\n\n"
+               "A sequence carries its foam and wakes from frame to frame, as a live run does, from its "
+               "first frame's warm-up at t = time_s; frame k is at time_s + k/fps. Every shard steps "
+               "through the frames before its own without drawing them, so frames drawn by different "
+               "shards, or after a restart, are byte-identical to those of one run. One frame k alone: "
+               "--frames N --shard k/N.\n\n"
                "examples:\n  lagoon render --scene scenes/default.json --out out/default.png --width 640 "
                "--height 360\n"
                "  lagoon render --scene scenes/harbour.json --path scenes/paths/evaluation.json --frames 660 "

@@ -100,7 +100,7 @@ Result<std::vector<io::ManifestFile>> write_frame(const DatasetRun& run, const s
 
 int render_dataset(const DatasetRun& run, scene::Scene& scene, vk::Context& ctx,
                    render::OceanRenderer& renderer) {
-  renderer.set_history(render::OceanRenderer::History::Replay);
+  renderer.set_history(render::OceanRenderer::History::Sequence);
   const fs::path manifest_file = manifest_path(run.out_png, run.sequence.shard);
   std::optional<io::Manifest> manifest = resume_manifest(manifest_file, run);
   if (!manifest) return kExitFailure;
@@ -118,10 +118,17 @@ int render_dataset(const DatasetRun& run, scene::Scene& scene, vk::Context& ctx,
   const scene::Camera lens = scene.camera;
   size_t finished = skipped;
   print_progress(finished, frames.size(), skipped);
-  for (long long f : frames) {
-    if (done.count(f)) continue;
+  // Every frame from the first is brought about in order, so the foam and the wakes each carries on are the
+  // same in every shard and after a restart; only this shard's unfinished ones are drawn.
+  const std::set<long long> mine(frames.begin(), frames.end());
+  const long long last = frames.empty() ? -1 : frames.back();
+  for (long long f = 0; f <= last; ++f) {
     scene.time_s = float(t0 + run.sequence.offset_s(f));
     if (run.path) scene.camera = run.path->at(run.sequence.offset_s(f), lens);
+    if (!mine.count(f) || done.count(f)) {
+      renderer.advance(scene);
+      continue;
+    }
     const io::Image8 image = renderer.render(scene);
     // A frame rendered with validation errors is not written: it cannot be trusted.
     if (int status = validation_status(ctx); status != kExitOk) return status;

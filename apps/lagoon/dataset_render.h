@@ -1,6 +1,7 @@
-// `lagoon render` for sequences and datasets (--frames, --shard, --path): every frame drawn from the scene
-// and its time alone (OceanRenderer::History::Replay), written with its metadata JSON, listed in the shard's
-// manifest once complete, and skipped on a second run when its files still match (docs/datasets.md).
+// `lagoon render` for sequences and datasets (--frames, --shard, --path): every frame from the first brought
+// about in order, the foam and wakes carried from one to the next (OceanRenderer::History::Sequence), and
+// this shard's drawn, written with its metadata JSON, listed in the shard's manifest once complete, and
+// skipped on a second run when its files still match (docs/datasets.md).
 #pragma once
 #include <optional>
 #include <string>

@@ -151,9 +151,25 @@ void OceanRenderer::prepare(const scene::Scene& scene) {
   std::future<void> bodies;
   if (!floating_->empty() && floating_->steps_to(scene.time_s) >= kJumpSteps)
     bodies = std::async(std::launch::async, [this, time_s = scene.time_s] { floating_->advance(time_s); });
-  ocean_step_->prepare(ctx_, scene.time_s, history_ == History::Replay);
-  wakes_->prepare(ctx_, scene, history_ == History::Replay);
+  ocean_step_->prepare(ctx_, scene.time_s, history_ == History::Sequence);
+  wakes_->prepare(ctx_, scene, history_ == History::Sequence);
   if (bodies.valid()) bodies.get();  // rethrows what the physics threw
+}
+
+void OceanRenderer::advance(const scene::Scene& scene) {
+  prepare(scene);
+  // What record() does to the state, in its order, without the passes that only draw.
+  place_floating_objects(scene.time_s);
+  wakes_->follow_camera(scene);
+  FrameSlot& slot = slots_[0];
+  ctx_.submit_and_wait([&](VkCommandBuffer cmd) {
+    vk::memory_barrier(cmd, vk::access::kAllCommands, vk::access::kAllCommands);
+    slot.timer.reset(cmd);
+    const FrameContext frame{
+        .cmd = cmd, .extent = {scene.render.width, scene.render.height}, .scene = scene, .slot = slot};
+    ocean_step_->record(frame);
+    wakes_->record(frame);
+  });
 }
 
 world::CameraSide OceanRenderer::camera_side(const scene::Scene& scene, VkExtent2D extent) {

@@ -72,19 +72,23 @@ class OceanRenderer {
   io::Image8 render(const scene::Scene& scene, std::vector<vk::PassTime>* timings = nullptr);
 
   // How a frame's state that builds up over time (foam, the wakes' waves) is reached. Continuous (the
-  // default, for real time): from the last frame's. Replay: every frame runs its warm-up again from still
-  // water, so its pixels depend only on the scene and its time, not on which frames came before (datasets,
-  // sharded renders: docs/datasets.md). Frames that share the wakes' start
-  // (world/vehicle_wakes.h: all those before wakes.history_s) step on from each other. Floating
+  // default, for real time): from the last frame's, and from a warm-up from still water when the time jumps
+  // (the first frame, a step back, or far ahead). Sequence (datasets, sharded renders: docs/datasets.md):
+  // from the last frame's however far ahead, so a sequence whose frames are all brought about in order from
+  // its first (render() or advance()) has the same state at each whichever of them are drawn. Floating
   // bodies and vehicles are always simulated from scene.bodies_start_s at a fixed step, and sediment and
   // particles are functions of time, so they need nothing.
-  enum class History { Continuous, Replay };
+  enum class History { Continuous, Sequence };
   void set_history(History history) { history_ = history; }
+  // Brings everything that builds up over time to scene.time_s as render() would, without drawing: the
+  // ocean's step (its foam), the wakes in the camera's window, the floating bodies. For the frames of a
+  // sequence that another shard draws.
+  void advance(const scene::Scene& scene);
 
   // Work that submits and waits, kept out of record(): the foam warm-up when scene.time_s jumps (the first
-  // frame, a step back, or more than kWarmupS ahead) or always with History::Replay, and the wakes' likewise;
-  // the floating bodies are brought to scene.time_s on another thread meanwhile. Call before recording a
-  // frame for scene.time_s.
+  // frame, a step back, or more than kWarmupS ahead; with History::Sequence only the first two), and the
+  // wakes' likewise; the floating bodies are brought to scene.time_s on another thread meanwhile. Call
+  // before recording a frame for scene.time_s.
   void prepare(const scene::Scene& scene);
   // Records the frame (the ocean stepped to scene.time_s, then every pass) into `cmd`; never submits. Uses
   // slot `slot` (mod kSlots): the caller must have waited for the last frame recorded with it. Returns the

@@ -6,6 +6,7 @@
 // the surface mesh's vertices, a cell up to 1/12 of the distance apart (render/surface_grid.h).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <vector>
@@ -110,43 +111,54 @@ TEST_F(WakesRender, TheShadedSurfaceCarriesTheReferenceLayersSlopes) {
   EXPECT_LT(relative, 0.05);
 }
 
-// A sequence (History::Replay) steps the layer on from its last frame while the frames share their start
-// (world/vehicle_wakes.h: from 0 before history_s), with the bits of the frame drawn alone by a fresh
-// renderer; a frame whose start is later runs again from rest there.
-TEST_F(WakesRender, ASequenceStepsOnFromItsLastFrameWhileItsStartStays) {
+// A sequence (History::Sequence) carries the layer and the sea's foam from frame to frame, never starting
+// them again however far apart its frames are, and a renderer that only advance()s through the frames it does
+// not draw has the same bits at the one it draws: how shards agree (docs/datasets.md).
+TEST_F(WakesRender, ASequenceCarriesTheLayerAndAdvancingWithoutDrawingGivesTheSameBits) {
   scene::Scene s = calm_bay_with_a_boat();
   s.render.width = 64;
   s.render.height = 36;
-  s.wakes.history_s = 3.1f;  // 31 steps of 0.1 s
+  s.wakes.history_s = 2.0f;  // 20 steps of 0.1 s
+  s.ocean.spectrum.wind_speed_mps = 14.0f;
+  s.ocean.foam.threshold = 0.9;  // each cascade's own foam (the state a step carries) where it compresses
+  s.ocean.cascades = {{.patch_size_m = 400.0, .resolution = 64},
+                      {.patch_size_m = 60.0, .resolution = 64},
+                      {.patch_size_m = 8.0, .resolution = 64}};
   auto layer_bits = [&](const render::OceanRenderer& r) {
     std::vector<std::byte> bits = vk::readback_buffer(ctx(), r.wakes().layer()->state());
     const std::vector<std::byte> foam = vk::readback_buffer(ctx(), r.wakes().layer()->foam());
     bits.insert(bits.end(), foam.begin(), foam.end());
     return bits;
   };
-  auto alone = [&](float t) {
-    scene::Scene at = s;
-    at.time_s = t;
-    auto r = render::OceanRenderer::create(ctx(), at);
-    EXPECT_TRUE(r) << r.error().message;
-    (*r)->set_history(render::OceanRenderer::History::Replay);
-    (*r)->render(at);
-    return layer_bits(**r);
-  };
-  auto sequence = render::OceanRenderer::create(ctx(), s);
-  ASSERT_TRUE(sequence) << sequence.error().message;
-  (*sequence)->set_history(render::OceanRenderer::History::Replay);
-  const render::WakesPass& wakes = (*sequence)->wakes();
+  auto drawn = render::OceanRenderer::create(ctx(), s);
+  auto advanced = render::OceanRenderer::create(ctx(), s);
+  ASSERT_TRUE(drawn && advanced) << (drawn ? advanced.error().message : drawn.error().message);
+  (*drawn)->set_history(render::OceanRenderer::History::Sequence);
+  (*advanced)->set_history(render::OceanRenderer::History::Sequence);
+  const render::WakesPass& wakes = (*drawn)->wakes();
   ASSERT_TRUE(wakes.active());
-  // (time, steps recorded in all): 3.0 s runs steps 0-29, 3.1 s steps on by one, 3.2 s runs 1-31.
-  const std::vector<std::pair<float, long long>> frames{{3.0f, 30}, {3.1f, 31}, {3.2f, 62}};
-  for (const auto& [t, recorded] : frames) {
-    s.time_s = t;
-    (*sequence)->render(s);
-    EXPECT_EQ(wakes.steps_recorded(), recorded) << "at " << t << " s";
-    const std::vector<std::byte> stepped = layer_bits(**sequence);
-    EXPECT_TRUE(stepped == alone(t)) << "the sequence's layer at " << t << " s differs from a fresh one's";
+  // (time, steps recorded in all): 3.0 s runs steps 10-29 from rest; 3.2 and 4.5 s step on, although 4.5 s
+  // is 13 steps ahead (more than a live frame's 8, which would start again from rest at step 25).
+  const std::vector<std::pair<float, long long>> frames{{3.0f, 20}, {3.2f, 22}, {4.5f, 35}};
+  for (size_t i = 0; i < frames.size(); ++i) {
+    s.time_s = frames[i].first;
+    (*drawn)->render(s);
+    EXPECT_EQ(wakes.steps_recorded(), frames[i].second) << "at " << s.time_s << " s";
+    if (i + 1 < frames.size()) (*advanced)->advance(s);
   }
+  (*advanced)->render(s);
+  EXPECT_EQ((*advanced)->wakes().steps_recorded(), 35);
+  EXPECT_TRUE(layer_bits(**drawn) == layer_bits(**advanced)) << "advancing left another layer than drawing";
+  const std::vector<float> foam = (*drawn)->ocean().read_foam();
+  EXPECT_GT(*std::max_element(foam.begin(), foam.end()), 0.1f) << "no foam: nothing was compared";
+  EXPECT_TRUE(foam == (*advanced)->ocean().read_foam()) << "advancing left other foam than drawing";
+  // A renderer that starts at 4.5 s runs from rest 2 s before it: another layer.
+  auto fresh = render::OceanRenderer::create(ctx(), s);
+  ASSERT_TRUE(fresh);
+  (*fresh)->set_history(render::OceanRenderer::History::Sequence);
+  (*fresh)->render(s);
+  EXPECT_EQ((*fresh)->wakes().steps_recorded(), 20);
+  EXPECT_FALSE(layer_bits(**drawn) == layer_bits(**fresh));
 }
 
 }  // namespace

@@ -13,11 +13,10 @@ Result<OceanStepPass> OceanStepPass::create(vk::Context& ctx, const ocean::Ocean
   return OceanStepPass(std::move(*ocean));
 }
 
-void OceanStepPass::prepare(vk::Context& ctx, double t, bool replay) {
-  // Replay re-derives the state for t, unless it already is that (a second frame at the same t, such as the
-  // ground truth's: a step with dt = 0 leaves the foam as it is, max(foam, new) with nothing decayed).
-  if (replay ? replayed_for_ == t && time_s_ == t : time_s_ >= 0 && t >= time_s_ && t - time_s_ <= kWarmupS)
-    return;
+void OceanStepPass::prepare(vk::Context& ctx, double t, bool sequence) {
+  // A second frame at the same t (the ground truth's) steps by dt = 0, which leaves the foam as it is:
+  // max(foam, new) with nothing decayed.
+  if (time_s_ >= 0 && t >= time_s_ && (sequence || t - time_s_ <= kWarmupS)) return;
   ocean_->restart();
   // A still frame needs the foam a running ocean would have: run the last few seconds first, or take what
   // an earlier run's identical warm-up left (render/foam_cache.h).
@@ -40,7 +39,6 @@ void OceanStepPass::prepare(vk::Context& ctx, double t, bool replay) {
     time_s_ = steps.back();
     if (ocean_->params().model != ocean::SurfaceModel::Springs) store_foam(key, ocean_->read_foam());
   }
-  replayed_for_ = replay ? t : -1;
 }
 
 void OceanStepPass::record(const FrameContext& frame) {
@@ -49,7 +47,6 @@ void OceanStepPass::record(const FrameContext& frame) {
   const double dt = time_s_ < 0 ? 0.0 : std::max(0.0, t - time_s_);
   ocean_->record_step(frame.cmd, t, dt, frame.timer());
   time_s_ = t;
-  if (t != replayed_for_) replayed_for_ = -1;
 }
 
 }  // namespace lagoon::render

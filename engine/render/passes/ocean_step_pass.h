@@ -21,11 +21,11 @@ class OceanStepPass {
   // Fails with the parameter's message when the scene's ocean is invalid (ocean/validate.h).
   static Result<OceanStepPass> create(vk::Context& ctx, const ocean::OceanParams& params);
 
-  // Set-up work outside the frame: when `time_s` jumps (first frame, backwards, or more than kWarmupS ahead),
-  // or always with `replay`, runs the warm-up from still water in its own submission and waits, so the frame
-  // depends on `time_s` alone; or takes the foam an identical warm-up of an earlier run left (foam_cache.h).
-  // Call before recording the frame for `time_s`.
-  void prepare(vk::Context& ctx, double time_s, bool replay = false);
+  // Set-up work outside the frame: when `time_s` jumps (first frame, backwards, or more than kWarmupS ahead;
+  // with `sequence` only the first two, and the frame's step then spans the gap), runs the warm-up from
+  // still water in its own submission and waits, so the frame depends on `time_s` alone; or takes the foam an
+  // identical warm-up of an earlier run left (foam_cache.h). Call before recording the frame for `time_s`.
+  void prepare(vk::Context& ctx, double time_s, bool sequence = false);
   // Steps to frame.scene.time_s (from wherever prepare() or the last frame left the ocean).
   void record(const FrameContext& frame);
 
@@ -34,9 +34,7 @@ class OceanStepPass {
  private:
   explicit OceanStepPass(std::unique_ptr<ocean::GpuOcean> ocean) : ocean_(std::move(ocean)) {}
   std::unique_ptr<ocean::GpuOcean> ocean_;
-  double time_s_ = -1;  // of the last step recorded; < 0 before the first
-  double replayed_for_ =
-      -1;  // the time a replayed warm-up derived the state for, while it still is; else < 0
+  double time_s_ = -1;          // of the last step recorded; < 0 before the first
   std::string spectra_digest_;  // of the ocean's spectra, for the foam cache's key (render/foam_cache.h)
 };
 

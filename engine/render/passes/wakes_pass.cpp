@@ -45,10 +45,7 @@ glm::vec4 WakesPass::window() const {
 }
 
 void WakesPass::follow_camera(const scene::Scene& scene) {
-  if (!layer_) return;
-  const glm::ivec2 window = hulls_.window_for(scene.camera);
-  if (window != layer_->window()) run_from_ = -1;
-  layer_->set_window(window);
+  if (layer_) layer_->set_window(hulls_.window_for(scene.camera));
 }
 
 void WakesPass::record_steps(VkCommandBuffer cmd, long long to) {
@@ -61,28 +58,27 @@ void WakesPass::record_steps(VkCommandBuffer cmd, long long to) {
   }
 }
 
-void WakesPass::prepare(vk::Context& ctx, const scene::Scene& scene, bool replay) {
-  if (!layer_) return;
-  const long long target = hulls_.step_at(scene.time_s);
-  const long long from = hulls_.first_step_for(scene.time_s);
-  const glm::ivec2 window = hulls_.window_for(scene.camera);
-  const bool steps_on = run_from_ == from && run_window_ == window && steps_done_ <= target;
-  // Without replay a few steps ahead are the frame's own, whatever the window did.
-  if (!replay && steps_done_ >= 0 && target >= steps_done_ && target - steps_done_ <= kStepsPerFrame) return;
-  if (steps_on && steps_done_ == target) return;
-  follow_camera(scene);
-  bool clear = !steps_on;
-  if (clear) steps_done_ = from;
-  // The sources ring holds kStepsInFlight steps: a longer history is run in several submissions.
-  while (clear || steps_done_ < target) {
+void WakesPass::run_to(vk::Context& ctx, long long to, bool clear) {
+  // The sources ring holds kStepsInFlight steps: a longer run is recorded in several submissions.
+  while (clear || steps_done_ < to) {
     ctx.submit_and_wait([&](VkCommandBuffer cmd) {
       if (clear) layer_->record_clear(cmd);
-      record_steps(cmd, std::min(target, steps_done_ + (long long)ocean::DynamicLayerGpu::kStepsInFlight));
+      record_steps(cmd, std::min(to, steps_done_ + (long long)ocean::DynamicLayerGpu::kStepsInFlight));
     });
     clear = false;
   }
-  run_from_ = from;
-  run_window_ = window;
+}
+
+void WakesPass::prepare(vk::Context& ctx, const scene::Scene& scene, bool sequence) {
+  if (!layer_) return;
+  const long long target = hulls_.step_at(scene.time_s);
+  if (steps_done_ >= 0 && target >= steps_done_) {
+    if (target - steps_done_ <= kStepsPerFrame) return;  // the frame's own steps (record)
+    if (sequence) return run_to(ctx, target, false);
+  }
+  follow_camera(scene);
+  steps_done_ = hulls_.first_step_for(scene.time_s);
+  run_to(ctx, target, true);
 }
 
 void WakesPass::record(const FrameContext& frame) {

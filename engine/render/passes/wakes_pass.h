@@ -32,15 +32,13 @@ class WakesPass {
   // FrameUniforms.wakes: the window's corner (x, z) in metres, its width, the cell size.
   glm::vec4 window() const;
 
-  // When the frame's time jumps (the first frame, backwards, or more than a few steps ahead), brings the
-  // layer to it in its own submission and waits; with `replay` always, so the frame depends on its time
-  // alone. The layer for a time starts at rest at VehicleWakes::first_step_for: when the layer already is
-  // that run, from the same start in the same window and not past the frame, it steps on; else it runs
-  // again from the start. Call before recording the frame.
-  void prepare(vk::Context& ctx, const scene::Scene& scene, bool replay = false);
+  // When the frame's time jumps (the first frame, backwards, or more than a few steps ahead), runs the layer
+  // from rest wakes.history_s before it (VehicleWakes::first_step_for) in its own submission and waits. With
+  // `sequence` a frame far ahead is no jump: the layer steps on to it in its window as it is. Call before
+  // recording the frame.
+  void prepare(vk::Context& ctx, const scene::Scene& scene, bool sequence = false);
   // Puts the window where the camera looks (VehicleWakes::window_for; waves in the cells both windows share
-  // are kept, so the layer is no longer a run from its start in one window). Call before the frame's
-  // uniforms are written (window()).
+  // are kept). Call before the frame's uniforms are written (window()).
   void follow_camera(const scene::Scene& scene);
   // Steps the layer to the frame's time.
   void record(const FrameContext& frame);
@@ -54,14 +52,13 @@ class WakesPass {
  private:
   explicit WakesPass(world::VehicleWakes hulls) : hulls_(std::move(hulls)) {}
   void record_steps(VkCommandBuffer cmd, long long to);
+  // Steps to `to` in submissions of at most kStepsInFlight, from rest when `clear`.
+  void run_to(vk::Context& ctx, long long to, bool clear);
 
   world::VehicleWakes hulls_;
   std::unique_ptr<ocean::DynamicLayerGpu> layer_;
   vk::Image idle_;
   long long steps_done_ = -1;  // the layer is at steps_done_ · step_s; < 0 before the first prepare
-  // The step the layer ran from at rest in window run_window_, while it still is that run; else < 0.
-  long long run_from_ = -1;
-  glm::ivec2 run_window_{0};
   long long steps_recorded_ = 0;
 };
 
