@@ -181,9 +181,8 @@ const Command& probe_command() {
                "cascades' part). Or, with --object, one per frame: a floating object's or a "
                "vehicle's pose "
                "(model origin, orientation as a quaternion w, x, y, z), centre of mass and velocities, "
-               "simulated from the scene's bodies_start_s (0 unless set). Computed on the CPU; needs no "
-               "Vulkan "
-               "device.",
+               "simulated from the scene's bodies_start_s (0 unless set). Computed on the CPU; needs "
+               "no Vulkan device.",
            .options =
                {scene_option(),
                 {"time", "T", "simulation time in seconds", true},

@@ -31,11 +31,7 @@ class VehicleWakes {
   glm::ivec2 window_for(const scene::Camera& camera) const;
 
   // The layer steps at step_s() from time 0: the last step not after time t, and the step a layer for time t
-  // starts from at rest (history_s before it, or 0). Frames that share a start (all those before history_s)
-  // can step on from each other (render/passes/wakes_pass.h).
-  // Why not checkpoints a few seconds apart, shared by the frames between them: the waves the hulls made
-  // 25-35 s before are still in the harbour's window (a frame at 35.1 s with 25.1 and 30.1 s of history:
-  // PSNR 34.8 dB, 9 % of pixels over 8 levels), so a history that jumps at each checkpoint would pop.
+  // starts from at rest when no earlier frame's layer is carried to it (history_s before it, or 0).
   double step_s() const { return step_s_; }
   long long step_at(double t) const;
   long long first_step_for(double t) const;
