@@ -106,6 +106,20 @@ TEST_F(Demo, ScreenshotMatchesTheCliRenderOfTheSameSceneAndTime) {
   EXPECT_TRUE(r.passed) << r.summary();
 }
 
+// The beach (issue 37): its waves over the sloping floor, the sand above the water and the surf are what the
+// CLI draws at the same time. 10 frames from t = 4 s: the last at 4 + 9/30 s.
+TEST_F(Demo, TheBeachMatchesTheCliRenderOfTheSameTime) {
+  const std::string beach = std::string(LAGOON_SOURCE_DIR) + "/scenes/beach.json";
+  auto d = demo("--scene " + shell_quote(beach) + " --width 160 --height 90 --frames 10 --screenshot " +
+                shell_quote(out("demo.png")) + " --hide-ui --exit");
+  ASSERT_EQ(d.exit_code, 0) << d.output;
+  auto c = lagoon("render --scene " + shell_quote(beach) + " --width 160 --height 90 --time 4.3 --out " +
+                  shell_quote(out("cli.png")));
+  ASSERT_EQ(c.exit_code, 0) << c.output;
+  const CompareResult r = compare_images(png(out("demo.png")), png(out("cli.png")), kTolerance);
+  EXPECT_TRUE(r.passed) << r.summary();
+}
+
 TEST_F(Demo, ScreenshotWithThePanelDiffersFromTheFrameAlone) {
   // Control for the test above: the comparison can fail, and the UI is really drawn into the screenshot.
   auto d = demo("--scene " + shell_quote(kScene) + " --width 320 --height 180 --frames 2 --screenshot " +
