@@ -74,7 +74,9 @@ vec3 shading_normal(MaterialGpu m, bool front) {
 
 void main() {
   const uint mode = kMode;
-  if (mode == LAGOON_MESH_REFRACTION && v_world.y > 0.0) discard;  // the refraction pass sees only what is under the water
+  // The refraction pass sees only what is under the water, and the procedural floor's dry sand beside it:
+  // a refracted lookup near the waterline lands there on the screen (without it: grey notches along a beach).
+  if (mode == LAGOON_MESH_REFRACTION && v_world.y > 0.0 && p.height_field == 0u) discard;
   if (mode != LAGOON_MESH_REFRACTION && v_world.y < 0.0) discard;  // above-water passes see only what is above
   MaterialGpu m = materials[p.material];
   // Mirroring the scene (reflection) turns its triangles' winding around.

@@ -83,5 +83,37 @@ TEST_F(ShoalingRender, ShoalingOffDrawsTheUntransformedSea) {
   EXPECT_LT(e.rms_untransformed, 0.08);
 }
 
+// At the waterline the water is centimetres deep: seen from the shore it shows the sand under it (or the
+// shore's foam), never the blue of deep water. The refraction pass once left the dry sand out of its target,
+// so the water's refracted lookups beside it found nothing there and drew blue-grey notches every few dozen
+// pixels along the beach. Per column: the water pixel just above the first dry sand from the bottom.
+TEST_F(ShoalingRender, TheWaterAtTheWaterlineIsNeverDeepBlue) {
+  const std::vector<std::string> size{"render.width=480", "render.height=270"};
+  auto s = scene::load_scene(std::string(LAGOON_SOURCE_DIR) + "/scenes/beach.json", size);
+  ASSERT_TRUE(s) << s.error().message;
+  auto renderer = render::OceanRenderer::create(ctx(), *s);
+  ASSERT_TRUE(renderer) << renderer.error().message;
+  const io::Image8 image = (*renderer)->render(*s);
+  auto rgb = [&](uint32_t x, uint32_t y) {
+    const uint8_t* p = &image.rgba[(size_t{y} * image.width + x) * 4];
+    return glm::ivec3(p[0], p[1], p[2]);
+  };
+  int columns = 0, blue = 0;
+  for (uint32_t x = 0; x < image.width; ++x) {
+    uint32_t y = image.height - 1;
+    auto sand = [&](glm::ivec3 c) { return c.r > c.b + 15; };  // brown: red over blue
+    if (!sand(rgb(x, y))) continue;
+    while (y > 0 && sand(rgb(x, y - 1))) --y;
+    if (y == 0) continue;
+    ++columns;
+    const glm::ivec3 water = rgb(x, y - 1);
+    if (water.b > water.r + 15) ++blue;
+  }
+  RecordProperty("columns", columns);
+  RecordProperty("deep_blue_at_the_waterline", blue);
+  EXPECT_GT(columns, int(image.width) * 9 / 10) << "the sand does not reach the water across the frame";
+  EXPECT_EQ(blue, 0) << "of " << columns << " columns";
+}
+
 }  // namespace
 }  // namespace lagoon::test
