@@ -158,18 +158,25 @@ void OceanRenderer::prepare(const scene::Scene& scene) {
 
 void OceanRenderer::advance(const scene::Scene& scene) {
   prepare(scene);
-  // What record() does to the state, in its order, without the passes that only draw.
-  place_floating_objects(scene.time_s);
-  wakes_->follow_camera(scene);
+  move_world(scene);
   FrameSlot& slot = slots_[0];
   ctx_.submit_and_wait([&](VkCommandBuffer cmd) {
     vk::memory_barrier(cmd, vk::access::kAllCommands, vk::access::kAllCommands);
     slot.timer.reset(cmd);
     const FrameContext frame{
         .cmd = cmd, .extent = {scene.render.width, scene.render.height}, .scene = scene, .slot = slot};
-    ocean_step_->record(frame);
-    wakes_->record(frame);
+    record_time_steps(frame);
   });
+}
+
+void OceanRenderer::move_world(const scene::Scene& scene) {
+  place_floating_objects(scene.time_s);
+  wakes_->follow_camera(scene);
+}
+
+void OceanRenderer::record_time_steps(const FrameContext& frame) {
+  ocean_step_->record(frame);
+  wakes_->record(frame);
 }
 
 world::CameraSide OceanRenderer::camera_side(const scene::Scene& scene, VkExtent2D extent) {
@@ -183,9 +190,8 @@ FrameContext OceanRenderer::begin_frame(VkCommandBuffer cmd, const scene::Scene&
                                         uint32_t slot_index, const CausticsWindow& caustics) {
   FrameSlot& slot = slots_[slot_index % kSlots];
   const world::CameraSide side = camera_side(scene, extent);
-  place_floating_objects(scene.time_s);
+  move_world(scene);
   objects_->set_sky(sky_light(scene.sun));
-  wakes_->follow_camera(scene);
   const uint32_t light_count =
       write_point_lights(scene, objects_->gltf_lights(reference_illuminance_lux(scene.sun)),
                          reinterpret_cast<gpu::PointLightGpu*>(slot.lights.mapped()));
@@ -295,8 +301,7 @@ void OceanRenderer::record(VkCommandBuffer cmd, const scene::Scene& scene, const
   resize(targets.extent);
   const CausticsWindow caustics = caustics_window(scene, sun_direction(scene.sun), float(scene.water.ior));
   const FrameContext frame = begin_frame(cmd, scene, targets.extent, slot, caustics);
-  ocean_step_->record(frame);
-  wakes_->record(frame);
+  record_time_steps(frame);
   record_frame(frame, caustics, {targets.color, targets.color_view, VK_IMAGE_ASPECT_COLOR_BIT},
                {targets.depth, targets.depth_view, VK_IMAGE_ASPECT_DEPTH_BIT});
 }

@@ -153,6 +153,11 @@ class OceanRenderer {
   void resize(VkExtent2D extent);
   // Brings the floating objects to time_s and moves their meshes there.
   void place_floating_objects(double time_s);
+  // What a frame does to the state it carries on (advance() without drawing does the same): before it is
+  // recorded, the bodies to its time and the wakes' window to its camera; then the ocean's and the wakes'
+  // steps to its time.
+  void move_world(const scene::Scene& scene);
+  void record_time_steps(const FrameContext& frame);
   // The sediment clouds at time_s into the slot's buffer (none without stirrers).
   void write_sediment(double time_s, FrameSlot& slot) const;
   // The renderer's own colour and depth (and readback) for record(extent) and render().

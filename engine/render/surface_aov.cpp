@@ -15,8 +15,7 @@ OceanRenderer::SurfaceAov OceanRenderer::render_surface_aov(const scene::Scene& 
   prepare(scene);
   ctx_.submit_and_wait([&](VkCommandBuffer cmd) {
     const FrameContext frame = begin_frame(cmd, scene, extent, 0, CausticsWindow{});
-    ocean_step_->record(frame);
-    wakes_->record(frame);
+    record_time_steps(frame);
     targets.begin(cmd);
     surface_->record_aov(frame, targets.color(0), targets.color(1), targets.depth());
     if (with_objects) {

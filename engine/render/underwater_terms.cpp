@@ -17,8 +17,7 @@ OceanRenderer::UnderwaterTerms OceanRenderer::render_underwater_terms(const scen
   ctx_.submit_and_wait([&](VkCommandBuffer cmd) {
     using enum vk::ImageUse;
     const FrameContext frame = begin_frame(cmd, scene, extent, 0, caustics);
-    ocean_step_->record(frame);
-    wakes_->record(frame);
+    record_time_steps(frame);
     caustics_->record(frame, caustics);
     vk::use(cmd, {refraction_->albedo(), refraction_->depth()}, Discard, Attachment);
     refraction_->record(frame);
