@@ -4,12 +4,15 @@
 // displacement (λDx, h, λDz) and foam, the normal from the slopes and the Jacobian of the horizontal map
 // x -> x + λD:  J = (1 + λ∂Dx/∂x)(1 + λ∂Dz/∂z) - (λ∂Dx/∂z)².  Foam builds where J < threshold and decays:
 // foam = max(previous · exp(-decay·dt), clamp(threshold - J, 0, 1)).
+// One butterfly of one column per invocation. Two neighbouring columns per invocation (vec4 loads) ran ~3 %
+// faster on lavapipe, but the assembly is inlined once per output, and LLVM took ~1.6 s to compile the 32
+// of them: a cold start's largest single cost. With 16 it takes ~0.6 s (docs/building.md).
 #include "shared/ocean.h"
 #include "common/fft.glsl"
 
 layout(local_size_x_id = LAGOON_FFT_SPEC_GROUP_X, local_size_y_id = LAGOON_FFT_SPEC_GROUP_Y) in;
 
-layout(std430, binding = LAGOON_OCEAN_BIND_FIELDS) readonly buffer Src { vec4 src[]; };  // complex pairs
+layout(std430, binding = LAGOON_OCEAN_BIND_FIELDS) readonly buffer Src { vec2 src[]; };
 layout(std430, binding = LAGOON_OCEAN_BIND_TWIDDLES) readonly buffer Twiddles { vec2 twiddles[]; };
 layout(rgba32f, binding = LAGOON_OCEAN_BIND_DISPLACEMENT) uniform image2DArray displacement;  // (λDx, h, λDz, foam); foam read back
 layout(rgba32f, binding = LAGOON_OCEAN_BIND_NORMAL_JACOBIAN) writeonly uniform image2DArray normal_jacobian;  // (nx, ny, nz, J)
@@ -27,28 +30,21 @@ void assemble_foam(int column, int j, int cascade) {
   int base = cascade * 2 * plane + column;
   vec2 w[FFT_RADIX];
   FFT_LOAD_TWIDDLES(twiddles, j, w);
-  vec2 a2[FFT_RADIX], a3[FFT_RADIX], b2[FFT_RADIX], b3[FFT_RADIX];
+  vec2 a2[FFT_RADIX], a3[FFT_RADIX];
   for (int r = 0; r < FFT_RADIX; ++r) {
-    int at = (base + fft_source_index(j, r) * n) / 2;
-    vec4 p2 = src[at], p3 = src[at + plane / 2];
-    a2[r] = cmul(p2.xy, w[r]), b2[r] = cmul(p2.zw, w[r]);
-    a3[r] = cmul(p3.xy, w[r]), b3[r] = cmul(p3.zw, w[r]);
+    int at = base + fft_source_index(j, r) * n;
+    a2[r] = cmul(src[at], w[r]);
+    a3[r] = cmul(src[at + plane], w[r]);
   }
   fft_radix(a2);
   fft_radix(a3);
-  fft_radix(b2);
-  fft_radix(b3);
-  for (int r = 0; r < FFT_RADIX; ++r) {
-    int z = fft_dest_index(j, r);
-    ocean_assemble_foam(ivec3(column, z, cascade), a2[r], a3[r]);
-    ocean_assemble_foam(ivec3(column + 1, z, cascade), b2[r], b3[r]);
-  }
+  for (int r = 0; r < FFT_RADIX; ++r)
+    ocean_assemble_foam(ivec3(column, fft_dest_index(j, r), cascade), a2[r], a3[r]);
 }
 
-// One invocation: the same butterfly of two neighbouring columns (loads move two complex values).
 void main() {
   const int n = FFT_N;
-  int column = 2 * int(gl_GlobalInvocationID.x);
+  int column = int(gl_GlobalInvocationID.x);
   int j = int(gl_GlobalInvocationID.y);
   int cascade = int(gl_GlobalInvocationID.z);
   if (j >= n / FFT_RADIX || column >= n || cascade >= int(p.cascades)) return;
@@ -56,33 +52,22 @@ void main() {
     assemble_foam(column, j, cascade);
     return;
   }
-
   int plane = n * n;
   int base = cascade * 4 * plane + column;
   vec2 w[FFT_RADIX];
   FFT_LOAD_TWIDDLES(twiddles, j, w);
-  vec2 a0[FFT_RADIX], a1[FFT_RADIX], a2[FFT_RADIX], a3[FFT_RADIX];  // column
-  vec2 b0[FFT_RADIX], b1[FFT_RADIX], b2[FFT_RADIX], b3[FFT_RADIX];  // column + 1
+  vec2 a0[FFT_RADIX], a1[FFT_RADIX], a2[FFT_RADIX], a3[FFT_RADIX];
   for (int r = 0; r < FFT_RADIX; ++r) {
-    int at = (base + fft_source_index(j, r) * n) / 2;
-    vec4 p0 = src[at], p1 = src[at + plane / 2], p2 = src[at + plane], p3 = src[at + 3 * plane / 2];
-    a0[r] = cmul(p0.xy, w[r]), b0[r] = cmul(p0.zw, w[r]);
-    a1[r] = cmul(p1.xy, w[r]), b1[r] = cmul(p1.zw, w[r]);
-    a2[r] = cmul(p2.xy, w[r]), b2[r] = cmul(p2.zw, w[r]);
-    a3[r] = cmul(p3.xy, w[r]), b3[r] = cmul(p3.zw, w[r]);
+    int at = base + fft_source_index(j, r) * n;
+    a0[r] = cmul(src[at], w[r]);
+    a1[r] = cmul(src[at + plane], w[r]);
+    a2[r] = cmul(src[at + 2 * plane], w[r]);
+    a3[r] = cmul(src[at + 3 * plane], w[r]);
   }
   fft_radix(a0);
   fft_radix(a1);
   fft_radix(a2);
   fft_radix(a3);
-  fft_radix(b0);
-  fft_radix(b1);
-  fft_radix(b2);
-  fft_radix(b3);
-
-  for (int r = 0; r < FFT_RADIX; ++r) {
-    int z = fft_dest_index(j, r);
-    ocean_assemble(ivec3(column, z, cascade), a0[r], a1[r], a2[r], a3[r]);
-    ocean_assemble(ivec3(column + 1, z, cascade), b0[r], b1[r], b2[r], b3[r]);
-  }
+  for (int r = 0; r < FFT_RADIX; ++r)
+    ocean_assemble(ivec3(column, fft_dest_index(j, r), cascade), a0[r], a1[r], a2[r], a3[r]);
 }

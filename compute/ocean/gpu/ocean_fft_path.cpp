@@ -75,7 +75,7 @@ class StockhamPath : public OceanFftPath {
     vk::GpuScope s(timer, cmd, "ocean columns+assemble " + std::to_string(n_));
     const auto bindings = assembly_bindings(*src, fft_.twiddles(), b);
     vk::dispatch(cmd, assemble, bindings, &push, sizeof(push),
-                 vk::groups_for(assemble, {n_ / 2, n_ / last.radix, count}));
+                 vk::groups_for(assemble, {n_, n_ / last.radix, count}));
   }
 
  private:
