@@ -1,6 +1,11 @@
 // PYBIND11_MODULE: the `lagoon` extension's entry point and the module-wide pieces (exceptions, JSON).
 #include "bindings.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
 namespace lagoon::python {
 
 py::handle scene_error;
@@ -8,6 +13,37 @@ py::handle scene_error;
 void raise_scene_error(const std::string& message) {
   PyErr_SetString(scene_error.ptr(), message.c_str());
   throw py::error_already_set();
+}
+
+void check_time(const scene::Scene& scene, double time_s, const std::string& what) {
+  nlohmann::ordered_json doc = scene::scene_to_json(scene, std::filesystem::current_path());
+  doc["time_s"] = time_s;
+  if (auto checked = scene::parse_scene(nlohmann::json(doc), what); !checked)
+    raise_scene_error(checked.error().message);
+}
+
+void check_time_bounds(const scene::Scene& scene, double time_s, const std::string& what) {
+  // The file's rule on the bodies' cost counts from bodies_start_s, but a renderer's bodies step on from its
+  // last frame: the rule is left out here (bodies_start_s moved to the time), check_body_cost() has the
+  // renderer's own.
+  nlohmann::ordered_json doc = scene::scene_to_json(scene, std::filesystem::current_path());
+  doc["time_s"] = time_s;
+  doc["bodies_start_s"] = std::isfinite(time_s) ? std::clamp(time_s, 0.0, 86400.0) : 0.0;
+  if (auto checked = scene::parse_scene(nlohmann::json(doc), what); !checked)
+    raise_scene_error(checked.error().message);
+}
+
+void check_body_cost(double hull_seconds, double time_s, const std::string& what) {
+  if (hull_seconds > scene::kMaxBodyHullSecondsPerFrame) {
+    char message[512];
+    std::snprintf(message, sizeof message,
+                  "%s: time_s: the floating objects and surface vehicles would be simulated for %.0f "
+                  "hull-seconds to reach %g s, more than the %.0f allowed at once (about 20 s on lavapipe); "
+                  "bring them there in steps (each call steps on from the one before), or set the scene's "
+                  "bodies_start_s closer to it (docs/physics.md)",
+                  what.c_str(), hull_seconds, time_s, scene::kMaxBodyHullSecondsPerFrame);
+    raise_scene_error(message);
+  }
 }
 
 py::object to_python(const nlohmann::json& j) {

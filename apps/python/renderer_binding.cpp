@@ -54,7 +54,11 @@ class Renderer {
                               "clean, transmission and backscatter (docs/datasets.md)");
     scene::Scene frame = scene_;
     if (camera) frame = with_camera(*camera);
-    if (time) frame.time_s = float(*time);
+    if (time) {
+      check_time_bounds(frame, *time, "render(time=...)");
+      check_body_cost(renderer_->body_hull_seconds_to(*time), *time, "render(time=...)");
+      frame.time_s = float(*time);
+    }
     io::Image8 image;
     render::GroundTruth gt;
     {

@@ -42,7 +42,11 @@ void bind_scene(py::module_& m) {
           "The scene as a dict that from_dict() reads back to the same scene.")
       .def_property(
           "time_s", [](const scene::Scene& s) { return s.time_s; },
-          [](scene::Scene& s, float t) { s.time_s = t; }, "The simulation time of the frame (s).")
+          [](scene::Scene& s, double t) {
+            check_time(s, t, "Scene.time_s");
+            s.time_s = float(t);
+          },
+          "The simulation time of the frame (s), checked as the file's time_s is.")
       .def_property_readonly("width", [](const scene::Scene& s) { return s.render.width; })
       .def_property_readonly("height", [](const scene::Scene& s) { return s.render.height; })
       .def_property_readonly("source", [](const scene::Scene& s) { return s.source.string(); })

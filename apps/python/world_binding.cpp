@@ -58,6 +58,7 @@ World::World(const scene::Scene& scene) : scene_(scene), targets_(world::moving_
 void World::advance(double time_s) {
   if (!std::isfinite(time_s) || time_s < 0 || time_s > 1e6)
     throw py::value_error("time must be a number of seconds from 0 to 1e6");
+  check_body_cost(moving_->hull_seconds_to(time_s), time_s, "World.advance(time)");
   py::gil_scoped_release unlocked;
   moving_->advance(time_s);
   time_s_ = time_s;

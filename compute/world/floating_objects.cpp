@@ -165,6 +165,12 @@ long long FloatingObjects::steps_to(double time_s) const {
   return target < steps_ ? target - first_step_ : target - steps_;
 }
 
+double FloatingObjects::hull_seconds_to(double time_s) const {
+  size_t hulls = bodies_.size();
+  for (const Vehicle& v : vehicles_) hulls += v.heights ? 1 : 0;
+  return double(steps_to(time_s)) * kStepS * double(hulls);
+}
+
 void FloatingObjects::advance(double time_s) {
   const long long target = std::max(step_at(time_s), first_step_);
   if (target < steps_) reset();

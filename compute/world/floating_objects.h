@@ -40,6 +40,9 @@ class FloatingObjects {
   void advance(double time_s);
   // The steps advance(time_s) would take (from the start when time_s is before the bodies' time).
   long long steps_to(double time_s) const;
+  // The physics advance(time_s) would take, in hull-seconds (steps_to() times each hull's step): what the
+  // scene rule on time_s bounds (scene.h: kMaxBodyHullSecondsPerFrame).
+  double hull_seconds_to(double time_s) const;
   // The time they start at rest (scene.bodies_start_s, on the step grid).
   double start_s() const { return double(first_step_) * kStepS; }
 

@@ -125,6 +125,10 @@ class OceanRenderer {
   };
   UnderwaterTerms render_underwater_terms(const scene::Scene& scene);
 
+  // The floating objects' and surface vehicles' physics a frame at time_s would take from where they are,
+  // in hull-seconds (the first frame and a step back replay from scene.bodies_start_s): for hosts that
+  // choose each frame's time (Python, the demo) to hold it to scene::kMaxBodyHullSecondsPerFrame.
+  double body_hull_seconds_to(double time_s) const { return floating_->hull_seconds_to(time_s); }
   // The ocean the frames are drawn from (e.g. for a field check after render()).
   const ocean::GpuOcean& ocean() const { return ocean_step_->ocean(); }
   // The vehicles' tracks, shared by their bodies, wakes and sediment: an order given to one (the demo's helm)

@@ -96,11 +96,7 @@ void read_sun(ObjectReader& r, Sun& s) {
 }
 
 // The floating objects and surface vehicles replay their physics from bodies_start_s to the frame's time
-// (issue 36): the harbour's three hulls took 23 s for a 96 x 54 frame at 120 s, so a frame may ask for at
-// most 300 hull-seconds (about 20 s on lavapipe, 100 s of the harbour) and is refused above that with the
-// fix.
-constexpr double kMaxBodyHullSecondsPerFrame = 300;
-
+// (issue 36): at most kMaxBodyHullSecondsPerFrame (100 s of the harbour), refused above that with the fix.
 void check_bodies_cost(ObjectReader& r, const Scene& s) {
   double hulls = 0;
   for (const Object& o : s.objects) hulls += o.floating.enabled ? 1 : 0;

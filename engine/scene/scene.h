@@ -231,6 +231,12 @@ struct Scene {
   float bodies_start_s = 0.f;
 };
 
+// The most physics one frame may ask for: the floating objects and surface vehicles are brought to its time
+// from where they are (a scene file's frame: from bodies_start_s), and the harbour's three hulls took 23 s
+// for a 96 x 54 frame at 120 s, so a frame may take at most 300 hull-seconds (about 20 s on lavapipe) and
+// is refused above that with the fix (issue 36, docs/physics.md).
+inline constexpr double kMaxBodyHullSecondsPerFrame = 300;
+
 // Reads and validates a scene. `overrides` are "a.b.c=value" strings applied to the JSON before validation
 // (value parsed as JSON if it parses, otherwise taken as a string), so they are validated exactly like the
 // file. An override that picks a surface model also sets what that model needs of the other fields

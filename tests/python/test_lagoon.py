@@ -227,6 +227,23 @@ def test_bad_points_and_times_are_refused():
         lagoon.WaveQuery(lagoon.Scene.load(DEFAULT), max_wavenumber=-1)
 
 
+def test_a_time_out_of_bounds_or_too_far_for_the_bodies_is_refused_with_the_fix():
+    # The harbour's three hulls (buoy, moored boat, boat): a frame or a World step may ask for at most 300
+    # hull-seconds of physics from where the bodies are (docs/physics.md), as the scene file's time_s may.
+    scene = lagoon.Scene.load(os.path.join(SOURCE, "scenes", "harbour.json"), {"render.width": 32, "render.height": 18})
+    renderer = lagoon.Renderer(scene)
+    for bad in (float("nan"), -1.0, 1e9):
+        with pytest.raises(lagoon.SceneError, match="time_s: .*(finite|out of range)"):
+            renderer.render(time=bad)
+    with pytest.raises(lagoon.SceneError, match="600 hull-seconds to reach 200 s.*bodies_start_s"):
+        renderer.render(time=200.0)
+    assert renderer.render(time=2.0)["image"].shape == (18, 32, 3)  # refused frames leave it usable
+    with pytest.raises(lagoon.SceneError, match="set bodies_start_s to 500 or later"):
+        scene.time_s = 600.0
+    with pytest.raises(lagoon.SceneError, match="World.advance.*hull-seconds"):
+        lagoon.World(scene).advance(150.0)
+
+
 def test_the_buoy_example_follows_the_water():
     import importlib.util
 

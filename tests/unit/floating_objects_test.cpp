@@ -154,6 +154,18 @@ TEST(FloatingObjects, ALateStartPutsThemAtRestThenAndSimulatesFromIt) {
     EXPECT_EQ(0, std::memcmp(&back[i].model_to_world, &fresh[i].model_to_world, sizeof(glm::mat4))) << i;
 }
 
+// What a frame at a time costs in physics, the figure Python's render(time=) and World.advance hold to 300
+// hull-seconds: the hulls (not the submerged AUV) times the seconds from where the bodies are.
+TEST(FloatingObjects, HullSecondsToATimeCountFromWhereTheBodiesAre) {
+  const scene::Scene s = shipped_scene("harbour", {"wakes.felt_by_bodies=false"});
+  auto objects = world::FloatingObjects::create(s, s.ocean, ocean::make_cascade_spectra(s.ocean));
+  ASSERT_TRUE(objects);
+  EXPECT_NEAR((*objects)->hull_seconds_to(100.0), 300.0, 1e-9);  // buoy, moored boat and boat, from 0
+  (*objects)->advance(1.0);
+  EXPECT_NEAR((*objects)->hull_seconds_to(3.0), 6.0, 1e-9);  // on from 1 s
+  EXPECT_NEAR((*objects)->hull_seconds_to(0.5), 1.5, 1e-9);  // back: from the start again
+}
+
 // The harbour's buoy at 20000 kg/m³ sinks to the slope floor (6 m down where it is) and stays there. The
 // scene is cut to that one body, without the vehicles.
 TEST(FloatingObjects, ABuoyTooDenseToFloatRestsOnTheHarbourFloor) {
