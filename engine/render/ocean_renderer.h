@@ -127,7 +127,7 @@ class OceanRenderer {
 
   // The floating objects' and surface vehicles' physics a frame at time_s would take from where they are,
   // in hull-seconds (the first frame and a step back replay from scene.bodies_start_s): for hosts that
-  // choose each frame's time (Python, the demo) to hold it to scene::kMaxBodyHullSecondsPerFrame.
+  // choose each frame's time (Python) to hold it to scene::kMaxBodyHullSecondsPerFrame.
   double body_hull_seconds_to(double time_s) const { return floating_->hull_seconds_to(time_s); }
   // The ocean the frames are drawn from (e.g. for a field check after render()).
   const ocean::GpuOcean& ocean() const { return ocean_step_->ocean(); }
