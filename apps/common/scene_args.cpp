@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "scene/model_overrides.h"
+#include "scene/scene_io.h"
 
 namespace lagoon::cli {
 

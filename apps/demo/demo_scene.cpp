@@ -6,6 +6,7 @@
 
 #include "demo.h"
 #include "render/water_luts.h"
+#include "scene/scene_io.h"
 
 namespace lagoon::demo {
 namespace {

@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "scene/overrides.h"
+#include "scene/scene_io.h"
 
 namespace lagoon::demo {
 namespace {

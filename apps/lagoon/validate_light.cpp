@@ -16,6 +16,7 @@
 #include "render/passes/caustics_pass.h"
 #include "render/water_luts.h"
 #include "scene/scene.h"
+#include "scene/scene_io.h"
 #include "shared/caustics.h"
 
 namespace lagoon::cli {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/scene.h"
+#include "scene/scene_io.h"
 
 namespace lagoon::python {
 

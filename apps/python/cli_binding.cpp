@@ -17,6 +17,7 @@
 #include "exit_codes.h"
 #include "run_lagoon.h"
 #include "scene/scene.h"
+#include "scene/scene_io.h"
 #include "stderr_tee.h"
 
 namespace lagoon::python {

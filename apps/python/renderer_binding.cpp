@@ -14,6 +14,7 @@
 #include "render/ground_truth.h"
 #include "render/ocean_renderer.h"
 #include "scene/scene.h"
+#include "scene/scene_io.h"
 #include "vk/context.h"
 #include "world_binding.h"
 

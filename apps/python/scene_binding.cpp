@@ -8,6 +8,7 @@
 
 #include "bindings.h"
 #include "scene/scene.h"
+#include "scene/scene_io.h"
 
 namespace lagoon::python {
 

@@ -1,5 +1,7 @@
 #include "world/wake_heights.h"
 
+#include <glm/common.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>

@@ -1,4 +1,5 @@
 #include "scene/scene.h"
+#include "scene/scene_io.h"
 
 #include "core/compass.h"
 #include "scene/floor_profile.h"

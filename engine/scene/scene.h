@@ -1,19 +1,16 @@
-// The scene file: what to render and how. Format and every field: docs/scene-format.md.
+// The scene: what to render and how, as plain data. Reading, checking and writing it as a file:
+// scene/scene_io.h. Format and every field: docs/scene-format.md.
 #pragma once
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
-#include <nlohmann/json.hpp>
 
 #include <cstdint>
 #include <filesystem>
-#include <span>
 #include <string>
 #include <vector>
 
-#include "core/result.h"
 #include "ocean/ocean_params.h"
 #include "optics/water_params.h"
-#include "scene/json_fields.h"
-#include "scene/overrides.h"
 
 namespace lagoon::scene {
 
@@ -236,28 +233,5 @@ struct Scene {
 // for a 96 x 54 frame at 120 s, so a frame may take at most 300 hull-seconds (about 20 s on lavapipe) and
 // is refused above that with the fix (issue 36, docs/physics.md).
 inline constexpr double kMaxBodyHullSecondsPerFrame = 300;
-
-// Reads and validates a scene. `overrides` are "a.b.c=value" strings applied to the JSON before validation
-// (value parsed as JSON if it parses, otherwise taken as a string), so they are validated exactly like the
-// file. An override that picks a surface model also sets what that model needs of the other fields
-// (scene/model_overrides.h); `notes`, when given, receives one line per such change for the user. On failure
-// the error lists every problem, one per line. Never throws.
-Result<Scene> load_scene(const std::filesystem::path& path, std::span<const std::string> overrides = {},
-                         std::vector<std::string>* notes = nullptr);
-
-// Validates an already-parsed document; `source_name` prefixes error messages. Never throws.
-Result<Scene> parse_scene(const nlohmann::json& document, const std::string& source_name);
-
-// The scene as a document parse_scene() reads back to an equal scene; file paths are written relative to
-// `folder` (the folder of the file it will be saved in) when they are inside it.
-nlohmann::ordered_json scene_to_json(const Scene& scene, const std::filesystem::path& folder);
-
-// Writes scene_to_json() to `path` (via a temporary file and a rename, so a failure leaves no half file).
-Result<void> save_scene(const Scene& scene, const std::filesystem::path& path);
-
-// Every field of the format with its type, unit, default, range and meaning (the docs' reference table).
-std::vector<FieldInfo> scene_fields();
-// The same rows with `scene`'s values in FieldInfo::default_value (for editors).
-std::vector<FieldInfo> scene_fields(const Scene& scene);
 
 }  // namespace lagoon::scene

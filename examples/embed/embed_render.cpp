@@ -21,6 +21,7 @@
 #include "io/png.h"
 #include "render/ocean_renderer.h"
 #include "scene/scene.h"
+#include "scene/scene_io.h"
 #include "vk/context.h"
 
 namespace {

@@ -6,6 +6,7 @@
 
 #include "ocean/initial_spectrum.h"
 #include "scene/scene.h"
+#include "scene/scene_io.h"
 #include "world/floating_objects.h"
 #include "world/moving_pose.h"
 

@@ -10,6 +10,7 @@
 
 #include "ocean/wave_query.h"
 #include "scene/scene.h"
+#include "scene/scene_io.h"
 #include "support/run_process.h"
 #include "support/temp_dir.h"
 

@@ -13,6 +13,7 @@
 #include "core/compass.h"
 #include "render/camera.h"
 #include "scene/scene.h"
+#include "scene/scene_io.h"
 #include "support/run_process.h"
 #include "support/temp_dir.h"
 #include "world/object_pose.h"

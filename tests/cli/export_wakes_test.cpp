@@ -13,6 +13,7 @@
 #include "io/npy.h"
 #include "ocean/dynamic_layer.h"
 #include "scene/scene.h"
+#include "scene/scene_io.h"
 #include "support/run_process.h"
 #include "support/temp_dir.h"
 #include "world/vehicle_wakes.h"

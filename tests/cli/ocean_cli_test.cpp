@@ -16,6 +16,7 @@
 #include "ocean/sines.h"
 #include "ocean/springs.h"
 #include "scene/scene.h"
+#include "scene/scene_io.h"
 #include "support/direct_sum.h"
 #include "support/fftw_reference.h"
 #include "support/run_process.h"

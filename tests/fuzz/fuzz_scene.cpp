@@ -7,6 +7,7 @@
 
 #include "fuzz_support.h"
 #include "scene/scene.h"
+#include "scene/scene_io.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const auto parts = lagoon::fuzz::split(lagoon::fuzz::as_text(data, size), '\xff');

@@ -13,6 +13,7 @@
 #include "render/camera.h"
 #include "render/ocean_renderer.h"
 #include "render/sky_light.h"
+#include "scene/scene_io.h"
 #include "support/vk_fixture.h"
 
 namespace lagoon::test {

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "render/ocean_renderer.h"
+#include "scene/scene_io.h"
 #include "support/vk_fixture.h"
 
 namespace lagoon::test {

@@ -4,6 +4,7 @@
 
 #include "fft/gpu_fft.h"
 #include "render/ocean_renderer.h"
+#include "scene/scene_io.h"
 #include "support/vk_fixture.h"
 #include "vk/barriers.h"
 #include "vk/transfer.h"

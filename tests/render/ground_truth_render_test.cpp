@@ -15,6 +15,7 @@
 #include "render/ground_truth.h"
 #include "render/ocean_renderer.h"
 #include "render/pinhole.h"
+#include "scene/scene_io.h"
 #include "support/edited_scene.h"
 #include "support/gltf_quads.h"
 #include "support/temp_dir.h"

@@ -7,6 +7,7 @@
 
 #include "optics/lut.h"
 #include "render/ocean_renderer.h"
+#include "scene/scene_io.h"
 #include "support/image_compare.h"
 #include "support/vk_fixture.h"
 

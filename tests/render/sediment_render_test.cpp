@@ -13,6 +13,7 @@
 #include "physics/sediment.h"
 #include "render/camera.h"
 #include "render/ocean_renderer.h"
+#include "scene/scene_io.h"
 #include "support/vk_fixture.h"
 #include "world/vehicle_sediment.h"
 

@@ -10,6 +10,7 @@
 
 #include "ocean/wave_query.h"
 #include "render/ocean_renderer.h"
+#include "scene/scene_io.h"
 #include "support/vk_fixture.h"
 
 namespace lagoon::test {

@@ -12,6 +12,7 @@
 #include "render/camera.h"
 #include "render/ocean_renderer.h"
 #include "render/seafloor.h"
+#include "scene/scene_io.h"
 #include "support/vk_fixture.h"
 
 namespace lagoon::test {

@@ -13,6 +13,7 @@
 #include "render/ground_truth.h"
 #include "render/ocean_renderer.h"
 #include "render/pinhole.h"
+#include "scene/scene_io.h"
 #include "support/vk_fixture.h"
 
 namespace lagoon::test {

@@ -14,6 +14,7 @@
 #include "ocean/dynamic_layer.h"
 #include "ocean/wave_query.h"
 #include "render/ocean_renderer.h"
+#include "scene/scene_io.h"
 #include "support/vk_fixture.h"
 #include "vk/transfer.h"
 

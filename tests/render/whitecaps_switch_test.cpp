@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "render/ocean_renderer.h"
+#include "scene/scene_io.h"
 #include "support/vk_fixture.h"
 
 namespace lagoon::test {

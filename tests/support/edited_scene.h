@@ -9,6 +9,7 @@
 #include <string>
 
 #include "scene/scene.h"
+#include "scene/scene_io.h"
 
 namespace lagoon::test {
 

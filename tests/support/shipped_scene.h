@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "scene/scene.h"
+#include "scene/scene_io.h"
 
 namespace lagoon::test {
 

@@ -6,6 +6,7 @@
 
 #include "demo_options.h"
 #include "parameter_panel.h"
+#include "scene/scene_io.h"
 
 namespace lagoon::test {
 namespace {

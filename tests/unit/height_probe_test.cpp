@@ -12,6 +12,7 @@
 
 #include "ocean/wave_query.h"
 #include "scene/scene.h"
+#include "scene/scene_io.h"
 #include "support/direct_sum.h"
 
 namespace lagoon::test {

@@ -11,6 +11,7 @@
 
 #include "scene/json_fields.h"
 #include "scene/scene.h"
+#include "scene/scene_io.h"
 
 namespace lagoon::test {
 namespace {

@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "scene/scene.h"
+#include "scene/scene_io.h"
 
 namespace lagoon::test {
 namespace {

@@ -1,4 +1,5 @@
 #include "scene/scene.h"
+#include "scene/scene_io.h"
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>
