@@ -23,9 +23,6 @@ class Cli : public ::testing::Test {
     fs::remove_all(dir_);
     fs::create_directories(dir_);
   }
-  ProcessResult lagoon(const std::string& args, const std::string& env = "") {
-    return run_process(shell_quote(LAGOON_BINARY) + " " + args, env);
-  }
   // Nothing at all in the test's folder: no output, no temporary file.
   void expect_no_files() {
     for (const auto& e : fs::directory_iterator(dir_)) ADD_FAILURE() << "left behind: " << e.path();

@@ -41,9 +41,7 @@ Image8 two_percent_off_by_20() {
 
 class CompareImagesCli : public ::testing::Test {
  protected:
-  ProcessResult lagoon(const std::string& args) {
-    return run_process(shell_quote(LAGOON_BINARY) + " compare-images " + args);
-  }
+  static ProcessResult compare(const std::string& args) { return lagoon("compare-images " + args); }
   std::string write(const std::string& name, const Image8& image) {
     const fs::path path = dir_ / name;
     EXPECT_TRUE(io::write_png(path, image)) << path;
@@ -57,14 +55,14 @@ class CompareImagesCli : public ::testing::Test {
 
 TEST_F(CompareImagesCli, IdenticalImagesPassWithInfinitePsnr) {
   const std::string a = write("a.png", base_image()), b = write("b.png", base_image());
-  auto r = lagoon(a + " " + b);
+  auto r = compare(a + " " + b);
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("inf dB"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("100x50"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("0 of 5000"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("PASS"), std::string::npos) << r.output;
 
-  auto j = lagoon(a + " " + b + " --json");
+  auto j = compare(a + " " + b + " --json");
   ASSERT_EQ(j.exit_code, 0) << j.output;
   const auto doc = json_of(j);
   EXPECT_TRUE(doc["psnr_db"].is_null()) << doc;
@@ -74,7 +72,7 @@ TEST_F(CompareImagesCli, IdenticalImagesPassWithInfinitePsnr) {
 
 TEST_F(CompareImagesCli, TwoPercentOffBy20FailsTheFractionBoundOnly) {
   const std::string a = write("a.png", base_image()), b = write("b.png", two_percent_off_by_20());
-  auto r = lagoon(a + " " + b);
+  auto r = compare(a + " " + b);
   EXPECT_EQ(r.exit_code, 1) << r.output;
   EXPECT_NE(
       r.output.find("FAIL: fraction of differing pixels 0.02 (100 pixels) is above --max-fraction 0.01"),
@@ -84,7 +82,7 @@ TEST_F(CompareImagesCli, TwoPercentOffBy20FailsTheFractionBoundOnly) {
   EXPECT_EQ(r.output.find("FAIL: PSNR"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("43.87 dB"), std::string::npos) << r.output;
 
-  auto j = lagoon(a + " " + b + " --json");
+  auto j = compare(a + " " + b + " --json");
   EXPECT_EQ(j.exit_code, 1) << j.output;
   const auto doc = json_of(j);
   EXPECT_EQ(doc["differing_pixels"], 100);
@@ -94,9 +92,9 @@ TEST_F(CompareImagesCli, TwoPercentOffBy20FailsTheFractionBoundOnly) {
   EXPECT_FALSE(doc["passed"].get<bool>());
 
   // A difference of exactly the tolerance does not count, and a looser fraction bound admits 2%.
-  EXPECT_EQ(lagoon(a + " " + b + " --tolerance 20").exit_code, 0);
-  EXPECT_EQ(lagoon(a + " " + b + " --max-fraction 0.02").exit_code, 0);
-  EXPECT_EQ(lagoon(a + " " + b + " --max-fraction 0.0199").exit_code, 1);
+  EXPECT_EQ(compare(a + " " + b + " --tolerance 20").exit_code, 0);
+  EXPECT_EQ(compare(a + " " + b + " --max-fraction 0.02").exit_code, 0);
+  EXPECT_EQ(compare(a + " " + b + " --max-fraction 0.0199").exit_code, 1);
 }
 
 TEST_F(CompareImagesCli, EveryChannelOffByOneLevelIs48Point13Db) {
@@ -104,16 +102,16 @@ TEST_F(CompareImagesCli, EveryChannelOffByOneLevelIs48Point13Db) {
   for (size_t i = 0; i < off.rgba.size(); ++i)
     if (i % 4 != 3) off.rgba[i] += 1;  // RGB only: MSE = 1, PSNR = 20 log10(255)
   const std::string a = write("a.png", base_image()), b = write("b.png", off);
-  auto r = lagoon(a + " " + b);
+  auto r = compare(a + " " + b);
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("48.13 dB"), std::string::npos) << r.output;
 
-  const auto doc = json_of(lagoon(a + " " + b + " --json"));
+  const auto doc = json_of(compare(a + " " + b + " --json"));
   EXPECT_NEAR(doc["psnr_db"].get<double>(), 20.0 * std::log10(255.0), 1e-9);
   EXPECT_EQ(doc["differing_pixels"], 0);  // 1 level is within the default tolerance of 8
   EXPECT_EQ(doc["max_channel_difference"], 1);
 
-  auto strict = lagoon(a + " " + b + " --min-psnr 50");
+  auto strict = compare(a + " " + b + " --min-psnr 50");
   EXPECT_EQ(strict.exit_code, 1) << strict.output;
   EXPECT_NE(strict.output.find("FAIL: PSNR 48.13 dB is below --min-psnr 50"), std::string::npos)
       << strict.output;
@@ -123,7 +121,7 @@ TEST_F(CompareImagesCli, EveryChannelOffByOneLevelIs48Point13Db) {
 TEST_F(CompareImagesCli, DiffMarksTheChangedPixels) {
   const Image8 changed = two_percent_off_by_20();
   const std::string a = write("a.png", base_image()), b = write("b.png", changed);
-  auto r = lagoon(a + " " + b + " --diff " + shell_quote(path("out/diff.png")));
+  auto r = compare(a + " " + b + " --diff " + shell_quote(path("out/diff.png")));
   EXPECT_EQ(r.exit_code, 1) << r.output;  // the diff is written whether or not the images agree
   auto diff = io::read_png(path("out/diff.png"));
   ASSERT_TRUE(diff) << diff.error().message;
@@ -140,12 +138,12 @@ TEST_F(CompareImagesCli, DiffMarksTheChangedPixels) {
 
 TEST_F(CompareImagesCli, MissingOrNonPngFileExits1NamingIt) {
   const std::string a = write("a.png", base_image());
-  auto missing = lagoon(a + " " + shell_quote(path("nowhere.png")));
+  auto missing = compare(a + " " + shell_quote(path("nowhere.png")));
   EXPECT_EQ(missing.exit_code, 1) << missing.output;
   EXPECT_NE(missing.output.find(path("nowhere.png")), std::string::npos) << missing.output;
 
   { std::ofstream(path("text.png")) << "not an image"; }
-  auto not_png = lagoon(shell_quote(path("text.png")) + " " + a + " --diff " + shell_quote(path("d.png")));
+  auto not_png = compare(shell_quote(path("text.png")) + " " + a + " --diff " + shell_quote(path("d.png")));
   EXPECT_EQ(not_png.exit_code, 1) << not_png.output;
   EXPECT_NE(not_png.output.find(path("text.png")), std::string::npos) << not_png.output;
   EXPECT_NE(not_png.output.find("not a PNG"), std::string::npos) << not_png.output;
@@ -157,7 +155,7 @@ TEST_F(CompareImagesCli, SizeMismatchExits1WithBothSizes) {
   wide.width = 50;
   wide.height = 100;  // same bytes, other shape
   const std::string a = write("a.png", base_image()), b = write("b.png", wide);
-  auto r = lagoon(a + " " + b + " --diff " + shell_quote(path("d.png")));
+  auto r = compare(a + " " + b + " --diff " + shell_quote(path("d.png")));
   EXPECT_EQ(r.exit_code, 1) << r.output;
   for (const char* part : {"size mismatch", "100x50", "50x100"})
     EXPECT_NE(r.output.find(part), std::string::npos) << part << "\n" << r.output;
@@ -181,7 +179,7 @@ TEST_F(CompareImagesCli, BadCommandLinesExit2NamingTheProblem) {
       {a + " " + b + " " + a, "unexpected argument"},
   };
   for (const Case& c : cases) {
-    auto r = lagoon(c.args);
+    auto r = compare(c.args);
     EXPECT_EQ(r.exit_code, 2) << c.args << "\n" << r.output;
     EXPECT_NE(r.output.find(c.expected), std::string::npos) << c.args << "\n" << r.output;
   }

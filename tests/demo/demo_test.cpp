@@ -34,9 +34,6 @@ class Demo : public ::testing::Test {
   ProcessResult demo(const std::string& args) {
     return run_process(shell_quote(LAGOON_XVFB_RUN) + " -a " + shell_quote(LAGOON_DEMO_BINARY) + " " + args);
   }
-  ProcessResult lagoon(const std::string& args) {
-    return run_process(shell_quote(LAGOON_BINARY) + " " + args);
-  }
   std::string out(const std::string& name) { return (dir_ / name).string(); }
   io::Image8 png(const std::string& path) {
     auto image = io::read_png(path);
