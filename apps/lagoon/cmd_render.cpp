@@ -12,6 +12,7 @@
 #include "gpu_session.h"
 #include "io/png.h"
 #include "io/sha256.h"
+#include "render/ground_truth.h"
 #include "render/ocean_renderer.h"
 #include "scene/scene.h"
 #include "scene_args.h"
@@ -104,11 +105,9 @@ std::optional<std::vector<std::string>> aov_option(const ParsedArgs& args) {
     if (end == std::string::npos) end = list.size();
     const std::string name = list.substr(start, end - start);
     start = end + 1;
-    if (std::find(kAovNames.begin(), kAovNames.end(), name) == kAovNames.end()) {
-      std::string known;
-      for (const std::string& k : kAovNames) known += (known.empty() ? "" : ", ") + k;
+    if (!render::find_aov(name)) {
       std::fprintf(stderr, "lagoon render: --aov %s: unknown ground truth '%s'; available: %s\n",
-                   list.c_str(), name.c_str(), known.c_str());
+                   list.c_str(), name.c_str(), render::aov_names().c_str());
       return std::nullopt;
     }
     if (std::find(aovs.begin(), aovs.end(), name) == aovs.end()) aovs.push_back(name);

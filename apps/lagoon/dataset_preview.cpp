@@ -12,6 +12,7 @@
 #include "io/json_limits.h"
 #include "io/npy.h"
 #include "io/text_raster.h"
+#include "render/ground_truth.h"
 
 namespace lagoon::cli {
 namespace {
@@ -134,19 +135,16 @@ Result<io::Image8> dataset_preview(const fs::path& frame_json) {
       if (!file.is_string() || !plain_name(file.get<std::string>()))
         return Error{frame_json.string() + ": aov." + kind + " must be a file name beside it"};
       const fs::path path = folder / file.get<std::string>();
-      static const std::map<std::string, size_t> kChannels = {
-          {"depth", 1}, {"normal", 3},       {"water_mask", 1}, {"object_id", 1},
-          {"clean", 3}, {"transmission", 3}, {"backscatter", 3}};
-      const auto channels = kChannels.find(kind);
-      if (channels == kChannels.end())
+      const render::AovKind* aov = render::find_aov(kind);
+      if (!aov)
         return Error{frame_json.string() + ": aov." + kind + " is not a ground truth lagoon render writes"};
       Result<io::NpyArray> a = io::read_npy(path);
       if (!a) return a.error();
       const std::vector<size_t> shape =
-          channels->second == 3 ? std::vector<size_t>{h, w, 3} : std::vector<size_t>{h, w};
+          aov->channels == 3 ? std::vector<size_t>{h, w, 3} : std::vector<size_t>{h, w};
       if (a->shape != shape)
         return Error{path.string() + ": " + kind + " is not " + std::to_string(h) + " x " +
-                     std::to_string(w) + (channels->second == 3 ? " x 3" : "") + " like its frame"};
+                     std::to_string(w) + (aov->channels == 3 ? " x 3" : "") + " like its frame"};
       panels.push_back({kind, colour(kind, *a, pixels)});
     }
   const int columns = std::min<int>(kPanelColumns, int(panels.size())),

@@ -18,14 +18,11 @@
 
 namespace lagoon::cli {
 
-// The ground truth --aov may ask for (render/ground_truth.h; docs/datasets.md).
-inline const std::vector<std::string>& kAovNames = render::kAovNames;
-
 struct DatasetRun {
   std::string out_png;
   FrameSequence sequence;
   std::optional<scene::CameraPath> path;
-  std::vector<std::string> aovs;  // ground truth to write beside each frame (kAovNames), in this order
+  std::vector<std::string> aovs;  // ground truth to write beside each frame (render::kAovs), in this order
   nlohmann::json run;             // what the manifest records as the run (scene, checksums, options)
 };
 

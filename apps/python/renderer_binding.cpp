@@ -49,10 +49,9 @@ class Renderer {
   py::dict render(std::optional<double> time, const std::optional<py::dict>& camera,
                   const std::vector<std::string>& aovs) {
     for (const std::string& name : aovs)
-      if (std::find(render::kAovNames.begin(), render::kAovNames.end(), name) == render::kAovNames.end())
-        throw py::value_error("no AOV named '" + name +
-                              "'; the AOVs are depth, normal, water_mask, object_id, "
-                              "clean, transmission and backscatter (docs/datasets.md)");
+      if (!render::find_aov(name))
+        throw py::value_error("no AOV named '" + name + "'; the AOVs are " + render::aov_names() +
+                              " (docs/datasets.md)");
     scene::Scene frame = scene_;
     if (camera) frame = with_camera(*camera);
     if (time) {

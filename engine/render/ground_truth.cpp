@@ -59,16 +59,26 @@ void add_underwater_terms(GroundTruth& gt, const OceanRenderer::UnderwaterTerms&
   }
 }
 
+const AovKind* find_aov(std::string_view name) {
+  for (const AovKind& a : kAovs)
+    if (name == a.name) return &a;
+  return nullptr;
+}
+
+std::string aov_names(const std::string& separator) {
+  std::string out;
+  for (const AovKind& a : kAovs) out += (out.empty() ? "" : separator) + a.name;
+  return out;
+}
+
 const std::vector<float>& GroundTruth::plane(const std::string& name) const {
-  const std::vector<float>* planes[] = {&depth, &normal,       &water_mask, &object_id,
-                                        &clean, &transmission, &backscatter};
-  for (size_t i = 0; i < kAovNames.size(); ++i)
-    if (kAovNames[i] == name) return *planes[i];
+  if (const AovKind* a = find_aov(name)) return this->*(a->plane);
   throw std::out_of_range("no AOV named '" + name + "'");
 }
 
 bool GroundTruth::needs_terms(const std::string& name) {
-  return name == "clean" || name == "transmission" || name == "backscatter";
+  const AovKind* a = find_aov(name);
+  return a && a->needs_terms;
 }
 
 GroundTruth frame_ground_truth(OceanRenderer& renderer, const scene::Scene& scene, bool with_terms) {

@@ -15,6 +15,7 @@
 #pragma once
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "render/ocean_renderer.h"
@@ -23,19 +24,37 @@
 
 namespace lagoon::render {
 
-// The AOVs by name, in the order the docs list them.
-inline const std::vector<std::string> kAovNames = {"depth", "normal",       "water_mask", "object_id",
-                                                   "clean", "transmission", "backscatter"};
-
 struct GroundTruth {
   uint32_t width = 0, height = 0;
   std::vector<float> depth, normal, water_mask, object_id;  // normal: 3 per pixel
   std::vector<float> clean, transmission, backscatter;      // 3 per pixel; empty until add_underwater_terms
-  // The AOV named `name` (one of kAovNames; throws std::out_of_range for another).
+  // The AOV named `name` (one of kAovs; throws std::out_of_range for another).
   const std::vector<float>& plane(const std::string& name) const;
   // Whether `name` needs the image formation terms (frame_ground_truth's with_terms).
   static bool needs_terms(const std::string& name);
 };
+
+// The AOVs, in the order the docs list them: the one list the CLI, the Python module, the dataset's
+// preview and GroundTruth read.
+struct AovKind {
+  const char* name;
+  uint32_t channels;                       // floats per pixel: 1, or 3 (a vector or linear RGB)
+  bool needs_terms;                        // from the underwater view's image formation terms
+  std::vector<float> GroundTruth::*plane;  // where GroundTruth keeps it
+};
+inline constexpr AovKind kAovs[] = {
+    {"depth", 1, false, &GroundTruth::depth},
+    {"normal", 3, false, &GroundTruth::normal},
+    {"water_mask", 1, false, &GroundTruth::water_mask},
+    {"object_id", 1, false, &GroundTruth::object_id},
+    {"clean", 3, true, &GroundTruth::clean},
+    {"transmission", 3, true, &GroundTruth::transmission},
+    {"backscatter", 3, true, &GroundTruth::backscatter},
+};
+// The AOV named `name`, or nullptr.
+const AovKind* find_aov(std::string_view name);
+// Their names, in that order, between `separator`s: "depth, normal, ..., backscatter".
+std::string aov_names(const std::string& separator = ", ");
 
 // `side`: where the camera was judged to be for the frame; `surface_y`: the water's height above the camera
 // (used when the lens cuts the surface, to tell per pixel on which side its ray starts).
