@@ -10,9 +10,7 @@
 namespace lagoon::demo {
 namespace {
 
-constexpr ocean::SurfaceModel kModels[] = {ocean::SurfaceModel::Fft, ocean::SurfaceModel::Gerstner,
-                                           ocean::SurfaceModel::Sines, ocean::SurfaceModel::Perlin,
-                                           ocean::SurfaceModel::Springs};
+constexpr auto& kModels = ocean::kSurfaceModels;
 
 }  // namespace
 

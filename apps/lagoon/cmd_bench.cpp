@@ -77,9 +77,7 @@ ComputeTimes time_ocean_step(vk::Context& ctx, const ocean::OceanParams& params,
 bool bench_models(vk::Context& ctx, int rounds, nlohmann::json& results) {
   ocean::OceanParams params = bench_params(256, 3);
   double fft_ms = 0;
-  for (ocean::SurfaceModel m :
-       {ocean::SurfaceModel::Fft, ocean::SurfaceModel::Gerstner, ocean::SurfaceModel::Sines,
-        ocean::SurfaceModel::Perlin, ocean::SurfaceModel::Springs}) {
+  for (ocean::SurfaceModel m : ocean::kSurfaceModels) {
     params.model = m;
     params.choppiness = m == ocean::SurfaceModel::Sines ? 0.0 : 1.0;  // sines moves points only vertically
     if (auto valid = ocean::validate(params); !valid) {

@@ -84,8 +84,7 @@ const char* to_string(GerstnerDispersion law) {
 }
 
 bool from_string(const std::string& name, SurfaceModel& out) {
-  for (SurfaceModel m : {SurfaceModel::Fft, SurfaceModel::Gerstner, SurfaceModel::Sines, SurfaceModel::Perlin,
-                         SurfaceModel::Springs})
+  for (SurfaceModel m : kSurfaceModels)
     if (name == to_string(m)) return out = m, true;
   return false;
 }

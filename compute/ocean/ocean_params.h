@@ -40,6 +40,10 @@ struct SpectrumParams {
 // Which surface model makes the sea (issue 15, docs/models.md): the FFT ocean's random spectrum, or an
 // explicit set of waves (Gerstner's or sines) evaluated directly where they are drawn (ocean/direct_waves.h).
 enum class SurfaceModel { Fft, Gerstner, Sines, Perlin, Springs };
+// Every model, in the order the docs, the scene format, the demo's selector and `lagoon bench` list them.
+inline constexpr SurfaceModel kSurfaceModels[] = {SurfaceModel::Fft, SurfaceModel::Gerstner,
+                                                  SurfaceModel::Sines, SurfaceModel::Perlin,
+                                                  SurfaceModel::Springs};
 
 // Gerstner waves' dispersion (seed 001): eq. 7 deep water, eq. 8 finite depth, eq. 9 capillary.
 enum class GerstnerDispersion { Deep, FiniteDepth, Capillary };

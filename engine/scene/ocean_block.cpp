@@ -1,6 +1,7 @@
 #include "scene/ocean_block.h"
 
 #include <initializer_list>
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -11,10 +12,14 @@ namespace {
 
 // Names come from ocean::to_string so the file format and the rest of the code spell them one way.
 template <typename E>
-std::vector<std::pair<std::string, E>> named(std::initializer_list<E> values) {
+std::vector<std::pair<std::string, E>> named(std::span<const E> values) {
   std::vector<std::pair<std::string, E>> options;
   for (E v : values) options.emplace_back(ocean::to_string(v), v);
   return options;
+}
+template <typename E>
+std::vector<std::pair<std::string, E>> named(std::initializer_list<E> values) {
+  return named(std::span<const E>(values.begin(), values.size()));
 }
 
 void read_spectrum(ObjectReader& r, ocean::SpectrumParams& s) {
@@ -224,9 +229,7 @@ void read_ocean(ObjectReader& r, ocean::OceanParams& o) {
       "Wave height over water depth at which waves break (McCowan's 0.78); the broken waves stay at it.");
   using ocean::SurfaceModel;
   r.choice(
-      "model", o.model,
-      named({SurfaceModel::Fft, SurfaceModel::Gerstner, SurfaceModel::Sines, SurfaceModel::Perlin,
-             SurfaceModel::Springs}),
+      "model", o.model, named(std::span<const SurfaceModel>(ocean::kSurfaceModels)),
       "Surface model: fft = waves from the spectrum; gerstner = the waves listed in gerstner; sines = the "
       "sum of sines in sines (needs choppiness 0); perlin = octaves of gradient noise; springs = a grid of "
       "masses on springs on the first cascade, excited by drops, gusts or a driven boundary. Gerstner's and "
