@@ -41,19 +41,24 @@ class ByteWriter {
   template <typename T>
   void put(const T& value) {
     static_assert(std::is_trivially_copyable_v<T>);
-    const auto* p = reinterpret_cast<const std::byte*>(&value);
-    bytes_.insert(bytes_.end(), p, p + sizeof(T));
+    append(&value, sizeof(T));
   }
   template <typename T>
   void put_vector(const std::vector<T>& values) {
     static_assert(std::is_trivially_copyable_v<T>);
     put(uint64_t(values.size()));
-    const auto* p = reinterpret_cast<const std::byte*>(values.data());
-    bytes_.insert(bytes_.end(), p, p + values.size() * sizeof(T));
+    append(values.data(), values.size() * sizeof(T));
   }
   const std::vector<std::byte>& bytes() const { return bytes_; }
 
  private:
+  // Grown and copied into rather than insert()ed: GCC 12 inlines insert() of a few bytes into a false
+  // -Wstringop-overflow where it also sees the vector's first allocation.
+  void append(const void* data, size_t size) {
+    const size_t at = bytes_.size();
+    bytes_.resize(at + size);
+    if (size > 0) std::memcpy(bytes_.data() + at, data, size);
+  }
   std::vector<std::byte> bytes_;
 };
 

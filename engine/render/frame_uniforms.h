@@ -6,7 +6,7 @@
 #include <glm/glm.hpp>
 
 #include "ocean/gpu/gpu_ocean.h"
-#include "render/passes/caustics_pass.h"
+#include "render/caustics_window.h"
 #include "render/surface_grid.h"
 #include "render/water_luts.h"
 #include "scene/scene.h"

@@ -7,12 +7,28 @@
 
 #include "core/stage_times.h"
 #include "render/camera.h"
+#include "render/passes/caustics_pass.h"
+#include "render/passes/objects_pass.h"
+#include "render/passes/ocean_step_pass.h"
+#include "render/passes/particles_pass.h"
+#include "render/passes/refraction_pass.h"
+#include "render/passes/sky_pass.h"
+#include "render/passes/surface_pass.h"
+#include "render/passes/underwater_pass.h"
+#include "render/passes/wakes_pass.h"
+#include "render/passes/waterline_pass.h"
 #include "render/sky_light.h"
 #include "render/surface_grid.h"
 #include "vk/barriers.h"
 #include "vk/transfer.h"
 
 namespace lagoon::render {
+
+static_assert(OceanRenderer::kWarmupS == OceanStepPass::kWarmupS);
+
+const ocean::GpuOcean& OceanRenderer::ocean() const {
+  return ocean_step_->ocean();
+}
 
 struct OceanRenderer::OwnTargets {
   vk::Image color, depth;
@@ -50,7 +66,7 @@ Result<void> OceanRenderer::init(const scene::Scene& scene) {
   StageTimer t_ocean("ocean spectra and pipelines");
   auto ocean_step = OceanStepPass::create(ctx_, scene.ocean);
   if (!ocean_step) return make_error("ocean: " + ocean_step.error().message);
-  ocean_step_.emplace(std::move(*ocean_step));
+  ocean_step_ = std::make_unique<OceanStepPass>(std::move(*ocean_step));
   shading_ = ocean_shading(ocean());
   t_ocean.end();
   StageTimer t_luts("water LUTs");

@@ -13,18 +13,9 @@
 #include "core/result.h"
 #include "io/png.h"
 #include "ocean/gpu/gpu_ocean.h"
+#include "render/caustics_window.h"
 #include "render/frame_context.h"
 #include "render/frame_uniforms.h"
-#include "render/passes/caustics_pass.h"
-#include "render/passes/objects_pass.h"
-#include "render/passes/ocean_step_pass.h"
-#include "render/passes/particles_pass.h"
-#include "render/passes/refraction_pass.h"
-#include "render/passes/sky_pass.h"
-#include "render/passes/surface_pass.h"
-#include "render/passes/underwater_pass.h"
-#include "render/passes/wakes_pass.h"
-#include "render/passes/waterline_pass.h"
 #include "render/samplers.h"
 #include "render/scene_objects.h"
 #include "render/surface_fields.h"
@@ -39,6 +30,18 @@
 #include "world/vehicle_sediment.h"
 
 namespace lagoon::render {
+
+// The passes (render/passes/, one file each) stay behind the renderer: a host needs none of their headers.
+class CausticsPass;
+class ObjectsPass;
+class OceanStepPass;
+class ParticlesPass;
+class RefractionPass;
+class SkyPass;
+class SurfacePass;
+class UnderwaterPass;
+class WakesPass;
+class WaterlinePass;
 
 // Colour and depth images a host owns (an engine embedding Lagoon); the frame draws into them. On entry
 // their contents are discarded (any layout); on exit colour is in COLOR_ATTACHMENT_OPTIMAL and depth in
@@ -56,7 +59,7 @@ class OceanRenderer {
   static constexpr VkFormat kHdrFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
   static constexpr VkFormat kColorFormat = VK_FORMAT_R8G8B8A8_UNORM;  // display-referred (tone-mapped)
   static constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
-  static constexpr double kWarmupS = OceanStepPass::kWarmupS;
+  static constexpr double kWarmupS = 3.0;  // OceanStepPass::kWarmupS (checked in ocean_renderer.cpp)
   // Frames that may be in flight at once: each slot has its own host-written buffers and timer.
   static constexpr uint32_t kSlots = 2;
 
@@ -130,7 +133,7 @@ class OceanRenderer {
   // choose each frame's time (Python) to hold it to scene::kMaxBodyHullSecondsPerFrame.
   double body_hull_seconds_to(double time_s) const { return floating_->hull_seconds_to(time_s); }
   // The ocean the frames are drawn from (e.g. for a field check after render()).
-  const ocean::GpuOcean& ocean() const { return ocean_step_->ocean(); }
+  const ocean::GpuOcean& ocean() const;
   // The vehicles' tracks, shared by their bodies, wakes and sediment: an order given to one (the demo's helm)
   // moves all three from its time on.
   const world::VehicleTracks& tracks() const { return tracks_; }
@@ -172,7 +175,7 @@ class OceanRenderer {
   Samplers samplers_;
   WaterLuts luts_;
   std::unique_ptr<SceneObjects> objects_;
-  std::optional<OceanStepPass> ocean_step_;
+  std::unique_ptr<OceanStepPass> ocean_step_;
   std::unique_ptr<WakesPass> wakes_;
   std::optional<SurfaceFields>
       fields_;  // the ocean's cascades and the wakes, as the surface passes bind them

@@ -2,6 +2,7 @@
 // scene's meshes in the same targets when asked.
 #include "render/float_targets.h"
 #include "render/ocean_renderer.h"
+#include "render/passes/surface_pass.h"
 #include "vk/barriers.h"
 #include "vk/rendering.h"
 

@@ -3,6 +3,10 @@
 #include "render/camera.h"
 #include "render/float_targets.h"
 #include "render/ocean_renderer.h"
+#include "render/passes/caustics_pass.h"
+#include "render/passes/objects_pass.h"
+#include "render/passes/refraction_pass.h"
+#include "render/passes/underwater_pass.h"
 #include "vk/barriers.h"
 
 namespace lagoon::render {

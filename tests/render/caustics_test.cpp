@@ -8,6 +8,7 @@
 #include <numeric>
 
 #include "render/ocean_renderer.h"
+#include "render/passes/caustics_pass.h"
 #include "scene/scene_io.h"
 #include "shared/caustics.h"
 #include "support/vk_fixture.h"
