@@ -5,6 +5,7 @@
 
 #include "render/ocean_renderer.h"
 #include "scene/scene_io.h"
+#include "support/shipped_scene.h"
 #include "support/vk_fixture.h"
 
 namespace lagoon::test {
@@ -21,9 +22,7 @@ scene::Scene buoy_scene(bool floating) {
       "camera.look_at=[2,0.5,12]",
       std::string(R"(objects=[{"file":"assets/buoy.gltf","position":[2,0,12],"floating":{"enabled":)") +
           (floating ? "true" : "false") + R"(,"density_kg_m3":400,"centre_of_mass_offset":[0,-0.6,0]}}])"};
-  auto s = scene::load_scene(std::string(LAGOON_SOURCE_DIR) + "/scenes/default.json", overrides);
-  EXPECT_TRUE(s) << s.error().message;
-  return s ? *s : scene::Scene{};
+  return shipped_scene("default", overrides);
 }
 
 TEST_F(FloatingRender, TheBuoyIsDrawnWhereItRides) {

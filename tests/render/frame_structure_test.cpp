@@ -5,6 +5,7 @@
 #include "fft/gpu_fft.h"
 #include "render/ocean_renderer.h"
 #include "scene/scene_io.h"
+#include "support/shipped_scene.h"
 #include "support/vk_fixture.h"
 #include "vk/barriers.h"
 #include "vk/transfer.h"
@@ -16,9 +17,7 @@ class FrameStructure : public GpuTest {
  protected:
   scene::Scene load(std::vector<std::string> overrides = {}) {
     overrides.insert(overrides.begin(), {"render.width=96", "render.height=64"});
-    auto s = scene::load_scene(std::string(LAGOON_SOURCE_DIR) + "/scenes/default.json", overrides);
-    EXPECT_TRUE(s) << s.error().message;
-    return *s;
+    return shipped_scene("default", overrides);
   }
 };
 

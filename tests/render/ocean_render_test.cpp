@@ -9,6 +9,7 @@
 #include "render/ocean_renderer.h"
 #include "scene/scene_io.h"
 #include "support/image_compare.h"
+#include "support/shipped_scene.h"
 #include "support/vk_fixture.h"
 
 namespace lagoon::test {
@@ -18,9 +19,7 @@ class OceanRender : public GpuTest {
  protected:
   scene::Scene load(std::vector<std::string> overrides = {}) {
     overrides.insert(overrides.begin(), {"render.width=160", "render.height=90"});
-    auto s = scene::load_scene(std::string(LAGOON_SOURCE_DIR) + "/scenes/default.json", overrides);
-    EXPECT_TRUE(s) << s.error().message;
-    return *s;
+    return shipped_scene("default", overrides);
   }
   io::Image8 render(const scene::Scene& s) {
     auto renderer = render::OceanRenderer::create(ctx(), s);

@@ -14,6 +14,7 @@
 #include "render/camera.h"
 #include "render/ocean_renderer.h"
 #include "scene/scene_io.h"
+#include "support/shipped_scene.h"
 #include "support/vk_fixture.h"
 #include "world/vehicle_sediment.h"
 
@@ -47,9 +48,7 @@ scene::Scene stirred_bay(std::vector<std::string> more) {
                                      R"(vehicles=[{"name":"auv","file":"assets/auv.gltf","scale":0.01,)"
                                      R"("path":{"waypoints":[[0,2],[0,3]],"speed_mps":0},"depth_m":7.7}])"};
   overrides.insert(overrides.end(), more.begin(), more.end());
-  auto s = scene::load_scene(std::string(LAGOON_SOURCE_DIR) + "/scenes/default.json", overrides);
-  EXPECT_TRUE(s) << s.error().message;
-  return s ? *s : scene::Scene{};
+  return shipped_scene("default", overrides);
 }
 
 const physics::FloorDepth kFlat = [](glm::dvec2) { return kFloorDepth; };

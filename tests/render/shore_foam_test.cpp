@@ -13,6 +13,7 @@
 #include "render/ocean_renderer.h"
 #include "render/seafloor.h"
 #include "scene/scene_io.h"
+#include "support/shipped_scene.h"
 #include "support/vk_fixture.h"
 
 namespace lagoon::test {
@@ -47,9 +48,7 @@ scene::Scene beach(bool shore_foam) {
       "render.exposure=0.6",
       "render.effects.caustics=false",
       std::string("render.effects.shore_foam=") + (shore_foam ? "true" : "false")};
-  auto s = scene::load_scene(std::string(LAGOON_SOURCE_DIR) + "/scenes/default.json", overrides);
-  EXPECT_TRUE(s) << s.error().message;
-  return s ? *s : scene::Scene{};
+  return shipped_scene("default", overrides);
 }
 
 double relative_luminance(const io::Image8& image, uint32_t x, uint32_t y) {

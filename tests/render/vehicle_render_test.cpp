@@ -7,6 +7,7 @@
 
 #include "render/ocean_renderer.h"
 #include "scene/scene_io.h"
+#include "support/shipped_scene.h"
 #include "support/vk_fixture.h"
 
 namespace lagoon::test {
@@ -29,9 +30,7 @@ scene::Scene boat_scene(const std::string& waypoints, float time_s) {
       "wakes.enabled=false",  // the hull alone: its wake would move the changed pixels' centre
       R"(vehicles=[{"name":"boat","file":"assets/boat.gltf","path":{"waypoints":)" + waypoints +
           R"(,"speed_mps":5,"loop":false},"body":{"mass_kg":1100,"centre_of_mass_offset":[0,-0.3,0]}}])"};
-  auto s = scene::load_scene(std::string(LAGOON_SOURCE_DIR) + "/scenes/default.json", overrides);
-  EXPECT_TRUE(s) << s.error().message;
-  return s ? *s : scene::Scene{};
+  return shipped_scene("default", overrides);
 }
 
 // The column where a point on the water at (x, 0, z) appears.

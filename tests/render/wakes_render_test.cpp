@@ -15,6 +15,7 @@
 #include "ocean/wave_query.h"
 #include "render/ocean_renderer.h"
 #include "scene/scene_io.h"
+#include "support/shipped_scene.h"
 #include "support/vk_fixture.h"
 #include "vk/transfer.h"
 
@@ -31,9 +32,7 @@ scene::Scene calm_bay_with_a_boat() {
       "ocean.spectrum.wind_speed_mps=0.5", R"(ocean.cascades=[{"patch_size_m":400,"resolution":64}])",
       R"(vehicles=[{"name":"boat","file":"assets/boat.gltf","path":{"waypoints":[[-40,20],[40,20]],"speed_mps":5,"loop":false}}])",
       R"(wakes={"resolution":256,"cell_size_m":0.25,"step_s":0.1,"history_s":30})"};
-  auto s = scene::load_scene(std::string(LAGOON_SOURCE_DIR) + "/scenes/default.json", overrides);
-  EXPECT_TRUE(s) << s.error().message;
-  return s ? *s : scene::Scene{};
+  return shipped_scene("default", overrides);
 }
 
 // The CPU layer's slope at world (x, z): central differences at the cells, interpolated bilinearly (as the

@@ -9,6 +9,7 @@
 
 #include "render/ocean_renderer.h"
 #include "scene/scene_io.h"
+#include "support/shipped_scene.h"
 #include "support/vk_fixture.h"
 
 namespace lagoon::test {
@@ -25,9 +26,7 @@ scene::Scene gale(bool foam) {
                                            "objects=[]",
                                            "vehicles=[]",
                                            std::string("render.effects.foam=") + (foam ? "true" : "false")};
-  auto s = scene::load_scene(std::string(LAGOON_SOURCE_DIR) + "/scenes/open-ocean.json", overrides);
-  EXPECT_TRUE(s) << s.error().message;
-  return s ? *s : scene::Scene{};
+  return shipped_scene("open-ocean", overrides);
 }
 
 double mean_luminance(const io::Image8& image) {
