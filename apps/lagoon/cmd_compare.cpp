@@ -15,9 +15,16 @@
 namespace lagoon::cli {
 namespace {
 
-constexpr int kDefaultTolerance = 8;
-constexpr double kDefaultMaxFraction = 0.01;
-constexpr double kDefaultMinPsnr = 35.0;
+// The defaults are the agreement Lagoon promises between devices (io::kDeviceAgreement).
+constexpr int kDefaultTolerance = io::kDeviceAgreement.channel_tolerance;
+constexpr double kDefaultMaxFraction = io::kDeviceAgreement.max_differing_fraction;
+constexpr double kDefaultMinPsnr = io::kDeviceAgreement.min_psnr_db;
+
+std::string shortest(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", v);
+  return text;
+}
 
 // True when `option` parsed; otherwise prints its message (which names the option and its range).
 template <typename T>
@@ -154,32 +161,37 @@ int run_compare_images(const ParsedArgs& args) {
 
 const Command& compare_images_command() {
   static const Command command{
-      .spec = {.name = "compare-images",
-               .summary = "Compares two PNG images of the same size (e.g. two renders) and says whether they "
-                          "agree: PSNR over RGB, how many pixels differ by more than a tolerance, and the "
-                          "largest channel difference. Needs no Vulkan device.",
-               .options =
-                   {{"a", "A.png", "the first image (the reference)", true},
-                    {"b", "B.png", "the second image, measured against A", true},
-                    {"tolerance", "N",
-                     "a pixel differs when any channel (R, G, B or A) differs by more than N levels "
-                     "of 255 (default 8)"},
-                    {"max-fraction", "F",
-                     "pass only if at most this fraction (0..1) of pixels differ (default 0.01)"},
-                    {"min-psnr", "DB", "pass only if the PSNR over RGB is at least DB (default 35; 0 = off)"},
-                    {"diff", "OUT.png",
-                     "write a picture of the differences: A in dark grey, differing pixels in magenta, "
-                     "brighter for larger differences"},
-                    {"json", "",
-                     "print the results as one JSON object (psnr_db is null when the RGB "
-                     "channels are identical)"}},
-               .positional = {"a", "b"},
-               .details =
-                   "PSNR is 'inf' when the RGB channels are identical.\n"
-                   "exit codes: 0 the images agree (PSNR >= --min-psnr and fraction <= --max-fraction),\n"
-                   "  1 they do not (the failed bound is printed), or a file is missing, not a PNG or of\n"
-                   "  a different size; 2 a bad command line.\n"
-                   "example:\n  lagoon compare-images out/a.png out/b.png --diff out/diff.png\n"},
+      .spec =
+          {.name = "compare-images",
+           .summary = "Compares two PNG images of the same size (e.g. two renders) and says whether they "
+                      "agree: PSNR over RGB, how many pixels differ by more than a tolerance, and the "
+                      "largest channel difference. Needs no Vulkan device.",
+           .options = {{"a", "A.png", "the first image (the reference)", true},
+                       {"b", "B.png", "the second image, measured against A", true},
+                       {"tolerance", "N",
+                        "a pixel differs when any channel (R, G, B or A) differs by more than N levels "
+                        "of 255 (default " +
+                            std::to_string(kDefaultTolerance) + ")"},
+                       {"max-fraction", "F",
+                        "pass only if at most this fraction (0..1) of pixels differ (default " +
+                            shortest(kDefaultMaxFraction) + ")"},
+                       {"min-psnr", "DB",
+                        "pass only if the PSNR over RGB is at least DB (default " +
+                            shortest(kDefaultMinPsnr) + "; 0 = off)"},
+                       {"diff", "OUT.png",
+                        "write a picture of the differences: A in dark grey, differing pixels in magenta, "
+                        "brighter for larger differences"},
+                       {"json", "",
+                        "print the results as one JSON object (psnr_db is null when the RGB "
+                        "channels are identical)"}},
+           .positional = {"a", "b"},
+           .details = "The defaults are the agreement Lagoon promises between two devices drawing the same "
+                      "frame (docs/devices.md).\n"
+                      "PSNR is 'inf' when the RGB channels are identical.\n"
+                      "exit codes: 0 the images agree (PSNR >= --min-psnr and fraction <= --max-fraction),\n"
+                      "  1 they do not (the failed bound is printed), or a file is missing, not a PNG or of\n"
+                      "  a different size; 2 a bad command line.\n"
+                      "example:\n  lagoon compare-images out/a.png out/b.png --diff out/diff.png\n"},
       .run = run_compare_images};
   return command;
 }

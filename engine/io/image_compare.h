@@ -16,6 +16,12 @@ struct CompareOptions {
   double min_psnr_db = 0.0;               // optional extra bound, 0 = off
 };
 
+// What Lagoon promises between two devices drawing the same frame (docs/devices.md): at most 1 % of pixels
+// more than 8/255 apart and PSNR >= 35 dB. The golden tests on a device other than lavapipe,
+// tools/cross-device-check.sh and `lagoon compare-images` (its defaults) all read it from here.
+inline constexpr CompareOptions kDeviceAgreement{
+    .channel_tolerance = 8, .max_differing_fraction = 0.01, .min_psnr_db = 35.0};
+
 struct CompareResult {
   bool passed = false;  // within_fraction() && within_psnr() and the sizes match
   bool size_mismatch = false;

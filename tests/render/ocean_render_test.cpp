@@ -168,7 +168,7 @@ TEST_P(ShippedScenes, MatchGolden) {
   const CompareOptions tolerance =
       golden_device
           ? CompareOptions{.channel_tolerance = 3, .max_differing_fraction = 0.01, .min_psnr_db = 40.0}
-          : CompareOptions{.channel_tolerance = 8, .max_differing_fraction = 0.01, .min_psnr_db = 35.0};
+          : io::kDeviceAgreement;
   EXPECT_TRUE(matches_golden(image, std::string(LAGOON_SOURCE_DIR) + "/tests/golden/" + name + "_320x180.png",
                              tolerance, std::string(LAGOON_TEST_ARTIFACTS) + "/render"));
 }
