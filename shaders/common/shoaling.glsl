@@ -30,23 +30,47 @@ struct ShoalPoint {
   vec4 ground;   // layer 0: (depth, the random sea's height scale, the waves' steepness scale, breaking ratio)
 };
 
-vec4 shoal_layer(ShoalPoint p, int layer) {
-  vec4 a00 = shoal_texel(p.texels.x, p.texels.z, layer);
-  vec4 a10 = shoal_texel(p.texels.y, p.texels.z, layer);
-  if (kShoalingMode == 1) return a00 + (a10 - a00) * p.at.x;  // one row: contours along v
-  vec4 a01 = shoal_texel(p.texels.x, p.texels.w, layer);
-  vec4 a11 = shoal_texel(p.texels.y, p.texels.w, layer);
-  return sh_bilinear(a00, a10, a01, a11, p.at.x, p.at.y);
+// The samples of a layer around a point: one row's two (a00, a10) or the grid's four.
+struct ShoalCell {
+  ivec4 texels;  // as ShoalPoint's; -1: nothing loaded yet
+  vec4 a00, a10, a01, a11;
+};
+
+ShoalCell shoal_cell(ivec4 texels, int layer) {
+  ShoalCell c;
+  c.texels = texels;
+  c.a00 = shoal_texel(texels.x, texels.z, layer);
+  c.a10 = shoal_texel(texels.y, texels.z, layer);
+  c.a01 = c.a11 = vec4(0.0);
+  if (kShoalingMode == 2) {
+    c.a01 = shoal_texel(texels.x, texels.w, layer);
+    c.a11 = shoal_texel(texels.y, texels.w, layer);
+  }
+  return c;
 }
 
-ShoalPoint shoal_point(vec2 xz) {
+vec4 shoal_value(ShoalCell c, vec4 at) {
+  if (kShoalingMode == 1) return c.a00 + (c.a10 - c.a00) * at.x;  // one row: contours along v
+  return sh_bilinear(c.a00, c.a10, c.a01, c.a11, at.x, at.y);
+}
+
+vec4 shoal_layer(ShoalPoint p, int layer) {
+  return shoal_value(shoal_cell(p.texels, layer), p.at);
+}
+
+// Where `xz` lies in the table: the samples around it and the fractions (ShoalPoint's texels and at).
+void shoal_locate(vec2 xz, out ivec4 texels, out vec4 at) {
   vec2 d = xz - frame.shoaling_axis.xy, u = frame.shoaling_axis.zw;
   vec4 au = sh_locate(dot(d, u), frame.shoaling_grid.x, frame.shoaling_grid.y);
   vec4 av = sh_locate(dot(d, vec2(-u.y, u.x)), frame.shoaling_grid.x, frame.shoaling_grid.z);
   int last_u = int(frame.shoaling_grid.y) - 1, last_v = int(frame.shoaling_grid.z) - 1;
+  texels = ivec4(int(au.x), min(int(au.x) + 1, last_u), int(av.x), min(int(av.x) + 1, last_v));
+  at = vec4(au.y, av.y, au.z, av.z);
+}
+
+ShoalPoint shoal_point(vec2 xz) {
   ShoalPoint p;
-  p.texels = ivec4(int(au.x), min(int(au.x) + 1, last_u), int(av.x), min(int(av.x) + 1, last_v));
-  p.at = vec4(au.y, av.y, au.z, av.z);
+  shoal_locate(xz, p.texels, p.at);
   p.ground = shoal_layer(p, 0);
   return p;
 }
@@ -61,6 +85,19 @@ vec4 shoal_wave(ShoalPoint p, int wave, vec2 k0) {
 float sea_over_floor(vec2 xz) {
   if (!kShoaling) return 1.0;
   return shoal_point(xz).ground.y;
+}
+
+// The same for lookups that mostly stay in one cell of the table (the waterline's fixed point, four at a
+// pixel within a metre): the cell's samples are read again only when the point leaves it, in a loop rather
+// than an `if` because lavapipe skips a loop no lane enters but runs both sides of an `if`. The value is
+// sea_over_floor()'s, bit for bit. Start with `cell.texels = ivec4(-1)`.
+float sea_over_floor_cached(vec2 xz, inout ShoalCell cell) {
+  if (!kShoaling) return 1.0;
+  ivec4 texels;
+  vec4 at;
+  shoal_locate(xz, texels, at);
+  for (int load = any(notEqual(texels, cell.texels)) ? 1 : 0; load > 0; --load) cell = shoal_cell(texels, 0);
+  return shoal_value(cell, at).y;
 }
 
 #endif

@@ -20,7 +20,7 @@ layout(binding = LAGOON_SURFACE_BIND_BELOW_DEPTH) uniform sampler2D below_depth;
 layout(location = 0) in vec2 v_ndc;
 layout(location = 0) out vec4 out_colour;
 
-vec3 displacement_at(vec2 rest) {
+vec3 displacement_at(vec2 rest, inout ShoalCell floor_cell) {
   vec3 d = vec3(0.0);
   const int count = kCascadeCount;  // compiled out beyond it (shared/limits.h)
 #define LAGOON_CASCADE(c) \
@@ -30,7 +30,7 @@ vec3 displacement_at(vec2 rest) {
   LAGOON_CASCADE(2)
   LAGOON_CASCADE(3)
 #undef LAGOON_CASCADE
-  d *= sea_over_floor(rest);  // the random sea's depth-limited height (common/shoaling.glsl)
+  d *= sea_over_floor_cached(rest, floor_cell);  // the random sea's depth-limited height (common/shoaling.glsl)
   d += direct_waves_at(rest, 0.0, 0.0).displacement;
   d.y += wake_at(rest).x;
   return d;
@@ -39,11 +39,13 @@ vec3 displacement_at(vec2 rest) {
 // The height of the displaced surface above (x, z): the surface point that the waves move there, found by
 // fixed-point iteration on the horizontal displacement (as WaveQuery does).
 float water_height(vec2 xz) {
+  ShoalCell floor_cell;
+  floor_cell.texels = ivec4(-1);
   vec2 rest = xz;
-  vec3 d = displacement_at(rest);
+  vec3 d = displacement_at(rest, floor_cell);
   for (int i = 0; i < 3; ++i) {
     rest = xz - d.xz;
-    d = displacement_at(rest);
+    d = displacement_at(rest, floor_cell);
   }
   return d.y;
 }
