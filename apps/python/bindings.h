@@ -22,10 +22,10 @@ extern py::handle scene_error;
 // docs/physics.md), by reading the scene back with it; raises lagoon.SceneError with the CLI's message,
 // naming `what` as the source.
 void check_time(const scene::Scene& scene, double time_s, const std::string& what);
-// For a renderer's next frame: the field's bounds alone (check_time() less the bodies' rule), then
-// `hull_seconds`, the physics the renderer's bodies would take to reach time_s from where they are
-// (OceanRenderer::body_hull_seconds_to), at most scene::kMaxBodyHullSecondsPerFrame.
-void check_time_bounds(const scene::Scene& scene, double time_s, const std::string& what);
+// For a renderer's next frame: the field's bounds alone (scene::check_time_s: check_time() less the bodies'
+// rule), then `hull_seconds`, the physics the renderer's bodies would take to reach time_s from where they
+// are (OceanRenderer::body_hull_seconds_to), at most scene::kMaxBodyHullSecondsPerFrame.
+void check_time_bounds(double time_s, const std::string& what);
 void check_body_cost(double hull_seconds, double time_s, const std::string& what);
 
 // JSON <-> Python (dict, list, str, float, int, bool, None), through Python's own json module.

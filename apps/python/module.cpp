@@ -1,8 +1,6 @@
 // PYBIND11_MODULE: the `lagoon` extension's entry point and the module-wide pieces (exceptions, JSON).
 #include "bindings.h"
 
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -22,15 +20,8 @@ void check_time(const scene::Scene& scene, double time_s, const std::string& wha
     raise_scene_error(checked.error().message);
 }
 
-void check_time_bounds(const scene::Scene& scene, double time_s, const std::string& what) {
-  // The file's rule on the bodies' cost counts from bodies_start_s, but a renderer's bodies step on from its
-  // last frame: the rule is left out here (bodies_start_s moved to the time), check_body_cost() has the
-  // renderer's own.
-  nlohmann::ordered_json doc = scene::scene_to_json(scene, std::filesystem::current_path());
-  doc["time_s"] = time_s;
-  doc["bodies_start_s"] = std::isfinite(time_s) ? std::clamp(time_s, 0.0, 86400.0) : 0.0;
-  if (auto checked = scene::parse_scene(nlohmann::json(doc), what); !checked)
-    raise_scene_error(checked.error().message);
+void check_time_bounds(double time_s, const std::string& what) {
+  if (auto checked = scene::check_time_s(time_s, what); !checked) raise_scene_error(checked.error().message);
 }
 
 void check_body_cost(double hull_seconds, double time_s, const std::string& what) {

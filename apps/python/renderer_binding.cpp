@@ -55,7 +55,7 @@ class Renderer {
     scene::Scene frame = scene_;
     if (camera) frame = with_camera(*camera);
     if (time) {
-      check_time_bounds(frame, *time, "render(time=...)");
+      check_time_bounds(*time, "render(time=...)");
       check_body_cost(renderer_->body_hull_seconds_to(*time), *time, "render(time=...)");
       frame.time_s = float(*time);
     }

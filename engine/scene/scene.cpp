@@ -121,6 +121,12 @@ void check_bodies_cost(ObjectReader& r, const Scene& s) {
 
 // New blocks: write read_<block>() above (or, for a large block, in its own file like ocean_block.cpp or
 // world_blocks.cpp) and add one r.block() line here.
+// The frame's time: one declaration for the file and for check_time_s().
+void read_time(ObjectReader& r, float& time_s) {
+  r.number("time_s", time_s, Bounds::between(0, 86400), "s",
+           "Simulation time of the rendered frame (at most one day: wave phases are 32-bit floats).");
+}
+
 void read_scene(ObjectReader& r, Scene& s) {
   r.block("camera", s.camera, read_camera, "Viewpoint and projection.");
   r.block("sun", s.sun, read_sun, "Direction and strength of sunlight.");
@@ -141,8 +147,7 @@ void read_scene(ObjectReader& r, Scene& s) {
   r.block("underwater", s.underwater, read_underwater,
           "What a camera under the water sees in the water itself (docs/rendering.md, Under the surface).");
   r.block("render", s.render, read_render, "Output image settings and effects.");
-  r.number("time_s", s.time_s, Bounds::between(0, 86400), "s",
-           "Simulation time of the rendered frame (at most one day: wave phases are 32-bit floats).");
+  read_time(r, s.time_s);
   r.number("bodies_start_s", s.bodies_start_s, Bounds::between(0, 86400), "s",
            "The floating objects and surface vehicles start at rest where the scene puts them at this time, "
            "and are simulated from it (docs/physics.md); a frame before it shows them there. A frame at "
@@ -238,6 +243,16 @@ Result<Scene> parse_scene(const nlohmann::json& document, const std::string& sou
   } catch (const std::exception& e) {
     return Error{source_name + ": internal error while reading the scene: " + e.what()};
   }
+}
+
+Result<void> check_time_s(double time_s, const std::string& source_name) {
+  const json document{{"time_s", time_s}};
+  Diagnostics diag(source_name);
+  ObjectReader reader(document, "", diag);
+  float checked = 0.f;
+  read_time(reader, checked);
+  if (!diag.ok()) return diag.to_error();
+  return {};
 }
 
 std::vector<FieldInfo> scene_fields() {

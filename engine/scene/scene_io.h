@@ -26,6 +26,11 @@ Result<Scene> load_scene(const std::filesystem::path& path, std::span<const std:
 // Validates an already-parsed document; `source_name` prefixes error messages. Never throws.
 Result<Scene> parse_scene(const nlohmann::json& document, const std::string& source_name);
 
+// A frame time alone against the file's time_s field (finite, its bounds), the message as parse_scene()'s;
+// for hosts that choose each frame's time without reading a whole scene again. The floating bodies' cost
+// rule is not applied: it depends on where the host's bodies are.
+Result<void> check_time_s(double time_s, const std::string& source_name);
+
 // The scene as a document parse_scene() reads back to an equal scene; file paths are written relative to
 // `folder` (the folder of the file it will be saved in) when they are inside it.
 nlohmann::ordered_json scene_to_json(const Scene& scene, const std::filesystem::path& folder);
