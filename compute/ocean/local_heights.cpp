@@ -119,4 +119,8 @@ double LocalHeights::height(double x, double z) const {
   return sum;
 }
 
+void LocalHeights::heights(std::span<const glm::dvec2> points, std::span<double> heights) const {
+  for (size_t i = 0; i < points.size(); ++i) heights[i] = height(points[i].x, points[i].y);
+}
+
 }  // namespace lagoon::ocean

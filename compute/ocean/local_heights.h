@@ -10,6 +10,7 @@
 #include <glm/vec2.hpp>
 #include <limits>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "ocean/wave_query.h"
@@ -40,6 +41,8 @@ class LocalHeights {
   void update(double time_s, glm::dvec2 centre);
   // The displaced surface's height at (x, z) at the last update's time. Outside the lattice: its edge value.
   double height(double x, double z) const;
+  // height() at each of `points` (x, z) into `heights`: a hull's points in one call.
+  void heights(std::span<const glm::dvec2> points, std::span<double> heights) const;
   // No height() at the last update's time is above this: the lattice's highest point plus the most the
   // bicubic interpolation can overshoot it (0.28 of the lattice's range).
   double highest() const { return highest_; }

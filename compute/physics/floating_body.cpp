@@ -12,12 +12,16 @@ FloatingBody::FloatingBody(const TriangleMesh& hull, const MassProperties& mass,
   TriangleMesh sampled = refine_hull(hull, options_.sampling);
   indices_ = std::move(sampled.indices);
   hull_.reserve(sampled.vertices.size());
-  for (const glm::dvec3& v : sampled.vertices) hull_.push_back(v - mass.centre);
+  for (const glm::dvec3& v : sampled.vertices) {
+    hull_.push_back(v - mass.centre);
+    reach_ = std::max(reach_, glm::length(hull_.back()));
+  }
   for (size_t t = 0; t + 2 < indices_.size(); t += 3)
     hull_area_ += 0.5 * glm::length(glm::cross(hull_[indices_[t + 1]] - hull_[indices_[t]],
                                                hull_[indices_[t + 2]] - hull_[indices_[t]]));
   inverse_inertia_ = glm::inverse(mass.inertia);
   world_.resize(hull_.size());
+  pressure_ = HullPressure(hull_, indices_);
 }
 
 void FloatingBody::place(glm::dvec3 origin, glm::dquat orientation) {
@@ -67,11 +71,16 @@ double FloatingBody::kinetic_energy() const {
          0.5 * glm::dot(w, r * mass_.inertia * glm::transpose(r) * w);
 }
 
-void FloatingBody::step(double dt, const WaterHeight& water, double water_top, const PressureHead& head) {
+void FloatingBody::step(double dt, const WaterHeight& water, double water_top, const PressureHead& head,
+                        const WaterHeights& heights) {
   const glm::dmat3 r = glm::mat3_cast(state_.orientation);
   for (size_t i = 0; i < hull_.size(); ++i) world_[i] = state_.position + r * hull_[i];
-  wrench_ = hydrostatic_wrench(world_, indices_, water, state_.position, water_.density, water_.gravity,
-                               water_top, head);
+  wrench_ = pressure_.wrench(world_, r, state_.position,
+                             {.height = &water,
+                              .heights = heights ? &heights : nullptr,
+                              .head = head ? &head : nullptr,
+                              .top = water_top},
+                             water_.density, water_.gravity);
   const double wet = hull_area_ > 0 ? std::min(wrench_.wetted_area / hull_area_, 1.0) : 0.0;
 
   const glm::dvec3 v = state_.velocity, w = state_.angular_velocity;

@@ -65,8 +65,9 @@ class FloatingBody {
   // from above (physics/hydrostatics.h: the hull's dry part is then not looked up). With `head` the hull
   // feels the pressure under the waves as linear theory has it, and the heave radiation the water's motion
   // at the hull's depth (physics/heave_radiation.h); without it, the height above each point.
+  // `heights`, when given, answers for the hull's points in one call instead of `water` at each.
   void step(double dt, const WaterHeight& water, double water_top = std::numeric_limits<double>::infinity(),
-            const PressureHead& head = {});
+            const PressureHead& head = {}, const WaterHeights& heights = {});
   // Puts a floor under the body (or takes it away with an empty function).
   void set_floor(FloorHeight floor) { options_.floor = std::move(floor); }
 
@@ -81,6 +82,9 @@ class FloatingBody {
   const FloorPush& last_floor_push() const { return floor_push_; }
   // How many points the water's height is sampled at (the refined hull's vertices).
   size_t sample_points() const { return hull_.size(); }
+  // The farthest of them from the centre of mass (m): a box of this half-width about the centre holds the
+  // hull however it turns.
+  double reach() const { return reach_; }
   // Those points where the body is now (world coordinates).
   std::vector<glm::dvec3> sample_points_in_world() const;
   double kinetic_energy() const;
@@ -95,7 +99,9 @@ class FloatingBody {
 
   std::vector<glm::dvec3> hull_;  // the refined hull, relative to the centre of mass
   std::vector<uint32_t> indices_;
+  HullPressure pressure_;  // the water's wrench on hull_
   double hull_area_ = 0;
+  double reach_ = 0;
   MassProperties mass_;
   glm::dmat3 inverse_inertia_{1.0};
   Damping damping_;

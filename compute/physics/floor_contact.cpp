@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <limits>
 #include <vector>
 
 namespace lagoon::physics {
@@ -17,10 +18,10 @@ glm::dvec3 floor_normal(const FloorHeight& floor, double x, double z) {
   return glm::normalize(glm::dvec3(-gx, 1.0, -gz));
 }
 
-// False when the body is surely clear of the floor: its lowest point higher than the floor under its centre
-// plus twice its horizontal radius (a floor steeper than 2:1 under a body could be missed), so a floating
-// body costs one floor lookup a step.
-bool may_touch(std::span<const glm::dvec3> points, glm::dvec3 centre, const FloorHeight& floor) {
+// The floor's height under `centre` when the body may touch it, NaN when it surely does not: its lowest
+// point is higher than that plus twice its horizontal radius (a floor steeper than 2:1 under a body could be
+// missed), so a floating body costs one floor lookup a step. +inf where the floor has no height there.
+double may_touch(std::span<const glm::dvec3> points, glm::dvec3 centre, const FloorHeight& floor) {
   // The squared radius: this runs over every hull point at every step, and std::hypot's care for
   // overflow costs several times the rest of the loop. Any bound on the radius gives the same contact.
   double lowest = 1e300, radius2 = 0;
@@ -29,7 +30,15 @@ bool may_touch(std::span<const glm::dvec3> points, glm::dvec3 centre, const Floo
     lowest = std::min(lowest, p.y), radius2 = std::max(radius2, dx * dx + dz * dz);
   }
   const double under = floor(centre.x, centre.z);
-  return !std::isfinite(under) || lowest <= under + 2 * std::sqrt(radius2);
+  if (!std::isfinite(under)) return std::numeric_limits<double>::infinity();
+  return lowest <= under + 2 * std::sqrt(radius2) ? under : std::numeric_limits<double>::quiet_NaN();
+}
+
+// False when p is surely above the floor by may_touch()'s rule: higher than the floor under the centre plus
+// twice its horizontal distance from it. Spares the floor lookups of a resting hull's upper points.
+bool surely_above(const glm::dvec3& p, glm::dvec3 centre, double under) {
+  const double rise = p.y - under, dx = p.x - centre.x, dz = p.z - centre.z;
+  return std::isfinite(under) && rise > 0 && rise * rise > 4 * (dx * dx + dz * dz);
 }
 
 }  // namespace
@@ -37,10 +46,13 @@ bool may_touch(std::span<const glm::dvec3> points, glm::dvec3 centre, const Floo
 FloorPush floor_push(std::span<const glm::dvec3> points, const RigidMotion& body, double mass,
                      const FloorHeight& floor, const FloorContactParams& params, double gravity) {
   FloorPush out;
-  if (!floor || points.empty() || !may_touch(points, body.centre, floor)) return out;
+  if (!floor || points.empty()) return out;
+  const double floor_under_centre = may_touch(points, body.centre, floor);
+  if (std::isnan(floor_under_centre)) return out;
   std::vector<std::pair<glm::dvec3, double>> under;  // point, vertical depth below the floor
   glm::dvec3 mean(0.0);
   for (const glm::dvec3& p : points) {
+    if (surely_above(p, body.centre, floor_under_centre)) continue;
     const double depth = floor(p.x, p.z) - p.y;
     if (!(depth > 0) || !std::isfinite(depth)) continue;
     under.push_back({p, depth});

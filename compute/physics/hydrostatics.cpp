@@ -24,6 +24,35 @@ void add_triangle(const glm::dvec3& a, double da, const glm::dvec3& b, double db
   out.wetted_area += glm::length(s);
 }
 
+// A triangle the waterline cuts: clipped to depth >= 0 (Sutherland–Hodgman against one plane, at most four
+// corners), then integrated as above.
+void add_clipped(const glm::dvec3& p0, double d0, const glm::dvec3& p1, double d1, const glm::dvec3& p2,
+                 double d2, glm::dvec3 about, double rho_g, Wrench& out) {
+  const glm::dvec3* corner[3] = {&p0, &p1, &p2};
+  const double depth_of[3] = {d0, d1, d2};
+  glm::dvec3 poly[4];
+  double poly_depth[4];
+  int n = 0;
+  for (int k = 0; k < 3; ++k) {
+    const int next = (k + 1) % 3;
+    const double dc = depth_of[k], dn = depth_of[next];
+    if (dc >= 0) {
+      poly[n] = *corner[k];
+      poly_depth[n++] = dc;
+    }
+    if ((dc > 0) != (dn > 0) && dc != dn && n < 4) {
+      const double f = dc / (dc - dn);
+      if (f > 0 && f < 1) {
+        poly[n] = *corner[k] + f * (*corner[next] - *corner[k]);
+        poly_depth[n++] = 0.0;
+      }
+    }
+  }
+  for (int k = 1; k + 1 < n; ++k)
+    add_triangle(poly[0], poly_depth[0], poly[k], poly_depth[k], poly[k + 1], poly_depth[k + 1], about, rho_g,
+                 out);
+}
+
 }  // namespace
 
 Wrench hydrostatic_wrench(std::span<const glm::dvec3> vertices, std::span<const uint32_t> indices,
@@ -51,31 +80,66 @@ Wrench hydrostatic_wrench(std::span<const glm::dvec3> vertices, std::span<const 
       add_triangle(p0, d0, p1, d1, p2, d2, about, rho_g, out);
       continue;
     }
-    // Clip the triangle to depth >= 0 (Sutherland–Hodgman against one plane): at most four corners.
-    const glm::dvec3* corner[3] = {&p0, &p1, &p2};
-    const double depth_of[3] = {d0, d1, d2};
-    glm::dvec3 poly[4];
-    double poly_depth[4];
-    int n = 0;
-    for (int k = 0; k < 3; ++k) {
-      const int next = (k + 1) % 3;
-      const double dc = depth_of[k], dn = depth_of[next];
-      if (dc >= 0) {
-        poly[n] = *corner[k];
-        poly_depth[n++] = dc;
-      }
-      if ((dc > 0) != (dn > 0) && dc != dn && n < 4) {
-        const double f = dc / (dc - dn);
-        if (f > 0 && f < 1) {
-          poly[n] = *corner[k] + f * (*corner[next] - *corner[k]);
-          poly_depth[n++] = 0.0;
-        }
-      }
-    }
-    for (int k = 1; k + 1 < n; ++k)
-      add_triangle(poly[0], poly_depth[0], poly[k], poly_depth[k], poly[k + 1], poly_depth[k + 1], about,
-                   rho_g, out);
+    add_clipped(p0, d0, p1, d1, p2, d2, about, rho_g, out);
   }
+  return out;
+}
+
+HullPressure::HullPressure(std::span<const glm::dvec3> hull, std::span<const uint32_t> indices)
+    : marked_(hull.size(), 0), depth_(hull.size(), 0.0) {
+  for (size_t t = 0; t + 2 < indices.size(); t += 3) {
+    Triangle tri{{indices[t], indices[t + 1], indices[t + 2]}, 0, {}, {}};
+    const glm::dvec3 &a = hull[tri.v[0]], &b = hull[tri.v[1]], &c = hull[tri.v[2]];
+    tri.s = 0.5 * glm::cross(b - a, c - a);
+    tri.area = glm::length(tri.s);
+    const glm::dvec3 sum = a + b + c;
+    for (int k = 0; k < 3; ++k) tri.arm[k] = glm::cross(hull[tri.v[k]] + sum, tri.s);
+    triangles_.push_back(tri);
+  }
+}
+
+Wrench HullPressure::wrench(std::span<const glm::dvec3> world, const glm::dmat3& rotation, glm::dvec3 centre,
+                            const Water& water, double density, double gravity) {
+  // The triangles that can reach the water, and the vertices whose depth they need (once each).
+  wet_.clear();
+  needed_.clear();
+  for (size_t t = 0; t < triangles_.size(); ++t) {
+    const uint32_t* v = triangles_[t].v;
+    if (world[v[0]].y > water.top && world[v[1]].y > water.top && world[v[2]].y > water.top) continue;
+    wet_.push_back(uint32_t(t));
+    for (int k = 0; k < 3; ++k)
+      if (!marked_[v[k]]) marked_[v[k]] = 1, needed_.push_back(v[k]);
+  }
+  for (uint32_t v : needed_) marked_[v] = 0;
+  if (water.head) {
+    for (uint32_t v : needed_) depth_[v] = (*water.head)(world[v].x, world[v].y, world[v].z) - world[v].y;
+  } else if (water.heights) {
+    points_.resize(needed_.size());
+    heights_.resize(needed_.size());
+    for (size_t i = 0; i < needed_.size(); ++i) points_[i] = {world[needed_[i]].x, world[needed_[i]].z};
+    (*water.heights)(points_, heights_);
+    for (size_t i = 0; i < needed_.size(); ++i) depth_[needed_[i]] = heights_[i] - world[needed_[i]].y;
+  } else {
+    for (uint32_t v : needed_) depth_[v] = (*water.height)(world[v].x, world[v].z) - world[v].y;
+  }
+
+  Wrench out;
+  const double rho_g = density * gravity;
+  glm::dvec3 force(0.0), torque(0.0);  // body axes, without −ρg/3 and −ρg/12
+  for (uint32_t t : wet_) {
+    const Triangle& tri = triangles_[t];
+    const double d0 = depth_[tri.v[0]], d1 = depth_[tri.v[1]], d2 = depth_[tri.v[2]];
+    if (!(d0 > 0 || d1 > 0 || d2 > 0)) continue;
+    if (d0 > 0 && d1 > 0 && d2 > 0) {
+      force += (d0 + d1 + d2) * tri.s;
+      torque += d0 * tri.arm[0] + d1 * tri.arm[1] + d2 * tri.arm[2];
+      out.wetted_area += tri.area;
+      continue;
+    }
+    add_clipped(world[tri.v[0]], d0, world[tri.v[1]], d1, world[tri.v[2]], d2, centre, rho_g, out);
+  }
+  out.force += rotation * (-rho_g / 3.0 * force);
+  out.torque += rotation * (-rho_g / 12.0 * torque);
   return out;
 }
 

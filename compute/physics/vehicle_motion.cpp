@@ -50,7 +50,8 @@ void VehicleMotion::hold_on(const TrackPoint& track) {
   s.angular_velocity.y = -track.yaw_rate;  // the heading turns clockwise, +y counterclockwise
 }
 
-void VehicleMotion::step(double t, double dt, const WaterHeight& water, double water_top) {
+void VehicleMotion::step(double t, double dt, const WaterHeight& water, double water_top,
+                         const WaterHeights& heights) {
   track_ = route_->at(t + dt);
   if (!hull_) return;
   // The path sets the horizontal motion and the heading; the water only what is left: the step sees the
@@ -58,7 +59,7 @@ void VehicleMotion::step(double t, double dt, const WaterHeight& water, double w
   BodyState& s = hull_->state();
   s.velocity.x = s.velocity.z = 0;
   s.angular_velocity.y = 0;
-  hull_->step(dt, water, water_top);
+  hull_->step(dt, water, water_top, {}, heights);
   hold_on(track_);
 }
 

@@ -32,9 +32,10 @@ class VehicleMotion {
   // To time t0 (0: the path's start): where the path puts it then, at rest at its still-water draught
   // (surface) or at its depth.
   void reset(double t0 = 0.0);
-  // From time t to t + dt; `water` is the sea's height at t (unused when submerged).
+  // From time t to t + dt; `water` is the sea's height at t (unused when submerged), `heights` the same for
+  // a batch of points (FloatingBody::step).
   void step(double t, double dt, const WaterHeight& water,
-            double water_top = std::numeric_limits<double>::infinity());
+            double water_top = std::numeric_limits<double>::infinity(), const WaterHeights& heights = {});
 
   glm::dvec3 model_origin() const;
   glm::dquat orientation() const;

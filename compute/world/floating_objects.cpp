@@ -79,6 +79,12 @@ ocean::LocalHeightsOptions lattice_for(const physics::TriangleMesh& hull) {
   return options;
 }
 
+// No wake under `hull` is higher than this, skipping vehicles[skip]'s own.
+double highest_wake(const WakeHeights& wakes, const physics::FloatingBody& hull, size_t skip) {
+  const glm::dvec2 centre(hull.state().position.x, hull.state().position.z);
+  return wakes.highest(skip, centre - hull.reach(), centre + hull.reach());
+}
+
 long long step_at(double time_s) {
   return (long long)std::floor(std::max(time_s, 0.0) / FloatingObjects::kStepS + 1e-9);
 }
@@ -178,33 +184,53 @@ void FloatingObjects::advance(double time_s) {
     const double t = double(steps_) * kStepS;
     if (wakes_) wakes_->advance(t, centre(), wakes_first_step_);
     const WakeHeights* wakes = wakes_.get();
+    // First what the hulls share: the sea's knots (one WaveQuery for all), and the wake cells under each
+    // hull (highest_wake sums them). Then each hull's step, which reads them.
     for (Body& b : bodies_) {
       const glm::dvec3 at = b.body.state().position;
       b.heights->update(t, glm::dvec2(at.x, at.z));
-      const ocean::LocalHeights& heights = *b.heights;
-      b.body.step(
-          kStepS,
-          [&heights, wakes](double x, double z) {
-            return heights.height(x, z) + (wakes ? wakes->height({x, z}) : 0.0);
-          },
-          heights.highest() + (wakes ? wakes->highest() : 0.0));
+      b.water_top =
+          b.heights->highest() + (wakes ? highest_wake(*wakes, b.body, WakeHeights::kNoVehicle) : 0.0);
     }
     for (size_t i = 0; i < vehicles_.size(); ++i) {
       Vehicle& v = vehicles_[i];
-      if (v.heights) {
-        const glm::dvec3 at = v.motion.model_origin();
-        v.heights->update(t, glm::dvec2(at.x, at.z));
-      }
-      const ocean::LocalHeights* heights = v.heights.get();
-      v.motion.step(
-          t, kStepS,
-          [heights, wakes, i](double x, double z) {
-            return heights->height(x, z) + (wakes ? wakes->height({x, z}, i) : 0.0);
-          },
-          heights ? heights->highest() + (wakes ? wakes->highest(i) : 0.0)
-                  : std::numeric_limits<double>::infinity());
+      if (!v.heights) continue;
+      const glm::dvec3 at = v.motion.model_origin();
+      v.heights->update(t, glm::dvec2(at.x, at.z));
+      v.water_top = v.heights->highest() + (wakes ? highest_wake(*wakes, *v.motion.hull(), i) : 0.0);
     }
+    for (Body& b : bodies_) step_body(b, wakes);
+    for (size_t i = 0; i < vehicles_.size(); ++i) step_vehicle(i, t, wakes);
   }
+}
+
+void FloatingObjects::step_body(Body& b, const WakeHeights* wakes) {
+  const ocean::LocalHeights& heights = *b.heights;
+  b.body.step(
+      kStepS,
+      [&heights, wakes](double x, double z) {
+        return heights.height(x, z) + (wakes ? wakes->height({x, z}) : 0.0);
+      },
+      b.water_top, {},
+      [&heights, wakes](std::span<const glm::dvec2> points, std::span<double> out) {
+        heights.heights(points, out);
+        if (wakes) wakes->add_heights(points, out);
+      });
+}
+
+void FloatingObjects::step_vehicle(size_t i, double t, const WakeHeights* wakes) {
+  Vehicle& v = vehicles_[i];
+  const ocean::LocalHeights* heights = v.heights.get();
+  v.motion.step(
+      t, kStepS,
+      [heights, wakes, i](double x, double z) {
+        return heights->height(x, z) + (wakes ? wakes->height({x, z}, i) : 0.0);
+      },
+      heights ? v.water_top : std::numeric_limits<double>::infinity(),
+      [heights, wakes, i](std::span<const glm::dvec2> points, std::span<double> out) {
+        heights->heights(points, out);
+        if (wakes) wakes->add_heights(points, out, i);
+      });
 }
 
 glm::dvec2 FloatingObjects::centre() const {

@@ -72,11 +72,13 @@ class FloatingObjects {
     double scale;
     physics::FloatingBody body;
     std::unique_ptr<ocean::LocalHeights> heights;
+    double water_top = 0;  // this step's bound on the water under it (physics/hydrostatics.h)
   };
   struct Vehicle {
     double scale;
     physics::VehicleMotion motion;
     std::unique_ptr<ocean::LocalHeights> heights;  // null when submerged
+    double water_top = 0;
   };
   FloatingObjects(const scene::Scene& scene, ocean::OceanParams ocean,
                   std::vector<ocean::CascadeSpectrum> spectra)
@@ -84,6 +86,9 @@ class FloatingObjects {
   void reset();
   // Where the bodies' wake layer is centred: the mean position of what floats.
   glm::dvec2 centre() const;
+  // One step of a hull, from what advance() prepared for the step (its knots, its water_top).
+  void step_body(Body& b, const WakeHeights* wakes);
+  void step_vehicle(size_t vehicle, double t, const WakeHeights* wakes);
 
   scene::Scene scene_;
   ocean::OceanParams ocean_;

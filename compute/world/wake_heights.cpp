@@ -201,6 +201,69 @@ double WakeHeights::height(glm::dvec2 p, size_t skip_vehicle) const {
   return layers_.empty() ? 0.0 : lookup(view(skip_vehicle), false, p);
 }
 
+std::pair<glm::ivec2, glm::ivec2> WakeHeights::cells_under(glm::dvec2 lo, glm::dvec2 hi) const {
+  const int n = int(params_.n);
+  // The taps of a point at u reach cells floor(u) - 1 .. floor(u) + 2 (lookup()); a NaN box none.
+  const glm::dvec2 u_lo = lo / params_.cell_m - glm::dvec2(origin_),
+                   u_hi = hi / params_.cell_m - glm::dvec2(origin_);
+  if (!(u_lo.x <= u_hi.x && u_lo.y <= u_hi.y)) return {glm::ivec2(0), glm::ivec2(-1)};
+  const glm::dvec2 first = glm::floor(glm::clamp(u_lo, glm::dvec2(-4.0), glm::dvec2(n + 4))) - 1.0,
+                   last = glm::floor(glm::clamp(u_hi, glm::dvec2(-4.0), glm::dvec2(n + 4))) + 2.0;
+  return {glm::max(glm::ivec2(first), glm::ivec2(0)), glm::min(glm::ivec2(last), glm::ivec2(n - 1))};
+}
+
+void WakeHeights::refresh_cells(View& v, std::pair<glm::ivec2, glm::ivec2> cells) const {
+  const size_t n = params_.n;
+  for (int b = cells.first.y; b <= cells.second.y; ++b)
+    for (int a = cells.first.x; a <= cells.second.x; ++a) {
+      const size_t w = size_t(b) * n + size_t(a);
+      if (v.fresh[w] != advances_) refresh(v, w);
+    }
+}
+
+double WakeHeights::highest(size_t skip_vehicle, glm::dvec2 lo, glm::dvec2 hi) const {
+  if (layers_.empty()) return 0.0;
+  View& v = view(skip_vehicle);
+  if (v.fresh.empty()) return 0.0;
+  const auto cells = cells_under(lo, hi);
+  refresh_cells(v, cells);
+  const size_t n = params_.n;
+  double largest = 0;
+  for (int b = cells.first.y; b <= cells.second.y; ++b)
+    for (int a = cells.first.x; a <= cells.second.x; ++a)
+      largest = std::max(largest, std::abs(v.height[size_t(b) * n + size_t(a)]));
+  return 1.5625 * largest;
+}
+
+void WakeHeights::add_heights(std::span<const glm::dvec2> points, std::span<double> heights,
+                              size_t skip_vehicle) const {
+  if (layers_.empty()) return;
+  View& v = view(skip_vehicle);
+  if (v.fresh.empty() || points.empty()) return;
+  glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+  for (const glm::dvec2& p : points) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  refresh_cells(v, cells_under(lo, hi));
+  const int n = int(params_.n);
+  for (size_t i = 0; i < points.size(); ++i) {
+    const glm::dvec2 u = points[i] / params_.cell_m - glm::dvec2(origin_);
+    if (!(u.x >= 1 && u.y >= 1 && u.x < n - 2 && u.y < n - 2)) {  // near or past the window's edge
+      heights[i] += lookup(v, false, points[i]);
+      continue;
+    }
+    const int a = int(std::floor(u.x)), b = int(std::floor(u.y));
+    // lookup()'s inner case without its freshness checks (every cell the taps reach was just summed): the
+    // same terms in the same order, so the same sum to the bit.
+    const std::array<double, 4> wa = ocean::catmull_rom_weights(u.x - a),
+                                wb = ocean::catmull_rom_weights(u.y - b);
+    double sum = 0;
+    for (int j = 0; j < 4; ++j) {
+      const double* row = v.height.data() + size_t(b - 1 + j) * n + size_t(a - 1);
+      for (int k = 0; k < 4; ++k) sum += wa[k] * wb[j] * row[k];
+    }
+    heights[i] += sum;
+  }
+}
+
 glm::dvec2 WakeHeights::slope(glm::dvec2 p) const {
   const double e = 0.05 * params_.cell_m;
   return glm::dvec2(height(p + glm::dvec2(e, 0)) - height(p - glm::dvec2(e, 0)),

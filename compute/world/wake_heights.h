@@ -17,6 +17,8 @@
 #include <glm/vec2.hpp>
 #include <limits>
 #include <memory>
+#include <span>
+#include <utility>
 #include <vector>
 
 #include "ocean/dynamic_layer.h"
@@ -41,8 +43,16 @@ class WakeHeights {
   // At the last advance's time: the wakes' height at (x, z), leaving out vehicles[skip_vehicle]'s own; its
   // slopes (dh/dx, dh/dz) and its rate dh/dt. Zero outside the window.
   double height(glm::dvec2 p, size_t skip_vehicle = kNoVehicle) const;
+  // Adds height(points[i], skip_vehicle) to heights[i]: a hull's points in one call, the cells they share
+  // summed once.
+  void add_heights(std::span<const glm::dvec2> points, std::span<double> heights,
+                   size_t skip_vehicle = kNoVehicle) const;
   // No height(p, skip_vehicle) is above this (0 without wakes).
   double highest(size_t skip_vehicle = kNoVehicle) const;
+  // No height(p, skip_vehicle) with p in the box [lo, hi] is above this: the largest of the cells its taps
+  // reach, times the most Catmull-Rom's weights add up to (1.25²). Under a hull, far lower than highest()
+  // when the wake is high elsewhere in the window, so a hull's dry triangles stay unasked.
+  double highest(size_t skip_vehicle, glm::dvec2 lo, glm::dvec2 hi) const;
   glm::dvec2 slope(glm::dvec2 p) const;
   double rate(glm::dvec2 p) const;
 
@@ -84,6 +94,11 @@ class WakeHeights {
   // Sums cell `w` (window order) of `v` at the last advance's time.
   void refresh(View& v, size_t w) const;
   double lookup(View& v, bool rate, glm::dvec2 p) const;
+  // The cells (first and last, inclusive, in window coordinates) that Catmull-Rom taps of points in the box
+  // [lo, hi] reach; none (first > last) when it is empty or outside the window.
+  std::pair<glm::ivec2, glm::ivec2> cells_under(glm::dvec2 lo, glm::dvec2 hi) const;
+  // Sums the stale cells of `v` in cells_under().
+  void refresh_cells(View& v, std::pair<glm::ivec2, glm::ivec2> cells) const;
 
   VehicleWakes wakes_;
   ocean::DynamicLayerParams params_;

@@ -10,7 +10,9 @@
 #include <glm/gtc/quaternion.hpp>
 #include <limits>
 #include <numbers>
+#include <span>
 #include <utility>
+#include <vector>
 
 #include "physics/floating_body.h"
 #include "physics/hydrostatics.h"
@@ -94,6 +96,46 @@ TEST(Hydrostatics, ABoundOnTheWaterSparesTheDryHullsLookupsAndNothingElse) {
   // The skipped wet strip is on the vertical sides: it carries no vertical force, but its area and its
   // horizontal pressure go missing.
   EXPECT_LT(wrong.wetted_area, all.wetted_area - 0.1);
+}
+
+// HullPressure is hydrostatic_wrench with the body-frame parts computed once: for a tilted, turned hull
+// cutting a wavy surface (wholly wet, cut and dry triangles) it must give hydrostatic_wrench's force, torque
+// and wetted area about the centre, asked point by point, in a batch or through a pressure head.
+TEST(Hydrostatics, AHullsPrecomputedPressureGivesTheWrenchOfItsTriangles) {
+  const physics::TriangleMesh fine = physics::refine_hull(box({1.0, 0.6, 0.5}), {.spacing_m = 0.15});
+  const glm::dmat3 turn = glm::mat3_cast(glm::angleAxis(0.4, glm::normalize(glm::dvec3(0.3, 1.0, 0.5))));
+  const glm::dvec3 centre(2.0, -0.2, -1.0);
+  std::vector<glm::dvec3> world;
+  for (const glm::dvec3& v : fine.vertices) world.push_back(centre + turn * v);
+  const physics::WaterHeight wavy = [](double x, double z) {
+    return 0.2 * std::sin(1.3 * x) + 0.1 * std::cos(2.1 * z);
+  };
+  const physics::WaterHeights batch = [&wavy](std::span<const glm::dvec2> p, std::span<double> h) {
+    for (size_t i = 0; i < p.size(); ++i) h[i] = wavy(p[i].x, p[i].y);
+  };
+  const physics::PressureHead head = [&wavy](double x, double y, double z) {
+    return y + 0.5 * (wavy(x, z) - y);  // any head: both paths must ask it alike
+  };
+  const physics::Wrench reference =
+      physics::hydrostatic_wrench(world, fine.indices, wavy, centre, kRhoWater, kG);
+  const physics::Wrench reference_head =
+      physics::hydrostatic_wrench(world, fine.indices, wavy, centre, kRhoWater, kG, 1e300, head);
+  ASSERT_GT(reference.wetted_area, 1.0);
+  ASSERT_LT(reference.wetted_area, 0.9 * 2 * (1.2 * 0.6 + 1.2 * 2.0 + 0.6 * 2.0)) << "the hull must be cut";
+  ASSERT_GT(glm::length(reference.torque), 100.0) << "a tilted hull in waves feels a torque";
+  physics::HullPressure pressure(fine.vertices, fine.indices);
+  auto expect_same = [](const physics::Wrench& got, const physics::Wrench& want, const char* how) {
+    const double f = glm::length(want.force), t = glm::length(want.torque);
+    EXPECT_LT(glm::length(got.force - want.force), 1e-9 * f) << how;
+    EXPECT_LT(glm::length(got.torque - want.torque), 1e-9 * (t + f)) << how;
+    EXPECT_NEAR(got.wetted_area, want.wetted_area, 1e-12 * want.wetted_area) << how;
+  };
+  expect_same(pressure.wrench(world, turn, centre, {.height = &wavy}, kRhoWater, kG), reference, "height");
+  expect_same(
+      pressure.wrench(world, turn, centre, {.height = &wavy, .heights = &batch, .top = 0.3}, kRhoWater, kG),
+      reference, "batch");
+  expect_same(pressure.wrench(world, turn, centre, {.height = &wavy, .head = &head}, kRhoWater, kG),
+              reference_head, "head");
 }
 
 physics::FloatingBody half_density_box(glm::dvec3 h, physics::Damping damping = {},

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <memory>
 #include <thread>
+#include <vector>
 
 #include "physics/floating_body.h"
 #include "support/shipped_scene.h"
@@ -99,6 +100,14 @@ TEST(LocalHeights, NoHeightIsAboveTheHighest) {
       for (double z = -3.0; z <= 7.0; z += 0.05) top = std::max(top, local.height(x, z));
     EXPECT_LE(top, local.highest()) << "t = " << t;
     EXPECT_GT(top, local.highest() - 0.5) << "a bound far above the water spares nothing";
+    // A hull's points asked in one batch answer as each asked alone, inside the lattice and past its edge.
+    std::vector<glm::dvec2> points;
+    for (double x = -9.0; x <= 11.0; x += 0.37)
+      for (double z = -8.0; z <= 12.0; z += 0.41) points.push_back({x, z});
+    std::vector<double> batch(points.size());
+    local.heights(points, batch);
+    for (size_t i = 0; i < points.size(); ++i)
+      ASSERT_EQ(batch[i], local.height(points[i].x, points[i].y)) << points[i].x << ", " << points[i].y;
   }
 }
 

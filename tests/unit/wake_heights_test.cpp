@@ -144,6 +144,40 @@ TEST(WakeHeights, ACellLookedUpBeforeAnAdvanceAnswersAsAFreshLayerAfterIt) {
   EXPECT_GT(largest, 1e-3) << "the boats' wakes are in the window";
 }
 
+// The hulls ask for their points in one batch (add_heights) and bound the wakes under them by a box
+// (highest(skip, lo, hi)): the batch must answer as height() does, to the bit, inside the window, at its
+// edges and outside; the box's bound must hold for every point in it, and be tighter than the window's where
+// the wake under the box is lower than elsewhere.
+TEST(WakeHeights, ABatchAnswersAsEachPointAndABoxBoundsTheWakesInIt) {
+  const scene::Scene s = shipped_scene("default", {"vehicles=[" + kBoat + "," + kCrossing + "]"});
+  world::WakeHeights w(wakes_of(s), 64);
+  w.advance(7.35, glm::dvec2(5, 5));
+  std::vector<glm::dvec2> points;
+  for (double x = -75; x <= 75; x += 1.37)
+    for (double z = -75; z <= 75; z += 1.91) points.push_back({x, z});  // the 128 m window and beyond
+  for (size_t skip : {world::WakeHeights::kNoVehicle, size_t{0}, size_t{1}}) {
+    std::vector<double> batch(points.size(), 0.25);
+    w.add_heights(points, batch, skip);
+    for (size_t i = 0; i < points.size(); ++i)
+      ASSERT_EQ(batch[i], 0.25 + w.height(points[i], skip)) << points[i].x << ", " << points[i].y;
+  }
+  int tighter = 0;
+  for (double x0 = -60; x0 <= 50; x0 += 9.7)
+    for (double z0 = -60; z0 <= 50; z0 += 8.3) {
+      const glm::dvec2 lo(x0, z0), hi(x0 + 7.5, z0 + 4.0);  // about a workboat's footprint
+      for (size_t skip : {world::WakeHeights::kNoVehicle, size_t{1}}) {
+        const double bound = w.highest(skip, lo, hi);
+        for (double x = lo.x; x <= hi.x; x += 0.23)
+          for (double z = lo.y; z <= hi.y; z += 0.29)
+            ASSERT_LE(w.height({x, z}, skip), bound)
+                << x << ", " << z << " in the box at " << x0 << ", " << z0;
+        EXPECT_LE(bound, w.highest(skip) + 1e-12);
+        tighter += bound < 0.5 * w.highest(skip) ? 1 : 0;
+      }
+    }
+  EXPECT_GT(tighter, 50) << "boxes away from the wakes' crests bound them far lower than the window does";
+}
+
 TEST(WakeHeights, ASmallBoxRidesAPassingWake) {
   // Calm water but for the boat's wake: a flat 0.5 m box of half water's density 10 m off the boat's line
   // heaves with the wake under it (its resonance, ω0 = sqrt(g / draught) = 14 rad/s, is well above the wake's
