@@ -37,11 +37,14 @@ LAGOON_FN dl_real dl_source_exponent(dl_real2 k, dl_real2 along, dl_real2 sigma,
 // grid of `cell` metres: the continuous transform of a Gaussian over the cell area, times exp(exponent)
 // from dl_source_exponent. Complex as (re, im). The mean (k = 0) is left alone: the water a hull pushes
 // aside raises the whole sea, not the layer's window.
+// Its magnitude alone (for k != 0); the CPU multiplies it by phases it splits into x and z factors.
+LAGOON_FN dl_real dl_source_magnitude(dl_real exponent, dl_real2 sigma, dl_real depression, dl_real cell) {
+  return -depression * dl_real(6.283185307179586) * sigma.x * sigma.y / (cell * cell) * exp(exponent);
+}
 LAGOON_FN dl_real2 dl_source_hat(dl_real2 k, dl_real2 centre, dl_real exponent, dl_real2 sigma,
                                  dl_real depression, dl_real cell) {
   if (dot(k, k) <= dl_real(0)) return dl_real2(0, 0);
-  dl_real magnitude =
-      -depression * dl_real(6.283185307179586) * sigma.x * sigma.y / (cell * cell) * exp(exponent);
+  dl_real magnitude = dl_source_magnitude(exponent, sigma, depression, cell);
   dl_real phase = -dot(k, centre);
   return magnitude * dl_real2(cos(phase), sin(phase));
 }
