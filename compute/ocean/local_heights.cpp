@@ -19,10 +19,42 @@ LocalHeights::LocalHeights(std::shared_ptr<WaveQuery> query, LocalHeightsOptions
 
 void LocalHeights::recentre(glm::dvec2 centre) {
   const double s = options_.spacing_m, half = 0.5 * (options_.points_per_side - 1) * s;
-  origin_ = glm::floor((centre - half) / s) * s;
-  placed_ = true;
-  knots_.clear();
+  const glm::dvec2 origin = glm::floor((centre - half) / s) * s;
   ahead_index_ = std::numeric_limits<long long>::min();
+  if (!placed_) {
+    origin_ = origin;
+    placed_ = true;
+    return;
+  }
+  // The lattice moves by whole points (its origin is a multiple of the spacing): the knots keep the heights
+  // of the points both lattices hold and sample only the rest, a strip of about a quarter of it for a body
+  // that moved out of the inner half (a boat under way recentres every few seconds, and sampling four whole
+  // knots at once stalled its step for ~2 ms). The same heights as sampled whole: each point's sample
+  // depends on its position alone.
+  const int n = options_.points_per_side;
+  const glm::ivec2 shift(glm::round((origin - origin_) / s));
+  origin_ = origin;
+  std::vector<size_t> missing;
+  for (size_t p = 0; p < size_t(n) * n; ++p) {
+    const glm::ivec2 old = glm::ivec2(int(p % size_t(n)), int(p / size_t(n))) + shift;
+    if (old.x < 0 || old.y < 0 || old.x >= n || old.y >= n) missing.push_back(p);
+  }
+  std::vector<glm::dvec2> points;
+  for (size_t p : missing)
+    points.push_back(origin_ + glm::dvec2(double(p % size_t(n)), double(p / size_t(n))) * s);
+  for (auto& [index, heights] : knots_) {
+    std::vector<double> moved(heights.size());
+    for (size_t p = 0; p < moved.size(); ++p) {
+      const glm::ivec2 old = glm::ivec2(int(p % size_t(n)), int(p / size_t(n))) + shift;
+      if (old.x >= 0 && old.y >= 0 && old.x < n && old.y < n) moved[p] = heights[size_t(old.y) * n + old.x];
+    }
+    if (!points.empty()) {
+      const std::vector<WaveSample> samples =
+          query_->sample(double(index) * options_.knot_interval_s, points);
+      for (size_t m = 0; m < missing.size(); ++m) moved[missing[m]] = samples[m].height;
+    }
+    heights = std::move(moved);
+  }
 }
 
 std::vector<glm::dvec2> LocalHeights::lattice_points(size_t first, size_t last) const {
@@ -76,13 +108,13 @@ void LocalHeights::update(double time_s, glm::dvec2 centre) {
   // Keep the body two spacings inside the lattice's inner part (bicubic taps reach one point out).
   const glm::dvec2 local = (centre - origin_) / s;
   const double lo = 0.25 * (n - 1), hi = 0.75 * (n - 1);
-  if (!placed_ || local.x < lo || local.y < lo || local.x > hi || local.y > hi) recentre(centre);
   const double u = time_s / options_.knot_interval_s;
   const long long k = (long long)std::floor(u);
   const std::array<double, 4> w = catmull_rom_weights(u - double(k));
-  // Only the knots k - 1 .. k + 2 are kept; the missing ones are sampled, then looked up (so no reference
-  // outlives a change of the list).
+  // Only the knots k - 1 .. k + 2 are kept (dropped before a recentre moves them); the missing ones are
+  // sampled, then looked up (so no reference outlives a change of the list).
   std::erase_if(knots_, [k](const auto& knot) { return knot.first < k - 1 || knot.first > k + 2; });
+  if (!placed_ || local.x < lo || local.y < lo || local.x > hi || local.y > hi) recentre(centre);
   for (int m = 0; m < 4; ++m) knot(k - 1 + m);
   std::array<const std::vector<double>*, 4> at{};
   for (int m = 0; m < 4; ++m) at[m] = &knot(k - 1 + m);
@@ -102,20 +134,22 @@ double LocalHeights::height(double x, double z) const {
       glm::clamp((glm::dvec2(x, z) - origin_) / options_.spacing_m, glm::dvec2(0.0), glm::dvec2(n - 1));
   const int ix = std::min(int(local.x), n - 2), iz = std::min(int(local.y), n - 2);
   const std::array<double, 4> wx = catmull_rom_weights(local.x - ix), wz = catmull_rom_weights(local.y - iz);
+  // Separably: each row's taps along x, then the rows along z (20 multiply-adds instead of 48 operations;
+  // this is the bodies' hottest loop).
   double sum = 0;
   if (ix >= 1 && iz >= 1 && ix + 2 < n && iz + 2 < n) {
-    // Inside: no tap needs clamping (the hulls' points almost always are; this is the step's hottest
-    // loop). The same terms in the same order as below, so the same sum to the bit.
+    // Inside: no tap needs clamping (the hulls' points almost always are). The same terms in the same
+    // order as below, so the same sum to the bit.
     const double* row = now_.data() + size_t(iz - 1) * n + (ix - 1);
     for (int b = 0; b < 4; ++b, row += n)
-      for (int a = 0; a < 4; ++a) sum += wx[a] * wz[b] * row[a];
+      sum += wz[b] * (wx[0] * row[0] + wx[1] * row[1] + wx[2] * row[2] + wx[3] * row[3]);
     return sum;
   }
-  for (int b = 0; b < 4; ++b)
-    for (int a = 0; a < 4; ++a) {
-      const int i = std::clamp(ix - 1 + a, 0, n - 1), j = std::clamp(iz - 1 + b, 0, n - 1);
-      sum += wx[a] * wz[b] * now_[size_t(j) * n + i];
-    }
+  for (int b = 0; b < 4; ++b) {
+    const double* row = now_.data() + size_t(std::clamp(iz - 1 + b, 0, n - 1)) * n;
+    const auto at = [&](int a) { return row[std::clamp(ix - 1 + a, 0, n - 1)]; };
+    sum += wz[b] * (wx[0] * at(0) + wx[1] * at(1) + wx[2] * at(2) + wx[3] * at(3));
+  }
   return sum;
 }
 

@@ -86,15 +86,17 @@ Wrench hydrostatic_wrench(std::span<const glm::dvec3> vertices, std::span<const 
 }
 
 HullPressure::HullPressure(std::span<const glm::dvec3> hull, std::span<const uint32_t> indices)
-    : marked_(hull.size(), 0), depth_(hull.size(), 0.0) {
+    : marked_(hull.size(), 0), dry_(hull.size(), 0), depth_(hull.size(), 0.0) {
   for (size_t t = 0; t + 2 < indices.size(); t += 3) {
-    Triangle tri{{indices[t], indices[t + 1], indices[t + 2]}, 0, {}, {}};
-    const glm::dvec3 &a = hull[tri.v[0]], &b = hull[tri.v[1]], &c = hull[tri.v[2]];
-    tri.s = 0.5 * glm::cross(b - a, c - a);
-    tri.area = glm::length(tri.s);
+    const Corners corners{{indices[t], indices[t + 1], indices[t + 2]}};
+    const glm::dvec3 &a = hull[corners.v[0]], &b = hull[corners.v[1]], &c = hull[corners.v[2]];
+    Terms terms{};
+    terms.s = 0.5 * glm::cross(b - a, c - a);
+    terms.area = glm::length(terms.s);
     const glm::dvec3 sum = a + b + c;
-    for (int k = 0; k < 3; ++k) tri.arm[k] = glm::cross(hull[tri.v[k]] + sum, tri.s);
-    triangles_.push_back(tri);
+    for (int k = 0; k < 3; ++k) terms.arm[k] = glm::cross(hull[corners.v[k]] + sum, terms.s);
+    corners_.push_back(corners);
+    terms_.push_back(terms);
   }
 }
 
@@ -103,9 +105,10 @@ Wrench HullPressure::wrench(std::span<const glm::dvec3> world, const glm::dmat3&
   // The triangles that can reach the water, and the vertices whose depth they need (once each).
   wet_.clear();
   needed_.clear();
-  for (size_t t = 0; t < triangles_.size(); ++t) {
-    const uint32_t* v = triangles_[t].v;
-    if (world[v[0]].y > water.top && world[v[1]].y > water.top && world[v[2]].y > water.top) continue;
+  for (size_t v = 0; v < world.size(); ++v) dry_[v] = world[v].y > water.top ? 1 : 0;
+  for (size_t t = 0; t < corners_.size(); ++t) {
+    const uint32_t* v = corners_[t].v;
+    if (dry_[v[0]] & dry_[v[1]] & dry_[v[2]]) continue;
     wet_.push_back(uint32_t(t));
     for (int k = 0; k < 3; ++k)
       if (!marked_[v[k]]) marked_[v[k]] = 1, needed_.push_back(v[k]);
@@ -127,16 +130,17 @@ Wrench HullPressure::wrench(std::span<const glm::dvec3> world, const glm::dmat3&
   const double rho_g = density * gravity;
   glm::dvec3 force(0.0), torque(0.0);  // body axes, without −ρg/3 and −ρg/12
   for (uint32_t t : wet_) {
-    const Triangle& tri = triangles_[t];
-    const double d0 = depth_[tri.v[0]], d1 = depth_[tri.v[1]], d2 = depth_[tri.v[2]];
+    const uint32_t* v = corners_[t].v;
+    const double d0 = depth_[v[0]], d1 = depth_[v[1]], d2 = depth_[v[2]];
     if (!(d0 > 0 || d1 > 0 || d2 > 0)) continue;
     if (d0 > 0 && d1 > 0 && d2 > 0) {
+      const Terms& tri = terms_[t];
       force += (d0 + d1 + d2) * tri.s;
       torque += d0 * tri.arm[0] + d1 * tri.arm[1] + d2 * tri.arm[2];
       out.wetted_area += tri.area;
       continue;
     }
-    add_clipped(world[tri.v[0]], d0, world[tri.v[1]], d1, world[tri.v[2]], d2, centre, rho_g, out);
+    add_clipped(world[v[0]], d0, world[v[1]], d1, world[v[2]], d2, centre, rho_g, out);
   }
   out.force += rotation * (-rho_g / 3.0 * force);
   out.torque += rotation * (-rho_g / 12.0 * torque);

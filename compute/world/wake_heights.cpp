@@ -18,6 +18,11 @@ ocean::DynamicLayerParams coarse(ocean::DynamicLayerParams p, uint32_t resolutio
   return p;
 }
 
+// One row's four taps weighted along x: lookups sum rows of these along z (separable Catmull-Rom).
+double row_sum(const std::array<double, 4>& w, const double* row) {
+  return w[0] * row[0] + w[1] * row[1] + w[2] * row[2] + w[3] * row[3];
+}
+
 }  // namespace
 
 WakeHeights::WakeHeights(VehicleWakes wakes, uint32_t resolution)
@@ -174,25 +179,28 @@ double WakeHeights::lookup(View& v, bool rate, glm::dvec2 p) const {
   const std::vector<double>& field = rate ? v.rate : v.height;
   double sum = 0;
   if (a >= 1 && b >= 1 && a + 2 < n && b + 2 < n) {
-    // Inside the window (nearly every lookup): no tap is cut. The same terms in the same order as below.
+    // Inside the window (nearly every lookup): no tap is cut. The same terms in the same order as below
+    // and as add_heights().
     for (int j = 0; j < 4; ++j) {
       const size_t row = size_t(b - 1 + j) * n + size_t(a - 1);
       for (int i = 0; i < 4; ++i)
         if (v.fresh[row + i] != advances_) refresh(v, row + i);
-      for (int i = 0; i < 4; ++i) sum += wa[i] * wb[j] * field[row + i];
+      sum += wb[j] * row_sum(wa, &field[row]);
     }
     return sum;
   }
   for (int j = 0; j < 4; ++j) {
     const int cb = b - 1 + j;
     if (cb < 0 || cb >= n) continue;
+    double taps[4] = {0, 0, 0, 0};  // cells outside the window count as 0
     for (int i = 0; i < 4; ++i) {
       const int ca = a - 1 + i;
       if (ca < 0 || ca >= n) continue;
       const size_t w = size_t(cb) * n + size_t(ca);
       if (v.fresh[w] != advances_) refresh(v, w);
-      sum += wa[i] * wb[j] * field[w];
+      taps[i] = field[w];
     }
+    sum += wb[j] * row_sum(wa, taps);
   }
   return sum;
 }
@@ -256,10 +264,8 @@ void WakeHeights::add_heights(std::span<const glm::dvec2> points, std::span<doub
     const std::array<double, 4> wa = ocean::catmull_rom_weights(u.x - a),
                                 wb = ocean::catmull_rom_weights(u.y - b);
     double sum = 0;
-    for (int j = 0; j < 4; ++j) {
-      const double* row = v.height.data() + size_t(b - 1 + j) * n + size_t(a - 1);
-      for (int k = 0; k < 4; ++k) sum += wa[k] * wb[j] * row[k];
-    }
+    for (int j = 0; j < 4; ++j)
+      sum += wb[j] * row_sum(wa, v.height.data() + size_t(b - 1 + j) * n + size_t(a - 1));
     heights[i] += sum;
   }
 }

@@ -87,6 +87,37 @@ TEST(LocalHeights, AKnotSampledAheadInSharesIsTheKnotSampledWhole) {
   EXPECT_GT(points, 900);
 }
 
+// A lattice that moves with its body keeps the heights of the points it still covers and samples the rest:
+// a body under way (diagonally, so both axes shift) must answer at every step as a lattice placed fresh
+// where it is at that time, on its own query: the same points of the world-fixed grid, the same heights there
+// (to the rounding of the two lattices' own coordinates; a point taken from the wrong old point is off by
+// the waves' height).
+TEST(LocalHeights, ALatticeThatMovesAnswersAsOnePlacedThereFresh) {
+  const scene::Scene s = shipped_scene("default");
+  const auto spectra = ocean::make_cascade_spectra(s.ocean);
+  ocean::LocalHeights moving(s.ocean, spectra, {});
+  const glm::dvec2 start(3.0, -7.0), velocity(4.0, 2.5);  // m/s: a boat under way
+  int moves = 0;
+  glm::dvec2 last_corner(0.0);
+  for (int step = 0; step < 360; ++step) {
+    const double t = 2.0 + step / 120.0;
+    const glm::dvec2 at = start + velocity * (t - 2.0);
+    moving.update(t, at);
+    if (step % 30 != 29) continue;
+    ocean::LocalHeights fresh(s.ocean, spectra, {});
+    fresh.update(t, at);
+    // Within 1 m of the body: its taps stay inside both lattices (the body is kept 1.9 m from the edge).
+    for (double dx = -1.0; dx <= 1.0; dx += 0.13)
+      for (double dz = -1.0; dz <= 1.0; dz += 0.17)
+        ASSERT_NEAR(moving.height(at.x + dx, at.y + dz), fresh.height(at.x + dx, at.y + dz), 1e-12)
+            << "t = " << t << " at " << dx << ", " << dz;
+    const glm::dvec2 corner(std::floor(at.x / 4.0), std::floor(at.y / 4.0));
+    moves += corner != last_corner ? 1 : 0;
+    last_corner = corner;
+  }
+  EXPECT_GE(moves, 4) << "the body must travel several lattice quarters (12 m in 3 s)";
+}
+
 // highest() bounds every height() at the last update's time (the bodies skip their dry triangles by it),
 // and not by much: within the lattice's range of its highest point.
 TEST(LocalHeights, NoHeightIsAboveTheHighest) {
