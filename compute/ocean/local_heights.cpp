@@ -105,9 +105,10 @@ void LocalHeights::sample_ahead(long long index) {
 void LocalHeights::update(double time_s, glm::dvec2 centre) {
   const int n = options_.points_per_side;
   const double s = options_.spacing_m;
-  // Keep the body two spacings inside the lattice's inner part (bicubic taps reach one point out).
+  // Keep the body keep_inside_m from the edge, or in the lattice's inner half.
   const glm::dvec2 local = (centre - origin_) / s;
-  const double lo = 0.25 * (n - 1), hi = 0.75 * (n - 1);
+  const double margin = options_.keep_inside_m > 0 ? options_.keep_inside_m / s : 0.25 * (n - 1);
+  const double lo = margin, hi = (n - 1) - margin;
   const double u = time_s / options_.knot_interval_s;
   const long long k = (long long)std::floor(u);
   const std::array<double, 4> w = catmull_rom_weights(u - double(k));

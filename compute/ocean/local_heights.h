@@ -21,6 +21,9 @@ struct LocalHeightsOptions {
   int points_per_side = 16;      // lattice points along each side
   double spacing_m = 0.5;        // between them
   double knot_interval_s = 0.2;  // between WaveQuery evaluations
+  // How close to the lattice's edge the centre given to update() may come before the lattice recentres on
+  // it (m); 0: a quarter of the lattice's width (it stays in the inner half).
+  double keep_inside_m = 0;
 };
 
 // The shortest waves a lattice resolves are 4 spacings long (2 m by default); a WaveQuery for the lattice can

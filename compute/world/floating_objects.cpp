@@ -68,13 +68,20 @@ Result<physics::TriangleMesh> load_closed_hull(const std::string& file, float sc
   return hull;
 }
 
-// A lattice of heights that keeps the whole hull inside it while the body stays in its inner half, with
-// one point to spare for the bicubic taps (ocean/local_heights.h).
+// A lattice of heights around a hull: its centre is kept its horizontal radius plus two spacings from the
+// edge (the hull's points and their bicubic taps stay inside), and the lattice recentres after the hull has
+// drifted kDriftM. A lattice four radii wide, recentred in its inner half, sampled twice as many points a
+// knot (the step's knots were a fifth of it); a recentre now samples only the new strip
+// (ocean/local_heights.h).
 ocean::LocalHeightsOptions lattice_for(const physics::TriangleMesh& hull) {
+  constexpr double kDriftM = 1.5;
   ocean::LocalHeightsOptions options;
   double radius = 0;
   for (const glm::dvec3& v : hull.vertices) radius = std::max(radius, std::hypot(v.x, v.z));
-  const int needed = int(std::ceil(4.0 * (radius / options.spacing_m + 1.0))) + 1;
+  const double s = options.spacing_m;
+  options.keep_inside_m = radius + 2 * s;
+  // One spacing more: the lattice's origin is the centre's, rounded down to the spacing.
+  const int needed = int(std::ceil(2 * (options.keep_inside_m + kDriftM + s) / s)) + 1;
   options.points_per_side = std::max(options.points_per_side, needed);
   return options;
 }

@@ -118,6 +118,30 @@ TEST(LocalHeights, ALatticeThatMovesAnswersAsOnePlacedThereFresh) {
   EXPECT_GE(moves, 4) << "the body must travel several lattice quarters (12 m in 3 s)";
 }
 
+// A lattice told to keep its centre keep_inside_m from its edge (the bodies' lattices, sized to a hull)
+// recentres by that rule: for a body drifting across it, every point within keep_inside_m minus the bicubic
+// taps' reach of the body answers as a lattice four times larger placed fresh there, never clamped at an
+// edge.
+TEST(LocalHeights, ALatticeKeepsItsCentreTheDistanceAskedFromItsEdge) {
+  const scene::Scene s = shipped_scene("default");
+  const auto spectra = ocean::make_cascade_spectra(s.ocean);
+  const ocean::LocalHeightsOptions small{.points_per_side = 25, .keep_inside_m = 2.0};
+  ocean::LocalHeights moving(s.ocean, spectra, small);
+  const glm::dvec2 start(3.0, -7.0), velocity(-1.5, 2.5);
+  for (int step = 0; step < 240; ++step) {
+    const double t = 2.0 + step / 120.0;
+    const glm::dvec2 at = start + velocity * (t - 2.0);
+    moving.update(t, at);
+    if (step % 20 != 19) continue;
+    ocean::LocalHeights large(s.ocean, spectra, {.points_per_side = 41});
+    large.update(t, at);
+    for (double dx = -1.0; dx <= 1.0; dx += 0.13)  // 2 m asked, less the taps' 1 m (two spacings)
+      for (double dz = -1.0; dz <= 1.0; dz += 0.17)
+        ASSERT_NEAR(moving.height(at.x + dx, at.y + dz), large.height(at.x + dx, at.y + dz), 1e-12)
+            << "t = " << t << " at " << dx << ", " << dz;
+  }
+}
+
 // highest() bounds every height() at the last update's time (the bodies skip their dry triangles by it),
 // and not by much: within the lattice's range of its highest point.
 TEST(LocalHeights, NoHeightIsAboveTheHighest) {
