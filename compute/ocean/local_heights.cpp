@@ -34,20 +34,23 @@ void LocalHeights::recentre(glm::dvec2 centre) {
   const int n = options_.points_per_side;
   const glm::ivec2 shift(glm::round((origin - origin_) / s));
   origin_ = origin;
+  // Where each new point was in the old lattice (its index), or the points to sample.
+  std::vector<long long> from(size_t(n) * n, -1);
   std::vector<size_t> missing;
-  for (size_t p = 0; p < size_t(n) * n; ++p) {
-    const glm::ivec2 old = glm::ivec2(int(p % size_t(n)), int(p / size_t(n))) + shift;
-    if (old.x < 0 || old.y < 0 || old.x >= n || old.y >= n) missing.push_back(p);
-  }
   std::vector<glm::dvec2> points;
-  for (size_t p : missing)
-    points.push_back(origin_ + glm::dvec2(double(p % size_t(n)), double(p / size_t(n))) * s);
+  for (size_t p = 0; p < from.size(); ++p) {
+    const glm::ivec2 at(int(p % size_t(n)), int(p / size_t(n))), old = at + shift;
+    if (old.x >= 0 && old.y >= 0 && old.x < n && old.y < n) {
+      from[p] = (long long)old.y * n + old.x;
+    } else {
+      missing.push_back(p);
+      points.push_back(origin_ + glm::dvec2(at) * s);
+    }
+  }
   for (auto& [index, heights] : knots_) {
     std::vector<double> moved(heights.size());
-    for (size_t p = 0; p < moved.size(); ++p) {
-      const glm::ivec2 old = glm::ivec2(int(p % size_t(n)), int(p / size_t(n))) + shift;
-      if (old.x >= 0 && old.y >= 0 && old.x < n && old.y < n) moved[p] = heights[size_t(old.y) * n + old.x];
-    }
+    for (size_t p = 0; p < moved.size(); ++p)
+      if (from[p] >= 0) moved[p] = heights[size_t(from[p])];
     if (!points.empty()) {
       const std::vector<WaveSample> samples =
           query_->sample(double(index) * options_.knot_interval_s, points);

@@ -49,8 +49,8 @@ Wrench hydrostatic_wrench(std::span<const glm::dvec3> vertices, std::span<const 
 // The same wrench to rounding.
 class HullPressure {
  public:
-  // `hull`: the vertices relative to the centre of mass, in body axes; `indices` as for hydrostatic_wrench.
   HullPressure() = default;
+  // `hull`: the vertices relative to the centre of mass, in body axes; `indices` as for hydrostatic_wrench.
   HullPressure(std::span<const glm::dvec3> hull, std::span<const uint32_t> indices);
 
   struct Water {

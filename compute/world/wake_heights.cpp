@@ -179,15 +179,13 @@ double WakeHeights::lookup(View& v, bool rate, glm::dvec2 p) const {
   const std::vector<double>& field = rate ? v.rate : v.height;
   double sum = 0;
   if (a >= 1 && b >= 1 && a + 2 < n && b + 2 < n) {
-    // Inside the window (nearly every lookup): no tap is cut. The same terms in the same order as below
-    // and as add_heights().
+    // Inside the window (nearly every lookup): no tap is cut. The same terms in the same order as below.
     for (int j = 0; j < 4; ++j) {
       const size_t row = size_t(b - 1 + j) * n + size_t(a - 1);
       for (int i = 0; i < 4; ++i)
         if (v.fresh[row + i] != advances_) refresh(v, row + i);
-      sum += wb[j] * row_sum(wa, &field[row]);
     }
-    return sum;
+    return inner_sum(field, wa, wb, a, b);
   }
   for (int j = 0; j < 4; ++j) {
     const int cb = b - 1 + j;
@@ -207,6 +205,14 @@ double WakeHeights::lookup(View& v, bool rate, glm::dvec2 p) const {
 
 double WakeHeights::height(glm::dvec2 p, size_t skip_vehicle) const {
   return layers_.empty() ? 0.0 : lookup(view(skip_vehicle), false, p);
+}
+
+double WakeHeights::inner_sum(const std::vector<double>& field, const std::array<double, 4>& wa,
+                              const std::array<double, 4>& wb, int a, int b) const {
+  const size_t n = params_.n;
+  double sum = 0;
+  for (int j = 0; j < 4; ++j) sum += wb[j] * row_sum(wa, &field[size_t(b - 1 + j) * n + size_t(a - 1)]);
+  return sum;
 }
 
 std::pair<glm::ivec2, glm::ivec2> WakeHeights::cells_under(glm::dvec2 lo, glm::dvec2 hi) const {
@@ -258,15 +264,10 @@ void WakeHeights::add_heights(std::span<const glm::dvec2> points, std::span<doub
       heights[i] += lookup(v, false, points[i]);
       continue;
     }
+    // lookup()'s inner case without its freshness checks: every cell the taps reach was just summed.
     const int a = int(std::floor(u.x)), b = int(std::floor(u.y));
-    // lookup()'s inner case without its freshness checks (every cell the taps reach was just summed): the
-    // same terms in the same order, so the same sum to the bit.
-    const std::array<double, 4> wa = ocean::catmull_rom_weights(u.x - a),
-                                wb = ocean::catmull_rom_weights(u.y - b);
-    double sum = 0;
-    for (int j = 0; j < 4; ++j)
-      sum += wb[j] * row_sum(wa, v.height.data() + size_t(b - 1 + j) * n + size_t(a - 1));
-    heights[i] += sum;
+    heights[i] +=
+        inner_sum(v.height, ocean::catmull_rom_weights(u.x - a), ocean::catmull_rom_weights(u.y - b), a, b);
   }
 }
 

@@ -10,6 +10,7 @@
 // and its rate at both ends, so the forces on a body do not jump at every step. Each step of the layers is
 // computed on another thread during the interval before it is needed (see next_).
 #pragma once
+#include <array>
 #include <complex>
 #include <cstddef>
 #include <cstdint>
@@ -94,6 +95,10 @@ class WakeHeights {
   // Sums cell `w` (window order) of `v` at the last advance's time.
   void refresh(View& v, size_t w) const;
   double lookup(View& v, bool rate, glm::dvec2 p) const;
+  // The Catmull-Rom sum over cells (a - 1 .. a + 2, b - 1 .. b + 2) of `field`, all inside the window and
+  // fresh: lookup()'s and add_heights()' one arithmetic, so both give the same sum to the bit.
+  double inner_sum(const std::vector<double>& field, const std::array<double, 4>& wa,
+                   const std::array<double, 4>& wb, int a, int b) const;
   // The cells (first and last, inclusive, in window coordinates) that Catmull-Rom taps of points in the box
   // [lo, hi] reach; none (first > last) when it is empty or outside the window.
   std::pair<glm::ivec2, glm::ivec2> cells_under(glm::dvec2 lo, glm::dvec2 hi) const;
