@@ -11,7 +11,7 @@
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
-set(LAGOON_EXPORT_ROOTS lagoon_core lagoon_fft_cpu lagoon_ocean lagoon_optics lagoon_physics lagoon_world lagoon_render)
+set(LAGOON_EXPORT_ROOTS lagoon_core lagoon_fft_cpu lagoon_ocean lagoon_optics lagoon_physics lagoon_world lagoon_render lagoon_dataset)
 set(LAGOON_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/Lagoon)
 set(LAGOON_INSTALL_INCLUDEDIR ${CMAKE_INSTALL_INCLUDEDIR}/lagoon)
 
@@ -238,4 +238,4 @@ _lagoon_pkg_config(lagoon-optics "Lagoon's spectral water-colour model, plain C+
 _lagoon_pkg_config(lagoon-physics "Lagoon's floating bodies, plain C++ (no Vulkan)" "glm" "-llagoon_physics")
 _lagoon_pkg_config(lagoon "Lagoon: ocean simulation and rendering on Vulkan (every module)"
                    "lagoon-ocean lagoon-optics lagoon-physics vulkan nlohmann_json libpng libjpeg libwebp nettle"
-                   "-llagoon_render -llagoon_world -llagoon_ocean_gpu -llagoon_fft -llagoon_gltf -llagoon_scene -llagoon_io -llagoon_shaders -llagoon_vk -pthread")
+                   "-llagoon_dataset -llagoon_render -llagoon_world -llagoon_ocean_gpu -llagoon_fft -llagoon_gltf -llagoon_scene -llagoon_io -llagoon_shaders -llagoon_vk -pthread")

@@ -53,3 +53,21 @@ function(lagoon_check_layering)
     endif()
   endforeach()
 endfunction()
+
+# Which way includes point between modules: lagoon_forbid_includes(target dir "render|dataset" "why") stops the
+# build when a header or source under `dir` includes "render/..." or "dataset/..." (a module above it).
+# Checked before the target compiles, and again whenever one of those files changes. Call it in the
+# CMakeLists.txt that defines `target` (the check is a custom command among its sources).
+set(LAGOON_CHECK_INCLUDES_SCRIPT ${CMAKE_CURRENT_LIST_DIR}/CheckIncludes.cmake)
+function(lagoon_forbid_includes target dir forbidden why)
+  file(GLOB_RECURSE files CONFIGURE_DEPENDS ${dir}/*.h ${dir}/*.cpp)
+  set(stamp ${CMAKE_CURRENT_BINARY_DIR}/layering/${target}.includes-checked)
+  add_custom_command(
+    OUTPUT ${stamp}
+    COMMAND ${CMAKE_COMMAND} "-DFILES=${files}" "-DFORBIDDEN=${forbidden}" "-DWHY=${why}" -DSTAMP=${stamp}
+            -P ${LAGOON_CHECK_INCLUDES_SCRIPT}
+    DEPENDS ${files} ${LAGOON_CHECK_INCLUDES_SCRIPT}
+    COMMENT "layering: ${target} includes nothing of ${forbidden}"
+    VERBATIM)
+  target_sources(${target} PRIVATE ${stamp})
+endfunction()

@@ -1,7 +1,7 @@
 // lagoon compare: the surface models side by side (issue 15, docs/models.md). Every model is rendered with
 // the scene's camera, time and light, its step timed on the device, and its height field measured
 // (model_comparison.h); out come a labelled contact sheet, a table (Markdown and JSON) and each model's
-// directional spectrum plot, all or nothing (staged_output.h).
+// directional spectrum plot, all or nothing (io/staged_output.h).
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -12,13 +12,13 @@
 #include "compare_sheet.h"
 #include "gpu_session.h"
 #include "io/atomic_file.h"
+#include "io/staged_output.h"
 #include "model_comparison.h"
 #include "ocean/model_constraints.h"
 #include "ocean/ocean_params.h"
 #include "report_text.h"
 #include "scene/json_fields.h"
 #include "scene_args.h"
-#include "staged_output.h"
 
 namespace lagoon::cli {
 namespace {
@@ -129,7 +129,7 @@ int run_compare_models(const ParsedArgs& args) {
     scenes.push_back(*scene);
     notes.push_back(note);
   }
-  auto staged = StagedOutput::create(*args.get("out"));
+  auto staged = io::StagedOutput::create(*args.get("out"));
   if (!staged) {
     std::fprintf(stderr, "lagoon compare: %s\n", staged.error().message.c_str());
     return kExitFailure;

@@ -1,10 +1,10 @@
-// lagoon dataset verify DIR: checks a rendered set against its manifests (io/dataset_manifest.h); lagoon
-// dataset preview FRAME.json: a frame and its ground truth side by side (dataset_preview.h).
+// lagoon dataset verify DIR: checks a rendered set against its manifests (dataset/manifest.h); lagoon
+// dataset preview FRAME.json: a frame and its ground truth side by side (dataset/preview.h).
 #include <cstdio>
 
 #include "commands.h"
-#include "dataset_preview.h"
-#include "io/dataset_manifest.h"
+#include "dataset/manifest.h"
+#include "dataset/preview.h"
 #include "io/png.h"
 
 namespace lagoon::cli {
@@ -20,7 +20,7 @@ int run_preview(const ParsedArgs& args) {
                  "set/frame_0007.json --out preview.png\n");
     return kExitUsage;
   }
-  Result<io::Image8> sheet = dataset_preview(*frame);
+  Result<io::Image8> sheet = dataset::preview(*frame);
   if (!sheet) {
     std::fprintf(stderr, "lagoon dataset preview: %s\n", sheet.error().message.c_str());
     return kExitFailure;
@@ -50,7 +50,7 @@ int run_dataset(const ParsedArgs& args) {
                  "lagoon dataset verify: name the folder to check, e.g. lagoon dataset verify out/set\n");
     return kExitUsage;
   }
-  const io::DatasetReport report = io::verify_dataset(*dir);
+  const dataset::DatasetReport report = dataset::verify_dataset(*dir);
   for (const std::string& problem : report.problems)
     std::fprintf(stderr, "lagoon dataset verify: %s\n", problem.c_str());
   std::printf("%s: %lld set(s), %lld frames, %lld files, %.1f MiB verified; %zu problem(s)\n", dir->c_str(),

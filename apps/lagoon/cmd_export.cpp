@@ -14,11 +14,11 @@
 #include "io/atomic_file.h"
 #include "io/disk_space.h"
 #include "io/npy_stream.h"
+#include "io/staged_output.h"
 #include "ocean/gpu/dynamic_layer_gpu.h"
 #include "ocean/gpu/gpu_ocean.h"
 #include "ocean/initial_spectrum.h"
 #include "scene_args.h"
-#include "staged_output.h"
 #include "vk/transfer.h"
 #include "world/floating_objects.h"
 #include "world/moving_pose.h"
@@ -135,7 +135,7 @@ uint64_t export_bytes(const scene::Scene& scene, const world::VehicleWakes& wake
   return bytes;
 }
 
-Result<CascadeStreams> open_streams(const StagedOutput& staged, uint32_t c, size_t frames, size_t n) {
+Result<CascadeStreams> open_streams(const io::StagedOutput& staged, uint32_t c, size_t frames, size_t n) {
   const std::string prefix = cascade_prefix(c);
   auto displacement =
       io::NpyStreamWriter::create(staged.file(prefix + "_displacement.npy"), vector_shape(frames, n));
@@ -188,7 +188,7 @@ struct WakeExport {
   std::vector<float> scratch;
 };
 
-Result<WakeExport> open_wake_export(vk::Context& ctx, const StagedOutput& staged,
+Result<WakeExport> open_wake_export(vk::Context& ctx, const io::StagedOutput& staged,
                                     const world::VehicleWakes& wakes, const scene::Scene& scene,
                                     size_t frames) {
   const std::vector<size_t> shape = scalar_shape(frames, wakes.params().n);
@@ -285,8 +285,8 @@ std::optional<ExportOptions> export_options(const ParsedArgs& args) {
   return o;
 }
 
-Result<std::vector<CascadeStreams>> open_all_streams(const StagedOutput& staged, const ocean::GpuOcean& gpu,
-                                                     size_t frames) {
+Result<std::vector<CascadeStreams>> open_all_streams(const io::StagedOutput& staged,
+                                                     const ocean::GpuOcean& gpu, size_t frames) {
   std::vector<CascadeStreams> streams;
   for (uint32_t c = 0; c < gpu.cascade_count(); ++c) {
     auto s = open_streams(staged, c, frames, gpu.spectra()[c].resolution);
@@ -297,7 +297,7 @@ Result<std::vector<CascadeStreams>> open_all_streams(const StagedOutput& staged,
 }
 
 // meta.json, then every array, then the folder itself: the output appears complete or not at all.
-Result<void> commit_export(StagedOutput& staged, std::vector<CascadeStreams>& streams, WakeExport* wakes,
+Result<void> commit_export(io::StagedOutput& staged, std::vector<CascadeStreams>& streams, WakeExport* wakes,
                            const std::string& meta) {
   if (auto r = io::write_text_atomic(staged.file("meta.json"), meta); !r) return r;
   if (auto r = commit_streams(streams); !r) return r;
@@ -311,9 +311,10 @@ Result<void> commit_export(StagedOutput& staged, std::vector<CascadeStreams>& st
 int export_fields(vk::Context& ctx, const scene::Scene& scene, const world::VehicleWakes& wakes,
                   const fs::path& out, const ExportOptions& o) {
   // Frames go straight into a staging folder beside the output; it is moved into place only when complete,
-  // and removed on any failure or interruption (StagedOutput's destructor), so nothing half-written remains.
+  // and removed on any failure or interruption (io::StagedOutput's destructor), so nothing half-written
+  // remains.
   InterruptGuard interrupt;
-  auto staged = StagedOutput::create(out);
+  auto staged = io::StagedOutput::create(out);
   if (!staged) return export_failure(staged.error().message);
   auto gpu_ocean = ocean::GpuOcean::create(ctx, scene.ocean);
   if (!gpu_ocean) return export_failure(gpu_ocean.error().message);

@@ -12,6 +12,7 @@
 #include "io/atomic_file.h"
 #include "io/npy.h"
 #include "io/png.h"
+#include "io/staged_output.h"
 #include "kd_plot.h"
 #include "lut_error_map.h"
 #include "lut_underwater.h"
@@ -21,7 +22,6 @@
 #include "optics/surface.h"
 #include "render/water_luts.h"
 #include "scene_args.h"
-#include "staged_output.h"
 
 namespace lagoon::cli {
 namespace {
@@ -183,7 +183,7 @@ int write_luts(const optics::LutInputs& inputs, const std::string& out) {
   auto built = optics::build_water_lut(inputs);
   if (!built) return lut_failure(built.error().message);
   const optics::WaterLut& lut = *built;
-  auto staged = StagedOutput::create(out);
+  auto staged = io::StagedOutput::create(out);
   if (!staged) return lut_failure(staged.error().message);
   const size_t r = lut.r_count, h = lut.h_count;
   const std::vector<size_t> t0_shape{r, h, 4}, t1_shape{r, h, 3};

@@ -7,12 +7,12 @@
 
 #include "commands.h"
 #include "core/stage_times.h"
-#include "dataset_render.h"
-#include "frame_sequence.h"
+#include "dataset/ground_truth.h"
+#include "dataset/render_sequence.h"
+#include "dataset/sequence.h"
 #include "gpu_session.h"
 #include "io/png.h"
 #include "io/sha256.h"
-#include "render/ground_truth.h"
 #include "render/ocean_renderer.h"
 #include "scene/scene.h"
 #include "scene_args.h"
@@ -44,8 +44,8 @@ std::optional<std::vector<std::string>> shorthand_overrides(const ParsedArgs& ar
 }
 
 // --frames, --fps and --shard. nullopt (after printing why) when one is out of range.
-std::optional<FrameSequence> frame_sequence_option(const ParsedArgs& args) {
-  FrameSequence sequence;
+std::optional<dataset::FrameSequence> frame_sequence_option(const ParsedArgs& args) {
+  dataset::FrameSequence sequence;
   const auto frames_arg = integer_option(args, "frames", 1, 1, 100000);
   if (!frames_arg) {
     std::fprintf(stderr, "lagoon render: %s\n", frames_arg.error().message.c_str());
@@ -62,7 +62,7 @@ std::optional<FrameSequence> frame_sequence_option(const ParsedArgs& args) {
     sequence.fps = *f;
   }
   if (auto v = args.get("shard")) {
-    Result<Shard> shard = parse_shard(*v);
+    Result<dataset::Shard> shard = dataset::parse_shard(*v);
     if (!shard) {
       std::fprintf(stderr, "lagoon render: %s\n", shard.error().message.c_str());
       return std::nullopt;
@@ -75,7 +75,7 @@ std::optional<FrameSequence> frame_sequence_option(const ParsedArgs& args) {
 // The camera flight of --path, checked to cover every frame. nullopt (after printing why) when it cannot be
 // read or is too short; an absent --path gives an empty optional in the Result.
 std::optional<std::optional<scene::CameraPath>> camera_path_option(const ParsedArgs& args,
-                                                                   const FrameSequence& sequence) {
+                                                                   const dataset::FrameSequence& sequence) {
   const auto file = args.get("path");
   if (!file) return std::optional<scene::CameraPath>{};
   Result<scene::CameraPath> path = scene::load_camera_path(*file);
@@ -105,9 +105,9 @@ std::optional<std::vector<std::string>> aov_option(const ParsedArgs& args) {
     if (end == std::string::npos) end = list.size();
     const std::string name = list.substr(start, end - start);
     start = end + 1;
-    if (!render::find_aov(name)) {
+    if (!dataset::find_aov(name)) {
       std::fprintf(stderr, "lagoon render: --aov %s: unknown ground truth '%s'; available: %s\n",
-                   list.c_str(), name.c_str(), render::aov_names().c_str());
+                   list.c_str(), name.c_str(), dataset::aov_names().c_str());
       return std::nullopt;
     }
     if (std::find(aovs.begin(), aovs.end(), name) == aovs.end()) aovs.push_back(name);
@@ -127,7 +127,7 @@ std::string checksum(const std::string& file) {
 
 // What the manifest records as the run: two shards may share a folder only when all of it is equal.
 nlohmann::json run_record(const ParsedArgs& args, const std::vector<std::string>& overrides,
-                          const FrameSequence& sequence) {
+                          const dataset::FrameSequence& sequence) {
   nlohmann::json run{{"scene", *args.get("scene")},
                      {"scene_sha256", checksum(*args.get("scene"))},
                      {"set", overrides},
@@ -146,6 +146,45 @@ void print_summary(const std::string& out_path, const io::Image8& image, const s
   std::printf("wrote %s (%ux%u, t = %.2f s) on %s (%s)\n", out_path.c_str(), image.width, image.height,
               scene.time_s, ctx.device_info().name.c_str(), ctx.device_info().type.c_str());
   for (const auto& t : timings) std::printf("  %-10s %8.2f ms GPU\n", t.name.c_str(), t.ms);
+}
+
+// Progress on stderr: a bar of this shard's frames, with those an earlier run finished.
+void print_progress(size_t done, size_t total, size_t skipped) {
+  const int bar = int(40 * done / std::max<size_t>(total, 1));
+  std::fprintf(stderr, "\r[%s%s] %zu/%zu frames", std::string(bar, '#').c_str(),
+               std::string(40 - bar, ' ').c_str(), done, total);
+  if (skipped) std::fprintf(stderr, " (%zu already done)", skipped);
+}
+
+int render_sequence(const ParsedArgs& args, const std::vector<std::string>& overrides,
+                    const dataset::FrameSequence& sequence, const std::optional<scene::CameraPath>& path,
+                    const std::vector<std::string>& aovs, const std::string& out_path, scene::Scene& scene,
+                    vk::Context& ctx, render::OceanRenderer& renderer) {
+  bool bar = false;
+  const dataset::SequenceRun run{.out_png = out_path,
+                                 .sequence = sequence,
+                                 .path = path,
+                                 .aovs = aovs,
+                                 .run = run_record(args, overrides, sequence),
+                                 .progress = [&bar](size_t done, size_t total, size_t skipped) {
+                                   print_progress(done, total, skipped);
+                                   bar = true;
+                                 }};
+  const Result<dataset::SequenceSummary> summary = dataset::render_sequence(run, scene, ctx, renderer);
+  if (bar) std::fprintf(stderr, "\n");
+  // A frame drawn with validation errors was not written: the exit code says why.
+  if (int status = validation_status(ctx); status != kExitOk) return status;
+  if (!summary) {
+    std::fprintf(stderr, "lagoon render: %s\n", summary.error().message.c_str());
+    return kExitFailure;
+  }
+  std::printf(
+      "shard %lld/%lld: %zu frames of %lld (%zu rendered, %zu already done) at %.3g fps, %ux%u, on %s; "
+      "manifest %s\n",
+      sequence.shard.index, sequence.shard.count, summary->frames, sequence.frames,
+      summary->frames - summary->skipped, summary->skipped, sequence.fps, scene.render.width,
+      scene.render.height, ctx.device_info().name.c_str(), summary->manifest.c_str());
+  return kExitOk;
 }
 
 int run_render(const ParsedArgs& args) {
@@ -176,14 +215,8 @@ int run_render(const ParsedArgs& args) {
     std::fprintf(stderr, "lagoon render: %s: %s\n", scene->source.c_str(), renderer.error().message.c_str());
     return kExitFailure;
   }
-  if (sequence->frames > 1 || args.has("shard") || *path || !aovs->empty()) {
-    const DatasetRun run{.out_png = out_path,
-                         .sequence = *sequence,
-                         .path = *path,
-                         .aovs = *aovs,
-                         .run = run_record(args, *overrides, *sequence)};
-    return render_dataset(run, *scene, *ctx, **renderer);
-  }
+  if (sequence->frames > 1 || args.has("shard") || *path || !aovs->empty())
+    return render_sequence(args, *overrides, *sequence, *path, *aovs, out_path, *scene, *ctx, **renderer);
   std::vector<vk::PassTime> timings;
   const io::Image8 image = (*renderer)->render(*scene, &timings);
   // A frame rendered with validation errors is not written: it cannot be trusted.

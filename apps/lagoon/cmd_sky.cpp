@@ -11,11 +11,11 @@
 #include "commands.h"
 #include "io/atomic_file.h"
 #include "io/npy.h"
+#include "io/staged_output.h"
 #include "optics/cie.h"
 #include "optics/sky_radiance.h"
 #include "scene_args.h"
 #include "sky_image.h"
-#include "staged_output.h"
 
 namespace lagoon::cli {
 namespace {
@@ -148,7 +148,7 @@ int run_sky(const ParsedArgs& args) {
   const optics::SkyRadiance sky(scene->sun.elevation_deg);
   const SkyImage image = sky_image(light, width);
   const optics::ToneMapParams fit = fit_tone_map(image);
-  auto staged = StagedOutput::create(*out);
+  auto staged = io::StagedOutput::create(*out);
   if (!staged) return sky_failure(staged.error().message);
   const std::vector<size_t> rgb_shape{size_t(image.height), size_t(image.width), 3};
   if (auto w = io::write_npy(staged->file("sky_rgb.npy"), image.rgb, rgb_shape); !w)

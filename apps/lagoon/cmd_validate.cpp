@@ -8,7 +8,7 @@
 
 #include "commands.h"
 #include "gpu_session.h"
-#include "staged_output.h"
+#include "io/staged_output.h"
 #include "validate_bodies.h"
 #include "validate_foam.h"
 #include "validate_light.h"
@@ -63,7 +63,7 @@ int run_validate(const ParsedArgs& args) {
     }
   }
   const std::string out_dir = args.get("out").value_or("validation");
-  auto staged = StagedOutput::create(out_dir);
+  auto staged = io::StagedOutput::create(out_dir);
   if (!staged) {
     std::fprintf(stderr, "lagoon validate: --out %s: %s\n", out_dir.c_str(), staged.error().message.c_str());
     return kExitFailure;

@@ -7,11 +7,11 @@
 #include <vector>
 
 #include "io/atomic_file.h"
+#include "io/staged_output.h"
 #include "io/text_raster.h"
 #include "optics/bottom_spectra.h"
 #include "optics/colour.h"
 #include "optics/composite_error.h"
-#include "staged_output.h"
 
 namespace lagoon::cli {
 namespace {
@@ -180,7 +180,7 @@ std::string summary_markdown(const nlohmann::json& rows, const optics::LutInputs
 }  // namespace
 
 Result<void> write_error_maps(const optics::LutInputs& in, const std::string& out) {
-  auto staged = StagedOutput::create(out);
+  auto staged = io::StagedOutput::create(out);
   if (!staged) return staged.error();
   const std::vector<Bottom> list = bottoms();
   nlohmann::json rows = nlohmann::json::array();

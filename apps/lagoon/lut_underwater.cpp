@@ -52,7 +52,8 @@ nlohmann::json describe(const optics::UnderwaterTable& t) {
 
 }  // namespace
 
-Result<nlohmann::json> write_underwater_tables(const optics::LutInputs& inputs, const StagedOutput& staged) {
+Result<nlohmann::json> write_underwater_tables(const optics::LutInputs& inputs,
+                                               const io::StagedOutput& staged) {
   auto built = optics::build_underwater_table(inputs);
   if (!built) return built.error();
   const optics::UnderwaterTable& t = *built;

@@ -4,13 +4,14 @@
 #include <nlohmann/json.hpp>
 
 #include "core/result.h"
+#include "io/staged_output.h"
 #include "optics/lut.h"
-#include "staged_output.h"
 
 namespace lagoon::cli {
 
 // Writes underwater_target.npy, underwater_water_down.npy, underwater_water_up.npy and underwater.png;
 // returns the "underwater" object for lut.json.
-Result<nlohmann::json> write_underwater_tables(const optics::LutInputs& inputs, const StagedOutput& staged);
+Result<nlohmann::json> write_underwater_tables(const optics::LutInputs& inputs,
+                                               const io::StagedOutput& staged);
 
 }  // namespace lagoon::cli

@@ -102,7 +102,7 @@ void print_table(const std::vector<Law>& laws) {
   }
 }
 
-Result<void> write_report(const StagedOutput& out, const std::vector<Law>& laws,
+Result<void> write_report(const io::StagedOutput& out, const std::vector<Law>& laws,
                           const ReportContext& context) {
   for (const Law& law : laws)
     if (auto r = io::write_png(out.file(plot_name(law)), law_plot(law)); !r) return r;

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "core/result.h"
-#include "staged_output.h"
+#include "io/staged_output.h"
 #include "validate_law.h"
 
 namespace lagoon::cli {
@@ -19,7 +19,7 @@ struct ReportContext {
 };
 
 void print_table(const std::vector<Law>& laws);
-Result<void> write_report(const StagedOutput& out, const std::vector<Law>& laws,
+Result<void> write_report(const io::StagedOutput& out, const std::vector<Law>& laws,
                           const ReportContext& context);
 
 // The plot's file name for a law: its id with '.' as '-', ".png".

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "bindings.h"
-#include "render/frame_metadata.h"
-#include "render/ground_truth.h"
+#include "dataset/frame_metadata.h"
+#include "dataset/ground_truth.h"
 #include "render/ocean_renderer.h"
 #include "scene/scene.h"
 #include "scene/scene_io.h"
@@ -49,8 +49,8 @@ class Renderer {
   py::dict render(std::optional<double> time, const std::optional<py::dict>& camera,
                   const std::vector<std::string>& aovs) {
     for (const std::string& name : aovs)
-      if (!render::find_aov(name))
-        throw py::value_error("no AOV named '" + name + "'; the AOVs are " + render::aov_names() +
+      if (!dataset::find_aov(name))
+        throw py::value_error("no AOV named '" + name + "'; the AOVs are " + dataset::aov_names() +
                               " (docs/datasets.md)");
     scene::Scene frame = scene_;
     if (camera) frame = with_camera(*camera);
@@ -60,13 +60,13 @@ class Renderer {
       frame.time_s = float(*time);
     }
     io::Image8 image;
-    render::GroundTruth gt;
+    dataset::GroundTruth gt;
     {
       py::gil_scoped_release unlocked;  // other Python threads run while the device renders
       image = renderer_->render(frame);
       if (!aovs.empty())
-        gt = render::frame_ground_truth(
-            *renderer_, frame, std::any_of(aovs.begin(), aovs.end(), render::GroundTruth::needs_terms));
+        gt = dataset::frame_ground_truth(
+            *renderer_, frame, std::any_of(aovs.begin(), aovs.end(), dataset::GroundTruth::needs_terms));
     }
     py::dict out;
     py::array_t<uint8_t> colour({py::ssize_t(image.height), py::ssize_t(image.width), py::ssize_t(3)});
@@ -80,14 +80,14 @@ class Renderer {
     }
     out["image"] = colour;
     // The dataset's frame JSON less what names its files (there are none) and its index in a sequence.
-    nlohmann::ordered_json metadata = render::frame_metadata(frame, 0, {});
+    nlohmann::ordered_json metadata = dataset::frame_metadata(frame, 0, {});
     for (const char* key : {"frame", "image", "aov"}) metadata.erase(key);
     out["metadata"] = to_python(metadata);
     // The AOVs are handed over, not copied: the arrays view the ground truth's planes, which a capsule keeps
     // alive for as long as any of them is.
-    auto owner = std::make_unique<render::GroundTruth>(std::move(gt));
-    const render::GroundTruth& planes = *owner;
-    py::capsule keep(owner.release(), [](void* p) { delete static_cast<render::GroundTruth*>(p); });
+    auto owner = std::make_unique<dataset::GroundTruth>(std::move(gt));
+    const dataset::GroundTruth& planes = *owner;
+    py::capsule keep(owner.release(), [](void* p) { delete static_cast<dataset::GroundTruth*>(p); });
     for (const std::string& name : aovs) {
       const std::vector<float>& values = planes.plane(name);
       const size_t pixels = size_t(planes.width) * planes.height;

@@ -1,8 +1,10 @@
 // JPEG through libjpeg-turbo, which checks the Huffman tables and the markers itself (the two guards Lagoon
 // kept in front of stb_image are no longer needed). Its errors end the decoding by longjmp: everything C++
 // lives in a heap-allocated Decoder made before setjmp, so the jump skips no destructor.
+// jpeglib.h uses FILE and size_t without including them: <cstdio> first, in a block of its own.
+#include <cstdio>
+
 #include <jpeglib.h>
-#include <cstdio>  // jpeglib.h uses FILE and size_t without including them
 
 #include <csetjmp>
 #include <cstring>

@@ -107,7 +107,7 @@ class OceanRenderer {
   // pass uses (xyz, w = foam) and the world point it is evaluated at (xyz m, w = 1; 0 where no water is
   // drawn). Objects are not drawn, unless `with_objects`: then every mesh and the floor too, nearest first
   // (shaders/render/mesh_aov.frag: their normal with w = 0, and w of the world point says what the pixel
-  // shows, shared/ground_truth.h). render/ground_truth.h makes the dataset's AOVs of it.
+  // shows, shared/ground_truth.h). dataset/ground_truth.h makes the dataset's AOVs of it.
   struct SurfaceAov {
     uint32_t width = 0, height = 0;
     std::vector<glm::vec4> normal_foam, world;
@@ -121,7 +121,7 @@ class OceanRenderer {
   // light leaving what the view ray meets (rgb, a = 1 where it meets something), the share of it the water
   // lets through to the camera, and the light the water adds along the ray, in linear white units before
   // exposure and tone mapping, as if the camera were under the water (the surface is not drawn): where it is,
-  // the drawn pixel is backscatter + clean · transmission. render/ground_truth.h keeps them where it is.
+  // the drawn pixel is backscatter + clean · transmission. dataset/ground_truth.h keeps them where it is.
   struct UnderwaterTerms {
     uint32_t width = 0, height = 0;
     std::vector<glm::vec4> clean, transmission, backscatter;

@@ -4,7 +4,7 @@
 #include "shared/mesh.h"
 #include "shared/ground_truth.h"
 
-// Ground truth of the scene's meshes per pixel (engine/render/ground_truth.h), in the targets of the water
+// Ground truth of the scene's meshes per pixel (engine/dataset/ground_truth.h), in the targets of the water
 // surface's (ocean_surface_aov.frag): the mesh's world-space normal, facing the side that is seen (normal maps
 // are not applied), and the world point with what the mesh is (shared/ground_truth.h). Every mesh is drawn,
 // above and below the water; alpha MASK cut-outs and single-sided back faces are left out as in mesh.frag.

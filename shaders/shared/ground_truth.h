@@ -1,5 +1,5 @@
 // What a ground-truth pixel shows (the w of the world target written by ocean_surface_aov.frag and
-// mesh_aov.frag; engine/render/ground_truth.h turns it into the object_id and water_mask AOVs).
+// mesh_aov.frag; engine/dataset/ground_truth.h turns it into the object_id and water_mask AOVs).
 #ifndef LAGOON_SHARED_GROUND_TRUTH_H
 #define LAGOON_SHARED_GROUND_TRUTH_H
 

@@ -1,8 +1,8 @@
-// The dataset's ground truth (render/ground_truth.h, lagoon render --aov): the depth at an object's pixels is
-// the distance along the optical axis to the mesh that a ray through the pixel's centre meets, computed here
-// by intersecting the ray with the box analytically (1 cm); every pixel whose ray hits the box well inside
-// its faces is labelled with its object id; and the water mask agrees with the side of the surface the camera
-// is on. The normal over the water is checked against WaveQuery in surface_normal_test.cpp.
+// The dataset's ground truth (dataset/ground_truth.h, lagoon render --aov): the depth at an object's pixels
+// is the distance along the optical axis to the mesh that a ray through the pixel's centre meets, computed
+// here by intersecting the ray with the box analytically (1 cm); every pixel whose ray hits the box well
+// inside its faces is labelled with its object id; and the water mask agrees with the side of the surface the
+// camera is on. The normal over the water is checked against WaveQuery in surface_normal_test.cpp.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,10 +11,10 @@
 #include <limits>
 #include <set>
 
+#include "dataset/ground_truth.h"
+#include "dataset/pinhole.h"
 #include "optics/colour.h"
-#include "render/ground_truth.h"
 #include "render/ocean_renderer.h"
-#include "render/pinhole.h"
 #include "scene/scene_io.h"
 #include "support/edited_scene.h"
 #include "support/gltf_quads.h"
@@ -67,7 +67,7 @@ class GroundTruthRender : public GpuTest {
  protected:
   TempDir dir_{"lagoon_ground_truth_render"};
 
-  render::GroundTruth ground_truth(const scene::Scene& s, world::CameraSide* side_out = nullptr) {
+  dataset::GroundTruth ground_truth(const scene::Scene& s, world::CameraSide* side_out = nullptr) {
     auto renderer = render::OceanRenderer::create(ctx(), s);
     EXPECT_TRUE(renderer) << renderer.error().message;
     const auto aov = (*renderer)->render_surface_aov(s, true);
@@ -75,7 +75,7 @@ class GroundTruthRender : public GpuTest {
     if (side_out) *side_out = side;
     const double surface_y =
         (*renderer)->camera_medium().surface_height(s.camera.position.x, s.camera.position.z, s.time_s);
-    return render::ground_truth(aov, s, side, surface_y);
+    return dataset::ground_truth(aov, s, side, surface_y);
   }
 };
 
@@ -89,8 +89,8 @@ TEST_F(GroundTruthRender, DepthAtAnObjectsPixelsIsTheRayMeshDistance) {
   s["objects"] = json::array(
       {json{{"name", "cube"}, {"file", "cube.gltf"}, {"position", {centre.x, centre.y, centre.z}}}});
   const scene::Scene scene = write_and_load(s, dir_ / "scene.json");
-  const render::GroundTruth gt = ground_truth(scene);
-  const render::Pinhole cam = render::pinhole(scene.camera, gt.width, gt.height);
+  const dataset::GroundTruth gt = ground_truth(scene);
+  const dataset::Pinhole cam = dataset::pinhole(scene.camera, gt.width, gt.height);
 
   int object_pixels = 0, checked = 0, missed = 0, inside = 0, inside_labelled = 0;
   double worst = 0;
@@ -151,7 +151,7 @@ TEST_F(GroundTruthRender, TheWaterMaskFollowsTheSideOfTheSurfaceTheCameraIsOn) {
     auto s = scene::load_scene(std::string(LAGOON_SOURCE_DIR) + "/scenes/" + c.scene + ".json", c.overrides);
     ASSERT_TRUE(s) << s.error().message;
     world::CameraSide side;
-    const render::GroundTruth gt = ground_truth(*s, &side);
+    const dataset::GroundTruth gt = ground_truth(*s, &side);
     ASSERT_EQ(side, c.side) << c.scene;
     std::set<float> seen(gt.water_mask.begin(), gt.water_mask.end());
     for (float v : seen) EXPECT_TRUE(c.allowed.count(v)) << c.scene << ": water_mask " << v;
@@ -181,9 +181,9 @@ TEST_F(GroundTruthRender, UnderTheWaterThePictureIsCleanTimesTransmissionPlusBac
   auto renderer = render::OceanRenderer::create(ctx(), *s);
   ASSERT_TRUE(renderer) << renderer.error().message;
   const io::Image8 image = (*renderer)->render(*s);
-  render::GroundTruth gt =
-      render::ground_truth((*renderer)->render_surface_aov(*s, true), *s, world::CameraSide::Below, 0.0);
-  render::add_underwater_terms(gt, (*renderer)->render_underwater_terms(*s));
+  dataset::GroundTruth gt =
+      dataset::ground_truth((*renderer)->render_surface_aov(*s, true), *s, world::CameraSide::Below, 0.0);
+  dataset::add_underwater_terms(gt, (*renderer)->render_underwater_terms(*s));
   optics::ToneMapParams tone;
   tone.world_adaptation_luminance = s->render.tone_map_adaptation;
   tone.white_luminance = s->render.tone_map_white;

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <vector>
 
+#include "dataset/pinhole.h"
 #include "render/ocean_renderer.h"
-#include "render/pinhole.h"
 #include "support/particle_candidates.h"
 #include "support/shipped_scene.h"
 #include "support/vk_fixture.h"
@@ -42,7 +42,7 @@ TEST_F(ParticleSize, TheyCoverTheDiscsTheirDiameterProjects) {
     ASSERT_TRUE(a && b);
     const io::Image8 seen = (*a)->render(with), plain = (*b)->render(without);
     // The discs: a sphere of diameter D at depth z along the axis is D f / z pixels across.
-    const render::Pinhole cam = render::pinhole(with.camera, kSizeWidth, kSizeHeight);
+    const dataset::Pinhole cam = dataset::pinhole(with.camera, kSizeWidth, kSizeHeight);
     const glm::dmat3 to_camera = glm::transpose(cam.world_from_camera);
     // must: well inside a near particle's disc (its pixels change); may: within any particle's disc or three
     // quarters of a pixel of blending around it. A diameter drawn 1.3 times too large strays 2.5-6 %; 0.7

@@ -11,9 +11,9 @@
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
+#include "dataset/pinhole.h"
 #include "io/png.h"
 #include "render/ocean_renderer.h"
-#include "render/pinhole.h"
 #include "support/edited_scene.h"
 #include "support/gltf_quads.h"
 #include "support/temp_dir.h"
@@ -34,7 +34,7 @@ struct Blob {
 
 // Whether pixel (x, y)'s ray meets the tile (centre c, level, kTileHalf either side) through a level water
 // surface at y = 0 with index `ior` (`ior` 1: straight through no water at all).
-bool sees_tile(const render::Pinhole& cam, uint32_t x, uint32_t y, glm::dvec3 c, double ior) {
+bool sees_tile(const dataset::Pinhole& cam, uint32_t x, uint32_t y, glm::dvec3 c, double ior) {
   const glm::dvec3 d = cam.ray(x, y);
   if (d.y >= 0) return false;
   const glm::dvec3 at_surface = cam.position + d * (-cam.position.y / d.y);
@@ -46,7 +46,7 @@ bool sees_tile(const render::Pinhole& cam, uint32_t x, uint32_t y, glm::dvec3 c,
 }
 
 // Where the tile is seen: the mean pixel of those whose rays meet it.
-Blob traced_tile(const render::Pinhole& cam, glm::dvec3 c, double ior) {
+Blob traced_tile(const dataset::Pinhole& cam, glm::dvec3 c, double ior) {
   Blob out;
   for (uint32_t y = 0; y < kFrameHeight; ++y)
     for (uint32_t x = 0; x < kFrameWidth; ++x)
@@ -119,7 +119,7 @@ TEST_F(RefractionRender, ATileOnTheFloorIsSeenWhereTheRefractedRayMeetsIt) {
         render_with(json::array({json{{"file", "tile.gltf"}, {"position", {c.x, c.y, c.z}}}}), floor_m);
     ASSERT_EQ(with.width, kFrameWidth);
     EXPECT_NEAR(scene_.water.ior, ior, 1e-9) << "the trace assumes the scene's index";
-    const render::Pinhole cam = render::pinhole(scene_.camera, kFrameWidth, kFrameHeight);
+    const dataset::Pinhole cam = dataset::pinhole(scene_.camera, kFrameWidth, kFrameHeight);
     const Blob expected = traced_tile(cam, c, ior), straight = traced_tile(cam, c, 1.0),
                seen = changed_pixels(with, without);
     if (getenv("LAGOON_DEBUG_TILE")) {
@@ -144,7 +144,7 @@ TEST_F(RefractionRender, ATileOnTheFloorIsSeenWhereTheRefractedRayMeetsIt) {
 }
 
 // Mean colour of the pixels of `img` inside the traced tile (the blob's pixels more than 2 px from its edge).
-glm::dvec3 tile_colour(const io::Image8& img, const render::Pinhole& cam, glm::dvec3 c, double ior) {
+glm::dvec3 tile_colour(const io::Image8& img, const dataset::Pinhole& cam, glm::dvec3 c, double ior) {
   const auto inside = [&](int x, int y) { return sees_tile(cam, uint32_t(x), uint32_t(y), c, ior); };
   glm::dvec3 sum(0.0);
   int n = 0;
@@ -174,7 +174,7 @@ TEST_F(RefractionRender, ATileAboveADeeperFloorIsSeenWhereTheRefractedRayMeetsIt
     const json tile = json::array({json{{"file", "tile.gltf"}, {"position", {c.x, c.y, c.z}}}});
     const io::Image8 with = render_with(tile, floor_m);
     ASSERT_EQ(with.width, kFrameWidth);
-    const render::Pinhole cam = render::pinhole(scene_.camera, kFrameWidth, kFrameHeight);
+    const dataset::Pinhole cam = dataset::pinhole(scene_.camera, kFrameWidth, kFrameHeight);
     const Blob expected = traced_tile(cam, c, ior), seen = changed_pixels(with, without);
     if (getenv("LAGOON_DEBUG_TILE")) {
       (void)io::write_png(dir_.path().parent_path() / ("tile_over_" + std::to_string(int(-c.y)) + ".png"),

@@ -9,10 +9,10 @@
 #include <glm/geometric.hpp>
 #include <vector>
 
+#include "dataset/ground_truth.h"
+#include "dataset/pinhole.h"
 #include "ocean/wave_query.h"
-#include "render/ground_truth.h"
 #include "render/ocean_renderer.h"
-#include "render/pinhole.h"
 #include "scene/scene_io.h"
 #include "support/vk_fixture.h"
 
@@ -148,14 +148,14 @@ TEST_F(SurfaceNormal, ShaderNormalAgreesWithWaveQueryNearMidFar) {
   }
 }
 
-// The dataset's normal AOV (lagoon render --aov normal,depth, through render/ground_truth.h) over the water:
+// The dataset's normal AOV (lagoon render --aov normal,depth, through dataset/ground_truth.h) over the water:
 // the world points rebuilt from its depth along each pixel's ray, its normals, the same bands.
 TEST_F(SurfaceNormal, TheDatasetsNormalAovAgreesWithWaveQuery) {
   auto renderer = render::OceanRenderer::create(ctx(), scene_);
   ASSERT_TRUE(renderer) << renderer.error().message;
-  const render::GroundTruth gt = render::ground_truth((*renderer)->render_surface_aov(scene_, true), scene_,
-                                                      world::CameraSide::Above, 0.0);
-  const render::Pinhole cam = render::pinhole(scene_.camera, gt.width, gt.height);
+  const dataset::GroundTruth gt = dataset::ground_truth((*renderer)->render_surface_aov(scene_, true), scene_,
+                                                        world::CameraSide::Above, 0.0);
+  const dataset::Pinhole cam = dataset::pinhole(scene_.camera, gt.width, gt.height);
   render::OceanRenderer::SurfaceAov rebuilt{.width = gt.width, .height = gt.height};
   for (uint32_t y = 0; y < gt.height; ++y)
     for (uint32_t x = 0; x < gt.width; ++x) {

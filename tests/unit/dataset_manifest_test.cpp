@@ -4,11 +4,11 @@
 
 #include <fstream>
 
-#include "io/dataset_manifest.h"
+#include "dataset/manifest.h"
 #include "io/sha256.h"
 #include "support/temp_dir.h"
 
-namespace lagoon::io {
+namespace lagoon::dataset {
 namespace {
 
 namespace fs = std::filesystem;
@@ -55,7 +55,7 @@ TEST(DatasetManifest, RoundTripsAndAppends) {
   Result<ManifestFile> file = describe_file(dir / "a.png", "a.png");
   ASSERT_TRUE(file);
   EXPECT_EQ(file->bytes, 6u);
-  EXPECT_EQ(file->sha256, sha256_hex(std::as_bytes(std::span("pixels", 6))));
+  EXPECT_EQ(file->sha256, io::sha256_hex(std::as_bytes(std::span("pixels", 6))));
   ASSERT_TRUE(writer->append({.frame = 5, .time_s = 1.5, .device = "dev", .files = {*file}}));
   const Result<Manifest> back = read_manifest(dir / "m.jsonl");
   ASSERT_TRUE(back) << back.error().message;
@@ -171,4 +171,4 @@ TEST(DatasetManifest, VerifyFindsEveryKindOfIncompleteSet) {
 }
 
 }  // namespace
-}  // namespace lagoon::io
+}  // namespace lagoon::dataset

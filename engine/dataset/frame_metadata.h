@@ -11,7 +11,7 @@
 
 #include "scene/scene.h"
 
-namespace lagoon::render {
+namespace lagoon::dataset {
 
 // The world frame's axes in east-north-up: Lagoon's world is right-handed with y up; x is east and -z north.
 // Columns: where world x, y, z point in ENU.
@@ -25,4 +25,4 @@ struct FrameFiles {
 
 nlohmann::ordered_json frame_metadata(const scene::Scene& scene, long long frame, const FrameFiles& files);
 
-}  // namespace lagoon::render
+}  // namespace lagoon::dataset

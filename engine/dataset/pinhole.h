@@ -9,7 +9,7 @@
 
 #include "scene/scene.h"
 
-namespace lagoon::render {
+namespace lagoon::dataset {
 
 struct Pinhole {
   double fx = 0, fy = 0, cx = 0, cy = 0;
@@ -23,4 +23,4 @@ struct Pinhole {
 
 Pinhole pinhole(const scene::Camera& camera, uint32_t width, uint32_t height);
 
-}  // namespace lagoon::render
+}  // namespace lagoon::dataset

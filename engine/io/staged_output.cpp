@@ -1,8 +1,8 @@
-#include "staged_output.h"
+#include "io/staged_output.h"
 
 #include <unistd.h>
 
-namespace lagoon::cli {
+namespace lagoon::io {
 
 namespace fs = std::filesystem;
 
@@ -40,4 +40,4 @@ Result<void> StagedOutput::commit() {
   return {};
 }
 
-}  // namespace lagoon::cli
+}  // namespace lagoon::io

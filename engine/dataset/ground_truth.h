@@ -22,7 +22,7 @@
 #include "scene/scene.h"
 #include "world/camera_medium.h"
 
-namespace lagoon::render {
+namespace lagoon::dataset {
 
 struct GroundTruth {
   uint32_t width = 0, height = 0;
@@ -58,14 +58,14 @@ std::string aov_names(const std::string& separator = ", ");
 
 // `side`: where the camera was judged to be for the frame; `surface_y`: the water's height above the camera
 // (used when the lens cuts the surface, to tell per pixel on which side its ray starts).
-GroundTruth ground_truth(const OceanRenderer::SurfaceAov& aov, const scene::Scene& scene,
+GroundTruth ground_truth(const render::OceanRenderer::SurfaceAov& aov, const scene::Scene& scene,
                          world::CameraSide side, double surface_y);
 
 // Fills clean, transmission and backscatter from `terms` (the same frame's).
-void add_underwater_terms(GroundTruth& gt, const OceanRenderer::UnderwaterTerms& terms);
+void add_underwater_terms(GroundTruth& gt, const render::OceanRenderer::UnderwaterTerms& terms);
 
 // The ground truth of the frame `renderer` draws for `scene`, with the image formation terms when
 // `with_terms` (one more pass): what `lagoon render --aov` writes and the Python module returns.
-GroundTruth frame_ground_truth(OceanRenderer& renderer, const scene::Scene& scene, bool with_terms);
+GroundTruth frame_ground_truth(render::OceanRenderer& renderer, const scene::Scene& scene, bool with_terms);
 
-}  // namespace lagoon::render
+}  // namespace lagoon::dataset

@@ -1,4 +1,4 @@
-#include "io/dataset_manifest.h"
+#include "dataset/manifest.h"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -14,7 +14,14 @@
 #include "io/json_limits.h"
 #include "io/sha256.h"
 
-namespace lagoon::io {
+namespace lagoon::dataset {
+
+using io::json_limit_exceeded;
+using io::JsonLimits;
+using io::os_error_message;
+using io::sha256_file;
+using io::write_text_atomic;
+
 namespace {
 
 using nlohmann::json;
@@ -258,4 +265,4 @@ DatasetReport verify_dataset(const std::filesystem::path& folder) {
   return report;
 }
 
-}  // namespace lagoon::io
+}  // namespace lagoon::dataset

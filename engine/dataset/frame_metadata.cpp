@@ -1,14 +1,14 @@
-#include "render/frame_metadata.h"
+#include "dataset/frame_metadata.h"
 
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "dataset/pinhole.h"
 #include "render/camera.h"
-#include "render/pinhole.h"
 
-namespace lagoon::render {
+namespace lagoon::dataset {
 namespace {
 
 using nlohmann::ordered_json;
@@ -48,7 +48,7 @@ ordered_json frame_metadata(const scene::Scene& scene, long long frame, const Fr
   const double fy = cam.fy;
   const glm::dmat3 enu = enu_from_world();
   const glm::dmat3 ned_from_enu(glm::dvec3(0, 1, 0), glm::dvec3(1, 0, 0), glm::dvec3(0, 0, -1));
-  const glm::dvec3 sun(sun_direction(scene.sun));
+  const glm::dvec3 sun(render::sun_direction(scene.sun));
 
   ordered_json aovs = ordered_json::object();
   for (size_t i = 0; i < files.aovs.size(); ++i) aovs[files.aovs[i]] = files.aov_files[i];
@@ -88,4 +88,4 @@ ordered_json frame_metadata(const scene::Scene& scene, long long frame, const Fr
   };
 }
 
-}  // namespace lagoon::render
+}  // namespace lagoon::dataset

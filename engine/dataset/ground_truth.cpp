@@ -1,15 +1,15 @@
-#include "render/ground_truth.h"
+#include "dataset/ground_truth.h"
 
 #include <glm/geometric.hpp>
 #include <limits>
 #include <stdexcept>
 
-#include "render/pinhole.h"
+#include "dataset/pinhole.h"
 #include "shared/ground_truth.h"
 
-namespace lagoon::render {
+namespace lagoon::dataset {
 
-GroundTruth ground_truth(const OceanRenderer::SurfaceAov& aov, const scene::Scene& scene,
+GroundTruth ground_truth(const render::OceanRenderer::SurfaceAov& aov, const scene::Scene& scene,
                          world::CameraSide side, double surface_y) {
   const Pinhole cam = pinhole(scene.camera, aov.width, aov.height);
   const size_t pixels = size_t{aov.width} * aov.height;
@@ -43,7 +43,7 @@ GroundTruth ground_truth(const OceanRenderer::SurfaceAov& aov, const scene::Scen
   return gt;
 }
 
-void add_underwater_terms(GroundTruth& gt, const OceanRenderer::UnderwaterTerms& terms) {
+void add_underwater_terms(GroundTruth& gt, const render::OceanRenderer::UnderwaterTerms& terms) {
   const size_t pixels = gt.water_mask.size();
   gt.clean.assign(3 * pixels, std::numeric_limits<float>::quiet_NaN());
   gt.transmission.assign(3 * pixels, 1.0f);
@@ -81,8 +81,8 @@ bool GroundTruth::needs_terms(const std::string& name) {
   return a && a->needs_terms;
 }
 
-GroundTruth frame_ground_truth(OceanRenderer& renderer, const scene::Scene& scene, bool with_terms) {
-  const OceanRenderer::SurfaceAov aov = renderer.render_surface_aov(scene, /*with_objects=*/true);
+GroundTruth frame_ground_truth(render::OceanRenderer& renderer, const scene::Scene& scene, bool with_terms) {
+  const render::OceanRenderer::SurfaceAov aov = renderer.render_surface_aov(scene, /*with_objects=*/true);
   const VkExtent2D extent{scene.render.width, scene.render.height};
   const world::CameraSide side = renderer.camera_side(scene, extent);
   const double surface_y = side == world::CameraSide::Waterline
@@ -94,4 +94,4 @@ GroundTruth frame_ground_truth(OceanRenderer& renderer, const scene::Scene& scen
   return gt;
 }
 
-}  // namespace lagoon::render
+}  // namespace lagoon::dataset

@@ -6,7 +6,7 @@
 
 #include "core/result.h"
 
-namespace lagoon::cli {
+namespace lagoon::io {
 
 class StagedOutput {
  public:
@@ -25,4 +25,4 @@ class StagedOutput {
   std::filesystem::path out_, staging_;
 };
 
-}  // namespace lagoon::cli
+}  // namespace lagoon::io

@@ -1,15 +1,25 @@
-#include "frame_sequence.h"
+#include "dataset/sequence.h"
 
+#include <charconv>
 #include <cstdio>
+#include <optional>
 
-#include "args.h"
+namespace lagoon::dataset {
+namespace {
 
-namespace lagoon::cli {
+std::optional<long long> whole_number(const std::string& text) {
+  long long v = 0;
+  auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (text.empty() || ec != std::errc() || end != text.data() + text.size()) return std::nullopt;
+  return v;
+}
+
+}  // namespace
 
 Result<Shard> parse_shard(const std::string& text) {
   const size_t slash = text.find('/');
-  const auto index = slash == std::string::npos ? std::nullopt : parse_integer(text.substr(0, slash));
-  const auto count = slash == std::string::npos ? std::nullopt : parse_integer(text.substr(slash + 1));
+  const auto index = slash == std::string::npos ? std::nullopt : whole_number(text.substr(0, slash));
+  const auto count = slash == std::string::npos ? std::nullopt : whole_number(text.substr(slash + 1));
   if (!index || !count)
     return Error{"--shard " + text +
                  " must be I/N: this task's index I from 0 and the number of shards N, "
@@ -40,4 +50,4 @@ std::filesystem::path manifest_path(const std::string& out_png, const Shard& sha
          std::to_string(shard.count) + ".jsonl";
 }
 
-}  // namespace lagoon::cli
+}  // namespace lagoon::dataset

@@ -8,10 +8,10 @@
 #include "core/result.h"
 #include "io/png.h"
 
-namespace lagoon::cli {
+namespace lagoon::dataset {
 
 // Fails naming the file when the JSON is not a frame's metadata or an image or AOV it lists is missing or of
 // another size.
-Result<io::Image8> dataset_preview(const std::filesystem::path& frame_json);
+Result<io::Image8> preview(const std::filesystem::path& frame_json);
 
-}  // namespace lagoon::cli
+}  // namespace lagoon::dataset

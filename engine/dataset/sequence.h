@@ -7,7 +7,7 @@
 
 #include "core/result.h"
 
-namespace lagoon::cli {
+namespace lagoon::dataset {
 
 struct Shard {
   long long index = 0, count = 1;
@@ -34,4 +34,4 @@ std::string frame_stem(const std::string& out_png, long long frame, const FrameS
 // The shard's manifest beside the frames: OUT.shard-I-of-N.jsonl (OUT without ".png").
 std::filesystem::path manifest_path(const std::string& out_png, const Shard& shard);
 
-}  // namespace lagoon::cli
+}  // namespace lagoon::dataset

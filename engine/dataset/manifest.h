@@ -13,7 +13,7 @@
 
 #include "core/result.h"
 
-namespace lagoon::io {
+namespace lagoon::dataset {
 
 struct ManifestFile {
   std::string name;  // relative to the manifest's folder
@@ -70,4 +70,4 @@ struct DatasetReport {
 // frame from 0 to frames - 1 listed exactly once, every file present with its size and checksum.
 DatasetReport verify_dataset(const std::filesystem::path& folder);
 
-}  // namespace lagoon::io
+}  // namespace lagoon::dataset

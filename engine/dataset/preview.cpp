@@ -1,4 +1,4 @@
-#include "dataset_preview.h"
+#include "dataset/preview.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,12 +9,12 @@
 #include <vector>
 
 #include "core/bounded_file.h"
+#include "dataset/ground_truth.h"
 #include "io/json_limits.h"
 #include "io/npy.h"
 #include "io/text_raster.h"
-#include "render/ground_truth.h"
 
-namespace lagoon::cli {
+namespace lagoon::dataset {
 namespace {
 
 namespace fs = std::filesystem;
@@ -113,7 +113,7 @@ bool plain_name(const std::string& name) {
 
 }  // namespace
 
-Result<io::Image8> dataset_preview(const fs::path& frame_json) {
+Result<io::Image8> preview(const fs::path& frame_json) {
   Result<nlohmann::ordered_json> meta = read_metadata(frame_json);
   if (!meta) return meta.error();
   const fs::path folder = frame_json.parent_path();
@@ -135,7 +135,7 @@ Result<io::Image8> dataset_preview(const fs::path& frame_json) {
       if (!file.is_string() || !plain_name(file.get<std::string>()))
         return Error{frame_json.string() + ": aov." + kind + " must be a file name beside it"};
       const fs::path path = folder / file.get<std::string>();
-      const render::AovKind* aov = render::find_aov(kind);
+      const AovKind* aov = find_aov(kind);
       if (!aov)
         return Error{frame_json.string() + ": aov." + kind + " is not a ground truth lagoon render writes"};
       Result<io::NpyArray> a = io::read_npy(path);
@@ -165,4 +165,4 @@ Result<io::Image8> dataset_preview(const fs::path& frame_json) {
   return sheet;
 }
 
-}  // namespace lagoon::cli
+}  // namespace lagoon::dataset
