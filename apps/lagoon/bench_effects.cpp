@@ -14,6 +14,7 @@
 #include "render/ocean_renderer.h"
 #include "report_text.h"
 #include "scene/camera_path.h"
+#include "scene/effects.h"
 #include "scene_args.h"
 
 namespace lagoon::cli {
@@ -22,14 +23,7 @@ namespace {
 namespace fs = std::filesystem;
 
 void all_off(scene::Scene& s) {
-  s.render.effects = {.reflection = false,
-                      .refraction = false,
-                      .foam = false,
-                      .shore_foam = false,
-                      .caustics = false,
-                      .particles = false,
-                      .shafts = false,
-                      .underwater = false};
+  s.render.effects = scene::no_effects();
   s.wakes.enabled = false;
   s.sediment.enabled = false;
 }
@@ -153,31 +147,30 @@ nlohmann::json json_report(const std::vector<FlightSummary>& rows, nlohmann::jso
 }  // namespace
 
 const std::vector<EffectConfig>& effect_configs() {
-  static const std::vector<EffectConfig> configs{
-      {"none", "no effects: the sea's surface lit by sun and sky, no reflection, refraction or foam",
-       [](scene::Scene&) {}},
-      {"reflection", "planar reflection of what is above the water",
-       [](scene::Scene& s) { s.render.effects.reflection = true; }},
-      {"refraction", "the floor and submerged objects seen through the surface",
-       [](scene::Scene& s) { s.render.effects.refraction = true; }},
-      {"foam", "breaking waves' foam and shore foam",
-       [](scene::Scene& s) { s.render.effects.foam = s.render.effects.shore_foam = true; }},
-      {"caustics", "the sun focused by the waves on the floor",
-       [](scene::Scene& s) { s.render.effects.caustics = true; }},
-      {"underwater", "the water volume: attenuation and in-scattering along view rays",
-       [](scene::Scene& s) { s.render.effects.underwater = true; }},
-      {"particles", "suspended particles seen under the water",
-       [](scene::Scene& s) { s.render.effects.particles = true; }},
-      {"shafts", "light shafts in the water", [](scene::Scene& s) { s.render.effects.shafts = true; }},
-      {"wakes", "vehicles' wakes and foam trails (the dynamic wave layer)",
-       [](scene::Scene& s) { s.wakes.enabled = true; }},
-      {"sediment", "sediment stirred up by vehicles near the floor",
-       [](scene::Scene& s) { s.sediment.enabled = true; }},
-      {"all", "every effect above together", [](scene::Scene& s) {
-         s.render.effects = {};
-         s.render.effects.shafts = true;
-         s.wakes.enabled = s.sediment.enabled = true;
-       }}};
+  static const std::vector<EffectConfig> configs = [] {
+    std::vector<EffectConfig> list{
+        {"none", "no effects: the sea's surface lit by sun and sky, no reflection, refraction or foam",
+         [](scene::Scene&) {}}};
+    // Each of the scene's effects alone (scene/effects.h), with those it needs to be seen.
+    for (const scene::EffectKind& k : scene::kEffects) {
+      if (k.measured_with) continue;
+      list.push_back({k.name, k.summary, [&k](scene::Scene& s) {
+                        for (const scene::EffectKind& other : scene::kEffects)
+                          if (&other == &k ||
+                              (other.measured_with && k.name == std::string(other.measured_with)))
+                            s.render.effects.*other.flag = true;
+                      }});
+    }
+    list.push_back({"wakes", "vehicles' wakes and foam trails (the dynamic wave layer)",
+                    [](scene::Scene& s) { s.wakes.enabled = true; }});
+    list.push_back({"sediment", "sediment stirred up by vehicles near the floor",
+                    [](scene::Scene& s) { s.sediment.enabled = true; }});
+    list.push_back({"all", "every effect above together", [](scene::Scene& s) {
+                      for (const scene::EffectKind& k : scene::kEffects) s.render.effects.*k.flag = true;
+                      s.wakes.enabled = s.sediment.enabled = true;
+                    }});
+    return list;
+  }();
   return configs;
 }
 

@@ -5,6 +5,7 @@
 // effects.json, effects.csv, effects.md (laid out like the thesis's tables) and effects.png (a bar chart
 // Lagoon draws).
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -15,9 +16,9 @@ namespace lagoon::cli {
 
 // One configuration of the evaluation: a name and what it switches on over "no effects".
 struct EffectConfig {
-  std::string name;         // "none", "reflection", ..., "all"
-  std::string description;  // for the tables
-  void (*apply)(scene::Scene&);
+  std::string name;                          // "none", "reflection", ..., "all"
+  std::string description;                   // for the tables
+  std::function<void(scene::Scene&)> apply;  // on a scene with every effect off
 };
 
 // "none" (every effect off), each effect alone, "all" (every effect on, light shafts included).

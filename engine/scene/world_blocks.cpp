@@ -5,40 +5,14 @@
 #include <utility>
 #include <vector>
 
+#include "scene/effects.h"
 #include "shared/sediment.h"
 
 namespace lagoon::scene {
 namespace {
 
 void read_effects(ObjectReader& r, RenderEffects& e) {
-  r.flag("reflection", e.reflection,
-         "Planar reflection of the objects above the water; false = the water reflects the sky alone.");
-  r.flag("refraction", e.refraction,
-         "The floor and submerged objects seen through the surface, coloured by the water LUTs; false = "
-         "the water's own colour only.");
-  r.flag("foam", e.foam,
-         "Whitecaps from ocean.foam; false hides them, and the shore foam with them (the vehicles' foam "
-         "trails are the wakes').");
-  r.flag(
-      "shore_foam", e.shore_foam,
-      "Foam where the floor or an object meets the surface (a shore, a hull, a buoy): waves break where "
-      "the water is shallower than 1.25 times their significant height (breaker index 0.8, docs/physics.md, "
-      "Shore foam), so the band widens with the waves and on gentle slopes. Needs refraction (the depth "
-      "under the surface comes from the refraction pass) and foam.");
-  r.flag(
-      "caustics", e.caustics,
-      "The sun focused by the displaced surface onto the floor and submerged objects, from above and below "
-      "(docs/rendering.md, Caustics); false = the light under a flat surface.");
-  r.flag("particles", e.particles,
-         "Suspended particles in the water, seen from under the water (underwater.particles).");
-  r.flag("shafts", e.shafts,
-         "Light shafts: the sun's beams, focused by the waves, seen in the water from under it (a volumetric "
-         "estimate, docs/rendering.md). Off by default: on lavapipe they cost about 35 ms of a 1280x720 "
-         "reef-dive frame (docs/rendering.md).");
-  r.flag(
-      "underwater", e.underwater,
-      "Under the water, the water's effect on light along each view ray (attenuation, its own light, "
-      "blur); false = what lies in the water as if the water were clear (it is still lit as under water).");
+  for (const EffectKind& k : kEffects) r.flag(k.name, e.*k.flag, k.doc);
 }
 
 }  // namespace
