@@ -111,53 +111,6 @@ Result<void> OceanRenderer::init(const scene::Scene& scene) {
   return {};
 }
 
-// The frame. Each pass records its own work; the hand-over of images between passes is stated here, once.
-void OceanRenderer::record_frame(const FrameContext& f, const CausticsWindow& caustics, vk::Target color,
-                                 vk::Target depth) {
-  using enum vk::ImageUse;
-  const VkCommandBuffer cmd = f.cmd;
-  caustics_->record(f, caustics);  // leaves its map ready for the fragment shaders
-  vk::use(cmd, {refraction_->albedo(), refraction_->depth()}, Discard, Attachment);
-  refraction_->record(f);
-  vk::use(cmd, {refraction_->albedo(), refraction_->depth()}, Attachment, Sampled);
-
-  const UnderwaterPass::Inputs below{refraction_->albedo_image(), refraction_->depth_image(),
-                                     caustics_->map(), window_->color_image()};
-  if (f.camera_side != world::CameraSide::Above) {
-    vk::use(cmd, {window_->color(), window_->depth()}, Discard, Attachment);
-    window_->record(f);
-    vk::use(cmd, {window_->color(), window_->depth()}, Attachment, Sampled);
-  }
-  if (f.camera_side == world::CameraSide::Below) {
-    vk::use(cmd, {color, depth}, Discard, Attachment);
-    underwater_->record(f, below, color, depth);
-    vk::use(cmd, {color, depth}, Attachment, Attachment);
-    particles_->record(f, color, depth);
-    return;
-  }
-
-  vk::use(cmd, {reflection_->color(), reflection_->depth()}, Discard, Attachment);
-  reflection_->record(f, f.scene.render.effects.reflection);
-  vk::use(cmd, {reflection_->color()}, Attachment, Sampled);
-
-  vk::use(cmd, {color, depth}, Discard, Attachment);
-  surface_->record(
-      f,
-      {refraction_->albedo_image(), refraction_->depth_image(), reflection_->color_image(), caustics_->map()},
-      color, depth);
-  vk::use(cmd, {color, depth}, Attachment, Attachment);
-  sky_->record(f, color, depth);
-  if (f.camera_side != world::CameraSide::Waterline) return;
-
-  vk::use(cmd, {waterline_->below_color(), waterline_->below_depth()}, Discard, Attachment);
-  underwater_->record(f, below, waterline_->below_color(), waterline_->below_depth());
-  vk::use(cmd, {waterline_->below_color(), waterline_->below_depth()}, Attachment, Attachment);
-  particles_->record(f, waterline_->below_color(), waterline_->below_depth());
-  vk::use(cmd, {waterline_->below_color(), waterline_->below_depth()}, Attachment, Sampled);
-  vk::use(cmd, {color, depth}, Attachment, Attachment);
-  waterline_->record(f, color, depth);
-}
-
 void OceanRenderer::prepare(const scene::Scene& scene) {
   StageTimer t("warm-up (foam, wakes)");
   // A jump in time (a still frame at a late time, a dataset's frame) has the floating bodies' physics replay
@@ -167,8 +120,14 @@ void OceanRenderer::prepare(const scene::Scene& scene) {
   std::future<void> bodies;
   if (!floating_->empty() && floating_->steps_to(scene.time_s) >= kJumpSteps)
     bodies = std::async(std::launch::async, [this, time_s = scene.time_s] { floating_->advance(time_s); });
+  // Each part timed on its own too: a late or first frame's wait is mostly one of them.
+  StageTimer t_foam("warm-up: foam");
   ocean_step_->prepare(ctx_, scene.time_s, history_ == History::Sequence);
+  t_foam.end();
+  StageTimer t_wakes("warm-up: wakes' history");
   wakes_->prepare(ctx_, scene, history_ == History::Sequence);
+  t_wakes.end();
+  StageTimer t_bodies("warm-up: bodies, remainder");
   if (bodies.valid()) bodies.get();  // rethrows what the physics threw
 }
 
@@ -181,18 +140,13 @@ void OceanRenderer::advance(const scene::Scene& scene) {
     slot.timer.reset(cmd);
     const FrameContext frame{
         .cmd = cmd, .extent = {scene.render.width, scene.render.height}, .scene = scene, .slot = slot};
-    record_time_steps(frame);
+    record_frame(frame, {.kind = FrameKind::Advance});
   });
 }
 
 void OceanRenderer::move_world(const scene::Scene& scene) {
   place_floating_objects(scene.time_s);
   wakes_->follow_camera(scene);
-}
-
-void OceanRenderer::record_time_steps(const FrameContext& frame) {
-  ocean_step_->record(frame);
-  wakes_->record(frame);
 }
 
 world::CameraSide OceanRenderer::camera_side(const scene::Scene& scene, VkExtent2D extent) {
@@ -317,9 +271,10 @@ void OceanRenderer::record(VkCommandBuffer cmd, const scene::Scene& scene, const
   resize(targets.extent);
   const CausticsWindow caustics = caustics_window(scene, sun_direction(scene.sun), float(scene.water.ior));
   const FrameContext frame = begin_frame(cmd, scene, targets.extent, slot, caustics);
-  record_time_steps(frame);
-  record_frame(frame, caustics, {targets.color, targets.color_view, VK_IMAGE_ASPECT_COLOR_BIT},
-               {targets.depth, targets.depth_view, VK_IMAGE_ASPECT_DEPTH_BIT});
+  record_frame(frame, {.kind = FrameKind::Picture,
+                       .caustics = caustics,
+                       .color = {targets.color, targets.color_view, VK_IMAGE_ASPECT_COLOR_BIT},
+                       .depth = {targets.depth, targets.depth_view, VK_IMAGE_ASPECT_DEPTH_BIT}});
 }
 
 std::vector<vk::PassTime> OceanRenderer::timings(uint32_t slot) const {

@@ -1,6 +1,7 @@
 // The frame renderer: the FFT ocean (compute/ocean/gpu) drawn over an analytic sky whose light comes from
 // the optics model, water colour from the optics LUTs, tone mapping (seed 000's eq. 18) and gamma.
-// The frame is a sequence of passes (engine/render/passes/, one file each), wired in record_frame():
+// The frame is a sequence of passes (engine/render/passes/, one file each), declared once in
+// render/frame_steps.cpp:
 // ocean step and wakes, caustics, refraction, reflection, surface, sky; with the camera under the water,
 // ocean step, caustics, refraction, underwater; with the lens cutting the surface, both, joined by the
 // waterline pass. docs/architecture.md shows the frame and how to add a pass; docs/rendering.md the shading.
@@ -33,6 +34,7 @@ namespace lagoon::render {
 
 // The passes (render/passes/, one file each) stay behind the renderer: a host needs none of their headers.
 class CausticsPass;
+class FloatTargets;
 class ObjectsPass;
 class OceanStepPass;
 class ParticlesPass;
@@ -152,9 +154,23 @@ class OceanRenderer {
   // Fills the slot's uniforms, lights and surface indices, and starts the slot's timer.
   FrameContext begin_frame(VkCommandBuffer cmd, const scene::Scene& scene, VkExtent2D extent, uint32_t slot,
                            const CausticsWindow& caustics);
-  // Every pass after the ocean step, into `color` and `depth`.
-  void record_frame(const FrameContext& frame, const CausticsWindow& caustics, vk::Target color,
-                    vk::Target depth);
+  // The frames the renderer records, each through the one table of render/frame_steps.cpp: its passes, the
+  // frames and camera sides each joins, and the images each reads and writes.
+  enum class FrameKind : uint8_t {
+    Picture = 1,          // record(), render()
+    SurfaceAov = 2,       // render_surface_aov
+    UnderwaterTerms = 4,  // render_underwater_terms
+    Advance = 8,          // advance(): the state a frame carries on, nothing drawn
+  };
+  struct FrameRequest {
+    FrameKind kind = FrameKind::Picture;
+    CausticsWindow caustics{};
+    vk::Target color{}, depth{};           // Picture: the frame's own targets
+    const FloatTargets* floats = nullptr;  // SurfaceAov (2 colours), UnderwaterTerms (3)
+    bool objects = false;                  // SurfaceAov: the meshes' ground truth over the surface's
+  };
+  void record_frame(const FrameContext& frame, const FrameRequest& request);
+  friend struct FrameSteps;
   // The passes' own targets, kept across frames of the same size (allocating ~30 MB of images every frame
   // cost lavapipe several ms).
   void resize(VkExtent2D extent);
@@ -164,7 +180,6 @@ class OceanRenderer {
   // recorded, the bodies to its time and the wakes' window to its camera; then the ocean's and the wakes'
   // steps to its time.
   void move_world(const scene::Scene& scene);
-  void record_time_steps(const FrameContext& frame);
   // The sediment clouds at time_s into the slot's buffer (none without stirrers).
   void write_sediment(double time_s, FrameSlot& slot) const;
   // The renderer's own colour and depth (and readback) for record(extent) and render().

@@ -47,7 +47,7 @@ inline constexpr Access kAllCommands{VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
 }  // namespace access
 
 // How a pass uses an image. use() derives layouts and accesses from it, so the frame states each hand-over
-// between passes in one line (engine/render/ocean_renderer.cpp, record_frame).
+// between passes in one line (engine/render/frame_steps.cpp, each step of the frame).
 enum class ImageUse {
   Discard,     // contents not needed (UNDEFINED): before a target's first pass in a frame
   Attachment,  // COLOR_ or DEPTH_ATTACHMENT_OPTIMAL (by the image's aspect): drawn into, depth-tested
