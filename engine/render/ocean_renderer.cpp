@@ -57,12 +57,11 @@ OceanRenderer::~OceanRenderer() = default;
 Result<std::unique_ptr<OceanRenderer>> OceanRenderer::create(vk::Context& ctx, const scene::Scene& scene,
                                                              world::VehicleTracks tracks) {
   std::unique_ptr<OceanRenderer> renderer(new OceanRenderer(ctx));
-  renderer->tracks_ = world::tracks_or_fresh(scene, std::move(tracks));
-  if (auto r = renderer->init(scene); !r) return r.error();
+  if (auto r = renderer->init(scene, std::move(tracks)); !r) return r.error();
   return renderer;
 }
 
-Result<void> OceanRenderer::init(const scene::Scene& scene) {
+Result<void> OceanRenderer::init(const scene::Scene& scene, world::VehicleTracks tracks) {
   StageTimer t_ocean("ocean spectra and pipelines");
   auto ocean_step = OceanStepPass::create(ctx_, scene.ocean);
   if (!ocean_step) return make_error("ocean: " + ocean_step.error().message);
@@ -80,18 +79,17 @@ Result<void> OceanRenderer::init(const scene::Scene& scene) {
   objects_ = std::move(*objects);
   t_objects.end();
   StageTimer t_world("bodies, wakes, sediment");
-  auto floating = world::FloatingObjects::create(scene, ocean().params(), ocean().spectra(), tracks_);
-  if (!floating) return floating.error();
-  floating_ = std::move(*floating);
-  auto wakes = WakesPass::create(ctx_, scene, tracks_);
+  auto world = world::World::create(
+      scene, ocean().params(), ocean().spectra(),
+      {.tracks = std::move(tracks), .camera_reach_m = double(shading_.bound.vertical_m)});
+  if (!world) return world.error();
+  world_ = std::move(*world);
+  auto wakes = WakesPass::create(ctx_, scene, world_->tracks());
   if (!wakes) return wakes.error();
   wakes_ = std::move(*wakes);
-  auto sediment = world::VehicleSediment::create(scene, tracks_);
-  if (!sediment) return sediment.error();
-  sediment_ = std::move(*sediment);
   t_world.end();
   StageTimer t_passes("passes");
-  fields_.emplace(SurfaceFields{ocean(), *wakes_, !sediment_.empty()});
+  fields_.emplace(SurfaceFields{ocean(), *wakes_, !world_->sediment().empty()});
   refraction_ = std::make_unique<RefractionPass>(ctx_, *objects_, kHdrFormat, kDepthFormat);
   reflection_ = std::make_unique<ObjectsPass>(ctx_, *objects_, gpu::MeshMode::Mirrored, "reflection",
                                               kHdrFormat, kDepthFormat);
@@ -99,15 +97,14 @@ Result<void> OceanRenderer::init(const scene::Scene& scene) {
       std::make_unique<SurfacePass>(ctx_, *fields_, *objects_, luts_, samplers_, kColorFormat, kDepthFormat);
   sky_ = std::make_unique<SkyPass>(ctx_, kColorFormat, kDepthFormat);
   caustics_ = std::make_unique<CausticsPass>(ctx_, *fields_, samplers_);
-  particles_ = std::make_unique<ParticlesPass>(ctx_, luts_, samplers_, kColorFormat, kDepthFormat,
-                                               !sediment_.empty() && scene.sediment.grains_per_g > 0);
+  particles_ =
+      std::make_unique<ParticlesPass>(ctx_, luts_, samplers_, kColorFormat, kDepthFormat,
+                                      !world_->sediment().empty() && scene.sediment.grains_per_g > 0);
   waterline_ = std::make_unique<WaterlinePass>(ctx_, *fields_, samplers_, kColorFormat, kDepthFormat);
   window_ = std::make_unique<ObjectsPass>(ctx_, *objects_, gpu::MeshMode::Window, "snell window", kHdrFormat,
                                           kDepthFormat);
   underwater_ =
       std::make_unique<UnderwaterPass>(ctx_, *fields_, luts_, samplers_, kColorFormat, kDepthFormat);
-  camera_medium_ = std::make_unique<world::CameraMedium>(ocean().params(), ocean().spectra(),
-                                                         double(shading_.bound.vertical_m));
   return {};
 }
 
@@ -118,8 +115,9 @@ void OceanRenderer::prepare(const scene::Scene& scene) {
   // waits for the device. The frames of a live loop take a step or two, inline (begin_frame).
   constexpr long long kJumpSteps = 120;  // a second of physics
   std::future<void> bodies;
-  if (!floating_->empty() && floating_->steps_to(scene.time_s) >= kJumpSteps)
-    bodies = std::async(std::launch::async, [this, time_s = scene.time_s] { floating_->advance(time_s); });
+  if (!world_->bodies().empty() && world_->bodies().steps_to(scene.time_s) >= kJumpSteps)
+    bodies =
+        std::async(std::launch::async, [this, time_s = scene.time_s] { world_->bodies().advance(time_s); });
   // Each part timed on its own too: a late or first frame's wait is mostly one of them.
   StageTimer t_foam("warm-up: foam");
   ocean_step_->prepare(ctx_, scene.time_s, history_ == History::Sequence);
@@ -153,7 +151,7 @@ world::CameraSide OceanRenderer::camera_side(const scene::Scene& scene, VkExtent
   const float aspect = float(extent.width) / float(extent.height);
   const double lens_m = scene.camera.near_m * std::tan(0.5 * glm::radians(double(scene.camera.fov_deg))) *
                         std::sqrt(1.0 + double(aspect) * aspect);
-  return camera_medium_->side(scene.camera.position, lens_m, scene.time_s);
+  return world_->camera_medium().side(scene.camera.position, lens_m, scene.time_s);
 }
 
 FrameContext OceanRenderer::begin_frame(VkCommandBuffer cmd, const scene::Scene& scene, VkExtent2D extent,
@@ -210,19 +208,19 @@ FrameContext OceanRenderer::begin_frame(VkCommandBuffer cmd, const scene::Scene&
 }
 
 void OceanRenderer::place_floating_objects(double time_s) {
-  if (floating_->empty()) return;
-  floating_->advance(time_s);
-  for (const world::FloatingObjects::Pose& pose : floating_->poses())
+  if (world_->bodies().empty()) return;
+  world_->bodies().advance(time_s);
+  for (const world::FloatingObjects::Pose& pose : world_->bodies().poses())
     objects_->place(pose.object, pose.model_to_world);
 }
 
 void OceanRenderer::write_sediment(double time_s, FrameSlot& slot) const {
   auto* header = reinterpret_cast<gpu::SedimentHeader*>(slot.sediment.mapped());
   auto* puffs = reinterpret_cast<gpu::SedimentPuffGpu*>(header + 1);
-  if (sediment_.empty())
+  if (world_->sediment().empty())
     *header = {};
   else
-    sediment_.write(time_s, header, puffs);
+    world_->sediment().write(time_s, header, puffs);
   slot.sediment.flush();
 }
 

@@ -26,9 +26,7 @@
 #include "vk/context.h"
 #include "vk/gpu_timer.h"
 #include "vk/image.h"
-#include "world/camera_medium.h"
-#include "world/floating_objects.h"
-#include "world/vehicle_sediment.h"
+#include "world/world.h"
 
 namespace lagoon::render {
 
@@ -133,24 +131,26 @@ class OceanRenderer {
   // The floating objects' and surface vehicles' physics a frame at time_s would take from where they are,
   // in hull-seconds (the first frame and a step back replay from scene.bodies_start_s): for hosts that
   // choose each frame's time (Python) to hold it to scene::kMaxBodyHullSecondsPerFrame.
-  double body_hull_seconds_to(double time_s) const { return floating_->hull_seconds_to(time_s); }
+  double body_hull_seconds_to(double time_s) const { return world_->bodies().hull_seconds_to(time_s); }
   // The ocean the frames are drawn from (e.g. for a field check after render()).
   const ocean::GpuOcean& ocean() const;
   // The vehicles' tracks, shared by their bodies, wakes and sediment: an order given to one (the demo's helm)
   // moves all three from its time on.
-  const world::VehicleTracks& tracks() const { return tracks_; }
+  const world::VehicleTracks& tracks() const { return world_->tracks(); }
+  // What moves in the scene and where the camera is (world/world.h): the renderer reads it every frame.
+  const world::World& world() const { return *world_; }
   // The wakes (e.g. for a check of their layer after render()).
   const WakesPass& wakes() const { return *wakes_; }
   // The caustics of the last frame (e.g. for a check of their energy after render()).
   const CausticsPass& caustics() const { return *caustics_; }
   // Where the camera is judged to be (above, below, cutting the surface); tests and tools may force a side.
-  world::CameraMedium& camera_medium() { return *camera_medium_; }
+  world::CameraMedium& camera_medium() { return world_->camera_medium(); }
   // The side a frame of `scene` at `extent` is drawn for (its near plane's reach allowed for).
   world::CameraSide camera_side(const scene::Scene& scene, VkExtent2D extent);
 
  private:
   explicit OceanRenderer(vk::Context& ctx);
-  Result<void> init(const scene::Scene& scene);
+  Result<void> init(const scene::Scene& scene, world::VehicleTracks tracks);
   // Fills the slot's uniforms, lights and surface indices, and starts the slot's timer.
   FrameContext begin_frame(VkCommandBuffer cmd, const scene::Scene& scene, VkExtent2D extent, uint32_t slot,
                            const CausticsWindow& caustics);
@@ -204,10 +204,7 @@ class OceanRenderer {
   std::unique_ptr<CausticsPass> caustics_;
   std::unique_ptr<WaterlinePass> waterline_;
   std::unique_ptr<ParticlesPass> particles_;
-  std::unique_ptr<world::CameraMedium> camera_medium_;
-  world::VehicleTracks tracks_;
-  std::unique_ptr<world::FloatingObjects> floating_;
-  world::VehicleSediment sediment_;
+  std::unique_ptr<world::World> world_;
   History history_ = History::Continuous;
   VkExtent2D extent_{};  // of the passes' targets
   std::unique_ptr<OwnTargets> own_;

@@ -7,8 +7,8 @@
 #include "ocean/initial_spectrum.h"
 #include "scene/scene.h"
 #include "scene/scene_io.h"
-#include "world/floating_objects.h"
 #include "world/moving_pose.h"
+#include "world/world.h"
 
 int main(int argc, char** argv) {
   if (argc != 2) {
@@ -20,8 +20,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "embed_world: %s\n", scene.error().message.c_str());
     return 1;
   }
-  auto world = lagoon::world::FloatingObjects::create(*scene, scene->ocean,
-                                                      lagoon::ocean::make_cascade_spectra(scene->ocean));
+  auto world =
+      lagoon::world::World::create(*scene, scene->ocean, lagoon::ocean::make_cascade_spectra(scene->ocean));
   if (!world) {
     std::fprintf(stderr, "embed_world: %s\n", world.error().message.c_str());
     return 1;
@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
   const double time_s = 2.0;
   (*world)->advance(time_s);
   for (const lagoon::world::MovingTarget& target : lagoon::world::moving_targets(*scene))
-    std::printf("%s\n", lagoon::world::moving_pose(*scene, **world, target, time_s).dump().c_str());
+    std::printf("%s\n",
+                lagoon::world::moving_pose(*scene, (*world)->bodies(), target, time_s).dump().c_str());
   return 0;
 }
