@@ -3,6 +3,9 @@
 // the images it reads and writes, stated where it records. The picture (record()), the ground-truth frames
 // (render_surface_aov, render_underwater_terms) and advance() all record through kFrame below, so a pass
 // added here reaches every frame that joins it, and a ground-truth frame cannot fall behind the picture.
+#include <cstdint>
+#include <initializer_list>
+
 #include "render/float_targets.h"
 #include "render/ocean_renderer.h"
 #include "render/passes/caustics_pass.h"
