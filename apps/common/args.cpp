@@ -1,10 +1,11 @@
 #include "args.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
+
+#include "core/whole_number.h"
 
 namespace lagoon::cli {
 
@@ -91,10 +92,7 @@ std::string usage(const CommandSpec& spec) {
 }
 
 std::optional<long long> parse_integer(const std::string& text) {
-  long long v = 0;
-  auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-  if (text.empty() || ec != std::errc() || end != text.data() + text.size()) return std::nullopt;
-  return v;
+  return parse_whole_number(text);
 }
 
 Result<long long> integer_option(const ParsedArgs& args, const std::string& name, long long fallback,

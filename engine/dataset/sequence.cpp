@@ -1,25 +1,15 @@
 #include "dataset/sequence.h"
 
-#include <charconv>
 #include <cstdio>
-#include <optional>
+
+#include "core/whole_number.h"
 
 namespace lagoon::dataset {
-namespace {
-
-std::optional<long long> whole_number(const std::string& text) {
-  long long v = 0;
-  auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-  if (text.empty() || ec != std::errc() || end != text.data() + text.size()) return std::nullopt;
-  return v;
-}
-
-}  // namespace
 
 Result<Shard> parse_shard(const std::string& text) {
   const size_t slash = text.find('/');
-  const auto index = slash == std::string::npos ? std::nullopt : whole_number(text.substr(0, slash));
-  const auto count = slash == std::string::npos ? std::nullopt : whole_number(text.substr(slash + 1));
+  const auto index = slash == std::string::npos ? std::nullopt : parse_whole_number(text.substr(0, slash));
+  const auto count = slash == std::string::npos ? std::nullopt : parse_whole_number(text.substr(slash + 1));
   if (!index || !count)
     return Error{"--shard " + text +
                  " must be I/N: this task's index I from 0 and the number of shards N, "
