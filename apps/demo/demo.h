@@ -53,6 +53,7 @@ class Demo {
   // One frame (demo_frame.cpp).
   bool frame();
   float tick();
+  void observe_frame_time(float dt);
   void update_ui(float dt);
   scene::Scene advance_time(float dt);
   std::optional<uint32_t> acquire_image(uint32_t slot);

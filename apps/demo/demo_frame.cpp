@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
 
 #include "core/free_heap.h"
@@ -24,7 +25,7 @@ bool Demo::frame() {
   if (swapchain_dirty_ || fb.width != swapchain_->extent().width || fb.height != swapchain_->extent().height)
     recreate_swapchain();
   const float dt = tick();
-  if (!last_frame_full_size_) resolution_.observe(double(dt) * 1000.0);
+  if (!last_frame_full_size_) observe_frame_time(dt);
   update_ui(dt);
   const scene::Scene frame_scene = advance_time(dt);
 
@@ -54,6 +55,18 @@ bool Demo::frame() {
   // pipelines over the next frames and frees what the compiler used.
   if (frame_ % 64 == 0) release_free_heap();
   return !(last_scripted && options_.exit_after_frames);
+}
+
+// Feeds the dynamic resolution a live frame's time and says when the size it draws at moves (a line a user
+// can match against the timing tab; the live test waits for it instead of guessing how long to run).
+void Demo::observe_frame_time(float dt) {
+  const double before = resolution_.scale();
+  resolution_.observe(double(dt) * 1000.0);
+  if (resolution_.scale() == before) return;
+  const VkExtent2D drawn = resolution_.render_extent(swapchain_->extent());
+  std::printf("lagoon-demo: live frames now drawn at %.0f %% of the window (%ux%u) for %g frames a second\n",
+              100.0 * resolution_.scale(), drawn.width, drawn.height, resolution_.target_fps());
+  std::fflush(stdout);
 }
 
 // Seconds since the previous frame; the last 240 frames' times feed the timing tab and the summary.

@@ -1,8 +1,9 @@
 // Dynamic resolution for the demo (issue 34): live frames are drawn at the fraction of the window's size that
 // holds a target frame rate and stretched to the window. The fraction moves in eighths, down to a quarter,
 // with a step of hysteresis and a few frames to settle between moves, so the renderer does not re-size its
-// targets every frame. A frame's cost is taken as proportional to its pixels; where a device's fixed costs
-// (the ocean step, the bodies) keep the target out of reach, the fraction goes to its floor.
+// targets every frame; frames far slower than the target move it at once. A frame's cost is taken as
+// proportional to its pixels; where a device's fixed costs (the ocean step, the bodies) keep the target out
+// of reach, the fraction goes to its floor.
 #pragma once
 #include <vulkan/vulkan.h>
 
@@ -12,6 +13,8 @@ class ResolutionScale {
  public:
   static constexpr double kStep = 0.125, kLowest = 0.25;
   static constexpr int kSettleFrames = 6;
+  // Frames slower than this many times the target move the size down at once, without settling.
+  static constexpr double kFarOver = 2.0;
 
   // target_fps 0: always the window's size.
   explicit ResolutionScale(double target_fps = 15.0) { set_target_fps(target_fps); }

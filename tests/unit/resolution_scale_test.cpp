@@ -50,5 +50,24 @@ TEST(ResolutionScale, TheFirstFrameAtASizeIsNotItsCost) {
   EXPECT_DOUBLE_EQ(r.scale(), 1.0);
 }
 
+TEST(ResolutionScale, FramesFarOverTheTargetMoveAtOnce) {
+  // lavapipe under load: 2 s frames for a 240 fps target. Waiting kSettleFrames of them would leave a user
+  // (and the demo's live test, which sees 4 frames in 6 s) at full size for 12 s.
+  ResolutionScale r(240.0);
+  r.observe(2500.0);  // the first frame at a size is not its cost
+  EXPECT_DOUBLE_EQ(r.scale(), 1.0);
+  r.observe(2000.0);
+  EXPECT_DOUBLE_EQ(r.scale(), ResolutionScale::kLowest);
+  // Near the target it still settles: 1.5x the target's time waits kSettleFrames before moving.
+  ResolutionScale near(15.0);
+  near.observe(100.0);
+  for (int i = 0; i < ResolutionScale::kSettleFrames - 2; ++i) {
+    near.observe(100.0);
+    EXPECT_DOUBLE_EQ(near.scale(), 1.0) << "frame " << i;
+  }
+  near.observe(100.0);
+  EXPECT_LT(near.scale(), 1.0);
+}
+
 }  // namespace
 }  // namespace lagoon::demo
