@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include "demo.h"
 #include "exit_codes.h"
@@ -74,13 +76,18 @@ void Demo::create_acquire_semaphores() {
 }
 
 void Demo::print_summary() const {
-  if (frame_ms_.size() <= 2) return;
-  // Skips the first frames (pipeline compilation, warm-up), as `lagoon bench` does.
-  std::vector<float> times(frame_ms_.begin() + 2, frame_ms_.end());
-  std::sort(times.begin(), times.end());
-  std::printf("lagoon-demo: %lld frames at %ux%u on %s; median frame time %.1f ms\n", frame_,
-              swapchain_->extent().width, swapchain_->extent().height, ctx_->device_info().name.c_str(),
-              times[times.size() / 2]);
+  // The median skips the first frames (pipeline compilation, warm-up), as `lagoon bench` does; a run closed
+  // before there were more (a loaded machine, an early SIGTERM) still says what it drew.
+  std::string median;
+  if (frame_ms_.size() > 2) {
+    std::vector<float> times(frame_ms_.begin() + 2, frame_ms_.end());
+    std::sort(times.begin(), times.end());
+    char text[64];
+    std::snprintf(text, sizeof text, "; median frame time %.1f ms", times[times.size() / 2]);
+    median = text;
+  }
+  std::printf("lagoon-demo: %lld frames at %ux%u on %s%s\n", frame_, swapchain_->extent().width,
+              swapchain_->extent().height, ctx_->device_info().name.c_str(), median.c_str());
   if (!options_.frames && resolution_.target_fps() > 0) {
     const VkExtent2D drawn = resolution_.render_extent(swapchain_->extent());
     std::printf("lagoon-demo: live frames drawn at %.0f %% of the window (%ux%u) for %g frames a second\n",
