@@ -1,7 +1,7 @@
 #include "render/gpu_mesh.h"
 
+#include "render/texture_mips.h"
 #include "vk/barriers.h"
-#include "vk/mipmaps.h"
 #include "vk/transfer.h"
 
 namespace lagoon::render {
@@ -28,12 +28,11 @@ vk::Image upload_texture(vk::Context& ctx, const io::Image8& image, const char* 
                               .usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
                                        VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                               .debug_name = name});
-  vk::upload_image(ctx, texture, std::as_bytes(std::span(image.rgba)), VK_IMAGE_LAYOUT_GENERAL,
-                   vk::access::kTransferRead);
-  ctx.submit_and_wait([&](VkCommandBuffer cmd) {
-    vk::generate_mipmaps(cmd, texture, VK_IMAGE_LAYOUT_GENERAL, vk::access::kTransferWrite,
-                         vk::access::kGraphicsSampled);
-  });
+  // The mips made on the CPU, not by blits: lavapipe compiles its blitter at a process's first blit
+  // (render/texture_mips.h).
+  const std::vector<uint8_t> chain = rgba8_mip_chain(image, srgb);
+  vk::upload_image_mips(ctx, texture, std::as_bytes(std::span(chain)), VK_IMAGE_LAYOUT_GENERAL,
+                        vk::access::kGraphicsSampled);
   return texture;
 }
 

@@ -60,10 +60,20 @@ std::vector<std::byte> readback_buffer(Context& ctx, const Buffer& src) {
   return out;
 }
 
-void upload_image(Context& ctx, const Image& image, std::span<const std::byte> texels,
-                  VkImageLayout final_layout, Access final_access) {
-  if (texels.size() != mip_bytes(image, 0))
-    throw_usage_error("upload_image: texel data does not match the image size");
+namespace {
+
+// Levels 0 .. levels - 1 from `texels` (packed level after level) into the image.
+void upload_levels(Context& ctx, const Image& image, std::span<const std::byte> texels, uint32_t levels,
+                   VkImageLayout final_layout, Access final_access) {
+  std::vector<VkBufferImageCopy> regions;
+  VkDeviceSize offset = 0;
+  for (uint32_t m = 0; m < levels; ++m) {
+    VkBufferImageCopy region = mip_copy(image, m);
+    region.bufferOffset = offset;
+    regions.push_back(region);
+    offset += mip_bytes(image, m);
+  }
+  if (texels.size() != offset) throw_usage_error("upload_image: texel data does not match the image size");
   Buffer staging =
       Buffer::create(ctx, texels.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUsage::Upload, "staging");
   std::memcpy(staging.mapped(), texels.data(), texels.size());
@@ -71,12 +81,23 @@ void upload_image(Context& ctx, const Image& image, std::span<const std::byte> t
     const VkImageSubresourceRange range = image.all_subresources();
     image_barrier(cmd, image.handle(), range, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                   access::kNone, access::kTransferWrite);
-    const VkBufferImageCopy region = mip_copy(image, 0);
-    vkCmdCopyBufferToImage(cmd, staging.handle(), image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
-                           &region);
+    vkCmdCopyBufferToImage(cmd, staging.handle(), image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                           uint32_t(regions.size()), regions.data());
     image_barrier(cmd, image.handle(), range, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, final_layout,
                   access::kTransferWrite, final_access);
   });
+}
+
+}  // namespace
+
+void upload_image(Context& ctx, const Image& image, std::span<const std::byte> texels,
+                  VkImageLayout final_layout, Access final_access) {
+  upload_levels(ctx, image, texels, 1, final_layout, final_access);
+}
+
+void upload_image_mips(Context& ctx, const Image& image, std::span<const std::byte> chain,
+                       VkImageLayout final_layout, Access final_access) {
+  upload_levels(ctx, image, chain, image.mip_levels(), final_layout, final_access);
 }
 
 VkDeviceSize readback_bytes(const Image& image, uint32_t mip) {

@@ -20,6 +20,10 @@ std::vector<std::byte> readback_buffer(Context& ctx, const Buffer& src);
 // the image is left in `final_layout`, visible to `final_access`.
 void upload_image(Context& ctx, const Image& image, std::span<const std::byte> texels,
                   VkImageLayout final_layout, Access final_access);
+// As upload_image, with every mip level given: `chain` holds level 0, 1, ... image.mip_levels() - 1 of every
+// layer, each tightly packed (a texture whose mips were made on the CPU, render/texture_mips.h).
+void upload_image_mips(Context& ctx, const Image& image, std::span<const std::byte> chain,
+                       VkImageLayout final_layout, Access final_access);
 // Records a copy of one mip level of every layer (tightly packed) into `staging` (a Readback buffer of at
 // least readback_bytes(image, mip)), made visible to the host once `cmd` has completed. The image must be in
 // `layout` after `last_writer`; it is returned to `layout`. Lets a frame read its result in its own submit.
