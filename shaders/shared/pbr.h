@@ -3,7 +3,7 @@
 // colour from the base colour. For the environment, the split-sum of Karis (2013) with the directional
 // albedo integrated for this very lobe (render/dfg_table.h), and the multiple-scattering energy
 // compensation of Fdez-Agüera (2019), so a white surface under a uniform white environment returns its
-// light at every roughness (the white furnace, tests/unit/pbr_brdf_test.cpp). One formula for the mesh
+// light at every roughness (the white furnace, tests/unit/render/pbr_brdf_test.cpp). One formula for the mesh
 // shader and the C++.
 #ifndef LAGOON_SHARED_PBR_H
 #define LAGOON_SHARED_PBR_H
@@ -69,7 +69,7 @@ LAGOON_FN PbrSpecularEnergy pbr_specular_energy(vec2 ab, vec3 f0) {
 // Lambert gets what the specular leaves at this view, and the light the single-scattering lobe loses comes
 // back spread like diffuse light (Fdez-Agüera 2019), so a white surface returns all its light at any
 // roughness. (glTF's sample implementation weights the diffuse by 1 − F(v·h) instead, which returns up to
-// 1.33 of the light at grazing views: tests/unit/pbr_brdf_test.cpp.)
+// 1.33 of the light at grazing views: tests/unit/render/pbr_brdf_test.cpp.)
 LAGOON_FN vec3 pbr_brdf_cos(vec3 n, vec3 v, vec3 l, vec3 base, float metallic, float roughness, vec2 ab) {
   float n_dot_l = dot(n, l);
   float n_dot_v = dot(n, v);

@@ -1,5 +1,5 @@
 // lagoon compare-images end to end: the figures for hand-checkable pairs, which bound fails, the exit codes
-// and the --diff picture. The comparison itself is unit-tested in tests/unit/image_compare_test.cpp.
+// and the --diff picture. The comparison itself is unit-tested in tests/unit/support/image_compare_test.cpp.
 #include <gtest/gtest.h>
 
 #include <cmath>

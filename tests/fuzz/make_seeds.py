@@ -123,7 +123,7 @@ def glb(doc, bin_data):
 
 
 class Model:
-    """A glTF document and its one buffer, as the unit tests' Builder (tests/unit/gltf_test.cpp) makes them."""
+    """A glTF document and its one buffer, as the unit tests' Builder (tests/unit/gltf/gltf_test.cpp) makes them."""
 
     def __init__(self):
         self.doc, self.bin = {"asset": {"version": "2.0"}}, b""

@@ -1,7 +1,7 @@
 // The suspended particles' size on screen (underwater.particles.size_mm): in a frame under clear water, the
 // pixels the particles change are the discs a pinhole camera sees of spheres of that diameter, D f / z
 // pixels across, at the particles' places (the candidates as the particles' pass places them;
-// tests/gpu/particles_test.cpp checks those against the scene).
+// tests/gpu/render/particles_test.cpp checks those against the scene).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -22,8 +22,8 @@ gpu::ParticlesPush particles_push(const scene::Scene& scene) {
   const scene::Particles& p = scene.underwater.particles;
   // Half a particle per cell on average: a cell keeps its candidate with probability 2 × share × the noise's
   // density (mean 1/2), which must stay below 1 everywhere or the densest clouds clip and the mean falls
-  // short (one particle per cell drew 89 % of the density asked; tests/gpu/particles_test.cpp). Above about
-  // 600 per m³ the finest cells (the nearest reach) still clip.
+  // short (one particle per cell drew 89 % of the density asked; tests/gpu/render/particles_test.cpp). Above
+  // about 600 per m³ the finest cells (the nearest reach) still clip.
   const float by_density = p.density_per_m3 > 0 ? std::cbrt(0.5f / p.density_per_m3) : 1e3f;
   const float cell = std::clamp(by_density, 2.0f * kMinReachM / LAGOON_PARTICLES_SIDE,
                                 2.0f * kMaxReachM / LAGOON_PARTICLES_SIDE);
