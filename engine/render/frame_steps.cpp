@@ -54,8 +54,12 @@ struct FrameSteps {
   using Request = OceanRenderer::FrameRequest;
 
   // Writes: the ocean's cascades and the wakes' layer, to the frame's time (state every later frame carries).
-  static void time_steps(OceanRenderer& r, const FrameContext& f, const Request&) {
-    r.ocean_step_->record(f);
+  // A ground-truth frame at the picture's time finds the cascades there already: a step by dt = 0 would make
+  // the same textures again (the foam: max(foam, new), nothing decayed), an ocean step per ground-truth
+  // frame.
+  static void time_steps(OceanRenderer& r, const FrameContext& f, const Request& q) {
+    const bool ground_truth = q.kind == Kind::SurfaceAov || q.kind == Kind::UnderwaterTerms;
+    if (!(ground_truth && r.ocean_step_->holds(f.scene.time_s))) r.ocean_step_->record(f);
     r.wakes_->record(f);
   }
   // Writes: the caustic map, ready for the fragment shaders.

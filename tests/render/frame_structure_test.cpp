@@ -48,6 +48,31 @@ TEST_F(FrameStructure, RecordNeverSubmitsAndPrepareWarmsUpOutsideIt) {
   EXPECT_FALSE((*renderer)->timings(1).empty());
 }
 
+// A dataset frame's ground truth is drawn at the picture's time: the cascades are there already, so its
+// frames record no ocean step (a step by dt = 0 made the same textures again, an ocean step each time); a
+// ground-truth frame at another time still steps.
+TEST_F(FrameStructure, GroundTruthAtThePicturesTimeDoesNotStepTheOceanAgain) {
+  const scene::Scene s = load();
+  auto renderer = render::OceanRenderer::create(ctx(), s);
+  ASSERT_TRUE(renderer) << renderer.error().message;
+  const auto ocean_steps = [&] {
+    int steps = 0;
+    for (const vk::PassTime& t : (*renderer)->timings(0)) steps += t.name.rfind("ocean", 0) == 0;
+    return steps;
+  };
+  std::vector<vk::PassTime> picture;
+  (void)(*renderer)->render(s, &picture);
+  int picture_steps = 0;
+  for (const vk::PassTime& t : picture) picture_steps += t.name.rfind("ocean", 0) == 0;
+  EXPECT_GT(picture_steps, 0) << "the picture's own frame steps the ocean";
+  (void)(*renderer)->render_surface_aov(s, true);
+  EXPECT_EQ(ocean_steps(), 0);
+  scene::Scene later = s;
+  later.time_s += 0.5f;
+  (void)(*renderer)->render_surface_aov(later, true);
+  EXPECT_GT(ocean_steps(), 0);
+}
+
 TEST_F(FrameStructure, HostTargetsGetTheSamePicture) {
   const scene::Scene s = load();
   auto renderer = render::OceanRenderer::create(ctx(), s);

@@ -30,6 +30,8 @@ class OceanStepPass {
   void record(const FrameContext& frame);
 
   const ocean::GpuOcean& ocean() const { return *ocean_; }
+  // Whether the last step recorded was to `time_s` (the cascades hold that time).
+  bool holds(double time_s) const { return time_s_ == time_s; }
 
  private:
   explicit OceanStepPass(std::unique_ptr<ocean::GpuOcean> ocean) : ocean_(std::move(ocean)) {}
