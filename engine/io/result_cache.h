@@ -105,6 +105,9 @@ class ResultCache {
   explicit ResultCache(std::filesystem::path dir) : dir_(std::move(dir)) {}
   // The folder from the environment (LAGOON_PIPELINE_CACHE etc.) plus "results".
   static ResultCache from_environment();
+  // False when it caches nothing (LAGOON_PIPELINE_CACHE=off): a result that is costly to read back for
+  // storing need not be.
+  bool enabled() const { return !dir_.empty(); }
 
   std::optional<std::vector<std::byte>> load(const ResultKey& key) const;
   // Best effort: a failure to write is not an error (the result was computed anyway). Keeps at most

@@ -35,15 +35,19 @@ std::string spectra_digest(const ocean::GpuOcean& ocean) {
   return io::sha256_hex(std::as_bytes(std::span(all.data(), all.size())));
 }
 
-io::ResultKey foam_key(const vk::Context& ctx, const ocean::GpuOcean& ocean,
-                       const std::string& spectra_digest, const WarmUp& warm_up) {
+void add_device(io::ResultKey& key, const vk::Context& ctx) {
   const vk::DeviceInfo& device = ctx.device_info();
-  const ocean::OceanParams& p = ocean.params();
-  io::ResultKey key = table_key("foam");
   key.add("device", device.name)
       .add("driver", device.driver_info)
       .add("driver_version", device.driver_version);
   if (device.type == "CPU") key.add("host_cpu", host_cpu_features());
+}
+
+io::ResultKey foam_key(const vk::Context& ctx, const ocean::GpuOcean& ocean,
+                       const std::string& spectra_digest, const WarmUp& warm_up) {
+  const ocean::OceanParams& p = ocean.params();
+  io::ResultKey key = table_key("foam");
+  add_device(key, ctx);
   key.add("variant", double(int(ocean.variant()))).add("model", double(int(p.model)));
   key.add("choppiness", float(p.choppiness)).add("foam_threshold", float(p.foam.threshold));
   key.add("foam_decay", float(p.foam.decay_per_s));

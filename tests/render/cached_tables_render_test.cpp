@@ -8,11 +8,14 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 
+#include "ocean/gpu/dynamic_layer_gpu.h"
 #include "render/ocean_renderer.h"
+#include "render/passes/wakes_pass.h"
 #include "support/edited_scene.h"
 #include "support/image_compare.h"
 #include "support/temp_dir.h"
 #include "support/vk_fixture.h"
+#include "vk/transfer.h"
 
 namespace lagoon::test {
 namespace {
@@ -93,6 +96,51 @@ TEST_F(CachedTablesRender, TablesFromTheCacheDrawTheSamePictureAndOtherWaterGets
   EXPECT_EQ(files_of("water"), 2u);
   EXPECT_EQ(max_channel_difference(other_computed, other_warm), 0);
   EXPECT_GT(max_channel_difference(other_warm, warm), 10) << "other water drew the cached water's colour";
+}
+
+// The wakes' history (render/wakes_cache.h): a second renderer of the same frame restores the layer the first
+// one's steps left instead of stepping from rest, and draws the same bits; another time is another history.
+TEST_F(CachedTablesRender, WakesFromTheCacheAreTheStepsOwnLayerAndPicture) {
+  const std::string cache = (dir_ / "cache").string();
+  nlohmann::json j = shipped_scene_json("harbour");
+  j["render"].update({{"width", 64}, {"height", 36}});
+  j["wakes"].update({{"resolution", 128}, {"cell_size_m", 0.5}, {"history_s", 2}});
+  use_small_cascades(j);
+  const scene::Scene s = write_and_load(j, dir_ / "harbour.json");
+  struct Drawn {
+    io::Image8 image;
+    std::vector<std::byte> layer;
+    long long taken = 0, from_cache = 0;
+  };
+  auto draw = [&](const scene::Scene& scene, const std::string& folder) {
+    const CacheFolder use(folder);
+    auto renderer = render::OceanRenderer::create(ctx(), scene);
+    EXPECT_TRUE(renderer) << renderer.error().message;
+    if (!renderer || !(*renderer)->wakes().active()) return Drawn{};
+    Drawn d{.image = (*renderer)->render(scene)};
+    d.layer = vk::readback_buffer(ctx(), (*renderer)->wakes().layer()->state());
+    const std::vector<std::byte> foam = vk::readback_buffer(ctx(), (*renderer)->wakes().layer()->foam());
+    d.layer.insert(d.layer.end(), foam.begin(), foam.end());
+    d.taken = (*renderer)->wakes().steps_taken();
+    d.from_cache = (*renderer)->wakes().steps_from_cache();
+    return d;
+  };
+  const Drawn computed = draw(s, "off");
+  ASSERT_GT(computed.taken, 10) << "no history was run: nothing was compared";
+  EXPECT_EQ(computed.from_cache, 0);
+  const Drawn cold = draw(s, cache);
+  EXPECT_EQ(cold.from_cache, 0);
+  EXPECT_EQ(files_of("wakes"), 1u);
+  const Drawn warm = draw(s, cache);
+  EXPECT_EQ(warm.from_cache, computed.taken);
+  EXPECT_EQ(warm.taken, computed.taken);
+  EXPECT_TRUE(warm.layer == computed.layer) << "the restored layer is not the steps' own";
+  EXPECT_EQ(max_channel_difference(computed.image, warm.image), 0);
+  scene::Scene later = s;
+  later.time_s += 1.0f;
+  const Drawn other = draw(later, cache);
+  EXPECT_EQ(other.from_cache, 0);
+  EXPECT_EQ(files_of("wakes"), 2u);
 }
 
 }  // namespace

@@ -137,17 +137,17 @@ TEST_F(WakesRender, ASequenceCarriesTheLayerAndAdvancingWithoutDrawingGivesTheSa
   (*advanced)->set_history(render::OceanRenderer::History::Sequence);
   const render::WakesPass& wakes = (*drawn)->wakes();
   ASSERT_TRUE(wakes.active());
-  // (time, steps recorded in all): 3.0 s runs steps 10-29 from rest; 3.2 and 4.5 s step on, although 4.5 s
+  // (time, steps taken in all): 3.0 s runs steps 10-29 from rest; 3.2 and 4.5 s step on, although 4.5 s
   // is 13 steps ahead (more than a live frame's 8, which would start again from rest at step 25).
   const std::vector<std::pair<float, long long>> frames{{3.0f, 20}, {3.2f, 22}, {4.5f, 35}};
   for (size_t i = 0; i < frames.size(); ++i) {
     s.time_s = frames[i].first;
     (*drawn)->render(s);
-    EXPECT_EQ(wakes.steps_recorded(), frames[i].second) << "at " << s.time_s << " s";
+    EXPECT_EQ(wakes.steps_taken(), frames[i].second) << "at " << s.time_s << " s";
     if (i + 1 < frames.size()) (*advanced)->advance(s);
   }
   (*advanced)->render(s);
-  EXPECT_EQ((*advanced)->wakes().steps_recorded(), 35);
+  EXPECT_EQ((*advanced)->wakes().steps_taken(), 35);
   EXPECT_TRUE(layer_bits(**drawn) == layer_bits(**advanced)) << "advancing left another layer than drawing";
   const std::vector<float> foam = (*drawn)->ocean().read_foam();
   EXPECT_GT(*std::max_element(foam.begin(), foam.end()), 0.1f) << "no foam: nothing was compared";
@@ -157,7 +157,7 @@ TEST_F(WakesRender, ASequenceCarriesTheLayerAndAdvancingWithoutDrawingGivesTheSa
   ASSERT_TRUE(fresh);
   (*fresh)->set_history(render::OceanRenderer::History::Sequence);
   (*fresh)->render(s);
-  EXPECT_EQ((*fresh)->wakes().steps_recorded(), 20);
+  EXPECT_EQ((*fresh)->wakes().steps_taken(), 20);
   EXPECT_FALSE(layer_bits(**drawn) == layer_bits(**fresh));
 }
 

@@ -10,6 +10,7 @@
 #include "shared/dynamic_layer.h"
 #include "vk/barriers.h"
 #include "vk/check.h"
+#include "vk/transfer.h"
 
 namespace lagoon::ocean {
 namespace {
@@ -131,6 +132,33 @@ void DynamicLayerGpu::record_step(VkCommandBuffer cmd, double dt, std::span<cons
                push, vk::groups_for(sponge, cells));
   foam_current_ = 1 - foam_current_;
   vk::memory_barrier(cmd, vk::access::kComputeReadWrite, vk::access::kComputeReadWrite);
+}
+
+std::vector<float> DynamicLayerGpu::read_state(vk::Context& ctx) const {
+  const vk::Access writer{VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT};
+  std::vector<float> out;
+  for (const std::vector<std::byte>& bytes :
+       {vk::readback_buffer(ctx, state_), vk::readback_buffer(ctx, foam_[foam_current_]),
+        vk::readback_image(ctx, fields_, VK_IMAGE_LAYOUT_GENERAL, writer)}) {
+    const size_t at = out.size();
+    out.resize(at + bytes.size() / sizeof(float));
+    std::memcpy(out.data() + at, bytes.data(), bytes.size() / sizeof(float) * sizeof(float));
+  }
+  return out;
+}
+
+bool DynamicLayerGpu::write_state(vk::Context& ctx, std::span<const float> state) {
+  const size_t n2 = size_t(params_.n) * params_.n;
+  if (state.size() != n2 * (2 + 1 + 4)) return false;
+  vk::upload_buffer(ctx, state_, std::as_bytes(state.subspan(0, 2 * n2)));
+  vk::upload_buffer(ctx, foam_[foam_current_], std::as_bytes(state.subspan(2 * n2, n2)));
+  // Read by the next step's compute passes and sampled by the frame's.
+  const vk::Access next{VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT |
+                            VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                        VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT |
+                            VK_ACCESS_2_SHADER_SAMPLED_READ_BIT};
+  vk::upload_image(ctx, fields_, std::as_bytes(state.subspan(3 * n2, 4 * n2)), VK_IMAGE_LAYOUT_GENERAL, next);
+  return true;
 }
 
 }  // namespace lagoon::ocean

@@ -6,6 +6,7 @@
 #pragma once
 #include <glm/vec2.hpp>
 #include <span>
+#include <vector>
 
 #include "fft/gpu_fft.h"
 #include "ocean/dynamic_layer.h"
@@ -44,6 +45,13 @@ class DynamicLayerGpu {
   // The foam trails' coverage (float per storage index), as the CPU reference's foam().
   const vk::Buffer& foam() const { return foam_[foam_current_]; }
   const DynamicLayerParams& params() const { return params_; }
+
+  // Everything a run of steps leaves that a later step or a draw reads (h + i dh/dt, the current foam, the
+  // fields), so that a cache can file it (render/wakes_cache.h): write_state() puts back exactly what
+  // read_state() read, and the steps after it are the same bits. Waits for the device. write_state() is
+  // false when `state` is not this layer's size.
+  std::vector<float> read_state(vk::Context& ctx) const;
+  bool write_state(vk::Context& ctx, std::span<const float> state);
 
  private:
   DynamicLayerParams params_;

@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 #include <string>
 
+#include "render/wakes_cache.h"
 #include "vk/barriers.h"
 
 namespace lagoon::render {
@@ -54,7 +55,7 @@ void WakesPass::record_steps(VkCommandBuffer cmd, long long to) {
     layer_->record_step(
         cmd, hulls_.step_s(), now,
         steps_done_ + 1 == to ? ocean::DynamicLayerGpu::Fields::Write : ocean::DynamicLayerGpu::Fields::Keep);
-    ++steps_recorded_;
+    ++steps_taken_;
   }
 }
 
@@ -78,7 +79,25 @@ void WakesPass::prepare(vk::Context& ctx, const scene::Scene& scene, bool sequen
   }
   follow_camera(scene);
   steps_done_ = hulls_.first_step_for(scene.time_s);
-  run_to(ctx, target, true);
+  run_history(ctx, target);
+}
+
+void WakesPass::run_history(vk::Context& ctx, long long to) {
+  const long long first = steps_done_;
+  if (to <= first) return run_to(ctx, to, true);
+  std::vector<std::vector<ocean::WakeSource>> sources;
+  for (long long s = first; s < to; ++s) sources.push_back(hulls_.sources(double(s) * hulls_.step_s()));
+  const io::ResultKey key = wakes_key(
+      ctx, *layer_, {.step_s = hulls_.step_s(), .first_step = first, .last_step = to, .sources = sources});
+  if (std::optional<std::vector<float>> state = load_wakes(key, *layer_);
+      state && layer_->write_state(ctx, *state)) {
+    steps_done_ = to;
+    steps_taken_ += to - first;
+    steps_from_cache_ += to - first;
+    return;
+  }
+  run_to(ctx, to, true);
+  store_wakes(key, ctx, *layer_);
 }
 
 void WakesPass::record(const FrameContext& frame) {

@@ -33,9 +33,10 @@ class WakesPass {
   glm::vec4 window() const;
 
   // When the frame's time jumps (the first frame, backwards, or more than a few steps ahead), runs the layer
-  // from rest wakes.history_s before it (VehicleWakes::first_step_for) in its own submission and waits. With
-  // `sequence` a frame far ahead is no jump: the layer steps on to it in its window as it is. Call before
-  // recording the frame.
+  // from rest wakes.history_s before it (VehicleWakes::first_step_for) in its own submission and waits, or
+  // takes the state an identical run of an earlier process left (render/wakes_cache.h). With `sequence` a
+  // frame far ahead is no jump: the layer steps on to it in its window as it is. Call before recording the
+  // frame.
   void prepare(vk::Context& ctx, const scene::Scene& scene, bool sequence = false);
   // Puts the window where the camera looks (VehicleWakes::window_for; waves in the cells both windows share
   // are kept). Call before the frame's uniforms are written (window()).
@@ -45,21 +46,25 @@ class WakesPass {
 
   // The vehicles' hulls on the water at time t.
   std::vector<ocean::WakeSource> sources(double t) const { return hulls_.sources(t); }
-  // For tests: the layer itself (null when inactive), and the steps recorded since it was made.
+  // For tests: the layer itself (null when inactive), the steps it went through since it was made (recorded,
+  // or restored from the cache), and how many of them were restored.
   const ocean::DynamicLayerGpu* layer() const { return layer_.get(); }
-  long long steps_recorded() const { return steps_recorded_; }
+  long long steps_taken() const { return steps_taken_; }
+  long long steps_from_cache() const { return steps_from_cache_; }
 
  private:
   explicit WakesPass(world::VehicleWakes hulls) : hulls_(std::move(hulls)) {}
   void record_steps(VkCommandBuffer cmd, long long to);
   // Steps to `to` in submissions of at most kStepsInFlight, from rest when `clear`.
   void run_to(vk::Context& ctx, long long to, bool clear);
+  // Steps from rest (steps_done_) to `to`, or restores what an identical earlier run filed.
+  void run_history(vk::Context& ctx, long long to);
 
   world::VehicleWakes hulls_;
   std::unique_ptr<ocean::DynamicLayerGpu> layer_;
   vk::Image idle_;
   long long steps_done_ = -1;  // the layer is at steps_done_ · step_s; < 0 before the first prepare
-  long long steps_recorded_ = 0;
+  long long steps_taken_ = 0, steps_from_cache_ = 0;
 };
 
 }  // namespace lagoon::render
