@@ -102,4 +102,13 @@ glm::dvec3 encode_srgb(glm::dvec3 linear) {
   return out;
 }
 
+glm::dvec3 decode_srgb(glm::dvec3 encoded) {
+  glm::dvec3 out;
+  for (int c = 0; c < 3; ++c) {
+    const double v = encoded[c];
+    out[c] = v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+  }
+  return out;
+}
+
 }  // namespace lagoon::optics

@@ -64,5 +64,7 @@ glm::dvec3 tone_map(glm::dvec3 linear_rgb, const ToneMapParams& params = {});
 
 // The sRGB transfer function (IEC 61966-2-1) per channel, input clamped to [0, 1], for 8-bit previews.
 glm::dvec3 encode_srgb(glm::dvec3 linear);
+// Its inverse, encoded values in [0, 1] to linear light (textures' colours, render/texture_mips.h).
+glm::dvec3 decode_srgb(glm::dvec3 encoded);
 
 }  // namespace lagoon::optics

@@ -5,26 +5,23 @@
 #include <bit>
 #include <cmath>
 
+#include "optics/colour.h"
+
 namespace lagoon::render {
 namespace {
 
-// IEC 61966-2-1's transfer functions, in double: the table is exact to rounding and the encoding is the
-// nearest 8-bit value.
+// The sRGB transfer functions are optics' (IEC 61966-2-1, in double): decoding through a table of the 256
+// values, encoding a texel's colour at once to the nearest 8-bit values.
 const std::array<float, 256>& srgb_to_linear() {
   static const std::array<float, 256> table = [] {
     std::array<float, 256> t{};
-    for (int i = 0; i < 256; ++i) {
-      const double c = i / 255.0;
-      t[size_t(i)] = float(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
-    }
+    for (int i = 0; i < 256; ++i) t[size_t(i)] = float(optics::decode_srgb(glm::dvec3(i / 255.0)).x);
     return t;
   }();
   return table;
 }
 
-uint8_t linear_to_srgb(double l) {
-  l = std::clamp(l, 0.0, 1.0);
-  const double encoded = l <= 0.0031308 ? 12.92 * l : 1.055 * std::pow(l, 1.0 / 2.4) - 0.055;
+uint8_t to_byte(double encoded) {
   return uint8_t(std::lround(std::clamp(encoded, 0.0, 1.0) * 255.0));
 }
 
@@ -80,11 +77,15 @@ std::vector<uint8_t> rgba8_mip_chain(const io::Image8& image, bool srgb) {
     level = halve(level, w, h, nw, nh);
     w = nw, h = nh;
     // Each level is rounded to 8 bits as a blit stores it, and the next is made from the stored values.
-    for (size_t i = 0; i < level.size(); ++i) {
-      const uint8_t byte =
-          colour(i) ? linear_to_srgb(level[i]) : uint8_t(std::lround(std::clamp(level[i], 0.0f, 255.0f)));
-      chain.push_back(byte);
-      level[i] = colour(i) ? srgb_to_linear()[byte] : float(byte);
+    for (size_t t = 0; t < level.size(); t += 4) {
+      const glm::dvec3 encoded =
+          srgb ? optics::encode_srgb(glm::dvec3(level[t], level[t + 1], level[t + 2])) : glm::dvec3(0.0);
+      for (size_t i = t; i < t + 4; ++i) {
+        const uint8_t byte = colour(i) ? to_byte(encoded[int(i - t)])
+                                       : uint8_t(std::lround(std::clamp(level[i], 0.0f, 255.0f)));
+        chain.push_back(byte);
+        level[i] = colour(i) ? srgb_to_linear()[byte] : float(byte);
+      }
     }
   }
   return chain;

@@ -26,8 +26,7 @@ io::ResultKey wakes_key(const vk::Context& ctx, const ocean::DynamicLayerGpu& la
 }
 
 std::optional<std::vector<float>> load_wakes(const io::ResultKey& key, const ocean::DynamicLayerGpu& layer) {
-  const size_t n2 = size_t(layer.params().n) * layer.params().n;
-  return io::ResultCache::from_environment().load_vector<float>(key, n2 * (2 + 1 + 4));
+  return io::ResultCache::from_environment().load_vector<float>(key, layer.state_floats());
 }
 
 void store_wakes(const io::ResultKey& key, vk::Context& ctx, const ocean::DynamicLayerGpu& layer) {

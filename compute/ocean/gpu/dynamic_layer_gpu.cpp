@@ -149,7 +149,7 @@ std::vector<float> DynamicLayerGpu::read_state(vk::Context& ctx) const {
 
 bool DynamicLayerGpu::write_state(vk::Context& ctx, std::span<const float> state) {
   const size_t n2 = size_t(params_.n) * params_.n;
-  if (state.size() != n2 * (2 + 1 + 4)) return false;
+  if (state.size() != state_floats()) return false;
   vk::upload_buffer(ctx, state_, std::as_bytes(state.subspan(0, 2 * n2)));
   vk::upload_buffer(ctx, foam_[foam_current_], std::as_bytes(state.subspan(2 * n2, n2)));
   // Read by the next step's compute passes and sampled by the frame's.

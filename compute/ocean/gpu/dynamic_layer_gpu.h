@@ -51,6 +51,8 @@ class DynamicLayerGpu {
   // read_state() read, and the steps after it are the same bits. Waits for the device. write_state() is
   // false when `state` is not this layer's size.
   std::vector<float> read_state(vk::Context& ctx) const;
+  // Its size: n² values of h + i dh/dt (two floats), of foam and of fields (four).
+  size_t state_floats() const { return size_t(params_.n) * params_.n * (2 + 1 + 4); }
   bool write_state(vk::Context& ctx, std::span<const float> state);
 
  private:
