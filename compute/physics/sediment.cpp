@@ -4,6 +4,8 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
+#include "shared/sediment.h"
+
 namespace lagoon::physics {
 namespace sed_double {
 using sed_real = double;
@@ -13,6 +15,7 @@ using glm::dot;
 using std::abs;
 using std::exp;
 using std::max;
+using std::min;
 using std::sqrt;
 #define LAGOON_FN inline
 #include "shared/sediment_math.h"
@@ -118,6 +121,20 @@ glm::dvec2 sediment_ray(std::span<const SedimentPuff> puffs, double attenuation_
   for (const SedimentPuff& q : puffs)
     sum += sed_double::sed_ray(origin, dir, length_m, q.centre, q.sigma, q.mass_g * attenuation_m2_per_g);
   return sum;
+}
+
+SedimentBox sediment_reach(std::span<const SedimentPuff> puffs) {
+  SedimentBox box;
+  for (const SedimentPuff& q : puffs) {
+    const glm::dvec3 reach(std::sqrt(LAGOON_SEDIMENT_REACH2_SIGMA2) * q.sigma);
+    box.lo = glm::min(box.lo, q.centre - reach);
+    box.hi = glm::max(box.hi, q.centre + reach);
+  }
+  return box;
+}
+
+bool segment_meets(const SedimentBox& box, glm::dvec3 origin, glm::dvec3 dir, double length_m) {
+  return sed_double::sed_segment_meets_box(origin, dir, length_m, box.lo, box.hi);
 }
 
 }  // namespace lagoon::physics

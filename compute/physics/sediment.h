@@ -9,6 +9,7 @@
 #include <functional>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -75,5 +76,15 @@ double sediment_concentration(std::span<const SedimentPuff> puffs, const FloorDe
 // closed form of shaders/shared/sediment_math.h (what the shaders evaluate), for `attenuation_m2_per_g`.
 glm::dvec2 sediment_ray(std::span<const SedimentPuff> puffs, double attenuation_m2_per_g, glm::dvec3 origin,
                         glm::dvec3 dir, double length_m);
+
+// A box holding every puff's reach (centre ± √20 σ, shared/sediment.h): a ray segment that misses it gets
+// (0, 0) from sediment_ray, so the shaders test it before their loop over the clouds. Empty (lo > hi)
+// without puffs.
+struct SedimentBox {
+  glm::dvec3 lo{std::numeric_limits<double>::infinity()}, hi{-std::numeric_limits<double>::infinity()};
+};
+SedimentBox sediment_reach(std::span<const SedimentPuff> puffs);
+// Whether origin + t dir, 0 <= t <= length_m, meets `box` (the shaders' test, shared/sediment_math.h).
+bool segment_meets(const SedimentBox& box, glm::dvec3 origin, glm::dvec3 dir, double length_m);
 
 }  // namespace lagoon::physics

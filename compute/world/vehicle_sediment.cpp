@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <glm/common.hpp>
 #include <string>
+#include <vector>
 
 #include "gltf/gltf_loader.h"
 #include "world/floor_height.h"
@@ -71,7 +73,18 @@ uint32_t VehicleSediment::write(double time_s, gpu::SedimentHeader* header,
                                                float(LAGOON_SEDIMENT_MAX_GRAINS)),
                                       std::bit_cast<float>(p.release), 0)};
   }
+  // The box from the clouds as the shaders read them (floats), a millimetre and a float's rounding wider so
+  // that their float test never culls a cloud the cut inside the loop keeps.
+  std::vector<physics::SedimentPuff> sent(all.begin(), all.begin() + long(kept));
+  for (physics::SedimentPuff& p : sent) {
+    p.centre = glm::dvec3(glm::vec3(p.centre));
+    p.sigma = double(float(p.sigma));
+  }
+  const physics::SedimentBox box = physics::sediment_reach(sent);
+  const glm::dvec3 pad = 1e-3 + 1e-5 * glm::max(glm::abs(box.lo), glm::abs(box.hi));
   header->colour = glm::vec4(colour_, float(kept));
+  header->box_lo = glm::vec4(glm::vec3(kept ? box.lo - pad : glm::dvec3(1e30)), 0.0f);
+  header->box_hi = glm::vec4(glm::vec3(kept ? box.hi + pad : glm::dvec3(-1e30)), 0.0f);
   return uint32_t(kept);
 }
 

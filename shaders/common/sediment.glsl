@@ -26,6 +26,9 @@ layout(std430, binding = LAGOON_SURFACE_BIND_SEDIMENT) readonly buffer Sediment 
 // (render.effects.underwater).
 vec4 sediment_veil_terms(vec3 origin, vec3 dir, float len, bool volume) {
   if (!kSediment) return vec4(0.0, 0.0, 0.0, 1.0);
+  // Every cloud culled at once (the loop below would add only zeros): most pixels' rays pass far from them.
+  if (!sed_segment_meets_box(origin, dir, len, sediment.box_lo.xyz, sediment.box_hi.xyz))
+    return vec4(0.0, 0.0, 0.0, 1.0);
   vec2 sum = vec2(0.0);
   int count = int(sediment.colour.w);
   for (int i = 0; i < count; ++i) {

@@ -9,6 +9,9 @@
 #define LAGOON_MAX_SEDIMENT_PUFFS 64
 // Grains drawn of one cloud at most (render/sediment_grains.vert).
 #define LAGOON_SEDIMENT_MAX_GRAINS 64
+// A cloud adds nothing to a ray that passes further than √20 σ from its centre (below e^-10 of its peak,
+// shared/sediment_math.h): the square of that reach, in σ².
+#define LAGOON_SEDIMENT_REACH2_SIGMA2 20.0
 // The buffer, in the surface shaders' set (shared/surface.h numbering).
 #define LAGOON_SURFACE_BIND_SEDIMENT 18
 // Specialisation constant of the shaders that include common/sediment.glsl: the clouds compiled in (1) or
@@ -26,11 +29,15 @@ struct SedimentPuffGpu {
 
 struct SedimentHeader {
   vec4 colour;  // rgb = the particles' albedo (linear), w = number of puffs that follow
+  // xyz: a box holding every cloud's reach (centre ± √20 σ): a ray segment that misses it passes every cloud
+  // (sed_segment_meets_box), so a pixel far from the clouds skips the loop over them. Empty (lo > hi)
+  // without clouds.
+  vec4 box_lo, box_hi;
 };
 LAGOON_GPU_END
 
 #ifdef __cplusplus
 LAGOON_CHECK_SIZE(SedimentPuffGpu, 32);
-LAGOON_CHECK_SIZE(SedimentHeader, 16);
+LAGOON_CHECK_SIZE(SedimentHeader, 48);
 #endif
 #endif

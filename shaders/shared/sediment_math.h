@@ -1,6 +1,6 @@
 // The optics of a sediment cloud, written once for the GPU (float; shaders/common/sediment.glsl) and the
 // CPU (double; compute/physics/sediment.cpp). No include guard: the includer defines sed_real, sed_real2,
-// sed_real3 and makes exp, sqrt, abs, max, dot visible (GLSL has them).
+// sed_real3, includes shared/sediment.h and makes exp, sqrt, abs, min, max, dot visible (GLSL has them).
 //
 // A cloud is an isotropic Gaussian of mass m (g) and standard deviation σ whose particles attenuate light by
 // c* (m²/g) per gram: its attenuation coefficient at p is m c* N(p; centre, σ) with N the normal density.
@@ -32,18 +32,39 @@ LAGOON_FN sed_real sed_pdf(sed_real x) {
 }
 
 // A cloud's optical depth along the ray and the ray's distance weighted by it (τ, τ t̄); (0, 0) for a ray
-// that passes more than 4.5 σ away (below e^-10 of the peak). `strength` = m c* (m²).
+// segment that passes further than √20 σ ≈ 4.5 σ away (below e^-10 of the peak everywhere on it: what it
+// leaves out is at most e^-10/2 of the cloud's optical depth through its centre). The segment, not its line:
+// a pixel's ray that ends at the floor short of a cloud it points at, or starts past it, sees none of it,
+// and sed_segment_meets_box can then cull every cloud at once. `strength` = m c* (m²).
 LAGOON_FN sed_real2 sed_ray(sed_real3 origin, sed_real3 dir, sed_real len, sed_real3 centre, sed_real sigma,
                             sed_real strength) {
   sed_real3 to = centre - origin;
   sed_real t_star = dot(to, dir);
   sed_real miss2 = max(dot(to, to) - t_star * t_star, sed_real(0));
   sed_real s2 = sigma * sigma;
-  if (miss2 > sed_real(20) * s2) return sed_real2(0);
+  sed_real3 nearest = to - dir * max(sed_real(0), min(t_star, len));  // from the segment's nearest point
+  if (dot(nearest, nearest) > sed_real(LAGOON_SEDIMENT_REACH2_SIGMA2) * s2) return sed_real2(0);
   sed_real a = -t_star / sigma, b = (len - t_star) / sigma;
   sed_real share = max(sed_cdf(b) - sed_cdf(a), sed_real(0));
   sed_real tau = strength / (sed_real(6.283185307179586) * s2) * exp(sed_real(-0.5) * miss2 / s2) * share;
   sed_real moment = tau * t_star + strength / (sed_real(6.283185307179586) * s2) *
                                        exp(sed_real(-0.5) * miss2 / s2) * sigma * (sed_pdf(a) - sed_pdf(b));
   return sed_real2(tau, moment);
+}
+
+// The part [span.x, span.y] of a segment's t that lies between one axis' planes lo and hi (o, d: the
+// origin's and the direction's components on that axis); empty (x > y) when none does.
+LAGOON_FN sed_real2 sed_slab(sed_real o, sed_real d, sed_real lo, sed_real hi, sed_real2 span) {
+  if (abs(d) < sed_real(1e-12)) return (o < lo || o > hi) ? sed_real2(1, 0) : span;  // parallel to them
+  sed_real a = (lo - o) / d, b = (hi - o) / d;
+  return sed_real2(max(span.x, min(a, b)), min(span.y, max(a, b)));
+}
+
+// Whether origin + t dir, 0 <= t <= len, meets the box [lo, hi] (SedimentHeader's clouds' reach).
+LAGOON_FN bool sed_segment_meets_box(sed_real3 origin, sed_real3 dir, sed_real len, sed_real3 lo, sed_real3 hi) {
+  sed_real2 span = sed_real2(0, len);
+  span = sed_slab(origin.x, dir.x, lo.x, hi.x, span);
+  span = sed_slab(origin.y, dir.y, lo.y, hi.y, span);
+  span = sed_slab(origin.z, dir.z, lo.z, hi.z, span);
+  return span.x <= span.y;
 }

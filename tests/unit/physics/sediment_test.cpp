@@ -3,11 +3,13 @@
 // diffusivity and current; the suspended mass's centre sinks at the settling velocity; what sinks below the
 // floor leaves the water and nothing is lost; a hull above the release height stirs up nothing; and the
 // closed-form optical depth the shaders use (shaders/shared/sediment_math.h) equals the concentration
-// integrated along the ray.
+// integrated along the ray, and a ray segment that misses the clouds' reach box gets nothing from any of
+// them.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <random>
 #include <vector>
 
 #include "physics/sediment.h"
@@ -190,6 +192,56 @@ TEST(Sediment, TheRayClosedFormIsTheConcentrationAlongTheRay) {
     EXPECT_NEAR(closed.x, tau, 1e-5 * tau + 1e-7);
     EXPECT_NEAR(closed.y / closed.x, moment / tau, 1e-4 * r.length);
   }
+}
+
+// The shaders test a pixel's ray segment against the box of the clouds' reach before their loop over the
+// clouds (issue 34: sediment costs every water pixel): a segment that misses the box must get exactly what
+// the loop would add, nothing, or the box would change the picture. Random segments around five clouds: many
+// miss the box, many meet it, and none that misses has a non-zero optical depth. A segment that ends short
+// of a cloud it points at is cut as the loop cuts it: what it leaves out is below e^-10/2 of the cloud's
+// depth through its centre.
+TEST(Sediment, ASegmentThatMissesTheCloudsReachBoxGetsNothingFromAnyOfThem) {
+  const SedimentParams p{.rise_m = 2, .radius_m = 0.5, .diffusivity_m2_s = 0.02};
+  const SedimentCloud cloud(p, kFlat, {});
+  const std::vector<SedimentPuff> puffs = {cloud.puff({0, 0}, 30, 5), cloud.puff({3, 1}, 12, 20),
+                                           cloud.puff({5, 4}, 50, 60), cloud.puff({7, 6}, 5, 2),
+                                           cloud.puff({8, 9}, 20, 30)};
+  const physics::SedimentBox box = physics::sediment_reach(puffs);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> across(-15, 25), depth(-10, 0), unit(-1, 1), length(0.5, 30);
+  int missed = 0, met = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const glm::dvec3 origin(across(rng), depth(rng), across(rng));
+    glm::dvec3 dir(unit(rng), unit(rng), unit(rng));
+    if (glm::length(dir) < 1e-3) continue;
+    dir = glm::normalize(dir);
+    if (i % 10 == 0) dir.x = 0, dir = glm::normalize(dir);  // parallel to a pair of the box's faces
+    const double len = length(rng);
+    const glm::dvec2 ray = physics::sediment_ray(puffs, 0.4, origin, dir, len);
+    if (physics::segment_meets(box, origin, dir, len)) {
+      ++met;
+      continue;
+    }
+    ++missed;
+    ASSERT_EQ(ray.x, 0.0) << "a segment from (" << origin.x << ", " << origin.y << ", " << origin.z
+                          << ") missing the box still crosses a cloud";
+    ASSERT_EQ(ray.y, 0.0);
+  }
+  EXPECT_GT(missed, 4000);
+  EXPECT_GT(met, 4000);
+
+  // Aimed at the first cloud's centre from 6 σ away and ending 4.6 σ short of it.
+  const SedimentPuff& q = puffs[0];
+  const glm::dvec3 dir(1, 0, 0), origin = q.centre - 6.0 * q.sigma * dir;
+  const double len = 1.4 * q.sigma;
+  EXPECT_EQ(physics::sediment_ray(puffs, 0.4, origin, dir, len).x, 0.0);
+  const int n = 20000;
+  double left_out = 0;
+  for (int i = 0; i < n; ++i)
+    left_out += 0.4 * concentration({q}, origin + dir * ((i + 0.5) * len / n)) * len / n;
+  const double through_centre = physics::sediment_ray({&q, 1}, 0.4, origin, dir, 12.0 * q.sigma).x;
+  EXPECT_GT(left_out, 0.0);
+  EXPECT_LT(left_out, 0.5 * std::exp(-10.0) * through_centre);
 }
 
 }  // namespace
