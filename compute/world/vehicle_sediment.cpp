@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 #include <glm/common.hpp>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -73,18 +74,27 @@ uint32_t VehicleSediment::write(double time_s, gpu::SedimentHeader* header,
                                                float(LAGOON_SEDIMENT_MAX_GRAINS)),
                                       std::bit_cast<float>(p.release), 0)};
   }
-  // The box from the clouds as the shaders read them (floats), a millimetre and a float's rounding wider so
-  // that their float test never culls a cloud the cut inside the loop keeps.
+  // The boxes from the clouds as the shaders read them (floats), a millimetre and a float's rounding wider so
+  // that their float test never culls a cloud the cut inside the loop keeps. The mass order groups a
+  // vehicle's stream of clouds by age, hence by where along its track they were released.
   std::vector<physics::SedimentPuff> sent(all.begin(), all.begin() + long(kept));
   for (physics::SedimentPuff& p : sent) {
     p.centre = glm::dvec3(glm::vec3(p.centre));
     p.sigma = double(float(p.sigma));
   }
-  const physics::SedimentBox box = physics::sediment_reach(sent);
-  const glm::dvec3 pad = 1e-3 + 1e-5 * glm::max(glm::abs(box.lo), glm::abs(box.hi));
+  const auto write_box = [](std::span<const physics::SedimentPuff> clouds, glm::vec4& lo, glm::vec4& hi) {
+    const physics::SedimentBox box = physics::sediment_reach(clouds);
+    const glm::dvec3 pad = 1e-3 + 1e-5 * glm::max(glm::abs(box.lo), glm::abs(box.hi));
+    lo = glm::vec4(glm::vec3(clouds.empty() ? glm::dvec3(1e30) : box.lo - pad), 0.0f);
+    hi = glm::vec4(glm::vec3(clouds.empty() ? glm::dvec3(-1e30) : box.hi + pad), 0.0f);
+  };
   header->colour = glm::vec4(colour_, float(kept));
-  header->box_lo = glm::vec4(glm::vec3(kept ? box.lo - pad : glm::dvec3(1e30)), 0.0f);
-  header->box_hi = glm::vec4(glm::vec3(kept ? box.hi + pad : glm::dvec3(-1e30)), 0.0f);
+  write_box(sent, header->box_lo, header->box_hi);
+  for (size_t g = 0; g < LAGOON_SEDIMENT_GROUPS; ++g) {
+    const size_t first = std::min(kept, g * LAGOON_SEDIMENT_GROUP);
+    const size_t end = std::min(kept, first + LAGOON_SEDIMENT_GROUP);
+    write_box(std::span(sent).subspan(first, end - first), header->group_lo[g], header->group_hi[g]);
+  }
   return uint32_t(kept);
 }
 

@@ -26,14 +26,18 @@ layout(std430, binding = LAGOON_SURFACE_BIND_SEDIMENT) readonly buffer Sediment 
 // (render.effects.underwater).
 vec4 sediment_veil_terms(vec3 origin, vec3 dir, float len, bool volume) {
   if (!kSediment) return vec4(0.0, 0.0, 0.0, 1.0);
-  // Every cloud culled at once (the loop below would add only zeros): most pixels' rays pass far from them.
+  // Every cloud culled at once, then a group at a time (the loop would add only zeros for them, so the sum
+  // has the same bits): most pixels' rays pass far from the clouds.
   if (!sed_segment_meets_box(origin, dir, len, sediment.box_lo.xyz, sediment.box_hi.xyz))
     return vec4(0.0, 0.0, 0.0, 1.0);
   vec2 sum = vec2(0.0);
   int count = int(sediment.colour.w);
-  for (int i = 0; i < count; ++i) {
-    vec4 c = sediment_puffs[i].centre_sigma;
-    sum += sed_ray(origin, dir, len, c.xyz, c.w, sediment_puffs[i].strength.x);
+  for (int g = 0; g * LAGOON_SEDIMENT_GROUP < count; ++g) {
+    if (!sed_segment_meets_box(origin, dir, len, sediment.group_lo[g].xyz, sediment.group_hi[g].xyz)) continue;
+    for (int i = g * LAGOON_SEDIMENT_GROUP; i < min(count, (g + 1) * LAGOON_SEDIMENT_GROUP); ++i) {
+      vec4 c = sediment_puffs[i].centre_sigma;
+      sum += sed_ray(origin, dir, len, c.xyz, c.w, sediment_puffs[i].strength.x);
+    }
   }
   if (sum.x <= 0.0) return vec4(0.0, 0.0, 0.0, 1.0);
   float t = sum.y / sum.x;  // where along the ray the clouds' light comes from

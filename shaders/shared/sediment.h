@@ -12,6 +12,10 @@
 // A cloud adds nothing to a ray that passes further than √20 σ from its centre (below e^-10 of its peak,
 // shared/sediment_math.h): the square of that reach, in σ².
 #define LAGOON_SEDIMENT_REACH2_SIGMA2 20.0
+// The clouds are also tested in groups of this many, consecutive in the buffer, each against its own reach
+// box: a stream of clouds along a vehicle's track spans the view, while each group is a stretch of it.
+#define LAGOON_SEDIMENT_GROUP 8
+#define LAGOON_SEDIMENT_GROUPS (LAGOON_MAX_SEDIMENT_PUFFS / LAGOON_SEDIMENT_GROUP)
 // The buffer, in the surface shaders' set (shared/surface.h numbering).
 #define LAGOON_SURFACE_BIND_SEDIMENT 18
 // Specialisation constant of the shaders that include common/sediment.glsl: the clouds compiled in (1) or
@@ -33,11 +37,13 @@ struct SedimentHeader {
   // (sed_segment_meets_box), so a pixel far from the clouds skips the loop over them. Empty (lo > hi)
   // without clouds.
   vec4 box_lo, box_hi;
+  // The same for clouds LAGOON_SEDIMENT_GROUP g .. g + LAGOON_SEDIMENT_GROUP - 1 (those there are).
+  vec4 group_lo[LAGOON_SEDIMENT_GROUPS], group_hi[LAGOON_SEDIMENT_GROUPS];
 };
 LAGOON_GPU_END
 
 #ifdef __cplusplus
 LAGOON_CHECK_SIZE(SedimentPuffGpu, 32);
-LAGOON_CHECK_SIZE(SedimentHeader, 48);
+LAGOON_CHECK_SIZE(SedimentHeader, 48 + 32 * LAGOON_SEDIMENT_GROUPS);
 #endif
 #endif
