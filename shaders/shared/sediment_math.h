@@ -11,25 +11,20 @@
 // and the attenuation-weighted mean t (where along the ray the cloud's light comes from) is
 //   t̄ = t* + σ (φ(-t*/σ) - φ((L - t*)/σ)) / [Φ((L - t*)/σ) - Φ(-t*/σ)].
 
-// erf by Abramowitz & Stegun 7.1.26 (|error| <= 1.5e-7): GLSL has none.
-LAGOON_FN sed_real sed_erf(sed_real x) {
+// The standard normal's distribution function Φ(x) = ½(1 + erf(x/√2)), erf by Abramowitz & Stegun 7.1.26
+// (|error| <= 1.5e-7; GLSL has none), given e = exp(-x²/2), which is also the density's (sed_pdf): a cloud
+// needs both at both ends of the segment, and its exponentials are most of a pixel's cost of the cloud.
+LAGOON_FN sed_real sed_cdf(sed_real x, sed_real e) {
   sed_real s = x < sed_real(0) ? sed_real(-1) : sed_real(1);
-  sed_real a = abs(x);
-  sed_real t = sed_real(1) / (sed_real(1) + sed_real(0.3275911) * a);
+  sed_real t = sed_real(1) / (sed_real(1) + sed_real(0.3275911) * sed_real(0.7071067811865476) * abs(x));
   sed_real poly =
       t * (sed_real(0.254829592) +
            t * (sed_real(-0.284496736) +
                 t * (sed_real(1.421413741) + t * (sed_real(-1.453152027) + t * sed_real(1.061405429)))));
-  return s * (sed_real(1) - poly * exp(-a * a));
+  return sed_real(0.5) + sed_real(0.5) * s * (sed_real(1) - poly * e);
 }
-
-// The standard normal's distribution function and density.
-LAGOON_FN sed_real sed_cdf(sed_real x) {
-  return sed_real(0.5) + sed_real(0.5) * sed_erf(x * sed_real(0.7071067811865476));
-}
-LAGOON_FN sed_real sed_pdf(sed_real x) {
-  return sed_real(0.3989422804014327) * exp(sed_real(-0.5) * x * x);
-}
+// The standard normal's density, given e = exp(-x²/2).
+LAGOON_FN sed_real sed_pdf(sed_real e) { return sed_real(0.3989422804014327) * e; }
 
 // A cloud's optical depth along the ray and the ray's distance weighted by it (τ, τ t̄); (0, 0) for a ray
 // segment that passes further than √20 σ ≈ 4.5 σ away (below e^-10 of the peak everywhere on it: what it
@@ -45,10 +40,11 @@ LAGOON_FN sed_real2 sed_ray(sed_real3 origin, sed_real3 dir, sed_real len, sed_r
   sed_real3 nearest = to - dir * max(sed_real(0), min(t_star, len));  // from the segment's nearest point
   if (dot(nearest, nearest) > sed_real(LAGOON_SEDIMENT_REACH2_SIGMA2) * s2) return sed_real2(0);
   sed_real a = -t_star / sigma, b = (len - t_star) / sigma;
-  sed_real share = max(sed_cdf(b) - sed_cdf(a), sed_real(0));
-  sed_real tau = strength / (sed_real(6.283185307179586) * s2) * exp(sed_real(-0.5) * miss2 / s2) * share;
-  sed_real moment = tau * t_star + strength / (sed_real(6.283185307179586) * s2) *
-                                       exp(sed_real(-0.5) * miss2 / s2) * sigma * (sed_pdf(a) - sed_pdf(b));
+  sed_real ea = exp(sed_real(-0.5) * a * a), eb = exp(sed_real(-0.5) * b * b);
+  sed_real share = max(sed_cdf(b, eb) - sed_cdf(a, ea), sed_real(0));
+  sed_real peak = strength / (sed_real(6.283185307179586) * s2) * exp(sed_real(-0.5) * miss2 / s2);
+  sed_real tau = peak * share;
+  sed_real moment = tau * t_star + peak * sigma * (sed_pdf(ea) - sed_pdf(eb));
   return sed_real2(tau, moment);
 }
 
