@@ -24,7 +24,9 @@ LAGOON_FN sed_real sed_cdf(sed_real x, sed_real e) {
   return sed_real(0.5) + sed_real(0.5) * s * (sed_real(1) - poly * e);
 }
 // The standard normal's density, given e = exp(-x²/2).
-LAGOON_FN sed_real sed_pdf(sed_real e) { return sed_real(0.3989422804014327) * e; }
+LAGOON_FN sed_real sed_pdf(sed_real e) {
+  return sed_real(0.3989422804014327) * e;
+}
 
 // A cloud's optical depth along the ray and the ray's distance weighted by it (τ, τ t̄); (0, 0) for a ray
 // segment that passes further than √20 σ ≈ 4.5 σ away (below e^-10 of the peak everywhere on it: what it
@@ -57,7 +59,8 @@ LAGOON_FN sed_real2 sed_slab(sed_real o, sed_real d, sed_real lo, sed_real hi, s
 }
 
 // Whether origin + t dir, 0 <= t <= len, meets the box [lo, hi] (SedimentHeader's clouds' reach).
-LAGOON_FN bool sed_segment_meets_box(sed_real3 origin, sed_real3 dir, sed_real len, sed_real3 lo, sed_real3 hi) {
+LAGOON_FN bool sed_segment_meets_box(sed_real3 origin, sed_real3 dir, sed_real len, sed_real3 lo,
+                                     sed_real3 hi) {
   sed_real2 span = sed_real2(0, len);
   span = sed_slab(origin.x, dir.x, lo.x, hi.x, span);
   span = sed_slab(origin.y, dir.y, lo.y, hi.y, span);
