@@ -30,6 +30,7 @@ const std::vector<std::pair<std::string, std::string>>& broken_variants() {
       {"deep-tma", "TMA without its depth factor: sea-state.tma-depth"},
       {"regular-sea", "one wave instead of the spectrum: sea-state.rayleigh"},
       {"seed-foam", "foam by the seed's threshold rule instead of the coverage rule: foam.whitecap-coverage"},
+      {"fleeting-foam", "foam that fades within a step (decay 30/s): foam.lifetime"},
       {"resolved-slopes", "the glint's unresolved slopes left out: slopes.cox-munk-*"},
       {"vertex-buoyancy",
        "the water's height only at the hull's vertices: bodies.box-heave, bodies.tessellation"},

@@ -41,7 +41,9 @@ struct FoamStats {
 };
 
 FoamStats measure_foam(vk::Context& ctx, double u10, const ValidateOptions& o) {
-  const ocean::OceanParams p = foam_sea(u10, o.quick ? 128 : 256);
+  ocean::OceanParams p = foam_sea(u10, o.quick ? 128 : 256);
+  // Foam that fades within a step: whitecaps that last only while the surface folds.
+  if (o.broken == "fleeting-foam") p.foam.decay_per_s = 30;
   ocean::GpuOcean gpu(ctx, p);
   const double dt = 0.1;
   const int warm = 150, frames = 100;
@@ -111,7 +113,7 @@ std::vector<uint8_t> drawn_foam(const ocean::GpuOcean& gpu, const ocean::OceanPa
         tx += t[0], tz += t[1], txz += t[2], foam = std::max(foam, double(t[3]));
       }
       const double jacobian = (1 + tx) * (1 + tz) - txz * txz;
-      foam = std::max(foam, std::clamp((rule.onset - jacobian) / rule.width, 0.0, 1.0));
+      foam = std::max(foam, std::clamp((rule.whole.onset - jacobian) / rule.whole.width, 0.0, 1.0));
       out[size_t(j) * grid + i] = foam >= 0.5 ? 1 : 0;
     }
   return out;

@@ -4,15 +4,29 @@
 #include <cmath>
 
 namespace lagoon::ocean {
+namespace foam_double {
+using foam_real = double;
+using std::clamp;
+using std::max;
+#define LAGOON_FN inline
+#include "shared/foam_math.h"
+#undef LAGOON_FN
+}  // namespace foam_double
+using foam_double::foam_after_step;
+using foam_double::foam_made;
 
 CpuOceanStep::CpuOceanStep(const OceanParams& params, std::vector<CascadeSpectrum> spectra, InverseFft2d fft)
-    : params_(params), spectra_(std::move(spectra)), fft_(std::move(fft)), cascades_(spectra_.size()) {}
+    : params_(params),
+      spectra_(std::move(spectra)),
+      fft_(std::move(fft)),
+      foam_(foam_rule(params_, spectra_).cascades),
+      cascades_(spectra_.size()) {}
 
 void CpuOceanStep::step(double time_s, double dt_s) {
   static constexpr Field kFields[] = {Field::Dx,     Field::Height, Field::Dz,   Field::SlopeX,
                                       Field::SlopeZ, Field::DxDx,   Field::DzDz, Field::DxDz};
   const double lambda = params_.choppiness;
-  const double decay = std::exp(-params_.foam.decay_per_s * dt_s);
+  const double fade = std::exp(-params_.foam.decay_per_s * dt_s);
   for (size_t c = 0; c < spectra_.size(); ++c) {
     const auto f = evaluate_fields(spectra_[c], time_s, kFields, fft_);
     CpuCascadeFields& out = cascades_[c];
@@ -25,7 +39,8 @@ void CpuOceanStep::step(double time_s, double dt_s) {
       const double jxx = 1 + lambda * f[5][i], jzz = 1 + lambda * f[6][i], jxz = lambda * f[7][i];
       const double jacobian = jxx * jzz - jxz * jxz;
       const double previous = first_ ? 0.0 : out.displacement[4 * i + 3];
-      const double foam = std::max(previous * decay, std::clamp(params_.foam.threshold - jacobian, 0.0, 1.0));
+      const double foam =
+          foam_after_step(previous, fade, foam_made(foam_[c].onset, foam_[c].width, jacobian));
       const double inv_len = 1.0 / std::sqrt(f[3][i] * f[3][i] + 1.0 + f[4][i] * f[4][i]);
       const double d[4] = {lambda * f[0][i], f[1][i], lambda * f[2][i], foam};
       const double n[4] = {-f[3][i] * inv_len, inv_len, -f[4][i] * inv_len, jacobian};

@@ -5,6 +5,7 @@
 
 #include "ocean/ocean_params.h"
 #include "ocean/spectral_fields.h"
+#include "ocean/whitecaps.h"
 
 namespace lagoon::ocean {
 
@@ -18,6 +19,7 @@ struct CpuCascadeFields {
 
 class CpuOceanStep {
  public:
+  // Each cascade's foam follows foam_rule(params, spectra).cascades, as the GPU step's does.
   CpuOceanStep(const OceanParams& params, std::vector<CascadeSpectrum> spectra, InverseFft2d fft);
   // Advances to `time_s`; dt_s is the time since the previous step (foam). The first step starts foam at 0.
   void step(double time_s, double dt_s);
@@ -27,6 +29,7 @@ class CpuOceanStep {
   OceanParams params_;
   std::vector<CascadeSpectrum> spectra_;
   InverseFft2d fft_;
+  std::vector<FoamRamp> foam_;  // per cascade
   std::vector<CpuCascadeFields> cascades_;
   bool first_ = true;
 };

@@ -1,5 +1,6 @@
 #include "ocean/spectral_fields.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -89,8 +90,14 @@ InverseFft2d cpu_inverse_fft(unsigned threads) {
 
 std::vector<std::vector<double>> evaluate_fields(const CascadeSpectrum& s, double time_s,
                                                  std::span<const Field> fields, const InverseFft2d& fft) {
-  const uint32_t n = s.resolution;
-  const size_t plane = size_t{n} * n;
+  return evaluate_fields_on_lattice(s, time_s, fields, fft, 1);
+}
+
+std::vector<std::vector<double>> evaluate_fields_on_lattice(const CascadeSpectrum& s, double time_s,
+                                                            std::span<const Field> fields,
+                                                            const InverseFft2d& fft, uint32_t stride) {
+  const uint32_t n = s.resolution, m = n / std::max(stride, 1u);
+  const size_t plane = size_t{m} * m;
   const uint32_t batches = uint32_t((fields.size() + 1) / 2);
   std::vector<std::complex<double>> data(plane * batches);
   for (uint32_t iz = 0; iz < n; ++iz)
@@ -99,14 +106,15 @@ std::vector<std::vector<double>> evaluate_fields(const CascadeSpectrum& s, doubl
       if (s.h0[i] == std::complex<float>(0) &&
           s.h0[size_t{(n - iz) % n} * n + (n - ix) % n] == std::complex<float>(0))
         continue;  // outside the band (data is zero-initialised)
-      const ModeState m = mode_state(s, ix, iz, time_s);
+      const ModeState mode = mode_state(s, ix, iz, time_s);
+      const size_t folded = size_t{iz % m} * m + ix % m;
       for (uint32_t b = 0; b < batches; ++b) {
-        std::complex<double> v = field_of(m, fields[2 * b]);
-        if (2 * b + 1 < fields.size()) v += std::complex<double>(0, 1) * field_of(m, fields[2 * b + 1]);
-        data[plane * b + i] = v;
+        std::complex<double> v = field_of(mode, fields[2 * b]);
+        if (2 * b + 1 < fields.size()) v += std::complex<double>(0, 1) * field_of(mode, fields[2 * b + 1]);
+        data[plane * b + folded] += v;
       }
     }
-  fft(data, n, batches);
+  fft(data, m, batches);
   std::vector<std::vector<double>> out(fields.size(), std::vector<double>(plane));
   for (size_t f = 0; f < fields.size(); ++f)
     for (size_t i = 0; i < plane; ++i) {

@@ -35,6 +35,12 @@ InverseFft2d cpu_inverse_fft(unsigned threads = 1);
 // result[f][z * N + x] is fields[f] at x = i·L/N, z = j·L/N.
 std::vector<std::vector<double>> evaluate_fields(const CascadeSpectrum& spectrum, double time_s,
                                                  std::span<const Field> fields, const InverseFft2d& fft);
+// The same at every `stride`-th point along each axis only (stride divides N; M = N / stride):
+// result[f][j * M + i] is fields[f] at x = i·stride·L/N, z = j·stride·L/N, exactly: the modes are folded
+// onto an M x M spectrum (at those points e^{ikx} cannot tell k from k + 2πM/L), so one M² FFT does.
+std::vector<std::vector<double>> evaluate_fields_on_lattice(const CascadeSpectrum& spectrum, double time_s,
+                                                            std::span<const Field> fields,
+                                                            const InverseFft2d& fft, uint32_t stride);
 
 // The spectral value of `field` at mode index (ix, iz) and time t (used by the evaluator and by tests).
 std::complex<double> field_spectrum(const CascadeSpectrum& spectrum, uint32_t ix, uint32_t iz, double time_s,

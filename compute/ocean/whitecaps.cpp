@@ -11,6 +11,10 @@
 namespace lagoon::ocean {
 namespace {
 
+// The persisting foam's ramp, in standard deviations of the cascade's J: a folding crest whitens fully,
+// and what lasts is its fading, not J's passing through a wide ramp.
+constexpr double kRampWidthSigma = 0.5;
+
 // Φ⁻¹(p) by bisection on the normal distribution function (p in (0, 1)).
 double normal_quantile(double p) {
   double lo = -10, hi = 10;
@@ -21,33 +25,11 @@ double normal_quantile(double p) {
   return 0.5 * (lo + hi);
 }
 
-// The whole sea's Jacobian at t = 0 on a 256² grid over the largest patch: each cascade's terms from its
-// fields (one CPU FFT per field and cascade) at the nearest texel, summed, as the surface shader sums them.
-std::vector<double> jacobian_samples(const OceanParams& params, const std::vector<CascadeSpectrum>& spectra) {
-  static constexpr Field kTerms[] = {Field::DxDx, Field::DzDz, Field::DxDz};
-  const InverseFft2d fft = cpu_inverse_fft(2);
-  std::vector<std::vector<std::vector<double>>> fields;
-  for (const CascadeSpectrum& s : spectra) fields.push_back(evaluate_fields(s, 0.0, kTerms, fft));
-  constexpr uint32_t kGrid = 256;
-  const double side = spectra.front().patch_size_m, lambda = params.choppiness;
-  std::vector<double> out;
-  out.reserve(size_t{kGrid} * kGrid);
-  for (uint32_t j = 0; j < kGrid; ++j)
-    for (uint32_t i = 0; i < kGrid; ++i) {
-      double a = 0, b = 0, c = 0;
-      for (size_t k = 0; k < spectra.size(); ++k) {
-        const uint32_t n = spectra[k].resolution;
-        const double scale = n / spectra[k].patch_size_m;
-        const size_t x = size_t((i + 0.5) * side / kGrid * scale) % n,
-                     z = size_t((j + 0.5) * side / kGrid * scale) % n;
-        a += fields[k][0][z * n + x], b += fields[k][1][z * n + x], c += fields[k][2][z * n + x];
-      }
-      out.push_back((1 + lambda * a) * (1 + lambda * b) - lambda * lambda * c * c);
-    }
-  return out;
+double jacobian(double lambda, double a, double b, double c) {
+  return (1 + lambda * a) * (1 + lambda * b) - lambda * lambda * c * c;
 }
 
-// The same for waves summed directly (direct_waves.h): eq. 11's Jacobian at the grid's points.
+// The whole sea's J for waves summed directly (direct_waves.h): eq. 11's Jacobian at the grid's points.
 std::vector<double> jacobian_samples(const GerstnerSurface& surface, double side) {
   constexpr uint32_t kGrid = 256;
   std::vector<double> out;
@@ -58,6 +40,71 @@ std::vector<double> jacobian_samples(const GerstnerSurface& surface, double side
   return out;
 }
 
+// How a cascade's foam is stepped (the still frame's warm-up steps at 0.1 s, OceanStepPass::kWarmupStep),
+// and how far back the calibration looks for foam that is still at least ½ now.
+constexpr double kStepS = 0.1;
+constexpr double kLookBackS = 4.0;
+// The calibration's points: every cascade's J on a lattice of at most 128² of its texels (exactly those
+// texels' values: evaluate_fields_on_lattice), at kEnds times 0.1 s apart.
+constexpr uint32_t kLattice = 128;
+constexpr int kEnds = 16;
+
+// For each lattice point of one cascade and each of the kEnds times: the least J(t - τ) + (width/2) e^{dτ}
+// over the steps τ back to ln2/d. The foam made τ ago, clamp((onset - J)/width, 0, 1), has faded by e^{-dτ},
+// so it is at least ½ now exactly when this is at most the onset: the foam is white now at a point when its
+// value is <= onset, whatever the onset (OceanPush's update: foam = max(foam · e^{-d dt}, made)).
+std::vector<double> whitening_levels(const CascadeSpectrum& s, double lambda, double width, double decay) {
+  static constexpr Field kTerms[] = {Field::DxDx, Field::DzDz, Field::DxDz};
+  const InverseFft2d fft = cpu_inverse_fft(1);
+  const uint32_t stride = std::max(s.resolution / kLattice, 1u);
+  const double reach_s = decay > 0 ? std::min(std::log(2.0) / decay, kLookBackS) : kLookBackS;
+  const int back = int(std::floor(reach_s / kStepS + 1e-9));
+  std::vector<std::vector<double>> series;  // [step][point]: J
+  for (int k = 0; k < back + kEnds; ++k) {
+    const auto f = evaluate_fields_on_lattice(s, k * kStepS, kTerms, fft, stride);
+    std::vector<double> j(f[0].size());
+    for (size_t i = 0; i < j.size(); ++i) j[i] = jacobian(lambda, f[0][i], f[1][i], f[2][i]);
+    series.push_back(std::move(j));
+  }
+  std::vector<double> levels;
+  for (int end = back; end < back + kEnds; ++end)
+    for (size_t i = 0; i < series[0].size(); ++i) {
+      double least = series[end][i] + 0.5 * width;
+      for (int k = 1; k <= back; ++k)
+        least = std::min(least, series[end - k][i] + 0.5 * width * std::exp(decay * k * kStepS));
+      levels.push_back(least);
+    }
+  std::sort(levels.begin(), levels.end());
+  return levels;
+}
+
+// The onset at which `share` of the levels (whitening_levels) lie below: read off the levels where at least
+// 20 lie below it; for the calmest seas from their mean and standard deviation as if Gaussian (J's lower
+// tail is heavier than a Gaussian's: the Gaussian's quantile whitens 3-5 x the share where the levels have
+// it).
+double persisting_onset(const std::vector<double>& levels, double share) {
+  if (share * double(levels.size()) >= 20) return levels[size_t(share * double(levels.size()))];
+  double mean = 0, square = 0;
+  for (double v : levels) mean += v, square += v * v;
+  mean /= double(levels.size());
+  const double sigma = std::sqrt(std::max(square / double(levels.size()) - mean * mean, 0.0));
+  return mean + sigma * normal_quantile(share);
+}
+
+// The ramp whose foam, applied afresh every frame, covers `coverage` of a sea with J samples `j` (its
+// standard deviation σ): J's lower tail is not Gaussian (J = (1 + a)(1 + b) - c²), so the quantile is read
+// off the samples where enough lie below it, and taken from the Gaussian only for the calmest seas. The
+// ramp is one σ wide (a crest whitens over one standard deviation of squeezing, not in a hard edge).
+FoamRamp instant_ramp(std::vector<double> j, double coverage, double sigma) {
+  sigma = std::max(sigma, 1e-3);
+  const size_t below = size_t(coverage * double(j.size()));
+  if (below >= 20) {
+    std::nth_element(j.begin(), j.begin() + long(below), j.end());
+    return {j[below] + 0.5 * sigma, sigma};
+  }
+  return {1.0 + sigma * normal_quantile(coverage) + 0.5 * sigma, sigma};
+}
+
 }  // namespace
 
 double monahan_coverage(double wind_speed_mps) {
@@ -65,38 +112,43 @@ double monahan_coverage(double wind_speed_mps) {
 }
 
 FoamRule foam_rule(const OceanParams& params, const std::vector<CascadeSpectrum>& spectra) {
+  const FoamRamp seed{params.foam.threshold, 1.0};
+  const std::vector<FoamRamp> seeds(spectra.size(), seed);
   if (params.foam.coverage == FoamCoverage::Threshold || params.model == SurfaceModel::Springs ||
       spectra.empty())
-    return {params.foam.threshold, 1.0};
-  // σ_J² = λ² × the mean square slope; for waves summed directly J - 1 ≈ -Σ Q k A cos θ: Σ (Q k A)²/2.
-  double variance = 0;
-  std::vector<double> j;
+    return {seed, seeds};
+  const double coverage = std::clamp(monahan_coverage(params.spectrum.wind_speed_mps), 1e-9, 0.5);
   if (const std::optional<GerstnerParams> direct = direct_wave_params(params)) {
+    // σ_J² = Σ (Q k A)²/2: for waves summed directly J - 1 ≈ -Σ Q k A cos θ.
     const GerstnerSurface surface(*direct);
+    double variance = 0;
     for (size_t i = 0; i < surface.size(); ++i) {
       const double qka =
           surface.steepness(i) * glm::length(surface.wavevector(i)) * direct->waves[i].amplitude_m;
       variance += 0.5 * qka * qka;
     }
-    j = jacobian_samples(surface, spectra.front().patch_size_m);
-  } else {
-    for (const CascadeSpectrum& s : spectra) variance += mean_square_slope(s);
-    variance *= params.choppiness * params.choppiness;
-    // J's lower tail is not Gaussian (J = (1 + a)(1 + b) - c²): its quantile is read off the sea itself
-    // where the grid holds enough points below it, and taken from the Gaussian only for the calmest seas.
-    j = jacobian_samples(params, spectra);
+    // A sea that moves only up and down (the sines) has J = 1 everywhere: nothing squeezes it, and a rule
+    // fitted to no spread would whiten all of it.
+    if (variance == 0) return {{0.0, 1.0}, seeds};
+    return {
+        instant_ramp(jacobian_samples(surface, spectra.front().patch_size_m), coverage, std::sqrt(variance)),
+        seeds};
   }
-  // A sea that moves only up and down (choppiness 0, the sines) has J = 1 everywhere: nothing squeezes it,
-  // and a rule fitted to no spread would whiten all of it.
-  if (variance == 0) return {0.0, 1.0};
-  const double sigma = std::max(std::sqrt(variance), 1e-3);
-  const double coverage = std::clamp(monahan_coverage(params.spectrum.wind_speed_mps), 1e-9, 0.5);
-  const size_t below = size_t(coverage * double(j.size()));
-  if (below >= 20) {
-    std::nth_element(j.begin(), j.begin() + long(below), j.end());
-    return {j[below] + 0.5 * sigma, sigma};
+  // Equal shares whose union (the cascades' foam independent of each other) is W.
+  const double share = 1 - std::pow(1 - coverage, 1.0 / double(spectra.size()));
+  FoamRule rule{kNoFoam, {}};
+  for (const CascadeSpectrum& s : spectra) {
+    // J - 1 ≈ λ Σ |k| h̃: σ_J² = λ² × the cascade's mean square slope.
+    const double sigma = params.choppiness * std::sqrt(mean_square_slope(s));
+    if (!(sigma > 0)) {  // a cascade without waves, or choppiness 0: J = 1, nothing folds
+      rule.cascades.push_back(kNoFoam);
+      continue;
+    }
+    const double width = kRampWidthSigma * sigma;
+    const std::vector<double> levels = whitening_levels(s, params.choppiness, width, params.foam.decay_per_s);
+    rule.cascades.push_back({persisting_onset(levels, share), width});
   }
-  return {1.0 + sigma * normal_quantile(coverage) + 0.5 * sigma, sigma};
+  return rule;
 }
 
 }  // namespace lagoon::ocean

@@ -1,17 +1,20 @@
-// Where the whole sea's surface whitens (issue 33): foam = clamp((onset - J) / width, 0, 1) where its
-// Jacobian J (1 on undisturbed water, < 1 where it is squeezed, <= 0 where it folds) falls below the onset.
-// The surface shader applies it to the sum of the cascades' Jacobian terms at each point, every frame
-// (shaders/common/surface_normal.glsl), beside each cascade's own persisting foam (foam.threshold), so it
-// depends on the frame's time alone, not on how the frames were stepped.
+// Where the sea whitens (issue 33). Foam builds where the Jacobian J of the horizontal displacement (1 on
+// undisturbed water, < 1 where it is squeezed, <= 0 where it folds) falls below an onset, as
+// clamp((onset - J) / width, 0, 1), and persists, fading as exp(-foam.decay_per_s · t).
 //
-// foam.coverage "monahan" (the default) makes the whitecaps cover the share of the sea Monahan &
-// O'Muircheartaigh (1980) observed, W = 3.84e-6 U10^3.41: J is close to Gaussian about 1 with σ_J² = λ² ×
-// the cascades' mean square slope (J - 1 ≈ λ Σ |k| h), so foam of at least ½ (J < onset - width/2) covers
-// Φ((onset - width/2 - 1)/σ_J) of the area; the onset solves that for W, with width σ_J (a crest whitens
-// over one standard deviation of squeezing, not in a hard edge). J's lower tail is heavier than a
-// Gaussian's, so the quantile is read off the sea's own Jacobian at t = 0 (CPU FFTs of its terms, ~50 ms
-// for 3 x 256²) wherever the share is large enough to count. "threshold" is the rule of the seed's foam:
-// onset = foam.threshold, width 1.
+// foam.coverage "monahan" (the default) makes the foam cover the share of the sea Monahan &
+// O'Muircheartaigh (1980) observed, W = 3.84e-6 U10^3.41. For the FFT ocean the foam is each cascade's own
+// (its J, in the ocean step, kept from step to step): it stays where a crest folded the surface while the
+// crest moves on, so it lasts a second or two at a point, as field whitecaps' foam does (Callaghan et al.
+// 2012: 0.5-8 s). Each cascade whitens an equal share of the sea, the shares together W, so that the long
+// waves' crests break in patches metres wide and the short waves' in specks. Foam that lasts covers more
+// than the instants of folding (a point is white now if J fell far enough below the onset within the last
+// ln2/decay seconds), so each cascade's onset is read off its own J stepped as the ocean steps it (10 Hz, as
+// a still frame's warm-up) on a lattice of up to 128² of its texels over 3-5 s: CPU FFTs, ~0.3 s at
+// 3 x 256², on another thread while the device is set up (gpu/gpu_ocean.h). For waves summed directly
+// (gerstner, sines) the whole sea's J is applied afresh every frame by the surface shader, the onset being
+// the quantile of J below which W lies. "threshold" is the rule of the seed: onset = foam.threshold, width
+// 1, for each cascade and for the whole sea's J in the surface shader.
 #pragma once
 #include <vector>
 
@@ -23,9 +26,17 @@ namespace lagoon::ocean {
 // Monahan & O'Muircheartaigh (1980), eq. 3: whitecap coverage (a fraction of the area) at U10 m/s.
 double monahan_coverage(double wind_speed_mps);
 
-struct FoamRule {
+struct FoamRamp {
   double onset = 0.5;  // J below which foam builds
   double width = 1.0;  // how much further J must fall for foam to reach 1; > 0
+};
+
+// A ramp that never whitens (onset far below any J a sea reaches).
+inline constexpr FoamRamp kNoFoam{-1e6, 1.0};
+
+struct FoamRule {
+  FoamRamp whole;                  // the whole sea's J, applied every frame by the surface shader
+  std::vector<FoamRamp> cascades;  // each cascade's own J, persisting in the ocean step; one per cascade
 };
 
 // The rule for a sea made of `spectra` (one per cascade, as make_cascade_spectra gives them).

@@ -89,11 +89,11 @@ gpu::FrameUniforms frame_uniforms(const FrameInputs& in) {
       .grid = glm::vec4(in.grid.grid.x, in.grid.grid.y, 0.35f * in.reach_m, float(drawn)),
       .clipmap = in.grid.clipmap,
       .cascade_mss = in.shading.cascade_mss,
-      .glint = glm::vec4(in.shading.subgrid_mss, float(in.ocean.foam_rule().onset),
+      .glint = glm::vec4(in.shading.subgrid_mss, float(in.ocean.foam_rule().whole.onset),
                          scene.render.effects.shore_foam && scene.render.effects.foam
                              ? in.shading.significant_height_m
                              : 0.0f,
-                         float(in.ocean.foam_rule().width)),
+                         float(in.ocean.foam_rule().whole.width)),
       .post = glm::vec4(scene.render.exposure, scene.render.gamma, float(curve.m), float(curve.exponent)),
       .post2 = glm::vec4(float(curve.white), float(curve.world_adaptation),
                          scene.render.tone_map == scene::ToneMap::Clamp ? 0.0f : 1.0f, 0.0f),

@@ -4,10 +4,13 @@
 // `normal_jacobian` and `jacobian_terms` declared by the includer.
 #ifndef LAGOON_COMMON_OCEAN_ASSEMBLE_GLSL
 #define LAGOON_COMMON_OCEAN_ASSEMBLE_GLSL
+#define foam_real float
+#include "shared/foam_math.h"
+#undef foam_real
 
 // After the inverse FFT: one texel's displacement (λDx, h, λDz, foam), normal and Jacobian, and Jacobian
 // terms. Foam decays from the previous step's (displacement.w) at foam_decay_per_s and builds where the
-// Jacobian falls below foam_threshold.
+// Jacobian falls below its cascade's foam_onset (shared/foam_math.h).
 struct OceanJacobian {
   float jxx, jzz, jxz, j;
 };
@@ -23,11 +26,11 @@ OceanJacobian ocean_jacobian(vec2 f2, vec2 f3) {
   return o;
 }
 
-// The texel's foam after this step: the previous step's (displacement.w), decayed, or what J < threshold makes.
+// The texel's foam after this step: the previous step's (displacement.w), faded, or what J < onset makes.
 float ocean_foam(ivec3 texel, float jacobian) {
-  float decay = exp(-p.foam_decay_per_s * p.dt_s);
+  float fade = exp(-p.foam_decay_per_s * p.dt_s);
   float previous = p.reset_foam != 0u ? 0.0 : imageLoad(displacement, texel).w;
-  return max(previous * decay, clamp(p.foam_threshold - jacobian, 0.0, 1.0));
+  return foam_after_step(previous, fade, foam_made(p.foam_onset[texel.z], p.foam_width[texel.z], jacobian));
 }
 
 // A warm-up step's texel: the foam only; the displacement's other channels and the other images are left for

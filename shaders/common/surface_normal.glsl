@@ -8,6 +8,9 @@
 #include "common/cascade_uv.glsl"
 #include "common/direct_waves.glsl"
 #include "common/wake_fields.glsl"
+#define foam_real float
+#include "shared/foam_math.h"
+#undef foam_real
 
 layout(location = 3) in vec2 v_floor;  // (the random sea's height scale, depth) from the vertices
 
@@ -52,13 +55,14 @@ SurfaceSample surface_sample(vec3 to_viewer) {
   float sea = v_floor.x;  // the random sea's depth-limited height (common/surface_vertex.glsl)
   slope *= sea;
   terms *= sea;
+  foam *= sea;  // the cascades' foam where the floor flattens their waves
   DirectSum direct = direct_waves_at(v_rest, 0.0, footprint);  // models with their own waves
   slope += direct.slope;
   terms += direct.terms;
-  // Each cascade keeps its own foam with its decay; where the cascades fold the surface only together
-  // (long waves squeezing shorter ones), the whole sea's Jacobian adds the foam no single cascade shows.
+  // Each cascade keeps its own foam with its decay (the FFT ocean's whitecaps, ocean/whitecaps.h); the whole
+  // sea's Jacobian whitens afresh every frame by the threshold rule and for waves summed directly.
   float jacobian = (1.0 + terms.x) * (1.0 + terms.y) - terms.z * terms.z;
-  foam = max(foam, clamp((frame.glint.y - jacobian) / frame.glint.w, 0.0, 1.0));
+  foam = max(foam, foam_made(frame.glint.y, frame.glint.w, jacobian));
   foam = max(foam, direct.breaking);  // waves breaking over the floor
   foam *= frame.whitecaps.x;  // render.effects.foam = false hides the whitecaps
   vec4 wake = wake_at(v_rest);

@@ -34,22 +34,28 @@ struct OceanPush {
   uint cascades;      // cascades in the group (N and the pass's stride are specialisation constants)
   uint pad3;
   uint pad4;
-  uint reset_foam;       // 1: previous foam is undefined (first step or new parameters)
-  float time_s;          // simulation time of the step
-  float dt_s;            // time since the previous step (foam decay)
-  float choppiness;      // λ
-  float foam_threshold;  // foam builds where J < threshold
+  uint reset_foam;   // 1: previous foam is undefined (first step or new parameters)
+  float time_s;      // simulation time of the step
+  float dt_s;        // time since the previous step (foam decay)
+  float choppiness;  // λ
+  float pad5;
   float foam_decay_per_s;
   float pad0;
   float pad1;
   float pad2;
+  // Per cascade of the group: its foam builds where J < onset and reaches 1 `width` further below
+  // (ocean/whitecaps.h's FoamRule::cascades).
+  vec4 foam_onset;
+  vec4 foam_width;
 };
 LAGOON_GPU_END
 
 #ifdef __cplusplus
-LAGOON_CHECK_SIZE(OceanPush, 64);
+LAGOON_CHECK_SIZE(OceanPush, 96);
 LAGOON_CHECK_OFFSET(OceanPush, cascades, 16);
 LAGOON_CHECK_OFFSET(OceanPush, time_s, 32);
 LAGOON_CHECK_OFFSET(OceanPush, foam_decay_per_s, 48);
+LAGOON_CHECK_OFFSET(OceanPush, foam_onset, 64);
+LAGOON_CHECK_OFFSET(OceanPush, foam_width, 80);
 #endif
 #endif

@@ -137,13 +137,17 @@ GpuOcean::GpuOcean(vk::Context& ctx, const OceanParams& params, std::vector<Casc
 GpuOcean::~GpuOcean() = default;
 
 const FoamRule& GpuOcean::foam_rule() const {
-  if (!foam_rule_) foam_rule_ = ocean::foam_rule(params_, spectra_);
+  if (!foam_rule_)
+    foam_rule_ = foam_rule_pending_.valid() ? foam_rule_pending_.get() : ocean::foam_rule(params_, spectra_);
   return *foam_rule_;
 }
 
 void GpuOcean::build(std::vector<CascadeSpectrum> spectra) {
   spectra_ = std::move(spectra);
   foam_rule_.reset();
+  foam_rule_pending_ = std::async(std::launch::async, [params = params_, spectra = spectra_] {
+    return ocean::foam_rule(params, spectra);
+  });
   groups_.clear();
   cascade_slots_.assign(spectra_.size(), {0, 0});
   reset_foam_ = true;
@@ -200,10 +204,13 @@ void GpuOcean::record_step(VkCommandBuffer cmd, double time_s, double dt_s, vk::
                         .time_s = float(time_s),
                         .dt_s = float(dt_s),
                         .choppiness = float(params_.choppiness),
-                        .foam_threshold = float(params_.foam.threshold),
                         .foam_decay_per_s = float(params_.foam.decay_per_s)};
-    for (uint32_t layer = 0; layer < count; ++layer)
+    for (uint32_t layer = 0; layer < count; ++layer) {
       push.patch_size_m[layer] = float(spectra_[g->cascades[layer]].patch_size_m);
+      const FoamRamp& foam = foam_rule().cascades[g->cascades[layer]];
+      push.foam_onset[layer] = float(foam.onset);
+      push.foam_width[layer] = float(foam.width);
+    }
 
     // The previous step (possibly in the same command buffer) may still read the FFT buffers.
     vk::memory_barrier(cmd, vk::access::kComputeReadWrite, vk::access::kComputeReadWrite);

@@ -6,6 +6,7 @@
 // displacement (λDx, h, λDz, foam) and (normal, Jacobian) textures, then their mip chains. Records only; the
 // caller submits.
 #pragma once
+#include <future>
 #include <memory>
 #include <optional>
 #include <span>
@@ -79,9 +80,8 @@ class GpuOcean {
   const OceanParams& params() const { return params_; }
   FftVariant variant() const { return variant_; }  // as asked for (Auto: the device kind decides)
   const std::vector<CascadeSpectrum>& spectra() const { return spectra_; }
-  // Where the whole sea's Jacobian whitens (ocean/whitecaps.h), from the parameters and the spectra: what
-  // the surface shader applies. The steps' own per-cascade foam keeps foam.threshold. Computed on first
-  // use (CPU FFTs of every cascade, ~50 ms at 3 x 256²): an ocean that is only stepped never pays for it.
+  // Where the sea whitens (ocean/whitecaps.h), from the parameters and the spectra: each cascade's foam in
+  // the steps, and the whole sea's Jacobian's in the surface shader.
   const FoamRule& foam_rule() const;
   CascadeTextures cascade(uint32_t index) const;
   uint32_t cascade_count() const { return uint32_t(params_.cascades.size()); }
@@ -113,6 +113,9 @@ class GpuOcean {
   OceanParams params_;
   FftVariant variant_;
   std::vector<CascadeSpectrum> spectra_;
+  // Worked out on another thread from build() (~0.2 s of CPU FFTs at the shipped cascades) while the
+  // device is set up; taken at the first step or foam_rule().
+  mutable std::future<FoamRule> foam_rule_pending_;
   mutable std::optional<FoamRule> foam_rule_;
   std::vector<std::unique_ptr<Group>> groups_;
   std::vector<std::pair<uint32_t, uint32_t>> cascade_slots_;  // cascade -> (group, layer)

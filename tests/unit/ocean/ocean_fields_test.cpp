@@ -63,6 +63,32 @@ TEST(SpectralFields, PackedEvaluationEqualsSeparateTransforms) {
   }
 }
 
+// The lattice evaluation folds the modes onto a smaller spectrum: at every stride-th point it must give the
+// full evaluation's values (here through FFTW, independent of the folding and of our FFT).
+TEST(SpectralFields, TheLatticeHoldsTheFullGridsValuesAtItsPoints) {
+  const auto s = ocean::make_cascade_spectrum(small_ocean(), 0);
+  const uint32_t n = s.resolution;
+  std::vector<std::complex<double>> h(size_t{n} * n);
+  for (uint32_t iz = 0; iz < n; ++iz)
+    for (uint32_t ix = 0; ix < n; ++ix)
+      h[size_t{iz} * n + ix] = ocean::field_spectrum(s, ix, iz, 2.7, Field::DxDz);
+  fftw_2d(h, int(n), 1, true);
+  const Field fields[] = {Field::DxDz};
+  for (uint32_t stride : {2u, 4u, 16u}) {
+    const auto lattice = ocean::evaluate_fields_on_lattice(s, 2.7, fields, ocean::cpu_inverse_fft(), stride);
+    const uint32_t m = n / stride;
+    ASSERT_EQ(lattice[0].size(), size_t{m} * m);
+    double diff = 0, ref = 0;
+    for (uint32_t j = 0; j < m; ++j)
+      for (uint32_t i = 0; i < m; ++i) {
+        const double full = h[size_t{j * stride} * n + i * stride].real();
+        diff += std::pow(lattice[0][size_t{j} * m + i] - full, 2), ref += full * full;
+      }
+    ASSERT_GT(ref, 0);
+    EXPECT_LT(std::sqrt(diff / ref), 1e-12) << "stride " << stride;
+  }
+}
+
 TEST(SpectralFields, VelocityIsTheTimeDerivative) {
   const auto s = ocean::make_cascade_spectrum(small_ocean(), 0);
   const Field fields[] = {Field::Dx, Field::Height, Field::VelocityX, Field::VelocityY};
