@@ -50,6 +50,8 @@ io::ResultKey foam_key(const vk::Context& ctx, const ocean::GpuOcean& ocean,
   add_device(key, ctx);
   key.add("variant", double(int(ocean.variant()))).add("model", double(int(p.model)));
   key.add("choppiness", float(p.choppiness)).add("foam_threshold", float(p.foam.threshold));
+  // The cascades' onsets follow the coverage rule (ocean/whitecaps.h), Monahan's from the wind.
+  key.add("foam_coverage", double(int(p.foam.coverage))).add("wind", float(p.spectrum.wind_speed_mps));
   key.add("foam_decay", float(p.foam.decay_per_s));
   for (const ocean::CascadeSpectrum& s : ocean.spectra())
     key.add("resolution", s.resolution).add("patch_size", float(s.patch_size_m));
