@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <limits>
 
 #include "ocean/direct_waves.h"
 #include "ocean/slope_statistics.h"
 #include "ocean/spectral_fields.h"
+#include "shared/foam.h"
 
 namespace lagoon::ocean {
 namespace {
@@ -43,21 +45,25 @@ std::vector<double> jacobian_samples(const GerstnerSurface& surface, double side
 // How a cascade's foam is stepped (the still frame's warm-up steps at 0.1 s, OceanStepPass::kWarmupStep),
 // and how far back the calibration looks for foam that is still at least ½ now.
 constexpr double kStepS = 0.1;
+constexpr double kFadeOffset = LAGOON_FOAM_FADE_OFFSET;
 constexpr double kLookBackS = 4.0;
 // The calibration's points: every cascade's J on a lattice of at most 128² of its texels (exactly those
 // texels' values: evaluate_fields_on_lattice), at kEnds times 0.1 s apart.
 constexpr uint32_t kLattice = 128;
 constexpr int kEnds = 16;
 
-// For each lattice point of one cascade and each of the kEnds times: the least J(t - τ) + (width/2) e^{dτ}
-// over the steps τ back to ln2/d. The foam made τ ago, clamp((onset - J)/width, 0, 1), has faded by e^{-dτ},
-// so it is at least ½ now exactly when this is at most the onset: the foam is white now at a point when its
-// value is <= onset, whatever the onset (OceanPush's update: foam = max(foam · e^{-d dt}, made)).
+// For each lattice point of one cascade and each of the kEnds times: the least J(t - τ) + width f(τ) over the
+// steps τ back to where f reaches 1. Foam m made τ ago shows (m + c) e^{-dτ} - c now (shared/foam_math.h),
+// at least ½ when m >= f(τ) = (½ + c) e^{dτ} - c; m = clamp((onset - J)/width, 0, 1), so the point is white
+// now exactly when this least value is at most the onset, whatever the onset.
 std::vector<double> whitening_levels(const CascadeSpectrum& s, double lambda, double width, double decay) {
   static constexpr Field kTerms[] = {Field::DxDx, Field::DzDz, Field::DxDz};
   const InverseFft2d fft = cpu_inverse_fft(1);
   const uint32_t stride = std::max(s.resolution / kLattice, 1u);
-  const double reach_s = decay > 0 ? std::min(std::log(2.0) / decay, kLookBackS) : kLookBackS;
+  auto needed = [&](double tau) { return (0.5 + kFadeOffset) * std::exp(decay * tau) - kFadeOffset; };
+  const double reach_s = decay > 0
+                             ? std::min(std::log((1 + kFadeOffset) / (0.5 + kFadeOffset)) / decay, kLookBackS)
+                             : kLookBackS;
   const int back = int(std::floor(reach_s / kStepS + 1e-9));
   std::vector<std::vector<double>> series;  // [step][point]: J
   for (int k = 0; k < back + kEnds; ++k) {
@@ -69,9 +75,9 @@ std::vector<double> whitening_levels(const CascadeSpectrum& s, double lambda, do
   std::vector<double> levels;
   for (int end = back; end < back + kEnds; ++end)
     for (size_t i = 0; i < series[0].size(); ++i) {
-      double least = series[end][i] + 0.5 * width;
+      double least = series[end][i] + width * needed(0);
       for (int k = 1; k <= back; ++k)
-        least = std::min(least, series[end - k][i] + 0.5 * width * std::exp(decay * k * kStepS));
+        least = std::min(least, series[end - k][i] + width * needed(k * kStepS));
       levels.push_back(least);
     }
   std::sort(levels.begin(), levels.end());
@@ -106,6 +112,11 @@ FoamRamp instant_ramp(std::vector<double> j, double coverage, double sigma) {
 }
 
 }  // namespace
+
+double foam_memory_s(double decay_per_s) {
+  return decay_per_s > 0 ? std::log(1 + 1 / kFadeOffset) / decay_per_s
+                         : std::numeric_limits<double>::infinity();
+}
 
 double monahan_coverage(double wind_speed_mps) {
   return 3.84e-6 * std::pow(std::max(wind_speed_mps, 0.0), 3.41);

@@ -26,6 +26,10 @@ namespace lagoon::ocean {
 // Monahan & O'Muircheartaigh (1980), eq. 3: whitecap coverage (a fraction of the area) at U10 m/s.
 double monahan_coverage(double wind_speed_mps);
 
+// How long foam lasts at most after it is made, ln(1 + 1/c)/decay (shared/foam_math.h's fade; infinite for
+// decay 0).
+double foam_memory_s(double decay_per_s);
+
 struct FoamRamp {
   double onset = 0.5;  // J below which foam builds
   double width = 1.0;  // how much further J must fall for foam to reach 1; > 0

@@ -189,14 +189,15 @@ void read_foam(ObjectReader& r, ocean::FoamParams& f) {
   r.choice("coverage", f.coverage,
            {{"monahan", ocean::FoamCoverage::Monahan}, {"threshold", ocean::FoamCoverage::Threshold}},
            "How much of the sea the whitecaps cover: monahan = the share Monahan & O'Muircheartaigh (1980) "
-           "observed at the wind speed, 3.84e-6 U10^3.41 (0.2 % at 6 m/s, 7 % at 18 m/s), from the sea's "
-           "own Jacobian; threshold = where the Jacobian falls below `threshold` (the default when a scene "
-           "sets `threshold`).");
+           "observed at the wind speed, 3.84e-6 U10^3.41 (0.2 % at 6 m/s, 7 % at 18 m/s), as the foam lasts, "
+           "from each cascade's own Jacobian; threshold = where the Jacobian falls below `threshold` (the "
+           "default when a scene sets `threshold`).");
   r.number("threshold", f.threshold, Bounds::between(-1, 2), "",
            "coverage threshold: foam forms where the surface Jacobian J (1 = flat, < 1 squeezed, <= 0 folded "
            "over) is below this, at rate clamp(threshold - J, 0, 1); higher = more foam.");
   r.number("decay_per_s", f.decay_per_s, Bounds::between(0, 100), "1/s",
-           "How fast foam fades: it is multiplied by exp(-decay_per_s * dt); 0 = foam never fades.");
+           "How fast foam fades: as (foam + 0.4) exp(-decay_per_s * t) - 0.4, to nothing within "
+           "ln(3.5)/decay_per_s seconds (2.5 s at 0.5); 0 = foam never fades.");
 }
 
 }  // namespace

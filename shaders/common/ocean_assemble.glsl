@@ -30,7 +30,8 @@ OceanJacobian ocean_jacobian(vec2 f2, vec2 f3) {
 float ocean_foam(ivec3 texel, float jacobian) {
   float fade = exp(-p.foam_decay_per_s * p.dt_s);
   float previous = p.reset_foam != 0u ? 0.0 : imageLoad(displacement, texel).w;
-  return foam_after_step(previous, fade, foam_made(p.foam_onset[texel.z], p.foam_width[texel.z], jacobian));
+  float made = p.foam_build * foam_made(p.foam_onset[texel.z], p.foam_width[texel.z], jacobian);
+  return foam_after_step(previous, fade, made);
 }
 
 // A warm-up step's texel: the foam only; the displacement's other channels and the other images are left for

@@ -18,6 +18,9 @@ layout(push_constant) uniform Push { DirectWavesPush p; };
 #define LAGOON_DIRECT_WAVE(i) waves[i]
 #define LAGOON_DIRECT_COUNT p.count
 #include "common/direct_waves.glsl"
+#define foam_real float
+#include "shared/foam_math.h"
+#undef foam_real
 
 void main() {
   int n = int(p.n);
@@ -27,7 +30,7 @@ void main() {
   DirectSum s = direct_waves_at(vec2(c) * p.spacing, p.time_s, 0.0);
   float jacobian = (1.0 + s.terms.x) * (1.0 + s.terms.y) - s.terms.z * s.terms.z;
   float previous = p.reset_foam != 0u ? 0.0 : imageLoad(displacement, texel).w;
-  float foam = max(previous * p.foam_decay, clamp(p.foam_threshold - jacobian, 0.0, 1.0));
+  float foam = foam_after_step(previous, p.foam_decay, foam_made(p.foam_threshold, 1.0, jacobian));
   imageStore(displacement, texel, vec4(s.displacement, foam));
   imageStore(normal_jacobian, texel, vec4(normalize(vec3(-s.slope.x, 1.0, -s.slope.y)), jacobian));
   // Terms below half precision's smallest normal flushed to 0, as common/ocean_assemble.glsl does.

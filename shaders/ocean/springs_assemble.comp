@@ -5,6 +5,9 @@
 // central differences and J = 1 (the nodes only move vertically), so every consumer runs unchanged.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/springs.h"
+#define foam_real float
+#include "shared/foam_math.h"
+#undef foam_real
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
 layout(std430, binding = LAGOON_SPRINGS_BIND_STATE_IN) readonly buffer State { vec2 state[]; };
@@ -28,7 +31,7 @@ void main() {
   float sx = (height(c.x + 1, c.y) - height(c.x - 1, c.y)) / (2.0 * p.spacing);
   float sz = (height(c.x, c.y + 1) - height(c.x, c.y - 1)) / (2.0 * p.spacing);
   float previous = p.reset_foam != 0u ? 0.0 : imageLoad(displacement, texel).w;
-  float foam = max(previous * p.foam_decay, clamp(p.foam_threshold - 1.0, 0.0, 1.0));
+  float foam = foam_after_step(previous, p.foam_decay, foam_made(p.foam_threshold, 1.0, 1.0));
   imageStore(displacement, texel, vec4(0.0, h, 0.0, foam));
   imageStore(normal_jacobian, texel, vec4(normalize(vec3(-sx, 1.0, -sz)), 1.0));
   imageStore(jacobian_terms, texel, vec4(0.0, 0.0, 0.0, foam));

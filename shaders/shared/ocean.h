@@ -38,7 +38,7 @@ struct OceanPush {
   float time_s;      // simulation time of the step
   float dt_s;        // time since the previous step (foam decay)
   float choppiness;  // λ
-  float pad5;
+  float foam_build;  // 1: the step makes foam where J is low; 0: it only fades (OceanStepPass's ticks)
   float foam_decay_per_s;
   float pad0;
   float pad1;

@@ -189,7 +189,8 @@ void GpuOcean::build(std::vector<CascadeSpectrum> spectra) {
   shoaling_gpu_ = std::make_unique<ShoalingGpu>(ctx_, shoaling_.get());
 }
 
-void GpuOcean::record_step(VkCommandBuffer cmd, double time_s, double dt_s, vk::GpuTimer* timer, Step step) {
+void GpuOcean::record_step(VkCommandBuffer cmd, double time_s, double dt_s, vk::GpuTimer* timer, Step step,
+                           bool build_foam) {
   // Readers of last step's textures (graphics sampling, readback) must finish before they are rewritten.
   const vk::Access readers{vk::access::kGraphicsSampled.stage | VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT |
                                VK_PIPELINE_STAGE_2_TRANSFER_BIT,
@@ -204,6 +205,7 @@ void GpuOcean::record_step(VkCommandBuffer cmd, double time_s, double dt_s, vk::
                         .time_s = float(time_s),
                         .dt_s = float(dt_s),
                         .choppiness = float(params_.choppiness),
+                        .foam_build = build_foam ? 1.0f : 0.0f,
                         .foam_decay_per_s = float(params_.foam.decay_per_s)};
     for (uint32_t layer = 0; layer < count; ++layer) {
       push.patch_size_m[layer] = float(spectra_[g->cascades[layer]].patch_size_m);

@@ -69,8 +69,10 @@ class GpuOcean {
   // levels, the rest of the displacement and the other textures for the next Full step, which rewrites them:
   // for steps nobody samples, such as a foam warm-up. Full and warm-up steps give the same foam.
   enum class Step { Full, WarmUp };
+  // build_foam false: the FFT ocean's foam only fades in this step (OceanStepPass makes foam at fixed
+  // 0.1 s ticks only, so that how often a run steps does not change its foam).
   void record_step(VkCommandBuffer cmd, double time_s, double dt_s, vk::GpuTimer* timer = nullptr,
-                   Step step = Step::Full);
+                   Step step = Step::Full, bool build_foam = true);
 
   // The next step starts foam from none again, as the first step does, so the foam depends only on the steps
   // recorded from here on (a replayed warm-up, docs/datasets.md). The springs' grid needs no restart: it is

@@ -14,9 +14,16 @@ namespace lagoon::render {
 
 class OceanStepPass {
  public:
-  // Before a still frame the ocean runs this long (in kWarmupStep steps) so foam has built up.
+  // Before a still frame the ocean runs at least this long (in kWarmupStep steps) so foam has built up; for
+  // the FFT ocean as long as its foam lasts (warmup_s()).
   static constexpr double kWarmupS = 3.0;
   static constexpr double kWarmupStep = 0.1;
+  // The FFT ocean makes foam only at the ticks of its clock, the multiples of kWarmupStep: the steps between
+  // ticks only fade it, and a step that passes ticks first makes their foam (foam-only steps at the ticks).
+  // So foam does not depend on how often a run steps: a demo at 60 Hz, a sequence at 30 fps and a still
+  // frame's warm-up make the same foam, and with foam that lasts at most warmup_s() (shared/foam.h) a still
+  // frame shows what a live run shows at the same time.
+  double warmup_s() const;
 
   // Fails with the parameter's message when the scene's ocean is invalid (ocean/validate.h).
   static Result<OceanStepPass> create(vk::Context& ctx, const ocean::OceanParams& params);
@@ -35,6 +42,10 @@ class OceanStepPass {
 
  private:
   explicit OceanStepPass(std::unique_ptr<ocean::GpuOcean> ocean) : ocean_(std::move(ocean)) {}
+  bool ticks() const { return ocean_->params().model == ocean::SurfaceModel::Fft; }
+  void prepare_ticks(vk::Context& ctx, double t);
+  void record_ticks(const FrameContext& frame);
+
   std::unique_ptr<ocean::GpuOcean> ocean_;
   double time_s_ = -1;          // of the last step recorded; < 0 before the first
   std::string spectra_digest_;  // of the ocean's spectra, for the foam cache's key (render/foam_cache.h)

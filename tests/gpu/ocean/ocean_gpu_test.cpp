@@ -78,7 +78,9 @@ TEST_P(OceanGpuVariant, EveryFieldMatchesTheCpuReference) {
       {"dx", "height", "dz", "foam"}, {"nx", "ny", "nz", "jacobian"}, {"dDx/dx", "dDz/dz", "dDx/dz", "foam"}};
   for (size_t c = 0; c < gpu.size(); ++c) {
     for (int comp = 0; comp < 4; ++comp) {
-      EXPECT_LT(component_error(gpu[c].displacement, cpu.cascades()[c].displacement, comp), 1e-5)
+      // The foam's fade rounds (foam + 0.4) (shared/foam.h), not the foam alone: 3e-5 for it.
+      EXPECT_LT(component_error(gpu[c].displacement, cpu.cascades()[c].displacement, comp),
+                comp == 3 ? 3e-5 : 1e-5)
           << "cascade " << c << " " << names[0][comp];
       EXPECT_LT(component_error(gpu[c].normal_jacobian, cpu.cascades()[c].normal_jacobian, comp), 1e-5)
           << "cascade " << c << " " << names[1][comp];
