@@ -394,7 +394,7 @@ double monahan(double u10) {
 
 // The share of the sea's area where the foam Lagoon draws is at least 0.5 (drawn_foam, validate_foam.h) on
 // a 512² grid over the largest patch, averaged over 10 frames 1 s apart after 30 s of steps at 10 Hz (15 s
-// in --quick: the foam's decay of 0.5/s forgets its start to e^-7.5 by then). One frame is not enough: the
+// in --quick: foam lasts 4.2 s at most at the default decay of 0.3/s). One frame is not enough: the
 // whitecaps are mostly the finest cascade's, a few dozen patches on its tile at light winds.
 double foam_coverage(vk::Context& ctx, const ocean::OceanParams& p, const ValidateOptions& o) {
   ocean::GpuOcean gpu(ctx, p);
@@ -432,7 +432,7 @@ Law whitecaps(vk::Context& ctx, const ValidateOptions& o) {
           "Coverage: the share of the area where the foam Lagoon draws (each cascade's, and the whole "
           "sea's Jacobian's, as the surface shader combines them) is at least 0.5, averaged over 10 "
           "frames 1 s apart. Fully developed "
-          "JONSWAP sea, the default foam settings (threshold 0.5, decay 0.5/s), cascades of 20, 2 and 0.2 "
+          "JONSWAP sea, the default foam settings (coverage monahan, decay 0.3/s), cascades of 20, 2 and 0.2 "
           "peak wavelengths. Reference W = 3.84e-6 U10^3.41."};
   const std::vector<double> us = winds(o);
   for (size_t i = 0; i < us.size(); ++i) {

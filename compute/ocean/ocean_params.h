@@ -149,7 +149,10 @@ struct FoamParams {
   // clamp(threshold - J, 0, 1), persisting as it decays. With coverage threshold the whole sea's Jacobian
   // whitens by the same rule; with monahan by ocean/whitecaps.h's.
   double threshold = 0.5;
-  double decay_per_s = 0.5;  // existing foam decays as exp(-decay_per_s · dt) (persistence)
+  // Existing foam fades as (foam + 0.4) e^{-decay_per_s t} - 0.4 (shaders/shared/foam.h). 0.3: whitecaps'
+  // foam at least ½ for 1.5 s at a point (field whitecaps: 0.5-8 s, Callaghan et al. 2012; validate's
+  // foam.lifetime), gone within 4.2 s.
+  double decay_per_s = 0.3;
 };
 
 struct OceanParams {

@@ -26,13 +26,39 @@ const std::string& host_cpu_features() {
 
 }  // namespace
 
-std::string spectra_digest(const ocean::GpuOcean& ocean) {
+std::string spectra_digest(const std::vector<ocean::CascadeSpectrum>& spectra) {
   std::string all;
-  for (const ocean::CascadeSpectrum& s : ocean.spectra()) {
+  for (const ocean::CascadeSpectrum& s : spectra) {
     all += io::sha256_hex(std::as_bytes(std::span(s.h0))) + "\n";
     all += io::sha256_hex(std::as_bytes(std::span(s.omega))) + "\n";
   }
   return io::sha256_hex(std::as_bytes(std::span(all.data(), all.size())));
+}
+
+std::string spectra_digest(const ocean::GpuOcean& ocean) {
+  return spectra_digest(ocean.spectra());
+}
+
+ocean::FoamRule cached_foam_rule(const ocean::OceanParams& p, const std::vector<ocean::CascadeSpectrum>& spectra) {
+  io::ResultKey key = table_key("foam-rule");
+  key.add("model", double(int(p.model))).add("coverage", double(int(p.foam.coverage)));
+  key.add("threshold", p.foam.threshold).add("decay", p.foam.decay_per_s).add("choppiness", p.choppiness);
+  key.add("wind", p.spectrum.wind_speed_mps);
+  for (const ocean::CascadeSpectrum& s : spectra)
+    key.add("resolution", s.resolution).add("patch_size", s.patch_size_m);
+  key.add("spectra", spectra_digest(spectra));
+  const size_t count = 2 + 2 * spectra.size();
+  const io::ResultCache cache = io::ResultCache::from_environment();
+  if (auto v = cache.load_vector<double>(key, count)) {
+    ocean::FoamRule rule{{(*v)[0], (*v)[1]}, {}};
+    for (size_t c = 0; c < spectra.size(); ++c) rule.cascades.push_back({(*v)[2 + 2 * c], (*v)[3 + 2 * c]});
+    return rule;
+  }
+  const ocean::FoamRule rule = ocean::foam_rule(p, spectra);
+  std::vector<double> values = {rule.whole.onset, rule.whole.width};
+  for (const ocean::FoamRamp& c : rule.cascades) values.push_back(c.onset), values.push_back(c.width);
+  cache.store_vector(key, values);
+  return rule;
 }
 
 void add_device(io::ResultKey& key, const vk::Context& ctx) {

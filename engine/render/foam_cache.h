@@ -33,6 +33,12 @@ void add_device(io::ResultKey& key, const vk::Context& ctx);
 io::ResultKey foam_key(const vk::Context& ctx, const ocean::GpuOcean& ocean,
                        const std::string& spectra_digest, const WarmUp& warm_up);
 
+// The foam rule (ocean/whitecaps.h) for these parameters and spectra, as an earlier run worked it out (~0.3 s
+// of CPU FFTs at the shipped cascades, on the thread GpuOcean gives it), or worked out and filed now: a
+// GpuOcean's FoamRuleSource.
+ocean::FoamRule cached_foam_rule(const ocean::OceanParams& params,
+                                 const std::vector<ocean::CascadeSpectrum>& spectra);
+
 // The foam an earlier run filed under `key`, when there is one that fits `ocean`.
 std::optional<std::vector<float>> load_foam(const io::ResultKey& key, const ocean::GpuOcean& ocean);
 void store_foam(const io::ResultKey& key, const std::vector<float>& foam);

@@ -197,7 +197,7 @@ void read_foam(ObjectReader& r, ocean::FoamParams& f) {
            "over) is below this, at rate clamp(threshold - J, 0, 1); higher = more foam.");
   r.number("decay_per_s", f.decay_per_s, Bounds::between(0, 100), "1/s",
            "How fast foam fades: as (foam + 0.4) exp(-decay_per_s * t) - 0.4, to nothing within "
-           "ln(3.5)/decay_per_s seconds (2.5 s at 0.5); 0 = foam never fades.");
+           "ln(3.5)/decay_per_s seconds (4.2 s at 0.3); 0 = foam never fades.");
 }
 
 }  // namespace

@@ -109,15 +109,17 @@ void GpuOcean::Group::create_images(vk::Context& ctx) {
 }
 
 Result<std::unique_ptr<GpuOcean>> GpuOcean::create(vk::Context& ctx, const OceanParams& params,
-                                                   FftVariant variant) {
+                                                   FftVariant variant, FoamRuleSource foam_rule_source) {
   if (auto valid = validate(params); !valid) return valid.error();
-  return std::make_unique<GpuOcean>(ctx, params, variant);
+  return std::make_unique<GpuOcean>(ctx, params, variant, std::move(foam_rule_source));
 }
 
-GpuOcean::GpuOcean(vk::Context& ctx, const OceanParams& params, FftVariant variant)
+GpuOcean::GpuOcean(vk::Context& ctx, const OceanParams& params, FftVariant variant,
+                   FoamRuleSource foam_rule_source)
     : ctx_(ctx),
       params_(params),
       variant_(variant),
+      foam_rule_source_(std::move(foam_rule_source)),
       mips_(vk::ComputePipeline::create(ctx, shaders::ocean_mips_comp)) {
   if (auto valid = validate(params); !valid) throw std::logic_error("GpuOcean: " + valid.error().message);
   std::vector<CascadeSpectrum> spectra = make_cascade_spectra(params);
@@ -145,8 +147,9 @@ const FoamRule& GpuOcean::foam_rule() const {
 void GpuOcean::build(std::vector<CascadeSpectrum> spectra) {
   spectra_ = std::move(spectra);
   foam_rule_.reset();
-  foam_rule_pending_ = std::async(std::launch::async, [params = params_, spectra = spectra_] {
-    return ocean::foam_rule(params, spectra);
+  foam_rule_pending_ = std::async(std::launch::async, [source = foam_rule_source_, params = params_,
+                                                       spectra = spectra_] {
+    return source ? source(params, spectra) : ocean::foam_rule(params, spectra);
   });
   groups_.clear();
   cascade_slots_.assign(spectra_.size(), {0, 0});

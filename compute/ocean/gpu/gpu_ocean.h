@@ -6,6 +6,7 @@
 // displacement (λDx, h, λDz, foam) and (normal, Jacobian) textures, then their mip chains. Records only; the
 // caller submits.
 #pragma once
+#include <functional>
 #include <future>
 #include <memory>
 #include <optional>
@@ -47,14 +48,20 @@ struct CascadeReadback {
   std::vector<float> jacobian_terms;  // from half floats
 };
 
+// Where the foam rule comes from: ocean::foam_rule by default; the renderer's keeps it between runs
+// (render/foam_cache.h). Called on another thread.
+using FoamRuleSource = std::function<FoamRule(const OceanParams&, const std::vector<CascadeSpectrum>&)>;
+
 class GpuOcean {
  public:
   // The way in for parameters a user gave: invalid ones (ocean/validate.h) come back as the error.
   static Result<std::unique_ptr<GpuOcean>> create(vk::Context& ctx, const OceanParams& params,
-                                                  FftVariant variant = FftVariant::Auto);
+                                                  FftVariant variant = FftVariant::Auto,
+                                                  FoamRuleSource foam_rule_source = {});
   // For parameters known to be valid (tests, tools that validated them): invalid ones are a programming
   // error and throw std::logic_error.
-  GpuOcean(vk::Context& ctx, const OceanParams& params, FftVariant variant = FftVariant::Auto);
+  GpuOcean(vk::Context& ctx, const OceanParams& params, FftVariant variant = FftVariant::Auto,
+           FoamRuleSource foam_rule_source = {});
   // For tests: explicit spectra (one per cascade of `params`) instead of make_cascade_spectrum.
   GpuOcean(vk::Context& ctx, const OceanParams& params, std::vector<CascadeSpectrum> spectra,
            FftVariant variant = FftVariant::Auto);
@@ -115,7 +122,8 @@ class GpuOcean {
   OceanParams params_;
   FftVariant variant_;
   std::vector<CascadeSpectrum> spectra_;
-  // Worked out on another thread from build() (~0.2 s of CPU FFTs at the shipped cascades) while the
+  FoamRuleSource foam_rule_source_;
+  // Worked out on another thread from build() (~0.3 s of CPU FFTs at the shipped cascades) while the
   // device is set up; taken at the first step or foam_rule().
   mutable std::future<FoamRule> foam_rule_pending_;
   mutable std::optional<FoamRule> foam_rule_;

@@ -10,7 +10,8 @@
 namespace lagoon::render {
 
 Result<OceanStepPass> OceanStepPass::create(vk::Context& ctx, const ocean::OceanParams& params) {
-  auto ocean = ocean::GpuOcean::create(ctx, params);
+  // The foam rule from the result cache when an earlier run of this sea worked it out (render/foam_cache.h).
+  auto ocean = ocean::GpuOcean::create(ctx, params, ocean::FftVariant::Auto, cached_foam_rule);
   if (!ocean) return ocean.error();
   return OceanStepPass(std::move(*ocean));
 }

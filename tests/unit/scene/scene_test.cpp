@@ -210,7 +210,7 @@ TEST(SceneOcean, AbsentBlockGivesDefaults) {
   EXPECT_EQ(o.cascades[2].patch_size_m, 10.0);
   for (const ocean::CascadeParams& c : o.cascades) EXPECT_EQ(c.resolution, 256u);
   EXPECT_EQ(o.foam.threshold, 0.5);
-  EXPECT_EQ(o.foam.decay_per_s, 0.5);
+  EXPECT_EQ(o.foam.decay_per_s, 0.3);
 }
 
 TEST(SceneOcean, EmptyBlocksGiveDefaults) {
@@ -375,7 +375,7 @@ TEST(SceneOcean, OutOfRangeValues) {
       {R"({"foam": {"threshold": -1.5}})",
        "ocean.foam.threshold: -1.5 is out of range; allowed: number -1 to 2"},
       {R"({"foam": {"decay_per_s": 101}})",
-       "ocean.foam.decay_per_s: 101 is out of range; allowed: number 0 to 100 1/s (default 0.5)"},
+       "ocean.foam.decay_per_s: 101 is out of range; allowed: number 0 to 100 1/s (default 0.3)"},
   };
   for (const auto& [ocean_block, expected] : cases) {
     EXPECT_TRUE(Contains(ParseError(R"({"ocean": )" + ocean_block + "}"), "scenes/x.json: " + expected));
