@@ -39,8 +39,9 @@ std::string spectra_digest(const ocean::GpuOcean& ocean) {
   return spectra_digest(ocean.spectra());
 }
 
-ocean::FoamRule cached_foam_rule(const ocean::OceanParams& p, const std::vector<ocean::CascadeSpectrum>& spectra) {
-  io::ResultKey key = table_key("foam-rule");
+ocean::FoamRule cached_foam_rule(const ocean::OceanParams& p,
+                                 const std::vector<ocean::CascadeSpectrum>& spectra) {
+  io::ResultKey key = table_key("whitecaps");
   key.add("model", double(int(p.model))).add("coverage", double(int(p.foam.coverage)));
   key.add("threshold", p.foam.threshold).add("decay", p.foam.decay_per_s).add("choppiness", p.choppiness);
   key.add("wind", p.spectrum.wind_speed_mps);

@@ -86,6 +86,7 @@ TEST_F(CachedTablesRender, TablesFromTheCacheDrawTheSamePictureAndOtherWaterGets
   EXPECT_EQ(files_of("water"), 1u);
   EXPECT_EQ(files_of("environment"), 1u);
   EXPECT_EQ(files_of("foam"), 1u);                 // the still frame's warm-up (render/foam_cache.h)
+  EXPECT_EQ(files_of("whitecaps"), 1u);            // the cascades' foam onsets (the same file)
   const io::Image8 warm = render(coastal, cache);  // reads them
   EXPECT_EQ(files_of("water"), 1u);
   EXPECT_EQ(max_channel_difference(computed, cold), 0);

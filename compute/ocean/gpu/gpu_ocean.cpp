@@ -147,10 +147,10 @@ const FoamRule& GpuOcean::foam_rule() const {
 void GpuOcean::build(std::vector<CascadeSpectrum> spectra) {
   spectra_ = std::move(spectra);
   foam_rule_.reset();
-  foam_rule_pending_ = std::async(std::launch::async, [source = foam_rule_source_, params = params_,
-                                                       spectra = spectra_] {
-    return source ? source(params, spectra) : ocean::foam_rule(params, spectra);
-  });
+  foam_rule_pending_ =
+      std::async(std::launch::async, [source = foam_rule_source_, params = params_, spectra = spectra_] {
+        return source ? source(params, spectra) : ocean::foam_rule(params, spectra);
+      });
   groups_.clear();
   cascade_slots_.assign(spectra_.size(), {0, 0});
   reset_foam_ = true;
