@@ -45,28 +45,29 @@ void OceanStepPass::prepare(vk::Context& ctx, double t, bool sequence) {
   // max(foam, new) with nothing decayed.
   if (time_s_ >= 0 && t >= time_s_ && (sequence || t - time_s_ <= warmup_s())) return;
   if (ticks()) return prepare_ticks(ctx, t);
-  ocean_->restart();
-  // A still frame needs the foam a running ocean would have: run the last few seconds first, or take what
-  // an earlier run's identical warm-up left (render/foam_cache.h).
+  // A still frame needs the foam a running ocean would have: run the last few seconds first.
   std::vector<double> steps = {t - kWarmupS};
   for (double step = steps.back() + kWarmupStep; step < t - 1e-9; step += kWarmupStep) steps.push_back(step);
+  warm_up(ctx, t, steps, kWarmupS);
+}
+
+void OceanStepPass::warm_up(vk::Context& ctx, double t, const std::vector<double>& steps, double length_s) {
+  ocean_->restart();
+  // Or take what an earlier run's identical warm-up left (render/foam_cache.h).
   if (spectra_digest_.empty()) spectra_digest_ = spectra_digest(*ocean_);
   const io::ResultKey key =
-      foam_key(ctx, *ocean_, spectra_digest_, {.time_s = t, .length_s = kWarmupS, .step_s = kWarmupStep});
-  if (auto foam = load_foam(key, *ocean_); foam && ocean_->write_foam(*foam)) {
-    time_s_ = steps.back();
-  } else {
-    ctx.submit_and_wait([&](VkCommandBuffer cmd) {
-      double previous = steps.front();
-      // The warm-up's textures are not drawn: its steps bring the foam alone to their time (GpuOcean::Step).
-      for (double step : steps) {
-        ocean_->record_step(cmd, step, step - previous, nullptr, ocean::GpuOcean::Step::WarmUp);
-        previous = step;
-      }
-    });
-    time_s_ = steps.back();
-    if (ocean_->params().model != ocean::SurfaceModel::Springs) store_foam(key, ocean_->read_foam());
-  }
+      foam_key(ctx, *ocean_, spectra_digest_, {.time_s = t, .length_s = length_s, .step_s = kWarmupStep});
+  time_s_ = steps.back();
+  if (auto foam = load_foam(key, *ocean_); foam && ocean_->write_foam(*foam)) return;
+  ctx.submit_and_wait([&](VkCommandBuffer cmd) {
+    double previous = steps.front();
+    // The warm-up's textures are not drawn: its steps bring the foam alone to their time (GpuOcean::Step).
+    for (double step : steps) {
+      ocean_->record_step(cmd, step, step - previous, nullptr, ocean::GpuOcean::Step::WarmUp);
+      previous = step;
+    }
+  });
+  if (ocean_->params().model != ocean::SurfaceModel::Springs) store_foam(key, ocean_->read_foam());
 }
 
 void OceanStepPass::record(const FrameContext& frame) {
@@ -79,28 +80,12 @@ void OceanStepPass::record(const FrameContext& frame) {
 }
 
 void OceanStepPass::prepare_ticks(vk::Context& ctx, double t) {
-  ocean_->restart();
-  // The ticks of the last warmup_s() before t (a tick at t is the frame's own step's), or what an earlier
-  // run's identical warm-up left. The ocean then holds a time before t: the frame's step is still to come.
+  // The ticks of the last warmup_s() before t (a tick at t is the frame's own step's). The ocean then holds a
+  // time before t: the frame's step is still to come.
   std::vector<double> steps;
   const long long last = is_tick(t) ? tick_at_or_before(t) - 1 : tick_at_or_before(t);
   for (long long k = tick_at_or_before(t - warmup_s()) + 1; k <= last; ++k) steps.push_back(tick_time(k));
-  if (spectra_digest_.empty()) spectra_digest_ = spectra_digest(*ocean_);
-  const io::ResultKey key =
-      foam_key(ctx, *ocean_, spectra_digest_, {.time_s = t, .length_s = warmup_s(), .step_s = kWarmupStep});
-  if (auto foam = load_foam(key, *ocean_); foam && ocean_->write_foam(*foam)) {
-    time_s_ = steps.back();
-    return;
-  }
-  ctx.submit_and_wait([&](VkCommandBuffer cmd) {
-    double previous = steps.front();
-    for (double step : steps) {
-      ocean_->record_step(cmd, step, step - previous, nullptr, ocean::GpuOcean::Step::WarmUp);
-      previous = step;
-    }
-  });
-  time_s_ = steps.back();
-  store_foam(key, ocean_->read_foam());
+  warm_up(ctx, t, steps, warmup_s());
 }
 
 void OceanStepPass::record_ticks(const FrameContext& frame) {

@@ -4,6 +4,7 @@
 #pragma once
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "core/result.h"
 #include "ocean/gpu/gpu_ocean.h"
@@ -44,6 +45,8 @@ class OceanStepPass {
   explicit OceanStepPass(std::unique_ptr<ocean::GpuOcean> ocean) : ocean_(std::move(ocean)) {}
   bool ticks() const { return ocean_->params().model == ocean::SurfaceModel::Fft; }
   void prepare_ticks(vk::Context& ctx, double t);
+  // From still water (restart), the foam-only `steps` up to t, or the foam an identical warm-up filed.
+  void warm_up(vk::Context& ctx, double t, const std::vector<double>& steps, double length_s);
   void record_ticks(const FrameContext& frame);
 
   std::unique_ptr<ocean::GpuOcean> ocean_;
