@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ocean/foam_law.h"
 #include "ocean/gpu/gpu_ocean.h"
 #include "ocean/spectrum.h"
 #include "ocean/whitecaps.h"
@@ -113,7 +114,7 @@ std::vector<uint8_t> drawn_foam(const ocean::GpuOcean& gpu, const ocean::OceanPa
         tx += t[0], tz += t[1], txz += t[2], foam = std::max(foam, double(t[3]));
       }
       const double jacobian = (1 + tx) * (1 + tz) - txz * txz;
-      foam = std::max(foam, std::clamp((rule.whole.onset - jacobian) / rule.whole.width, 0.0, 1.0));
+      foam = std::max(foam, ocean::foam_made(rule.whole.onset, rule.whole.width, jacobian));
       out[size_t(j) * grid + i] = foam >= 0.5 ? 1 : 0;
     }
   return out;

@@ -3,17 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ocean/foam_law.h"
+
 namespace lagoon::ocean {
-namespace foam_double {
-using foam_real = double;
-using std::clamp;
-using std::max;
-#define LAGOON_FN inline
-#include "shared/foam_math.h"
-#undef LAGOON_FN
-}  // namespace foam_double
-using foam_double::foam_after_step;
-using foam_double::foam_made;
 
 CpuOceanStep::CpuOceanStep(const OceanParams& params, std::vector<CascadeSpectrum> spectra, InverseFft2d fft)
     : params_(params),
