@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <cstdint>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -18,6 +19,12 @@ inline const std::filesystem::path& scratch() {
     std::filesystem::create_directories(d);
     return d;
   }();
+  // Removed when the fuzzer exits (libFuzzer ends with exit()), so runs do not pile folders up. Registered
+  // after `dir` is made, so it runs before `dir` is destroyed.
+  [[maybe_unused]] static const int cleanup = std::atexit([] {
+    std::error_code ec;
+    std::filesystem::remove_all(scratch(), ec);
+  });
   return dir;
 }
 

@@ -1,8 +1,11 @@
-// A fresh folder per test (named after the test), removed when the test ends.
+// A fresh folder per test (named after the test), removed when the test ends. A parameterised test's suite
+// name holds a '/' ("Variants/ValidateBroken"): it is made a '_', or the folder would be one level down and
+// its parent left behind in the temporary folder after every run.
 #pragma once
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
 
@@ -12,8 +15,10 @@ class TempDir {
  public:
   explicit TempDir(const std::string& prefix = "lagoon_test") {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = std::filesystem::temp_directory_path() /
-            (prefix + "-" + std::to_string(::getpid()) + "-" + info->test_suite_name() + "-" + info->name());
+    std::string name =
+        prefix + "-" + std::to_string(::getpid()) + "-" + info->test_suite_name() + "-" + info->name();
+    std::replace(name.begin(), name.end(), '/', '_');
+    path_ = std::filesystem::temp_directory_path() / name;
     std::filesystem::remove_all(path_);
     std::filesystem::create_directories(path_);
   }
