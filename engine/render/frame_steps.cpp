@@ -62,12 +62,14 @@ struct FrameSteps {
     if (!(ground_truth && r.ocean_step_->holds(f.scene.time_s))) r.ocean_step_->record(f);
     r.wakes_->record(f);
   }
-  // Writes: the caustic map, ready for the fragment shaders.
+  // Writes: the caustic map, ready for the fragment shaders (unless the request's frame has it already).
   static void caustics(OceanRenderer& r, const FrameContext& f, const Request& q) {
-    r.caustics_->record(f, q.caustics);
+    if (!q.views_drawn) r.caustics_->record(f, q.caustics);
   }
-  // Writes: what lies under the water (albedo and depth), sampled by the surface and the underwater view.
-  static void refraction(OceanRenderer& r, const FrameContext& f, const Request&) {
+  // Writes: what lies under the water (albedo and depth), sampled by the surface and the underwater view
+  // (unless the request's frame has it already).
+  static void refraction(OceanRenderer& r, const FrameContext& f, const Request& q) {
+    if (q.views_drawn) return;
     vk::use(f.cmd, {r.refraction_->albedo(), r.refraction_->depth()}, Discard, Attachment);
     r.refraction_->record(f);
     vk::use(f.cmd, {r.refraction_->albedo(), r.refraction_->depth()}, Attachment, Sampled);

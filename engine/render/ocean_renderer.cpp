@@ -19,6 +19,7 @@
 #include "render/passes/waterline_pass.h"
 #include "render/sky_light.h"
 #include "render/surface_grid.h"
+#include "scene/scene_io.h"
 #include "vk/barriers.h"
 #include "vk/transfer.h"
 
@@ -227,6 +228,7 @@ void OceanRenderer::write_sediment(double time_s, FrameSlot& slot) const {
 void OceanRenderer::resize(VkExtent2D extent) {
   if (extent_.width == extent.width && extent_.height == extent.height) return;
   if (extent_.width != 0) ctx_.wait_idle();  // frames in flight may still use the old size
+  views_drawn_for_.clear();                  // the targets are new
   refraction_->resize(extent);
   reflection_->resize(extent);
   window_->resize(extent);
@@ -273,6 +275,12 @@ void OceanRenderer::record(VkCommandBuffer cmd, const scene::Scene& scene, const
                        .caustics = caustics,
                        .color = {targets.color, targets.color_view, VK_IMAGE_ASPECT_COLOR_BIT},
                        .depth = {targets.depth, targets.depth_view, VK_IMAGE_ASPECT_DEPTH_BIT}});
+  views_drawn_for_ = views_key(frame);
+}
+
+std::string OceanRenderer::views_key(const FrameContext& frame) {
+  return scene::scene_to_json(frame.scene, {}).dump() + " side " + std::to_string(int(frame.camera_side)) +
+         " size " + std::to_string(frame.extent.width) + "x" + std::to_string(frame.extent.height);
 }
 
 std::vector<vk::PassTime> OceanRenderer::timings(uint32_t slot) const {

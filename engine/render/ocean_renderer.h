@@ -9,6 +9,7 @@
 #include <array>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "core/result.h"
@@ -168,7 +169,13 @@ class OceanRenderer {
     vk::Target color{}, depth{};           // Picture: the frame's own targets
     const FloatTargets* floats = nullptr;  // SurfaceAov (2 colours), UnderwaterTerms (3)
     bool objects = false;                  // SurfaceAov: the meshes' ground truth over the surface's
+    // UnderwaterTerms: the caustic map and the refraction targets already hold this frame's (the picture
+    // of the same scene, side and size was the last to draw them), so they are not drawn again.
+    bool views_drawn = false;
   };
+  // What the caustic map and the refraction targets were last drawn for: the scene, the camera's side and
+  // the size (views_key); empty when unknown.
+  static std::string views_key(const FrameContext& frame);
   void record_frame(const FrameContext& frame, const FrameRequest& request);
   friend struct FrameSteps;
   // The passes' own targets, kept across frames of the same size (allocating ~30 MB of images every frame
@@ -206,7 +213,8 @@ class OceanRenderer {
   std::unique_ptr<ParticlesPass> particles_;
   std::unique_ptr<world::World> world_;
   History history_ = History::Continuous;
-  VkExtent2D extent_{};  // of the passes' targets
+  VkExtent2D extent_{};          // of the passes' targets
+  std::string views_drawn_for_;  // views_key() of the frame that last drew the caustics and refraction
   std::unique_ptr<OwnTargets> own_;
   std::array<FrameSlot, kSlots> slots_;
 };

@@ -222,5 +222,63 @@ TEST_F(GroundTruthRender, UnderTheWaterThePictureIsCleanTimesTransmissionPlusBac
   EXPECT_GT(b_max, 0.0);
 }
 
+// A dataset draws the underwater terms right after the picture of the same frame, whose caustic map and
+// refraction they reuse: the terms are those a renderer that drew nothing before gives, and a picture of
+// another view is not reused.
+TEST_F(GroundTruthRender, TheTermsReuseThePicturesViewsOnlyWhenTheyAreOfTheSameFrame) {
+  const std::vector<std::string> below = {"render.width=64", "render.height=36", "camera.position=[0,-3,0]",
+                                          "camera.look_at=[4,-3.5,12]", "wakes.enabled=false"};
+  std::vector<std::string> turned = below;
+  turned[3] = "camera.look_at=[-6,-4,8]";
+  const std::string harbour = std::string(LAGOON_SOURCE_DIR) + "/scenes/harbour.json";
+  auto s = scene::load_scene(harbour, below);
+  auto other = scene::load_scene(harbour, turned);
+  ASSERT_TRUE(s && other);
+  auto terms_alone = [&](const scene::Scene& scene) {
+    auto fresh = render::OceanRenderer::create(ctx(), scene);
+    EXPECT_TRUE(fresh) << fresh.error().message;
+    return (*fresh)->render_underwater_terms(scene);
+  };
+  auto drew = [](const render::OceanRenderer& r, const std::string& pass) {
+    const auto times = r.timings(0);
+    return std::any_of(times.begin(), times.end(), [&](const vk::PassTime& t) { return t.name == pass; });
+  };
+  // The largest difference between two frames' terms, relative to the largest term.
+  auto difference = [](const render::OceanRenderer::UnderwaterTerms& a,
+                       const render::OceanRenderer::UnderwaterTerms& b) {
+    double most = 0, largest = 1e-9;
+    for (const auto& [x, y] : {std::pair{&a.clean, &b.clean}, std::pair{&a.transmission, &b.transmission},
+                               std::pair{&a.backscatter, &b.backscatter}})
+      for (size_t i = 0; i < x->size(); ++i)
+        for (int c = 0; c < 3; ++c) {
+          most = std::max(most, double(std::abs((*x)[i][c] - (*y)[i][c])));
+          largest = std::max(largest, double(std::abs((*x)[i][c])));
+        }
+    return most / largest;
+  };
+  auto renderer = render::OceanRenderer::create(ctx(), *s);
+  ASSERT_TRUE(renderer) << renderer.error().message;
+  (*renderer)->render(*s);
+  (*renderer)->render_surface_aov(*s, true);
+  const auto reused = (*renderer)->render_underwater_terms(*s);
+  EXPECT_FALSE(drew(**renderer, "refraction")) << "the picture's refraction is drawn again";
+  EXPECT_FALSE(drew(**renderer, "caustics"));
+  const auto alone = terms_alone(*s);
+  const double same = difference(reused, alone);
+  // The picture of another view: its refraction is not this frame's.
+  (*renderer)->render(*other);
+  const auto redrawn = (*renderer)->render_underwater_terms(*s);
+  EXPECT_TRUE(drew(**renderer, "refraction"));
+  const double after_other = difference(redrawn, alone);
+  const double views_differ = difference(terms_alone(*other), alone);
+  std::printf(
+      "terms reused: %.2e of the largest term from those drawn alone; after another view's picture "
+      "%.2e; the two views' terms differ by %.2f\n",
+      same, after_other, views_differ);
+  EXPECT_LT(same, 1e-5);
+  EXPECT_LT(after_other, 1e-5);
+  EXPECT_GT(views_differ, 0.1);  // the check can see a wrong view
+}
+
 }  // namespace
 }  // namespace lagoon::test
