@@ -15,6 +15,7 @@
 #include "vk/deferred.h"
 #include "vk/device_select.h"
 #include "vk/handle.h"
+#include "vk/pipeline_registry.h"
 #include "vk/validation.h"
 
 namespace lagoon::vk {
@@ -132,6 +133,8 @@ class Context {
   bool validation_enabled() const { return messenger_ != VK_NULL_HANDLE; }
   ValidationLog& validation() { return *validation_log_; }
   DeferredDestroyer& deferred() { return deferred_; }
+  // The pipelines declared on this device, and those made (vk/pipeline_registry.h).
+  PipelineRegistry& pipelines() const { return pipelines_; }
 
   // Memory type with all `required` flags (and `preferred` ones when possible); throws if none.
   uint32_t find_memory_type(uint32_t type_bits, VkMemoryPropertyFlags required,
@@ -185,6 +188,7 @@ class Context {
   Unique<VkCommandPool> one_shot_pool_;
   Unique<VkFence> one_shot_fence_;
   DeferredDestroyer deferred_;
+  mutable PipelineRegistry pipelines_;
 };
 
 }  // namespace lagoon::vk

@@ -308,20 +308,61 @@ void PipelineInterface::bind(VkCommandBuffer cmd, VkPipelineBindPoint point,
   if (push_size_ > 0) vkCmdPushConstants(cmd, layout_, push_stages_, 0, push_size_, push);
 }
 
-DeferredPipeline::DeferredPipeline(VkDevice device, std::function<VkPipeline()> make)
-    : state_(std::make_unique<State>()) {
-  state_->device = device;
-  state_->make = std::move(make);
+DeferredPipeline::DeferredPipeline(VkDevice device, std::function<VkPipeline()> make, std::string key,
+                                   PipelineRegistry* registry)
+    : recipe_(std::make_shared<PipelineRecipe>()) {
+  recipe_->device = device;
+  recipe_->key = std::move(key);
+  recipe_->make = std::move(make);
+  recipe_->registry = registry;
+  if (registry) registry->add(recipe_);
+}
+
+void DeferredPipeline::release() {
+  if (!recipe_) return;
+  {
+    std::lock_guard lock(recipe_->mutex);  // a making on another thread finishes first
+    recipe_->make = nullptr;
+  }
+  recipe_.reset();
+}
+
+DeferredPipeline::~DeferredPipeline() {
+  release();
+}
+
+DeferredPipeline& DeferredPipeline::operator=(DeferredPipeline&& other) {
+  if (this != &other) {
+    release();
+    recipe_ = std::move(other.recipe_);
+  }
+  return *this;
 }
 
 VkPipeline DeferredPipeline::get() const {
-  std::lock_guard lock(state_->mutex);
-  if (state_->make) {
-    state_->pipeline = Unique<VkPipeline>(state_->device, state_->make());
-    state_->make = nullptr;  // frees what the recipe captured
-  }
-  return state_->pipeline;
+  return recipe_->use();
 }
+
+namespace {
+
+std::string spec_key(std::span<const SpecConstant> spec) {
+  std::string key;
+  for (const SpecConstant& s : spec) key += " " + std::to_string(s.id) + "=" + std::to_string(s.value);
+  return key;
+}
+
+// Everything create_graphics_pipeline reads from the description.
+std::string graphics_key(const GraphicsDesc& d) {
+  std::string key = "graphics " + std::string(d.vertex->name) + " " + std::string(d.fragment->name);
+  for (VkFormat f : d.color_formats) key += " colour " + std::to_string(int(f));
+  key += " depth " + std::to_string(int(d.depth_format)) + " topology " + std::to_string(int(d.topology)) +
+         " cull " + std::to_string(d.cull) + " front " + std::to_string(int(d.front_face)) + " test " +
+         std::to_string(d.depth_test) + " write " + std::to_string(d.depth_write) + " compare " +
+         std::to_string(int(d.depth_compare)) + " blend " + std::to_string(d.alpha_blend);
+  return key + spec_key(d.spec);
+}
+
+}  // namespace
 
 ComputePipeline ComputePipeline::create(const Context& ctx, const ShaderCode& shader,
                                         std::span<const SpecConstant> spec) {
@@ -337,19 +378,23 @@ ComputePipeline ComputePipeline::create(const Context& ctx, const ShaderCode& sh
       if (stage->second.local_size_spec_ids[axis] == static_cast<int32_t>(s.id))
         p.local_size_[axis] = s.value;
 
-  p.pipeline_ = DeferredPipeline(ctx.device(), [&ctx, stage, layout = p.interface_.layout(),
-                                                spec = std::vector<SpecConstant>(spec.begin(), spec.end())] {
-    Unique<VkShaderModule> module = make_module(ctx, *stage->first);
-    const SpecInfo spec_info(spec);
-    const VkComputePipelineCreateInfo info{
-        .sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO,
-        .stage = shader_stage(VK_SHADER_STAGE_COMPUTE_BIT, module, stage->second, spec_info),
-        .layout = layout};
-    VkPipeline pipeline;
-    VK_CHECK(vkCreateComputePipelines(ctx.device(), ctx.pipeline_cache(), 1, &info, nullptr, &pipeline));
-    ctx.set_name(pipeline, VK_OBJECT_TYPE_PIPELINE, std::string(stage->first->name).c_str());
-    return pipeline;
-  });
+  std::string key = "compute " + std::string(shader.name) + spec_key(spec);
+  p.pipeline_ = DeferredPipeline(
+      ctx.device(),
+      [&ctx, stage, layout = p.interface_.layout(),
+       spec = std::vector<SpecConstant>(spec.begin(), spec.end())] {
+        Unique<VkShaderModule> module = make_module(ctx, *stage->first);
+        const SpecInfo spec_info(spec);
+        const VkComputePipelineCreateInfo info{
+            .sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO,
+            .stage = shader_stage(VK_SHADER_STAGE_COMPUTE_BIT, module, stage->second, spec_info),
+            .layout = layout};
+        VkPipeline pipeline;
+        VK_CHECK(vkCreateComputePipelines(ctx.device(), ctx.pipeline_cache(), 1, &info, nullptr, &pipeline));
+        ctx.set_name(pipeline, VK_OBJECT_TYPE_PIPELINE, std::string(stage->first->name).c_str());
+        return pipeline;
+      },
+      std::move(key), &ctx.pipelines());
   return p;
 }
 
@@ -377,7 +422,8 @@ GraphicsPipeline GraphicsPipeline::create(const Context& ctx, const GraphicsDesc
   p.interface_ = make_interface(ctx, *stages);
 
   p.pipeline_ = DeferredPipeline(
-      ctx.device(), [&ctx, stages, desc, layout = p.interface_.layout(), name = p.interface_.name()] {
+      ctx.device(),
+      [&ctx, stages, desc, layout = p.interface_.layout(), name = p.interface_.name()] {
         Unique<VkShaderModule> vs = make_module(ctx, *desc.vertex), fs = make_module(ctx, *desc.fragment);
         const SpecInfo spec_info(desc.spec);
         const VkPipelineShaderStageCreateInfo shader_stages[] = {
@@ -386,7 +432,8 @@ GraphicsPipeline GraphicsPipeline::create(const Context& ctx, const GraphicsDesc
         const VkPipeline pipeline = create_graphics_pipeline(ctx, desc, shader_stages, layout);
         ctx.set_name(pipeline, VK_OBJECT_TYPE_PIPELINE, name.c_str());
         return pipeline;
-      });
+      },
+      graphics_key(desc), &ctx.pipelines());
   return p;
 }
 

@@ -17,6 +17,8 @@
 
 #include "vk/buffer.h"
 #include "vk/handle.h"
+#include "vk/pipeline_recipe.h"
+#include "vk/pipeline_registry.h"
 #include "vk/shader_code.h"
 
 namespace lagoon::vk {
@@ -104,18 +106,21 @@ class PipelineInterface {
 class DeferredPipeline {
  public:
   DeferredPipeline() = default;
-  DeferredPipeline(VkDevice device, std::function<VkPipeline()> make);
+  // Declared in `registry` (when given) under `key` (vk/pipeline_recipe.h), so another thread may make it
+  // ahead of its first use (vk/pipeline_warmer.h).
+  DeferredPipeline(VkDevice device, std::function<VkPipeline()> make, std::string key,
+                   PipelineRegistry* registry);
+  // Waits for a making of it on another thread to finish (what the recipe captured, e.g. the layout, must
+  // outlive that).
+  ~DeferredPipeline();
+  DeferredPipeline(DeferredPipeline&&) = default;
+  DeferredPipeline& operator=(DeferredPipeline&& other);
   VkPipeline get() const;
-  bool empty() const { return !state_; }
+  bool empty() const { return !recipe_; }
 
  private:
-  struct State {
-    std::mutex mutex;
-    VkDevice device = VK_NULL_HANDLE;
-    std::function<VkPipeline()> make;
-    Unique<VkPipeline> pipeline;
-  };
-  std::unique_ptr<State> state_;
+  void release();
+  std::shared_ptr<PipelineRecipe> recipe_;
 };
 
 class ComputePipeline {
