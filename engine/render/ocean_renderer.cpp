@@ -1,6 +1,7 @@
 #include "render/ocean_renderer.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <future>
@@ -17,6 +18,7 @@
 #include "render/passes/underwater_pass.h"
 #include "render/passes/wakes_pass.h"
 #include "render/passes/waterline_pass.h"
+#include "render/pipeline_memory.h"
 #include "render/sky_light.h"
 #include "render/surface_grid.h"
 #include "scene/scene_io.h"
@@ -106,7 +108,16 @@ Result<void> OceanRenderer::init(const scene::Scene& scene, world::VehicleTracks
                                           kDepthFormat);
   underwater_ =
       std::make_unique<UnderwaterPass>(ctx_, *fields_, luts_, samplers_, kColorFormat, kDepthFormat);
+  t_passes.end();
+  // What the last runs of this scene made is made meanwhile on another thread: the warm-up and the first
+  // frame's recording ask for it (~300 ms of lavapipe's CPU for the bay's frame).
+  pipeline_memory_ = std::make_unique<PipelineMemory>(ctx_, scene);
+  warmer_ = std::make_unique<vk::PipelineWarmer>(ctx_.pipelines().find(pipeline_memory_->remembered()));
   return {};
+}
+
+void OceanRenderer::remember_pipelines() {
+  if (pipeline_memory_) pipeline_memory_->update(ctx_);
 }
 
 void OceanRenderer::prepare(const scene::Scene& scene) {
@@ -127,7 +138,16 @@ void OceanRenderer::prepare(const scene::Scene& scene) {
   wakes_->prepare(ctx_, scene, history_ == History::Sequence);
   t_wakes.end();
   StageTimer t_bodies("warm-up: bodies, remainder");
-  if (bodies.valid()) bodies.get();  // rethrows what the physics threw
+  if (bodies.valid()) {
+    // Waiting, this thread makes the pipelines the last run used from the first on, as the warmer does from
+    // the last on (a dataset's first frame waits here for ~0.5 s of the harbour's physics).
+    if (pipeline_memory_)
+      for (const auto& recipe : ctx_.pipelines().find(pipeline_memory_->remembered())) {
+        if (bodies.wait_for(std::chrono::seconds(0)) == std::future_status::ready) break;
+        recipe->made();
+      }
+    bodies.get();  // rethrows what the physics threw
+  }
 }
 
 void OceanRenderer::advance(const scene::Scene& scene) {
@@ -276,6 +296,7 @@ void OceanRenderer::record(VkCommandBuffer cmd, const scene::Scene& scene, const
                        .color = {targets.color, targets.color_view, VK_IMAGE_ASPECT_COLOR_BIT},
                        .depth = {targets.depth, targets.depth_view, VK_IMAGE_ASPECT_DEPTH_BIT}});
   views_drawn_for_ = views_key(frame);
+  remember_pipelines();
 }
 
 std::string OceanRenderer::views_key(const FrameContext& frame) {
@@ -298,6 +319,7 @@ io::Image8 OceanRenderer::render(const scene::Scene& scene, std::vector<vk::Pass
                         vk::access::kColorAttachmentWrite, own.readback);
   });
   if (timings) *timings = this->timings(0);
+  remember_pipelines();
   own.readback.invalidate();
   io::Image8 image{.width = extent.width, .height = extent.height};
   image.rgba.resize(vk::readback_bytes(own.color));

@@ -27,6 +27,7 @@
 #include "vk/context.h"
 #include "vk/gpu_timer.h"
 #include "vk/image.h"
+#include "vk/pipeline_warmer.h"
 #include "world/world.h"
 
 namespace lagoon::render {
@@ -36,6 +37,7 @@ class CausticsPass;
 class FloatTargets;
 class ObjectsPass;
 class OceanStepPass;
+class PipelineMemory;
 class ParticlesPass;
 class RefractionPass;
 class SkyPass;
@@ -177,6 +179,8 @@ class OceanRenderer {
   // the size (views_key); empty when unknown.
   static std::string views_key(const FrameContext& frame);
   void record_frame(const FrameContext& frame, const FrameRequest& request);
+  // Files the pipelines made so far for the next run (render/pipeline_memory.h).
+  void remember_pipelines();
   friend struct FrameSteps;
   // The passes' own targets, kept across frames of the same size (allocating ~30 MB of images every frame
   // cost lavapipe several ms).
@@ -215,6 +219,10 @@ class OceanRenderer {
   History history_ = History::Continuous;
   VkExtent2D extent_{};          // of the passes' targets
   std::string views_drawn_for_;  // views_key() of the frame that last drew the caustics and refraction
+  // The pipelines earlier runs of the scene made, made ahead on another thread. Last: the warmer stops
+  // before the passes whose pipelines it makes go.
+  std::unique_ptr<PipelineMemory> pipeline_memory_;
+  std::unique_ptr<vk::PipelineWarmer> warmer_;
   std::unique_ptr<OwnTargets> own_;
   std::array<FrameSlot, kSlots> slots_;
 };

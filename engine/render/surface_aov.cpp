@@ -17,6 +17,7 @@ OceanRenderer::SurfaceAov OceanRenderer::render_surface_aov(const scene::Scene& 
     record_frame(frame, {.kind = FrameKind::SurfaceAov, .floats = &targets, .objects = with_objects});
     targets.record_readback(cmd);
   });
+  remember_pipelines();
   return {.width = extent.width,
           .height = extent.height,
           .normal_foam = targets.read(0),

@@ -29,6 +29,7 @@ OceanRenderer::UnderwaterTerms OceanRenderer::render_underwater_terms(const scen
     views_drawn_for_ = key;
     terms.record_readback(cmd);
   });
+  remember_pipelines();
   return {.width = extent.width,
           .height = extent.height,
           .clean = terms.read(0),

@@ -4,13 +4,17 @@
 // cached ones.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <thread>
 
 #include "ocean/gpu/dynamic_layer_gpu.h"
 #include "render/ocean_renderer.h"
 #include "render/passes/wakes_pass.h"
+#include "render/pipeline_memory.h"
 #include "support/edited_scene.h"
 #include "support/image_compare.h"
 #include "support/temp_dir.h"
@@ -97,6 +101,49 @@ TEST_F(CachedTablesRender, TablesFromTheCacheDrawTheSamePictureAndOtherWaterGets
   EXPECT_EQ(files_of("water"), 2u);
   EXPECT_EQ(max_channel_difference(other_computed, other_warm), 0);
   EXPECT_GT(max_channel_difference(other_warm, warm), 10) << "other water drew the cached water's colour";
+}
+
+// The pipelines a frame used (render/pipeline_memory.h): the next renderer of the scene, at another time and
+// camera too, makes them ahead on another thread without drawing anything, and draws the same picture;
+// another scene remembers its own.
+TEST_F(CachedTablesRender, ThePipelinesAFrameUsedAreMadeAheadByTheNextRendererOfTheScene) {
+  const CacheFolder use((dir_ / "cache").string());
+  const scene::Scene s = small("jerlov-1C");
+  const size_t before = ctx().pipelines().used_count();
+  io::Image8 first;
+  {
+    auto renderer = render::OceanRenderer::create(ctx(), s);
+    ASSERT_TRUE(renderer) << renderer.error().message;
+    first = (*renderer)->render(s);
+  }
+  std::vector<std::string> used = ctx().pipelines().used_keys(before);
+  ASSERT_GE(used.size(), 5u);
+  std::sort(used.begin(), used.end());
+  used.erase(std::unique(used.begin(), used.end()), used.end());
+  scene::Scene moved = s;
+  moved.time_s += 1;
+  moved.camera.position.x += 3;
+  std::vector<std::string> remembered = render::PipelineMemory(ctx(), moved).remembered();
+  std::sort(remembered.begin(), remembered.end());
+  EXPECT_EQ(remembered, used) << "the memory is not the frame's pipelines";
+  EXPECT_TRUE(render::PipelineMemory(ctx(), small("jerlov-IA")).remembered().empty())
+      << "another scene read this one's pipelines";
+
+  auto next = render::OceanRenderer::create(ctx(), s);
+  ASSERT_TRUE(next) << next.error().message;
+  const auto recipes = ctx().pipelines().find(used);
+  ASSERT_GE(recipes.size(), used.size());
+  size_t made = 0;
+  for (int wait = 0; wait < 1000 && made < recipes.size(); ++wait) {  // up to 10 s, nothing drawn meanwhile
+    made = 0;
+    for (const auto& recipe : recipes) {
+      std::lock_guard lock(recipe->mutex);
+      made += recipe->pipeline != VK_NULL_HANDLE;
+    }
+    if (made < recipes.size()) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  EXPECT_EQ(made, recipes.size()) << "the next renderer did not make the remembered pipelines ahead";
+  EXPECT_EQ(max_channel_difference((*next)->render(s), first), 0);
 }
 
 // The wakes' history (render/wakes_cache.h): a second renderer of the same frame restores the layer the first
