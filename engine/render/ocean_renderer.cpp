@@ -295,13 +295,16 @@ void OceanRenderer::record(VkCommandBuffer cmd, const scene::Scene& scene, const
                        .caustics = caustics,
                        .color = {targets.color, targets.color_view, VK_IMAGE_ASPECT_COLOR_BIT},
                        .depth = {targets.depth, targets.depth_view, VK_IMAGE_ASPECT_DEPTH_BIT}});
-  views_drawn_for_ = views_key(frame);
+  // A host's picture (the demo's) is not one a ground-truth frame follows: its key is not worth a frame's
+  // time. render() files its own.
+  views_drawn_for_.clear();
+  picture_side_ = frame.camera_side;
   remember_pipelines();
 }
 
-std::string OceanRenderer::views_key(const FrameContext& frame) {
-  return scene::scene_to_json(frame.scene, {}).dump() + " side " + std::to_string(int(frame.camera_side)) +
-         " size " + std::to_string(frame.extent.width) + "x" + std::to_string(frame.extent.height);
+std::string OceanRenderer::views_key(const scene::Scene& scene, world::CameraSide side, VkExtent2D extent) {
+  return scene::scene_to_json(scene, {}).dump() + " side " + std::to_string(int(side)) + " size " +
+         std::to_string(extent.width) + "x" + std::to_string(extent.height);
 }
 
 std::vector<vk::PassTime> OceanRenderer::timings(uint32_t slot) const {
@@ -319,6 +322,7 @@ io::Image8 OceanRenderer::render(const scene::Scene& scene, std::vector<vk::Pass
                         vk::access::kColorAttachmentWrite, own.readback);
   });
   if (timings) *timings = this->timings(0);
+  views_drawn_for_ = views_key(scene, picture_side_, extent);
   remember_pipelines();
   own.readback.invalidate();
   io::Image8 image{.width = extent.width, .height = extent.height};

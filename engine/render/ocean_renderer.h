@@ -177,7 +177,7 @@ class OceanRenderer {
   };
   // What the caustic map and the refraction targets were last drawn for: the scene, the camera's side and
   // the size (views_key); empty when unknown.
-  static std::string views_key(const FrameContext& frame);
+  static std::string views_key(const scene::Scene& scene, world::CameraSide side, VkExtent2D extent);
   void record_frame(const FrameContext& frame, const FrameRequest& request);
   // Files the pipelines made so far for the next run (render/pipeline_memory.h).
   void remember_pipelines();
@@ -219,8 +219,9 @@ class OceanRenderer {
   History history_ = History::Continuous;
   VkExtent2D extent_{};          // of the passes' targets
   std::string views_drawn_for_;  // views_key() of the frame that last drew the caustics and refraction
-  // The pipelines earlier runs of the scene made, made ahead on another thread. Last: the warmer stops
-  // before the passes whose pipelines it makes go.
+  world::CameraSide picture_side_ = world::CameraSide::Above;  // of the last picture recorded
+  // The pipelines earlier runs of the scene made, made ahead on another thread. After the passes: the warmer
+  // stops before the passes whose pipelines it makes go.
   std::unique_ptr<PipelineMemory> pipeline_memory_;
   std::unique_ptr<vk::PipelineWarmer> warmer_;
   std::unique_ptr<OwnTargets> own_;

@@ -21,7 +21,7 @@ OceanRenderer::UnderwaterTerms OceanRenderer::render_underwater_terms(const scen
     const FrameContext frame = begin_frame(cmd, scene, extent, 0, caustics);
     // A dataset draws the terms right after the picture of the same frame: its caustic map and refraction
     // are still there (~40 % of this frame on lavapipe).
-    const std::string key = views_key(frame);
+    const std::string key = views_key(scene, frame.camera_side, extent);
     record_frame(frame, {.kind = FrameKind::UnderwaterTerms,
                          .caustics = caustics,
                          .floats = &terms,

@@ -4,8 +4,7 @@
 
 namespace lagoon::vk {
 
-VkPipeline PipelineRecipe::made() {
-  std::lock_guard lock(mutex);
+VkPipeline PipelineRecipe::made_locked() {
   if (make) {
     pipeline = Unique<VkPipeline>(device, make());
     make = nullptr;  // frees what the recipe captured
@@ -13,9 +12,14 @@ VkPipeline PipelineRecipe::made() {
   return pipeline;
 }
 
-VkPipeline PipelineRecipe::use() {
-  const VkPipeline p = made();
+VkPipeline PipelineRecipe::made() {
   std::lock_guard lock(mutex);
+  return made_locked();
+}
+
+VkPipeline PipelineRecipe::use() {
+  std::lock_guard lock(mutex);
+  const VkPipeline p = made_locked();
   if (!used && registry) registry->used(key);
   used = true;
   return p;

@@ -28,6 +28,9 @@ struct PipelineRecipe {
   VkPipeline made();
   // made(), for recording with it: the registry learns of its first use (a making ahead is not a use).
   VkPipeline use();
+
+ private:
+  VkPipeline made_locked();
 };
 
 }  // namespace lagoon::vk
