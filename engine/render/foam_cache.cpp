@@ -1,30 +1,13 @@
 #include "render/foam_cache.h"
 
-#include <fstream>
 #include <span>
 #include <string>
 
 #include "io/sha256.h"
 #include "render/cached_tables.h"
+#include "render/device_key.h"
 
 namespace lagoon::render {
-namespace {
-
-// A CPU device runs the code LLVM generated for this host's instruction set (with FMA or without), so its
-// results are only the same on a CPU with the same features: a cache folder shared by several machines (a
-// home directory on a cluster's network file system) must not hand one CPU's foam to another.
-const std::string& host_cpu_features() {
-  static const std::string digest = [] {
-    std::ifstream in("/proc/cpuinfo");
-    for (std::string line; std::getline(in, line);)
-      if (line.rfind("flags", 0) == 0)
-        return io::sha256_hex(std::as_bytes(std::span(line.data(), line.size())));
-    return std::string("unknown");
-  }();
-  return digest;
-}
-
-}  // namespace
 
 std::string spectra_digest(const std::vector<ocean::CascadeSpectrum>& spectra) {
   std::string all;
@@ -60,14 +43,6 @@ ocean::FoamRule cached_foam_rule(const ocean::OceanParams& p,
   for (const ocean::FoamRamp& c : rule.cascades) values.push_back(c.onset), values.push_back(c.width);
   cache.store_vector(key, values);
   return rule;
-}
-
-void add_device(io::ResultKey& key, const vk::Context& ctx) {
-  const vk::DeviceInfo& device = ctx.device_info();
-  key.add("device", device.name)
-      .add("driver", device.driver_info)
-      .add("driver_version", device.driver_version);
-  if (device.type == "CPU") key.add("host_cpu", host_cpu_features());
 }
 
 io::ResultKey foam_key(const vk::Context& ctx, const ocean::GpuOcean& ocean,

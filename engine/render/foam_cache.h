@@ -26,10 +26,6 @@ struct WarmUp {
 // frame).
 std::string spectra_digest(const ocean::GpuOcean& ocean);
 
-// Adds what a GPU result depends on besides its inputs: the device, its driver and version, and on a CPU
-// device the host's instruction set (LLVM generates code for it, so another CPU may round differently).
-void add_device(io::ResultKey& key, const vk::Context& ctx);
-
 io::ResultKey foam_key(const vk::Context& ctx, const ocean::GpuOcean& ocean,
                        const std::string& spectra_digest, const WarmUp& warm_up);
 

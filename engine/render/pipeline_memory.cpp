@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "render/cached_tables.h"
-#include "render/foam_cache.h"
+#include "render/device_key.h"
 #include "scene/scene_io.h"
 
 namespace lagoon::render {

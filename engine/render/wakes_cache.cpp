@@ -1,7 +1,7 @@
 #include "render/wakes_cache.h"
 
 #include "render/cached_tables.h"
-#include "render/foam_cache.h"
+#include "render/device_key.h"
 
 namespace lagoon::render {
 
