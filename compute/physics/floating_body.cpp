@@ -4,12 +4,14 @@
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include "physics/welded_mesh.h"
+
 namespace lagoon::physics {
 
 FloatingBody::FloatingBody(const TriangleMesh& hull, const MassProperties& mass, Damping damping,
                            WaterProperties water, BodyOptions options)
     : mass_(mass), damping_(damping), water_(water), options_(std::move(options)) {
-  TriangleMesh sampled = refine_hull(hull, options_.sampling);
+  TriangleMesh sampled = refine_hull(welded(hull), options_.sampling);
   indices_ = std::move(sampled.indices);
   hull_.reserve(sampled.vertices.size());
   for (const glm::dvec3& v : sampled.vertices) {
