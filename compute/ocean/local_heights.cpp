@@ -1,6 +1,7 @@
 #include "ocean/local_heights.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <glm/common.hpp>
 
@@ -20,6 +21,11 @@ LocalHeights::LocalHeights(std::shared_ptr<WaveQuery> query, LocalHeightsOptions
 void LocalHeights::recentre(glm::dvec2 centre) {
   const double s = options_.spacing_m, half = 0.5 * (options_.points_per_side - 1) * s;
   const glm::dvec2 origin = glm::floor((centre - half) / s) * s;
+  // The knot ahead moves with the others when it is done; else it is dropped and asked again.
+  if (ahead_.heights.valid() && ahead_.heights.wait_for(std::chrono::seconds(0)) == std::future_status::ready)
+    if (std::vector<double> heights = ahead_.heights.get(); !heights.empty())
+      knots_.emplace_back(ahead_index_, std::move(heights));
+  ahead_ = {};
   ahead_index_ = std::numeric_limits<long long>::min();
   if (!placed_) {
     origin_ = origin;
@@ -73,17 +79,18 @@ const std::vector<double>& LocalHeights::knot(long long index) {
   for (const auto& [i, heights] : knots_)
     if (i == index) return heights;
   const size_t count = size_t(options_.points_per_side) * size_t(options_.points_per_side);
-  const double time = double(index) * options_.knot_interval_s;
-  std::vector<double> heights(count);
-  size_t done = 0;
-  if (index == ahead_index_) {  // what sample_ahead already has
-    heights = std::move(ahead_);
-    done = ahead_done_;
-    ahead_index_ = std::numeric_limits<long long>::min();
+  std::vector<double> heights;
+  // The knot ahead (a recentre drops it), unless the worker has not begun it: then it is sampled here.
+  if (index == ahead_index_ && ahead_.heights.valid()) {
+    if (ahead_.heights.wait_for(std::chrono::seconds(0)) == std::future_status::ready || !ahead_.claim())
+      heights = ahead_.heights.get();
+    ahead_ = {};
   }
-  if (done < count) {
-    const std::vector<WaveSample> samples = query_->sample(time, lattice_points(done, count));
-    for (size_t k = 0; k < samples.size(); ++k) heights[done + k] = samples[k].height;
+  if (heights.size() != count) {
+    heights.resize(count);
+    const std::vector<WaveSample> samples =
+        query_->sample(double(index) * options_.knot_interval_s, lattice_points(0, count));
+    for (size_t k = 0; k < samples.size(); ++k) heights[k] = samples[k].height;
   }
   ++knots_sampled_;
   knots_.emplace_back(index, std::move(heights));
@@ -91,18 +98,12 @@ const std::vector<double>& LocalHeights::knot(long long index) {
 }
 
 void LocalHeights::sample_ahead(long long index) {
+  if (ahead_index_ == index) return;
+  for (const auto& [i, heights] : knots_)
+    if (i == index) return;
   const size_t count = size_t(options_.points_per_side) * size_t(options_.points_per_side);
-  if (ahead_index_ != index) {
-    ahead_index_ = index;
-    ahead_.assign(count, 0.0);
-    ahead_done_ = 0;
-  }
-  const double time = double(index) * options_.knot_interval_s;
-  if (ahead_done_ == count || !query_->ready(time)) return;
-  const size_t end = std::min(count, ahead_done_ + (count + kShares - 1) / kShares);
-  const std::vector<WaveSample> samples = query_->sample(time, lattice_points(ahead_done_, end));
-  for (size_t k = 0; k < samples.size(); ++k) ahead_[ahead_done_ + k] = samples[k].height;
-  ahead_done_ = end;
+  ahead_index_ = index;
+  ahead_ = query_->heights_ahead(double(index) * options_.knot_interval_s, lattice_points(0, count));
 }
 
 void LocalHeights::update(double time_s, glm::dvec2 centre) {
@@ -115,21 +116,64 @@ void LocalHeights::update(double time_s, glm::dvec2 centre) {
   const double u = time_s / options_.knot_interval_s;
   const long long k = (long long)std::floor(u);
   const std::array<double, 4> w = catmull_rom_weights(u - double(k));
-  // Only the knots k - 1 .. k + 2 are kept (dropped before a recentre moves them); the missing ones are
-  // sampled, then looked up (so no reference outlives a change of the list).
-  std::erase_if(knots_, [k](const auto& knot) { return knot.first < k - 1 || knot.first > k + 2; });
+  // Only the knots k - 1 .. k + 2 are kept, and k + 3 when a recentre moved the knot ahead with them
+  // (dropped before a recentre moves them); the missing ones are sampled, then looked up (so no reference
+  // outlives a change of the list).
+  std::erase_if(knots_, [k](const auto& knot) { return knot.first < k - 1 || knot.first > k + 3; });
   if (!placed_ || local.x < lo || local.y < lo || local.x > hi || local.y > hi) recentre(centre);
   for (int m = 0; m < 4; ++m) knot(k - 1 + m);
   std::array<const std::vector<double>*, 4> at{};
   for (int m = 0; m < 4; ++m) at[m] = &knot(k - 1 + m);
-  query_->prefetch(double(k + 3) * options_.knot_interval_s);  // the knot the next interval will need
-  sample_ahead(k + 3);
+  sample_ahead(k + 3);  // the knot the next interval will need
   for (size_t i = 0; i < now_.size(); ++i)
     now_[i] = w[0] * (*at[0])[i] + w[1] * (*at[1])[i] + w[2] * (*at[2])[i] + w[3] * (*at[3])[i];
+  bound_highest();
+}
+
+void LocalHeights::bound_highest() {
   // Catmull-Rom's weights sum to 1 with negative lobes of at most 1/8 per axis, so a value lies at most
   // (1 + 1/8)² + (1/8)² - 1 = 0.28 of the range above the highest point it interpolates.
   const auto [lo_it, hi_it] = std::minmax_element(now_.begin(), now_.end());
   highest_ = *hi_it + 0.3 * (*hi_it - *lo_it);
+}
+
+std::array<int, 4> LocalHeights::taps_under(glm::dvec2 lo, glm::dvec2 hi) const {
+  if (!(lo.x <= hi.x && lo.y <= hi.y)) return {0, 0, -1, -1};  // empty, or NaN
+  const int n = options_.points_per_side;
+  // height() at local coordinate u reads the points floor(u) - 1 .. floor(u) + 2 (u clamped to the lattice).
+  const auto first = [&](double v, double o) {
+    return int(std::clamp(std::floor((v - o) / options_.spacing_m), 0.0, double(n - 1))) - 1;
+  };
+  return {std::max(first(lo.x, origin_.x), 0), std::max(first(lo.y, origin_.y), 0),
+          std::min(first(hi.x, origin_.x) + 3, n - 1), std::min(first(hi.y, origin_.y) + 3, n - 1)};
+}
+
+void LocalHeights::add(glm::dvec2 lo, glm::dvec2 hi, const ExtraHeights& extra) {
+  const auto [x0, z0, x1, z1] = taps_under(lo, hi);
+  if (x0 > x1 || z0 > z1) return;
+  const size_t n = size_t(options_.points_per_side);
+  added_at_.clear();
+  for (int j = z0; j <= z1; ++j)
+    for (int i = x0; i <= x1; ++i) added_at_.push_back(origin_ + glm::dvec2(i, j) * options_.spacing_m);
+  added_.assign(added_at_.size(), 0.0);
+  extra(added_at_, added_);
+  size_t k = 0;
+  for (int j = z0; j <= z1; ++j)
+    for (int i = x0; i <= x1; ++i) now_[size_t(j) * n + size_t(i)] += added_[k++];
+  bound_highest();
+}
+
+double LocalHeights::highest(glm::dvec2 lo, glm::dvec2 hi) const {
+  const auto [x0, z0, x1, z1] = taps_under(lo, hi);
+  if (x0 > x1 || z0 > z1) return highest_;
+  const size_t n = size_t(options_.points_per_side);
+  double top = -std::numeric_limits<double>::infinity(), bottom = std::numeric_limits<double>::infinity();
+  for (int j = z0; j <= z1; ++j)
+    for (int i = x0; i <= x1; ++i) {
+      const double v = now_[size_t(j) * n + size_t(i)];
+      top = std::max(top, v), bottom = std::min(bottom, v);
+    }
+  return top + 0.3 * (top - bottom);  // bound_highest()'s overshoot over these points' range
 }
 
 double LocalHeights::height(double x, double z) const {

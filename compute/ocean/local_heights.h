@@ -7,6 +7,8 @@
 // hull of several spacings.
 #pragma once
 #include <array>
+#include <functional>
+#include <future>
 #include <glm/vec2.hpp>
 #include <limits>
 #include <memory>
@@ -46,9 +48,20 @@ class LocalHeights {
   double height(double x, double z) const;
   // height() at each of `points` (x, z) into `heights`: a hull's points in one call.
   void heights(std::span<const glm::dvec2> points, std::span<double> heights) const;
+  // Heights at (x, z) points, added into `heights` (heights[i] += at points[i]): another source of water
+  // height over the sea, such as the vehicles' wakes.
+  using ExtraHeights = std::function<void(std::span<const glm::dvec2> points, std::span<double> heights)>;
+  // Adds `extra` at the lattice points that height() reads for (x, z) in the box [lo, hi], until the next
+  // update: a hull inside the box then looks its water up once instead of once per source (issue 35). The
+  // sum is interpolated as the sea is; outside the box height() answers the sea alone.
+  void add(glm::dvec2 lo, glm::dvec2 hi, const ExtraHeights& extra);
   // No height() at the last update's time is above this: the lattice's highest point plus the most the
   // bicubic interpolation can overshoot it (0.28 of the lattice's range).
   double highest() const { return highest_; }
+  // No height() at the last update's time at (x, z) in the box [lo, hi] is above this: the same bound over
+  // the lattice points its taps read. Under a hull, lower than highest() wherever the lattice's highest
+  // crest is not under it, which spares the hull the lookups of triangles that are surely dry (issue 35).
+  double highest(glm::dvec2 lo, glm::dvec2 hi) const;
 
   // How many knots were sampled from WaveQuery so far (each costs one evaluation of the sea's fields).
   int knots_sampled() const { return knots_sampled_; }
@@ -58,8 +71,14 @@ class LocalHeights {
   void recentre(glm::dvec2 centre);
   std::vector<glm::dvec2> lattice_points(size_t first, size_t last) const;
   const std::vector<double>& knot(long long index);
-  // Samples a share of knot `index`'s points if the query has its time ready (ocean/wave_query.h prefetch).
+  // Has knot `index` sampled on another thread (ocean/wave_query.h heights_ahead) unless it is known or
+  // already asked for.
   void sample_ahead(long long index);
+  // highest_ from now_.
+  void bound_highest();
+  // The lattice points (x0, z0, x1, z1, inclusive) that height() reads for points in the box [lo, hi]; none
+  // (x0 > x1) when the box is empty or NaN.
+  std::array<int, 4> taps_under(glm::dvec2 lo, glm::dvec2 hi) const;
 
   std::shared_ptr<WaveQuery> query_;
   LocalHeightsOptions options_;
@@ -67,13 +86,14 @@ class LocalHeights {
   bool placed_ = false;
   // The knots k - 1 .. k + 2 around the last update's time (index, heights on the lattice).
   std::vector<std::pair<long long, std::vector<double>>> knots_;
-  // The knot after the four in use, sampled a share of its points per update once the query has its time,
-  // so that no step samples a whole knot (a hull's lattice has up to thousands of points).
-  static constexpr size_t kShares = 12;  // of the 24 steps at 120 Hz between knots
+  // The knot after the four in use, sampled on another thread while the steps before it go on, so that no
+  // step samples a whole knot (a hull's lattice has up to thousands of points, each ~1 µs: issue 35), and
+  // its index. A recentre moves it with the other knots when it is done and drops it otherwise.
   long long ahead_index_ = std::numeric_limits<long long>::min();
-  std::vector<double> ahead_;
-  size_t ahead_done_ = 0;
-  std::vector<double> now_;  // the lattice at the last update's time
+  WaveQuery::HeightsAhead ahead_;
+  std::vector<double> now_;           // the lattice at the last update's time
+  std::vector<glm::dvec2> added_at_;  // add()'s scratch: its points and their extra heights
+  std::vector<double> added_;
   double highest_ = 0;
   int knots_sampled_ = 0;
 };

@@ -216,6 +216,11 @@ void WaveQuery::keep(std::shared_ptr<const Evaluation> evaluation) {
   recent_.push_back(std::move(evaluation));
 }
 
+BackgroundWorker& WaveQuery::worker() {
+  if (!worker_) worker_ = std::make_unique<BackgroundWorker>();
+  return *worker_;
+}
+
 void WaveQuery::prefetch(double time_s) {
   if (springs_ || direct_) return;
   if (pending_.valid() && pending_time_ == time_s) return;
@@ -223,7 +228,7 @@ void WaveQuery::prefetch(double time_s) {
     if (e->time_s == time_s) return;
   if (pending_.valid()) keep(pending_.get());  // one at a time; keep what the last one made
   pending_time_ = time_s;
-  pending_ = std::async(std::launch::async, [this, time_s] { return evaluate_spectra(time_s); });
+  pending_ = worker().submit([this, time_s] { return evaluate_spectra(time_s); }).share();
 }
 
 bool WaveQuery::ready(double time_s) const {
@@ -233,6 +238,40 @@ bool WaveQuery::ready(double time_s) const {
     if (e->time_s == time_s) return true;
   return pending_.valid() && pending_time_ == time_s &&
          pending_.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
+}
+
+WaveQuery::HeightsAhead WaveQuery::heights_ahead(double time_s, std::vector<glm::dvec2> points) {
+  auto heights_of = [](const std::vector<WaveSample>& samples) {
+    std::vector<double> out(samples.size());
+    for (size_t i = 0; i < samples.size(); ++i) out[i] = samples[i].height;
+    return out;
+  };
+  HeightsAhead ahead;
+  if (springs_ || direct_) {  // sample() itself, on the thread that asks for the answer
+    ahead.heights = std::async(std::launch::deferred, [this, time_s, points = std::move(points), heights_of] {
+      return heights_of(sample(time_s, points));
+    });
+    return ahead;
+  }
+  std::shared_future<std::shared_ptr<const Evaluation>> fields;
+  for (const auto& e : recent_)
+    if (e->time_s == time_s) {
+      std::promise<std::shared_ptr<const Evaluation>> made;
+      made.set_value(e);
+      fields = made.get_future().share();
+    }
+  if (!fields.valid()) {
+    prefetch(time_s);
+    fields = pending_;
+  }
+  ahead.heights =
+      worker().submit([this, fields, points = std::move(points), heights_of, begun = ahead.begun] {
+        if (begun->exchange(true)) return std::vector<double>{};  // claimed by the caller
+        std::vector<WaveSample> out(points.size());
+        sample_range(*fields.get(), points, out, 0, points.size());
+        return heights_of(out);
+      });
+  return ahead;
 }
 
 void WaveQuery::evaluate(double time_s) {
@@ -248,6 +287,7 @@ void WaveQuery::evaluate(double time_s) {
     }
   if (pending_.valid() && pending_time_ == time_s) {
     current_ = pending_.get();
+    pending_ = {};
   } else {
     current_ = evaluate_spectra(time_s);
   }
@@ -258,12 +298,12 @@ double WaveQuery::sea_scale(glm::dvec2 p) const {
   return sea_floor_ ? sea_floor_->ground(p).y : 1.0;
 }
 
-glm::dvec2 WaveQuery::displacement(glm::dvec2 p) const {
+glm::dvec2 WaveQuery::displacement(const Evaluation& fields, glm::dvec2 p) const {
   double d[3] = {0, 0, 0};
-  for (const auto& g : current_->grids) g->sample(p, kDx, 3, d);
+  for (const auto& g : fields.grids) g->sample(p, kDx, 3, d);
   glm::dvec2 out = sea_scale(p) * params_.choppiness * glm::dvec2(d[0], d[2]);
   if (swell_) {
-    const glm::dvec3 moved = swell_->at_rest(p, current_->time_s).position;
+    const glm::dvec3 moved = swell_->at_rest(p, fields.time_s).position;
     out += glm::dvec2(moved.x, moved.z) - p;
   }
   return out;
@@ -283,29 +323,30 @@ std::vector<WaveSample> WaveQuery::sample(double time_s, std::span<const glm::dv
   const size_t threads =
       std::clamp<size_t>(points.size() / kPointsPerThread, 1, std::max(1u, options_.threads));
   if (threads == 1) {
-    sample_range(points, out, 0, points.size());
+    sample_range(*current_, points, out, 0, points.size());
     return out;
   }
   std::vector<std::thread> workers;
   const size_t chunk = (points.size() + threads - 1) / threads;
   for (size_t t = 1; t < threads; ++t)
-    workers.emplace_back(
-        [&, t] { sample_range(points, out, t * chunk, std::min(points.size(), (t + 1) * chunk)); });
-  sample_range(points, out, 0, chunk);
+    workers.emplace_back([&, t] {
+      sample_range(*current_, points, out, t * chunk, std::min(points.size(), (t + 1) * chunk));
+    });
+  sample_range(*current_, points, out, 0, chunk);
   for (std::thread& w : workers) w.join();
   return out;
 }
 
-void WaveQuery::sample_range(std::span<const glm::dvec2> points, std::vector<WaveSample>& out, size_t begin,
-                             size_t end) const {
-  const double bound = bound_height_ + current_->max_slope * 2 * params_.choppiness * bound_displacement_;
+void WaveQuery::sample_range(const Evaluation& fields, std::span<const glm::dvec2> points,
+                             std::vector<WaveSample>& out, size_t begin, size_t end) const {
+  const double bound = bound_height_ + fields.max_slope * 2 * params_.choppiness * bound_displacement_;
   for (size_t i = begin; i < end; ++i) {
     const glm::dvec2 q = points[i];
     // Fixed point of p = q - λD(p): the rest position whose displaced position is q.
     glm::dvec2 p = q;
     bool converged = false;
     for (int iteration = 0; iteration < 32 && !converged; ++iteration) {
-      const glm::dvec2 next = q - displacement(p);
+      const glm::dvec2 next = q - displacement(fields, p);
       converged = glm::length(next - p) < 1e-6;
       p = next;
     }
@@ -317,13 +358,13 @@ void WaveQuery::sample_range(std::span<const glm::dvec2> points, std::vector<Wav
     const double scale = sea_scale(p);  // over the floor (ocean/shoaling.h); its own slope is left out
     // Swell trains over the sea: their sums at the same rest point, added (their slopes to the sea's).
     GerstnerPoint swell;
-    if (swell_) swell = swell_->at_rest(p, current_->time_s);
+    if (swell_) swell = swell_->at_rest(p, fields.time_s);
     if (options_.heights_only) {
-      for (const auto& g : current_->grids) g->sample(p, kHeight, 1, &f[kHeight]);
+      for (const auto& g : fields.grids) g->sample(p, kHeight, 1, &f[kHeight]);
       s.height = scale * f[kHeight] + swell.position.y;
       continue;
     }
-    for (const auto& g : current_->grids) g->sample(p, 0, kFieldCount, f);
+    for (const auto& g : fields.grids) g->sample(p, 0, kFieldCount, f);
     s.height = scale * f[kHeight] + swell.position.y;
     const glm::dvec2 slope = scale * glm::dvec2(f[kSlopeX], f[kSlopeZ]) -
                              glm::dvec2(swell.normal.x, swell.normal.z) / swell.normal.y;

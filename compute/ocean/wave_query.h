@@ -21,6 +21,7 @@
 //   time; the factor 2 covers the displacement inversion while the horizontal map contracts by 1/2 or
 //   better (away from folding crests). worst_case_bound_m() gives the rigorous Σ |a_k| E(k), far larger.
 #pragma once
+#include <atomic>
 #include <future>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -29,6 +30,7 @@
 #include <span>
 #include <vector>
 
+#include "core/background_worker.h"
 #include "ocean/initial_spectrum.h"
 #include "ocean/ocean_params.h"
 #include "ocean/spectral_fields.h"
@@ -84,6 +86,19 @@ class WaveQuery {
   // Whether sample() at `time_s` would answer without evaluating or waiting: the time is a recent one, or
   // its prefetch has finished. Always false for model springs.
   bool ready(double time_s) const;
+  // sample(time_s, points)'s heights, computed on another thread: the fields for the time as prefetch()
+  // evaluates them, then the points. The bodies' next time knot (ocean/local_heights.h) is sampled this way,
+  // so no step pays for a knot's thousands of points. The same heights to the bit. The query must outlive
+  // the future. For models springs, gerstner and sines, the answer is sampled when asked for.
+  struct HeightsAhead {
+    std::future<std::vector<double>> heights;
+    // Whether the sampling has begun, set by whoever begins it. A caller that needs the heights before the
+    // worker has reached them (a catch-up, where the worker runs behind) claims them and samples them
+    // itself instead of waiting behind the worker's other jobs; the future then gives no heights.
+    std::shared_ptr<std::atomic<bool>> begun = std::make_shared<std::atomic<bool>>(false);
+    bool claim() { return !begun->exchange(true); }
+  };
+  HeightsAhead heights_ahead(double time_s, std::vector<glm::dvec2> points);
 
   static constexpr size_t kRecentTimes = 5;  // the bodies' four knots in use and the next one
 
@@ -105,11 +120,13 @@ class WaveQuery {
   std::shared_ptr<const Evaluation> evaluate_spectra(double time_s) const;
   std::shared_ptr<const Evaluation> evaluate_springs(double time_s);
   void keep(std::shared_ptr<const Evaluation> evaluation);
-  glm::dvec2 displacement(glm::dvec2 p) const;
+  BackgroundWorker& worker();
+  glm::dvec2 displacement(const Evaluation& fields, glm::dvec2 p) const;
   double sea_scale(glm::dvec2 p) const;  // the random sea's height over the floor, 1 where it is deep
-  // sample()'s answers for points[begin, end), from current_.
-  void sample_range(std::span<const glm::dvec2> points, std::vector<WaveSample>& out, size_t begin,
-                    size_t end) const;
+  // sample()'s answers for points[begin, end), from `fields`. Reads nothing that changes after
+  // construction, so it may run on another thread.
+  void sample_range(const Evaluation& fields, std::span<const glm::dvec2> points,
+                    std::vector<WaveSample>& out, size_t begin, size_t end) const;
 
   OceanParams params_;
   std::unique_ptr<SpringGrid> springs_;        // model springs: the grid itself, stepped to each time asked
@@ -120,11 +137,15 @@ class WaveQuery {
   WaveQueryOptions options_;
   InverseFft2d fft_;        // plans shared by every evaluation, on any thread
   double slope_bound_ = 0;  // Σ |a_k| |k| over every mode: no slope of the surface exceeds it
-  std::shared_ptr<const Evaluation> current_;               // what sample() answers from
-  std::vector<std::shared_ptr<const Evaluation>> recent_;   // the last kRecentTimes, oldest first
-  std::future<std::shared_ptr<const Evaluation>> pending_;  // prefetch()'s, for pending_time_
+  std::shared_ptr<const Evaluation> current_;              // what sample() answers from
+  std::vector<std::shared_ptr<const Evaluation>> recent_;  // the last kRecentTimes, oldest first
+  // prefetch()'s, for pending_time_ (shared with heights_ahead()'s threads).
+  std::shared_future<std::shared_ptr<const Evaluation>> pending_;
   double pending_time_ = 0;
   double bound_height_ = 0, bound_displacement_ = 0, worst_case_height_ = 0;
+  // Evaluates prefetch()'s times and samples heights_ahead()'s points, in that order; made at the first of
+  // them. Last: its jobs read the rest, so it finishes them before the rest goes.
+  std::unique_ptr<BackgroundWorker> worker_;
 };
 
 // Largest error of periodic Catmull-Rom interpolation of e^{iθm} (unit samples), |θ| <= π, and the

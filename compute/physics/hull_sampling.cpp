@@ -61,7 +61,7 @@ double sample_spacing(const TriangleMesh& hull, const HullSampling& sampling) {
   for (const glm::dvec3& v : hull.vertices) lo = glm::min(lo, v), hi = glm::max(hi, v);
   const glm::dvec3 size = hi - lo;
   const double extent = std::max({size.x, size.y, size.z});
-  return std::max(extent / HullSampling::kDivisions, HullSampling::kMinSpacingM);
+  return std::max(extent / HullSampling::kDivisions, sampling.min_spacing_m);
 }
 
 TriangleMesh refine_hull(const TriangleMesh& hull, const HullSampling& sampling) {

@@ -11,17 +11,20 @@
 namespace lagoon::physics {
 
 struct HullSampling {
-  // Longest edge (m) of the triangles the pressure is integrated over. 0: derived from the hull (its
-  // largest extent / kDivisions, at least kMinSpacingM); < 0: the hull's own triangles (the pressure only at
-  // the model's vertices: how coarse it is then depends on the modeller).
-  double spacing_m = 0;
-  // More triangles than this raise the spacing until they fit: the step's cost is one water lookup per
-  // vertex, about half this count.
-  size_t max_triangles = 20000;
-
   static constexpr double kDivisions = 16;
   static constexpr double kMinSpacingM =
       0.2;  // waves under ~0.4 m barely move a body (sinc), and each sample costs a lookup
+
+  // Longest edge (m) of the triangles the pressure is integrated over. 0: derived from the hull (its
+  // largest extent / kDivisions, at least min_spacing_m); < 0: the hull's own triangles (the pressure only at
+  // the model's vertices: how coarse it is then depends on the modeller).
+  double spacing_m = 0;
+  // The finest spacing derived from the hull. A water whose shortest wave is λ needs no sample closer than
+  // about λ/4 (world/floating_objects.h: the bodies' sea holds waves of 2 m and longer).
+  double min_spacing_m = kMinSpacingM;
+  // More triangles than this raise the spacing until they fit: the step's cost is one water lookup per
+  // vertex, about half this count.
+  size_t max_triangles = 20000;
 };
 
 // The spacing `sampling` asks for on `hull` (before the triangle cap), in m; <= 0 when it asks for none.

@@ -6,6 +6,7 @@
 #include <glm/matrix.hpp>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include "gltf/gltf_loader.h"
 #include "world/floor_height.h"
@@ -45,14 +46,18 @@ physics::MassProperties body_mass(const physics::TriangleMesh& hull, const scene
 }
 
 // `floor`: what it rests on if it sinks (none for the vehicles, which follow their tracks).
+// The hull is sampled no finer than the water it feels resolves: the sea on its lattice (its shortest wave
+// four spacings long: ocean/local_heights.h), with the wakes added at the same points. A sample per spacing
+// gives that wave four; the default floor of 0.2 m more than doubled the small buoy's points (issue 35).
 physics::FloatingBody make_body(const physics::TriangleMesh& hull, const scene::HullBody& f,
                                 physics::FloorHeight floor = {}) {
-  return physics::FloatingBody(hull, body_mass(hull, f),
-                               {.linear = f.linear_damping,
-                                .quadratic = f.quadratic_damping,
-                                .angular = f.angular_damping,
-                                .angular_quadratic = f.angular_damping},
-                               {}, {.floor = std::move(floor)});
+  return physics::FloatingBody(
+      hull, body_mass(hull, f),
+      {.linear = f.linear_damping,
+       .quadratic = f.quadratic_damping,
+       .angular = f.angular_damping,
+       .angular_quadratic = f.angular_damping},
+      {}, {.sampling = {.min_spacing_m = ocean::LocalHeightsOptions{}.spacing_m}, .floor = std::move(floor)});
 }
 
 // A closed hull with a positive volume, or an error naming `field`.
@@ -86,10 +91,22 @@ ocean::LocalHeightsOptions lattice_for(const physics::TriangleMesh& hull) {
   return options;
 }
 
-// No wake under `hull` is higher than this, skipping vehicles[skip]'s own.
-double highest_wake(const WakeHeights& wakes, const physics::FloatingBody& hull, size_t skip) {
+// Where `hull` can reach, in world (x, z).
+std::pair<glm::dvec2, glm::dvec2> reach_box(const physics::FloatingBody& hull) {
   const glm::dvec2 centre(hull.state().position.x, hull.state().position.z);
-  return wakes.highest(skip, centre - hull.reach(), centre + hull.reach());
+  return {centre - hull.reach(), centre + hull.reach()};
+}
+
+// The sea's heights under `hull` with the wakes but vehicles[skip]'s own added (each of its points then costs
+// one lookup a step instead of two: issue 35), and the bound on them it steps with.
+double prepare_water(ocean::LocalHeights& heights, const physics::FloatingBody& hull,
+                     const WakeHeights* wakes, size_t skip) {
+  const auto [lo, hi] = reach_box(hull);
+  if (wakes)
+    heights.add(lo, hi, [wakes, skip](std::span<const glm::dvec2> points, std::span<double> out) {
+      wakes->add_heights(points, out, skip);
+    });
+  return heights.highest(lo, hi);
 }
 
 long long step_at(double time_s) {
@@ -140,7 +157,10 @@ void FloatingObjects::reset() {
   if (!sea_ && !(hulls_.empty() && vehicle_hulls_.empty()))
     sea_ = std::make_shared<ocean::WaveQuery>(
         ocean_, spectra_,
-        ocean::WaveQueryOptions{.max_wavenumber = ocean::lattice_wavenumber(ocean::LocalHeightsOptions{}),
+        // One thread: the query evaluates its knots on its background worker (LocalHeights asks for them
+        // ahead), where a second thread of normal priority would take the core the steps run on (issue 35).
+        ocean::WaveQueryOptions{.threads = 1,
+                                .max_wavenumber = ocean::lattice_wavenumber(ocean::LocalHeightsOptions{}),
                                 .heights_only = true});
   size_t h = 0;
   for (size_t o = 0; o < scene_.objects.size(); ++o) {
@@ -191,52 +211,42 @@ void FloatingObjects::advance(double time_s) {
     const double t = double(steps_) * kStepS;
     if (wakes_) wakes_->advance(t, centre(), wakes_first_step_);
     const WakeHeights* wakes = wakes_.get();
-    // First what the hulls share: the sea's knots (one WaveQuery for all), and the wake cells under each
-    // hull (highest_wake sums them). Then each hull's step, which reads them.
+    // First what the hulls share: the sea's knots (one WaveQuery for all), with the wakes added under each
+    // hull. Then each hull's step, which reads them.
     for (Body& b : bodies_) {
       const glm::dvec3 at = b.body.state().position;
       b.heights->update(t, glm::dvec2(at.x, at.z));
-      b.water_top =
-          b.heights->highest() + (wakes ? highest_wake(*wakes, b.body, WakeHeights::kNoVehicle) : 0.0);
+      b.water_top = prepare_water(*b.heights, b.body, wakes, WakeHeights::kNoVehicle);
     }
     for (size_t i = 0; i < vehicles_.size(); ++i) {
       Vehicle& v = vehicles_[i];
       if (!v.heights) continue;
       const glm::dvec3 at = v.motion.model_origin();
       v.heights->update(t, glm::dvec2(at.x, at.z));
-      v.water_top = v.heights->highest() + (wakes ? highest_wake(*wakes, *v.motion.hull(), i) : 0.0);
+      v.water_top = prepare_water(*v.heights, *v.motion.hull(), wakes, i);
     }
-    for (Body& b : bodies_) step_body(b, wakes);
-    for (size_t i = 0; i < vehicles_.size(); ++i) step_vehicle(i, t, wakes);
+    for (Body& b : bodies_) step_body(b);
+    for (size_t i = 0; i < vehicles_.size(); ++i) step_vehicle(i, t);
   }
 }
 
-void FloatingObjects::step_body(Body& b, const WakeHeights* wakes) {
+void FloatingObjects::step_body(Body& b) {
   const ocean::LocalHeights& heights = *b.heights;
   b.body.step(
-      kStepS,
-      [&heights, wakes](double x, double z) {
-        return heights.height(x, z) + (wakes ? wakes->height({x, z}) : 0.0);
-      },
-      b.water_top, {},
-      [&heights, wakes](std::span<const glm::dvec2> points, std::span<double> out) {
+      kStepS, [&heights](double x, double z) { return heights.height(x, z); }, b.water_top, {},
+      [&heights](std::span<const glm::dvec2> points, std::span<double> out) {
         heights.heights(points, out);
-        if (wakes) wakes->add_heights(points, out);
       });
 }
 
-void FloatingObjects::step_vehicle(size_t i, double t, const WakeHeights* wakes) {
+void FloatingObjects::step_vehicle(size_t i, double t) {
   Vehicle& v = vehicles_[i];
   const ocean::LocalHeights* heights = v.heights.get();
   v.motion.step(
-      t, kStepS,
-      [heights, wakes, i](double x, double z) {
-        return heights->height(x, z) + (wakes ? wakes->height({x, z}, i) : 0.0);
-      },
+      t, kStepS, [heights](double x, double z) { return heights->height(x, z); },
       heights ? v.water_top : std::numeric_limits<double>::infinity(),
-      [heights, wakes, i](std::span<const glm::dvec2> points, std::span<double> out) {
+      [heights](std::span<const glm::dvec2> points, std::span<double> out) {
         heights->heights(points, out);
-        if (wakes) wakes->add_heights(points, out, i);
       });
 }
 
@@ -282,11 +292,9 @@ const physics::FloatingBody* FloatingObjects::hull_body(size_t object) const {
 
 std::vector<double> FloatingObjects::water_under(size_t object, const std::vector<glm::dvec2>& points) const {
   const ocean::LocalHeights* heights = nullptr;
-  size_t own_wake = WakeHeights::kNoVehicle;  // a vehicle does not ride its own wake
   if (object >= scene_.objects.size()) {
     const size_t v = object - scene_.objects.size();
     if (v < vehicles_.size()) heights = vehicles_[v].heights.get();
-    own_wake = v;
   } else {
     for (const Body& b : bodies_)
       if (b.object == object) heights = b.heights.get();
@@ -294,9 +302,7 @@ std::vector<double> FloatingObjects::water_under(size_t object, const std::vecto
   std::vector<double> out;
   if (!heights) return out;
   out.reserve(points.size());
-  for (const glm::dvec2& p : points) {
-    out.push_back(heights->height(p.x, p.y) + (wakes_ ? wakes_->height(p, own_wake) : 0.0));
-  }
+  for (const glm::dvec2& p : points) out.push_back(heights->height(p.x, p.y));
   return out;
 }
 

@@ -56,8 +56,9 @@ class FloatingObjects {
   // The motion of vehicles[vehicle].
   const physics::VehicleMotion& vehicle(size_t vehicle) const { return vehicles_.at(vehicle).motion; }
   // The water's height as the hull of `object` (numbered as Pose::object) felt it at its last step, at
-  // world (x, z) points near it: the sea around it plus every other vehicle's wake. Empty when it neither
-  // floats nor runs on the surface (a submerged vehicle feels no surface).
+  // world (x, z) points within its reach: the sea around it plus every other vehicle's wake (beyond its
+  // reach, the sea alone). Empty when it neither floats nor runs on the surface (a submerged vehicle feels
+  // no surface).
   std::vector<double> water_under(size_t object, const std::vector<glm::dvec2>& points) const;
   // The body of `object` (a floating object's or a surface vehicle's hull), or nullptr.
   const physics::FloatingBody* hull_body(size_t object) const;
@@ -86,9 +87,9 @@ class FloatingObjects {
   void reset();
   // Where the bodies' wake layer is centred: the mean position of what floats.
   glm::dvec2 centre() const;
-  // One step of a hull, from what advance() prepared for the step (its knots, its water_top).
-  void step_body(Body& b, const WakeHeights* wakes);
-  void step_vehicle(size_t vehicle, double t, const WakeHeights* wakes);
+  // One step of a hull, from what advance() prepared for the step (its knots with the wakes, its water_top).
+  void step_body(Body& b);
+  void step_vehicle(size_t vehicle, double t);
 
   scene::Scene scene_;
   ocean::OceanParams ocean_;

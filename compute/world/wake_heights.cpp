@@ -36,25 +36,14 @@ WakeHeights::WakeHeights(VehicleWakes wakes, uint32_t resolution)
   }
 }
 
-namespace {
-
-// The largest |h| and |dh/dt| of a layer's state.
-glm::dvec2 most_of(const std::vector<std::complex<double>>& state) {
-  glm::dvec2 most(0.0);
-  for (const std::complex<double>& c : state)
-    most = glm::max(most, glm::dvec2(std::abs(c.real()), std::abs(c.imag())));
-  return most;
-}
-
-}  // namespace
-
 void WakeHeights::restart(long long first_step) {
   if (next_.valid()) next_.get();  // a step of the states being replaced
   for (Layer& l : layers_) {
-    l.layer = std::make_unique<ocean::DynamicLayerCpu>(params_);
+    // One thread: the layers step on the background worker (next_), where a second thread of normal
+    // priority would take the core the bodies' steps run on.
+    l.layer = std::make_unique<ocean::DynamicLayerCpu>(params_, 1);
     l.layer->set_foam(false);  // the bodies feel heights only
     l.before = l.layer->state();
-    l.most_before = l.most_after = glm::dvec2(0.0);
   }
   first_step_ = first_step;
   steps_done_ = first_step;
@@ -84,7 +73,6 @@ WakeHeights::Stepped WakeHeights::step_layers(Stepped layers, glm::ivec2 origin,
 void WakeHeights::step_all(glm::dvec2 centre) {
   for (Layer& l : layers_) {
     l.before = l.layer->state();
-    l.most_before = l.most_after;
   }
   Stepped stepped;
   if (next_.valid()) {
@@ -93,10 +81,7 @@ void WakeHeights::step_all(glm::dvec2 centre) {
     for (Layer& l : layers_) stepped.push_back(std::move(l.layer));
     stepped = step_layers(std::move(stepped), window_for(centre), steps_done_);
   }
-  for (size_t h = 0; h < layers_.size(); ++h) {
-    layers_[h].layer = std::move(stepped[h]);
-    layers_[h].most_after = most_of(layers_[h].layer->state());
-  }
+  for (size_t h = 0; h < layers_.size(); ++h) layers_[h].layer = std::move(stepped[h]);
   ++steps_done_;
 }
 
@@ -107,10 +92,10 @@ void WakeHeights::advance(double t, glm::dvec2 centre, long long first_step) {
   if (steps_done_ < 0 || first_step != first_step_ || steps_done_ > k + 1) restart(first_step);
   while (steps_done_ < k + 1) step_all(centre);
   if (!next_.valid())  // copied here, so the other thread never reads a layer this one replaces
-    next_ = std::async(std::launch::async,
-                       [this, origin = window_for(centre), step = steps_done_, layers = copies()]() mutable {
-                         return step_layers(std::move(layers), origin, step);
-                       });
+    next_ =
+        worker_.submit([this, origin = window_for(centre), step = steps_done_, layers = copies()]() mutable {
+          return step_layers(std::move(layers), origin, step);
+        });
   const double dt = wakes_.step_s();
   const double s = std::clamp((t - double(k) * dt) / dt, 0.0, 1.0), s2 = s * s, s3 = s2 * s;
   // Cubic Hermite through (h, dh/dt) at both ends, and its derivative.
@@ -123,22 +108,12 @@ void WakeHeights::advance(double t, glm::dvec2 centre, long long first_step) {
     advances_ = 1;
     for (View& v : views_) v.fresh.assign(cells, 0);
   }
-  // A lookup weighs 16 cells by Catmull-Rom weights whose magnitudes add up to at most 1.25² (fewer
-  // near the window's edge, where the cells outside count as 0); a cell's sum is at most each layer's
-  // largest values at both ends, Hermite-weighted.
-  for (View& v : views_) {
+  for (View& v : views_)
     if (v.fresh.size() != cells) {
       v.height.assign(cells, 0.0);
       v.rate.assign(cells, 0.0);
       v.fresh.assign(cells, 0);
     }
-    double largest = 0;
-    for (const Layer& l : layers_)
-      if (l.vehicle != v.skip)
-        largest += std::abs(h00) * l.most_before.x + std::abs(h10 * dt) * l.most_before.y +
-                   std::abs(h01) * l.most_after.x + std::abs(h11 * dt) * l.most_after.y;
-    v.highest = 1.5625 * largest;
-  }
 }
 
 void WakeHeights::refresh(View& v, size_t w) const {
@@ -156,10 +131,6 @@ void WakeHeights::refresh(View& v, size_t w) const {
   v.height[w] = height;
   v.rate[w] = rate;
   v.fresh[w] = advances_;
-}
-
-double WakeHeights::highest(size_t skip_vehicle) const {
-  return layers_.empty() ? 0.0 : view(skip_vehicle).highest;
 }
 
 WakeHeights::View& WakeHeights::view(size_t skip) const {
@@ -233,20 +204,6 @@ void WakeHeights::refresh_cells(View& v, std::pair<glm::ivec2, glm::ivec2> cells
       const size_t w = size_t(b) * n + size_t(a);
       if (v.fresh[w] != advances_) refresh(v, w);
     }
-}
-
-double WakeHeights::highest(size_t skip_vehicle, glm::dvec2 lo, glm::dvec2 hi) const {
-  if (layers_.empty()) return 0.0;
-  View& v = view(skip_vehicle);
-  if (v.fresh.empty()) return 0.0;
-  const auto cells = cells_under(lo, hi);
-  refresh_cells(v, cells);
-  const size_t n = params_.n;
-  double largest = 0;
-  for (int b = cells.first.y; b <= cells.second.y; ++b)
-    for (int a = cells.first.x; a <= cells.second.x; ++a)
-      largest = std::max(largest, std::abs(v.height[size_t(b) * n + size_t(a)]));
-  return 1.5625 * largest;
 }
 
 void WakeHeights::add_heights(std::span<const glm::dvec2> points, std::span<double> heights,

@@ -22,6 +22,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/background_worker.h"
 #include "ocean/dynamic_layer.h"
 #include "world/vehicle_wakes.h"
 
@@ -48,12 +49,6 @@ class WakeHeights {
   // summed once.
   void add_heights(std::span<const glm::dvec2> points, std::span<double> heights,
                    size_t skip_vehicle = kNoVehicle) const;
-  // No height(p, skip_vehicle) is above this (0 without wakes).
-  double highest(size_t skip_vehicle = kNoVehicle) const;
-  // No height(p, skip_vehicle) with p in the box [lo, hi] is above this: the largest of the cells its taps
-  // reach, times the most Catmull-Rom's weights add up to (1.25²). Under a hull, far lower than highest()
-  // when the wake is high elsewhere in the window, so a hull's dry triangles stay unasked.
-  double highest(size_t skip_vehicle, glm::dvec2 lo, glm::dvec2 hi) const;
   glm::dvec2 slope(glm::dvec2 p) const;
   double rate(glm::dvec2 p) const;
 
@@ -65,8 +60,6 @@ class WakeHeights {
     size_t vehicle;
     std::unique_ptr<ocean::DynamicLayerCpu> layer;
     std::vector<std::complex<double>> before;  // (h, dh/dt) at step steps_done_ - 1, per storage index
-    // The largest |h| and |dh/dt| over the window in `before` and in the layer's state: the views' bound.
-    glm::dvec2 most_before{0.0}, most_after{0.0};
   };
   // The cubic Hermite weights of the last advance's time within its interval: h00, h10·dt, h01, h11·dt for
   // the height and their time derivatives for the rate.
@@ -81,7 +74,6 @@ class WakeHeights {
     size_t skip;
     std::vector<double> height, rate;
     std::vector<uint32_t> fresh;
-    double highest = 0;  // bounds lookup(height, ·) from above
   };
   using Stepped = std::vector<std::unique_ptr<ocean::DynamicLayerCpu>>;
   void restart(long long first_step);
@@ -118,6 +110,8 @@ class WakeHeights {
   // the window where the bodies were then: the FFTs of a step run while the bodies take the 120 Hz steps
   // before it, instead of on one of them. The window thus trails the bodies by one step of the layer.
   std::future<Stepped> next_;
+  // Runs next_. Last: its job reads the rest, so it finishes before the rest goes.
+  BackgroundWorker worker_;
 };
 
 }  // namespace lagoon::world

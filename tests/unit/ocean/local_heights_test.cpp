@@ -9,8 +9,11 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <span>
 #include <thread>
 #include <vector>
+
+#include <glm/geometric.hpp>
 
 #include "physics/floating_body.h"
 #include "support/shipped_scene.h"
@@ -60,11 +63,10 @@ TEST(LocalHeights, FollowWaveQueryBetweenKnots) {
   EXPECT_LE(local.knots_sampled(), 12) << "knots are sampled again and again";
 }
 
-// A knot sampled ahead, a share of its points per update while the query has its time ready, answers exactly
-// as one sampled whole when it is needed: a lattice stepped at 120 Hz, waiting each step until the prefetched
-// time is ready (as a paced 60 Hz loop has time for), against one on its own query updated at the last time
-// only.
-TEST(LocalHeights, AKnotSampledAheadInSharesIsTheKnotSampledWhole) {
+// A knot sampled ahead on the query's worker answers exactly as one sampled when it is needed: a lattice
+// stepped at 120 Hz, waiting each step until the prefetched time is ready (as a paced 60 Hz loop has time
+// for), against one on its own query updated at the last time only.
+TEST(LocalHeights, AKnotSampledAheadIsTheKnotSampledWhenNeeded) {
   const scene::Scene s = shipped_scene("default");
   const auto spectra = ocean::make_cascade_spectra(s.ocean);
   auto query = std::make_shared<ocean::WaveQuery>(s.ocean, spectra);
@@ -140,6 +142,40 @@ TEST(LocalHeights, ALatticeKeepsItsCentreTheDistanceAskedFromItsEdge) {
         ASSERT_NEAR(moving.height(at.x + dx, at.y + dz), large.height(at.x + dx, at.y + dz), 1e-12)
             << "t = " << t << " at " << dx << ", " << dz;
   }
+}
+
+// add(): heights from another source (the wakes) added where height() reads for a box are interpolated with
+// the sea's: a plane added must come back as itself inside the box (Catmull-Rom reproduces planes), up to its
+// edges, and leave the lattice untouched far from it. highest(lo, hi) bounds the sum in the box, and a bump
+// added inside shows in it.
+TEST(LocalHeights, HeightsAddedInABoxAreInterpolatedWithTheSeaAndBoundedThere) {
+  const scene::Scene s = shipped_scene("default");
+  const auto spectra = ocean::make_cascade_spectra(s.ocean);
+  ocean::LocalHeights sea(s.ocean, spectra, {}), summed(s.ocean, spectra, {});
+  const glm::dvec2 centre(1.0, 2.0), lo(-1.2, 0.3), hi(2.9, 3.1);
+  sea.update(3.3, centre);
+  summed.update(3.3, centre);
+  const auto plane = [](glm::dvec2 p) { return 0.3 + 0.05 * p.x - 0.02 * p.y; };
+  summed.add(lo, hi, [&](std::span<const glm::dvec2> points, std::span<double> out) {
+    for (size_t i = 0; i < points.size(); ++i) out[i] += plane(points[i]);
+  });
+  for (double x = lo.x; x <= hi.x + 1e-9; x += 0.1)
+    for (double z = lo.y; z <= hi.y + 1e-9; z += 0.1)
+      ASSERT_NEAR(summed.height(x, z) - sea.height(x, z), plane({x, z}), 1e-9) << x << ", " << z;
+  // The lattice's last rows (z from 5 m; it spans -2 .. 5.5 m) are beyond the taps of any point in the box.
+  for (double x = -2.0; x <= 4.0; x += 0.3) ASSERT_EQ(summed.height(x, 5.2), sea.height(x, 5.2)) << x;
+  double top = -1e9;
+  for (double x = lo.x; x <= hi.x; x += 0.05)
+    for (double z = lo.y; z <= hi.y; z += 0.05) top = std::max(top, summed.height(x, z));
+  EXPECT_LE(top, summed.highest(lo, hi));
+  EXPECT_LE(top, summed.highest());
+  EXPECT_GT(top, summed.highest(lo, hi) - 0.3) << "a bound far above the water spares nothing";
+  summed.add({0.5, 1.5}, {0.5, 1.5}, [](std::span<const glm::dvec2> points, std::span<double> out) {
+    for (size_t i = 0; i < points.size(); ++i)
+      out[i] += glm::length(points[i] - glm::dvec2(0.5, 1.5)) < 0.1 ? 2.0 : 0.0;  // a lattice point
+  });
+  EXPECT_GE(summed.highest(lo, hi), summed.height(0.5, 1.5));
+  EXPECT_GT(summed.height(0.5, 1.5), top + 1.0) << "the bump is there";
 }
 
 // highest() bounds every height() at the last update's time (the bodies skip their dry triangles by it),

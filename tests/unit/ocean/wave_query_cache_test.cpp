@@ -3,6 +3,7 @@
 // knots are prefetched, and a frame must not depend on how it was reached.
 #include <gtest/gtest.h>
 
+#include <utility>
 #include <vector>
 
 #include "ocean/wave_query.h"
@@ -48,6 +49,32 @@ TEST(WaveQueryCache, APrefetchedTimeAnswersAsAFreshQuery) {
   expect_same(next, fresh.sample(3.1, at), "t = 3.1");
   // And the answers are of their own times (the waves move between them).
   EXPECT_NE(prefetched[0].height, next[0].height);
+}
+
+// heights_ahead: the heights of a time sampled on the query's worker, for a time being prefetched, one
+// already evaluated and a new one, while the query answers other times; and for a model without a spectrum.
+TEST(WaveQueryCache, HeightsSampledAheadAreTheHeightsSampledNow) {
+  const std::vector<glm::dvec2> at = points();
+  ocean::WaveQuery ahead(small_sea()), now(small_sea());
+  ahead.sample(1.0, at);  // evaluated: among the recent times
+  ahead.prefetch(2.6);
+  auto prefetched = ahead.heights_ahead(2.6, at);
+  auto recent = ahead.heights_ahead(1.0, at);
+  auto fresh = ahead.heights_ahead(3.1, at);
+  ahead.sample(0.4, at);  // the query goes on answering meanwhile
+  for (auto [time, future] : {std::pair{2.6, &prefetched}, {1.0, &recent}, {3.1, &fresh}}) {
+    const std::vector<double> got = future->heights.get();
+    const std::vector<ocean::WaveSample> want = now.sample(time, at);
+    ASSERT_EQ(got.size(), want.size());
+    for (size_t i = 0; i < got.size(); ++i) EXPECT_EQ(got[i], want[i].height) << "t = " << time << ", " << i;
+  }
+  ocean::OceanParams waves = small_sea();
+  waves.model = ocean::SurfaceModel::Gerstner;
+  ocean::WaveQuery direct(waves), direct_now(waves);
+  const std::vector<double> got = direct.heights_ahead(2.2, at).heights.get();
+  const std::vector<ocean::WaveSample> want = direct_now.sample(2.2, at);
+  for (size_t i = 0; i < got.size(); ++i) EXPECT_EQ(got[i], want[i].height) << "gerstner, " << i;
+  EXPECT_NE(got[0], got[1]) << "the waves must be there";
 }
 
 TEST(WaveQueryCache, ATimeAskedAgainAnswersAsTheFirstTime) {

@@ -6,11 +6,15 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <limits>
+#include <vector>
 
+#include "ocean/local_heights.h"
 #include "ocean/wave_query.h"
 #include "support/gltf_quads.h"
 #include "support/shipped_scene.h"
@@ -114,6 +118,48 @@ TEST(FloatingObjects, AnEarlierTimeIsSimulatedAgainFromZero) {
   const auto pa = (*a)->poses(), pb = (*b)->poses();
   ASSERT_EQ(pa.size(), 1u);
   EXPECT_EQ(0, std::memcmp(&pa[0].model_to_world, &pb[0].model_to_world, sizeof(glm::mat4)));
+}
+
+// A hull looks its water up once a point: the wakes are added to its lattice of the sea's heights where the
+// hull can reach (issue 35). What it feels must still be the sea (WaveQuery without the waves the lattice
+// leaves out) plus every wake but its own vehicle's, wherever its points are, while the boat's wake passes
+// the buoy and the moored boat and the AUV's passes the boat. Leaving the wakes out misses them by far more.
+TEST(FloatingObjects, AHullFeelsTheSeaAndTheOtherWakesAtEachOfItsPoints) {
+  const scene::Scene s = shipped_scene("harbour");
+  const auto spectra = ocean::make_cascade_spectra(s.ocean);
+  auto floating = world::FloatingObjects::create(s, s.ocean, spectra);
+  ASSERT_TRUE(floating) << floating.error().message;
+  const world::WakeHeights* wakes = (*floating)->wakes();
+  ASSERT_NE(wakes, nullptr);
+  ocean::WaveQuery sea(
+      s.ocean, spectra,
+      ocean::WaveQueryOptions{.max_wavenumber = ocean::lattice_wavenumber({}), .heights_only = true});
+  const size_t boat = s.objects.size();  // vehicles[0]: the boat, on the surface
+  double worst = 0, largest_wake = 0;
+  for (double t = 4.0; t <= 16.0; t += 1.5) {
+    (*floating)->advance(t);
+    const double felt_at = (std::floor(t * 120 + 1e-9) - 1) / 120;  // the last step's start
+    for (size_t object : {size_t{0}, size_t{1}, boat}) {
+      const physics::FloatingBody* hull = (*floating)->hull_body(object);
+      ASSERT_NE(hull, nullptr) << object;
+      std::vector<glm::dvec2> points;
+      for (const glm::dvec3& p : hull->sample_points_in_world()) points.push_back({p.x, p.z});
+      const std::vector<double> felt = (*floating)->water_under(object, points);
+      const std::vector<ocean::WaveSample> waves = sea.sample(felt_at, points);
+      const size_t own = object == boat ? 0 : world::WakeHeights::kNoVehicle;
+      for (size_t i = 0; i < points.size(); ++i) {
+        const double wake = wakes->height(points[i], own);
+        worst = std::max(worst, std::abs(felt[i] - (waves[i].height + wake)));
+        largest_wake = std::max(largest_wake, std::abs(wake));
+      }
+    }
+  }
+  // The sea's part is interpolated in time and space (ocean/local_heights.h: within 1 cm), the wakes' again
+  // from the lattice's points.
+  std::printf("hull's water against sea + wakes: worst %.4f m, largest wake under a hull %.3f m\n", worst,
+              largest_wake);
+  EXPECT_LT(worst, 0.012);
+  EXPECT_GT(largest_wake, 0.05) << "a wake must pass under a hull for the check to see it";
 }
 
 // With bodies_start_s the bodies and vehicles start at rest where the scene puts them at that time, and are

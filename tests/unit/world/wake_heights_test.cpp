@@ -117,8 +117,7 @@ TEST(WakeHeights, BetweenStepsTheHeightFollowsItsRate) {
 
 TEST(WakeHeights, ACellLookedUpBeforeAnAdvanceAnswersAsAFreshLayerAfterIt) {
   // Cells are summed when first looked up after an advance: one asked for at many earlier times (within a
-  // step and across steps) must answer as a fresh layer advanced straight to the last time, everywhere,
-  // and no height may exceed highest(), the bound the hulls' culling trusts.
+  // step and across steps) must answer as a fresh layer advanced straight to the last time, everywhere.
   const scene::Scene s = shipped_scene("default", {"vehicles=[" + kBoat + "," + kCrossing + "]"});
   world::WakeHeights used(wakes_of(s), 64), fresh(wakes_of(s), 64);
   std::vector<glm::dvec2> at;
@@ -137,18 +136,15 @@ TEST(WakeHeights, ACellLookedUpBeforeAnAdvanceAnswersAsAFreshLayerAfterIt) {
     for (const glm::dvec2& p : at) {
       // The same arithmetic on the same states: equal to the bit.
       ASSERT_EQ(used.height(p, skip), fresh.height(p, skip)) << p.x << ", " << p.y << " skipping " << skip;
-      EXPECT_LE(used.height(p, skip), used.highest(skip)) << p.x << ", " << p.y;
       largest = std::max(largest, std::abs(used.height(p, skip)));
     }
   for (const glm::dvec2& p : at) EXPECT_EQ(used.rate(p), fresh.rate(p)) << p.x << ", " << p.y;
   EXPECT_GT(largest, 1e-3) << "the boats' wakes are in the window";
 }
 
-// The hulls ask for their points in one batch (add_heights) and bound the wakes under them by a box
-// (highest(skip, lo, hi)): the batch must answer as height() does, to the bit, inside the window, at its
-// edges and outside; the box's bound must hold for every point in it, and be tighter than the window's where
-// the wake under the box is lower than elsewhere.
-TEST(WakeHeights, ABatchAnswersAsEachPointAndABoxBoundsTheWakesInIt) {
+// The hulls' lattices ask for their points in one batch (add_heights): the batch must answer as height()
+// does, to the bit, inside the window, at its edges and outside.
+TEST(WakeHeights, ABatchAnswersAsEachPoint) {
   const scene::Scene s = shipped_scene("default", {"vehicles=[" + kBoat + "," + kCrossing + "]"});
   world::WakeHeights w(wakes_of(s), 64);
   w.advance(7.35, glm::dvec2(5, 5));
@@ -161,21 +157,6 @@ TEST(WakeHeights, ABatchAnswersAsEachPointAndABoxBoundsTheWakesInIt) {
     for (size_t i = 0; i < points.size(); ++i)
       ASSERT_EQ(batch[i], 0.25 + w.height(points[i], skip)) << points[i].x << ", " << points[i].y;
   }
-  int tighter = 0;
-  for (double x0 = -60; x0 <= 50; x0 += 9.7)
-    for (double z0 = -60; z0 <= 50; z0 += 8.3) {
-      const glm::dvec2 lo(x0, z0), hi(x0 + 7.5, z0 + 4.0);  // about a workboat's footprint
-      for (size_t skip : {world::WakeHeights::kNoVehicle, size_t{1}}) {
-        const double bound = w.highest(skip, lo, hi);
-        for (double x = lo.x; x <= hi.x; x += 0.23)
-          for (double z = lo.y; z <= hi.y; z += 0.29)
-            ASSERT_LE(w.height({x, z}, skip), bound)
-                << x << ", " << z << " in the box at " << x0 << ", " << z0;
-        EXPECT_LE(bound, w.highest(skip) + 1e-12);
-        tighter += bound < 0.5 * w.highest(skip) ? 1 : 0;
-      }
-    }
-  EXPECT_GT(tighter, 50) << "boxes away from the wakes' crests bound them far lower than the window does";
 }
 
 TEST(WakeHeights, ASmallBoxRidesAPassingWake) {
