@@ -93,8 +93,9 @@ class OceanRenderer {
 
   // Work that submits and waits, kept out of record(): the foam warm-up when scene.time_s jumps (the first
   // frame, a step back, or more than kWarmupS ahead; with History::Sequence only the first two), and the
-  // wakes' likewise; the floating bodies are brought to scene.time_s on another thread meanwhile. Call
-  // before recording a frame for scene.time_s.
+  // wakes' likewise (more than wakes.history_s ahead; a frame within it that is more than a few steps ahead
+  // steps the layer on here); the floating bodies are brought to scene.time_s on another thread meanwhile.
+  // Call before recording a frame for scene.time_s.
   void prepare(const scene::Scene& scene);
   // Records the frame (the ocean stepped to scene.time_s, then every pass) into `cmd`; never submits. Uses
   // slot `slot` (mod kSlots): the caller must have waited for the last frame recorded with it. Returns the

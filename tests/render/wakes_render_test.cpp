@@ -161,5 +161,43 @@ TEST_F(WakesRender, ASequenceCarriesTheLayerAndAdvancingWithoutDrawingGivesTheSa
   EXPECT_FALSE(layer_bits(**drawn) == layer_bits(**fresh));
 }
 
+// A live renderer (History::Continuous) whose frames are further apart than the steps a frame records steps
+// the layer on to them as a sequence does, as long as that is no longer than starting again from rest: a slow
+// device's frames would otherwise each replay the whole history. Further ahead it starts again, as a fresh
+// renderer does.
+TEST_F(WakesRender, ALiveFrameFarAheadStepsOnUnlessStartingAgainIsShorter) {
+  scene::Scene s = calm_bay_with_a_boat();
+  s.render.width = 48;
+  s.render.height = 27;
+  s.wakes.history_s = 2.0f;  // 20 steps of 0.1 s
+  auto state = [&](const render::OceanRenderer& r) {
+    return vk::readback_buffer(ctx(), r.wakes().layer()->state());
+  };
+  auto live = render::OceanRenderer::create(ctx(), s);
+  auto sequence = render::OceanRenderer::create(ctx(), s);
+  ASSERT_TRUE(live && sequence) << (live ? sequence.error().message : live.error().message);
+  (*sequence)->set_history(render::OceanRenderer::History::Sequence);
+  ASSERT_TRUE((*live)->wakes().active());
+  // (time, steps taken in all): 3.0 s runs steps 10-29 from rest; 4.5 s is 15 steps ahead, more than a
+  // frame's 8 and fewer than the history's 20: it steps on, as the sequence does.
+  for (const auto& [time, steps] : std::vector<std::pair<float, long long>>{{3.0f, 20}, {4.5f, 35}}) {
+    s.time_s = time;
+    (*live)->render(s);
+    (*sequence)->render(s);
+    EXPECT_EQ((*live)->wakes().steps_taken(), steps) << "at " << time << " s";
+  }
+  EXPECT_TRUE(state(**live) == state(**sequence)) << "stepping on left another layer than the sequence's";
+  // 8.0 s is 35 steps ahead: starting again 20 steps before it is shorter, and gives a fresh renderer's bits.
+  s.time_s = 8.0f;
+  (*live)->render(s);
+  EXPECT_EQ((*live)->wakes().steps_taken(), 55);
+  auto fresh = render::OceanRenderer::create(ctx(), s);
+  ASSERT_TRUE(fresh);
+  (*fresh)->render(s);
+  EXPECT_EQ((*fresh)->wakes().steps_taken(), 20);
+  EXPECT_TRUE(state(**live) == state(**fresh))
+      << "a jump past the history left another layer than a fresh one";
+}
+
 }  // namespace
 }  // namespace lagoon::test

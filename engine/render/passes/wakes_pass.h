@@ -32,11 +32,11 @@ class WakesPass {
   // FrameUniforms.wakes: the window's corner (x, z) in metres, its width, the cell size.
   glm::vec4 window() const;
 
-  // When the frame's time jumps (the first frame, backwards, or more than a few steps ahead), runs the layer
-  // from rest wakes.history_s before it (VehicleWakes::first_step_for) in its own submission and waits, or
-  // takes the state an identical run of an earlier process left (render/wakes_cache.h). With `sequence` a
-  // frame far ahead is no jump: the layer steps on to it in its window as it is. Call before recording the
-  // frame.
+  // When the frame's time jumps (the first frame, backwards, or further ahead than wakes.history_s), runs
+  // the layer from rest wakes.history_s before it (VehicleWakes::first_step_for) in its own submission and
+  // waits, or takes the state an identical run of an earlier process left (render/wakes_cache.h). A frame
+  // more than a few steps ahead but within the history steps on to it here, in its window as it is; with
+  // `sequence` any frame ahead does. Call before recording the frame.
   void prepare(vk::Context& ctx, const scene::Scene& scene, bool sequence = false);
   // Puts the window where the camera looks (VehicleWakes::window_for; waves in the cells both windows share
   // are kept). Call before the frame's uniforms are written (window()).
