@@ -36,6 +36,9 @@ class Demo {
 
   explicit Demo(DemoOptions options)
       : options_(std::move(options)), scene_(options_.scene), file_scene_(scene_) {}
+  // Drains the device first: a frame that threw leaves its work in flight, and the renderer and the
+  // swapchain go before the ring that waits for it.
+  ~Demo();
 
   int run();
 
@@ -126,7 +129,8 @@ class Demo {
   double t0_ = 0;                                                // the scene's time at start
   long long frame_ = 0;                                          // frames presented
   Clock::time_point last_frame_{};
-  int exit_status_ = cli::kExitOk;  // kExitFailure when the --screenshot could not be written
+  int exit_status_ = cli::kExitOk;   // kExitFailure when the --screenshot could not be written
+  long long fail_after_frame_ = -1;  // LAGOON_DEMO_FAIL_AFTER_FRAME (tests of the error path)
 
   double time_s_ = 0;
   long long scripted_frame_ = -1;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,11 @@
 #include "vk/check.h"
 
 namespace lagoon::demo {
+
+Demo::~Demo() {
+  // Not wait_idle(): it throws on a lost device, and a destructor must not.
+  if (ctx_) vkDeviceWaitIdle(ctx_->device());
+}
 
 int Demo::run() {
   // Ctrl-C or SIGTERM closes the demo as its window's close button does: the loop ends (at once when the
@@ -37,6 +43,8 @@ int Demo::start() {
     return cli::kExitFailure;
   }
   window_ = std::move(*window);
+  // For the tests of the error path: the device is reported lost right after that frame is submitted.
+  if (const char* fail = std::getenv("LAGOON_DEMO_FAIL_AFTER_FRAME")) fail_after_frame_ = std::atoll(fail);
   vk::ContextOptions context_options = vk::ContextOptions::from_environment();
   context_options.instance_extensions = Window::required_instance_extensions();
   context_options.create_surface = [&](VkInstance instance) { return window_->create_surface(instance); };

@@ -48,6 +48,8 @@ bool Demo::frame() {
   vk::Buffer pixels;
   if (!screenshot.empty()) pixels = record_screenshot_copy(cmd, *image);
   submit_and_present(slot, *image);
+  if (frame_ == fail_after_frame_)
+    throw vk::VulkanError("vkQueueSubmit (LAGOON_DEMO_FAIL_AFTER_FRAME)", VK_ERROR_DEVICE_LOST);
   if (!screenshot.empty()) finish_screenshot(screenshot, pixels);
   if (last_scripted && !options_.save_scene.empty()) save_scene_to(options_.save_scene);
   ++frame_;

@@ -106,7 +106,7 @@ void ImGuiLayer::init_backends(const Window& window, const Swapchain& swapchain)
 }
 
 ImGuiLayer::~ImGuiLayer() {
-  ctx_.wait_idle();
+  vkDeviceWaitIdle(ctx_.device());  // not wait_idle(): it throws on a lost device, and a destructor must not
   ImGui_ImplVulkan_Shutdown();
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();

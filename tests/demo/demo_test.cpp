@@ -56,6 +56,20 @@ TEST_F(Demo, SigtermClosesTheDemoLikeItsWindowButton) {
   EXPECT_NE(d.output.find(" frames at 160x90 on "), std::string::npos) << d.output;
 }
 
+// A frame that fails on the device (here one reported lost, LAGOON_DEMO_FAIL_AFTER_FRAME, right after it
+// was submitted) ends the demo with the error named and exit 1; the device drains before anything its work
+// uses is destroyed (before, the renderer went first: "in use by a command buffer" from the validation layer,
+// a crash on some drivers).
+TEST_F(Demo, AFrameThatFailsOnTheDeviceEndsCleanlyWithTheErrorNamed) {
+  auto d = run_process("LAGOON_DEMO_FAIL_AFTER_FRAME=2 " + shell_quote(LAGOON_XVFB_RUN) + " -a " +
+                       shell_quote(LAGOON_DEMO_BINARY) + " --scene " + shell_quote(kScene) +
+                       " --width 160 --height 90 --frames 10 --exit");
+  EXPECT_EQ(d.exit_code, 1) << d.output;
+  EXPECT_NE(d.output.find("lagoon-demo: Vulkan error: "), std::string::npos) << d.output;
+  EXPECT_NE(d.output.find("The GPU stopped responding"), std::string::npos) << d.output;
+  EXPECT_EQ(d.output.find("[vulkan validation"), std::string::npos) << d.output;
+}
+
 // Dynamic resolution (issue 34, apps/demo/resolution_scale.h): live frames are drawn at the fraction of the
 // window that holds --target-fps and stretched to it (a linear blit the validation layer checks). A target
 // out of reach takes them to the floor, a quarter of the window; scripted runs stay at full size (the other
