@@ -9,6 +9,7 @@
 #include "core/free_heap.h"
 #include "demo.h"
 #include "io/png.h"
+#include "live_clock.h"
 #include "vk/barriers.h"
 #include "vk/check.h"
 
@@ -94,13 +95,14 @@ void Demo::update_ui(float dt) {
   rebuild_after_edits();
 }
 
-// The scene at this frame's time: exactly 1/fps per frame in scripted runs, the wall clock otherwise.
+// The scene at this frame's time: exactly 1/fps per frame in scripted runs, the wall clock otherwise (at most
+// a quarter of a second a frame: live_clock.h).
 scene::Scene Demo::advance_time(float dt) {
   const double from = time_s_;
   if (options_.frames) {
     time_s_ = t0_ + double(frame_) / options_.fps;
   } else if (!paused_) {
-    time_s_ += dt;
+    time_s_ += live_step_s(dt);
   } else if (step_once_) {
     time_s_ += 1.0 / 30.0;
   }
