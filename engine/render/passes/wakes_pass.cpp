@@ -75,11 +75,11 @@ void WakesPass::prepare(vk::Context& ctx, const scene::Scene& scene, bool sequen
   const long long target = hulls_.step_at(scene.time_s);
   if (steps_done_ >= 0 && target >= steps_done_) {
     if (target - steps_done_ <= kStepsPerFrame) return;  // the frame's own steps (record)
-    // A live frame further ahead steps on too while that is no longer than starting again from rest: on a
-    // device slower than kStepsPerFrame steps a frame, each frame replaying the whole history made the next
-    // one later still (0.1 frames/s at 1 s a frame in the harbour on lavapipe).
-    if (sequence || target - steps_done_ <= target - hulls_.first_step_for(scene.time_s))
-      return run_to(ctx, target, false);
+    // A live frame further ahead steps on too while the layer is no older than the step a replay would start
+    // from rest (stepping on is then no longer): on a device slower than kStepsPerFrame steps a frame, each
+    // frame replaying the whole history made the next one later still (0.1 frames/s at 1 s a frame in the
+    // harbour on lavapipe).
+    if (sequence || steps_done_ >= hulls_.first_step_for(scene.time_s)) return run_to(ctx, target, false);
   }
   follow_camera(scene);
   steps_done_ = hulls_.first_step_for(scene.time_s);
