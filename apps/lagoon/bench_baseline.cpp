@@ -154,6 +154,8 @@ int run_bench_baseline(const ParsedArgs& args, int rounds, long long width, long
   std::printf("  %-26s %12s %12s %8s\n", "scene / pass", "baseline ms", "this ms", "ratio");
   nlohmann::json rows = nlohmann::json::array();
   double log_ratio_sum = 0;
+  const bool every_scene = !args.get("scene");
+  size_t skipped = 0;
   for (size_t i = 0; i < scenes.size(); ++i) {
     std::fprintf(stderr, "lagoon bench render: [%zu/%zu] %s\n", i + 1, scenes.size(), scenes[i].c_str());
     // ABAB... would favour whichever build runs second on a machine that warms up or throttles.
@@ -163,13 +165,23 @@ int run_bench_baseline(const ParsedArgs& args, int rounds, long long width, long
     Result<BuildTimes> second =
         first ? measure(base_first ? self : baseline, scenes[i], args, rounds, width, height, work.path)
               : first;
+    const std::string name = fs::path(scenes[i]).stem().string();
+    const Result<BuildTimes>& base_run = base_first ? first : second;
+    if (!base_run && every_scene && (base_first || first)) {
+      // A scene newer than the older build (a field it does not know): the other scenes still compare.
+      std::fprintf(stderr, "lagoon bench render: skipping %s, which the baseline cannot render: %s\n",
+                   scenes[i].c_str(), base_run.error().message.c_str());
+      std::printf("  %-26s %12s\n", (name + " frame (wall)").c_str(), "skipped: the baseline failed on it");
+      rows.push_back({{"name", "baseline/" + name + "/frame"}, {"skipped", base_run.error().message}});
+      ++skipped;
+      continue;
+    }
     if (!first || !second) {
       std::fprintf(stderr, "lagoon bench render: %s\n", (!first ? first : second).error().message.c_str());
       return kExitFailure;
     }
     const BuildTimes& base = base_first ? *first : *second;
     const BuildTimes& ours = base_first ? *second : *first;
-    const std::string name = fs::path(scenes[i]).stem().string();
     print_row(name + " frame (wall)", base.frame, ours.frame);
     log_ratio_sum += std::log(ours.frame / base.frame);
     rows.push_back({{"name", "baseline/" + name + "/frame"},
@@ -186,12 +198,26 @@ int run_bench_baseline(const ParsedArgs& args, int rounds, long long width, long
                       {"ratio", ms / other->second}});
     }
   }
-  const double mean_ratio = std::exp(log_ratio_sum / double(scenes.size()));
+  const size_t compared = scenes.size() - skipped;
+  if (compared == 0) {
+    std::fprintf(stderr, "lagoon bench render: the baseline rendered none of the %zu scenes\n",
+                 scenes.size());
+    return kExitFailure;
+  }
+  const double mean_ratio = std::exp(log_ratio_sum / double(compared));
   std::printf("  %-26s %12s %12s %8.2f\n", "frames, geometric mean", "", "", mean_ratio);
+  if (skipped > 0)
+    std::printf("  (%zu of %zu scenes skipped: the baseline could not render them)\n", skipped,
+                scenes.size());
   if (auto path = args.get("json")) {
-    const nlohmann::json context = {{"baseline", baseline}, {"this", self},
-                                    {"width", width},       {"height", height},
-                                    {"rounds", rounds},     {"frame_ratio_geometric_mean", mean_ratio}};
+    const nlohmann::json context = {{"baseline", baseline},
+                                    {"this", self},
+                                    {"width", width},
+                                    {"height", height},
+                                    {"rounds", rounds},
+                                    {"frame_ratio_geometric_mean", mean_ratio},
+                                    {"scenes_compared", compared},
+                                    {"scenes_skipped", skipped}};
     if (!write_report(*path, {{"context", context}, {"benchmarks", rows}})) return kExitFailure;
     std::printf("wrote %s\n", path->c_str());
   }

@@ -368,7 +368,7 @@ const Command& bench_command() {
                  "render: run this older build's `lagoon` (e.g. built from another commit in a git "
                  "worktree) side by side, each build in its own process, and print per-scene ratios "
                  "(this / baseline) of the frame and of each pass; without --scene, every scenes/*.json "
-                 "of the working directory"},
+                 "of the working directory, skipping any the older build cannot render"},
                 {"rounds", "R",
                  "measured rounds per configuration (default 15 compute, wakes and bodies, 10 render; "
                  "a round of bodies is 60 frames)"}},

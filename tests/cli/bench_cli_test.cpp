@@ -140,6 +140,41 @@ TEST(BenchCli, BaselineRunsTheOtherBuildSideBySideAndPrintsRatios) {
   EXPECT_FALSE(rows.count("baseline/open-ocean/pass/refraction")) << doc.dump(1);
 }
 
+// Without --scene every scenes/*.json is compared; one the older build cannot read (a newer scene) is skipped
+// with its message and left out of the mean, while the others still give ratios.
+TEST(BenchCli, BaselineSkipsAShippedSceneItCannotRender) {
+  TempDir dir;
+  const std::filesystem::path scenes = dir / "work" / "scenes";
+  std::filesystem::create_directories(scenes);
+  for (const char* name : {"a.json", "b.json"})
+    std::filesystem::copy_file(std::string(LAGOON_SOURCE_DIR) + "/scenes/open-ocean.json", scenes / name);
+  const std::string old_build =
+      fake_baseline(dir,
+                    "case \"$*\" in *b.json*) echo 'b.json: ocean.new_field: unknown field'; exit 1;; esac\n"
+                    "while [ $# -gt 0 ]; do [ \"$1\" = --json ] && out=$2; shift; done\n"
+                    "printf '{\"context\":{},\"benchmarks\":[{\"name\":\"render/frame\","
+                    "\"real_time\":1000}]}' > \"$out\"\n");
+  const std::string json = (dir / "ratios.json").string();
+  auto r = run_process("cd " + shell_quote((dir / "work").string()) + " && " + shell_quote(LAGOON_BINARY) +
+                       " bench render --baseline " + old_build +
+                       " --width 32 --height 18 --rounds 1 --json " + json);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("skipping scenes/b.json, which the baseline cannot render"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("ocean.new_field: unknown field"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("1 of 2 scenes skipped"), std::string::npos) << r.output;
+  const auto doc = nlohmann::json::parse(std::ifstream(json));
+  std::map<std::string, nlohmann::json> rows;
+  for (const auto& b : doc["benchmarks"]) rows[b["name"]] = b;
+  ASSERT_TRUE(rows.count("baseline/a/frame") && rows.count("baseline/b/frame")) << doc.dump(1);
+  EXPECT_TRUE(rows["baseline/b/frame"].contains("skipped")) << doc.dump(1);
+  EXPECT_FALSE(rows["baseline/b/frame"].contains("ratio")) << doc.dump(1);
+  // The mean is a's ratio alone: b has none to count.
+  EXPECT_NEAR(doc["context"]["frame_ratio_geometric_mean"].get<double>(),
+              rows["baseline/a/frame"]["ratio"].get<double>(), 1e-12);
+  EXPECT_EQ(doc["context"]["scenes_skipped"], 1);
+}
+
 TEST(BenchCli, BaselineThatIsMissingOrFailsIsNamed) {
   TempDir dir;
   const std::string scene = " --scene " + std::string(LAGOON_SOURCE_DIR) + "/scenes/open-ocean.json";
