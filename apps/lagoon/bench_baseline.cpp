@@ -66,6 +66,13 @@ std::vector<std::string> scenes_to_compare(const ParsedArgs& args) {
   return scenes;
 }
 
+// The file the baseline renders for `scene`: the same, or with --baseline-scenes DIR the file of that name
+// there (the scene as the older commit had it, where its fields have changed since).
+std::string baseline_scene(const ParsedArgs& args, const std::string& scene) {
+  const auto dir = args.get("baseline-scenes");
+  return dir ? (fs::path(*dir) / fs::path(scene).filename()).string() : scene;
+}
+
 // Runs `program bench render` on one scene; its report's medians, or why not.
 Result<BuildTimes> measure(const std::string& program, const std::string& scene, const ParsedArgs& args,
                            int rounds, long long width, long long height, const fs::path& work) {
@@ -134,6 +141,13 @@ int run_bench_baseline(const ParsedArgs& args, int rounds, long long width, long
     std::fprintf(stderr, "lagoon bench render: %s\n", why->c_str());
     return kExitUsage;
   }
+  if (const auto dir = args.get("baseline-scenes"); dir && !fs::is_directory(*dir)) {
+    std::fprintf(stderr,
+                 "lagoon bench render: --baseline-scenes %s: no such folder; pass the older checkout's "
+                 "scenes folder (e.g. ../lagoon-base/scenes)\n",
+                 dir->c_str());
+    return kExitUsage;
+  }
   const std::vector<std::string> scenes = scenes_to_compare(args);
   if (scenes.empty()) {
     std::fprintf(stderr,
@@ -151,6 +165,8 @@ int run_bench_baseline(const ParsedArgs& args, int rounds, long long width, long
       "this build %s against --baseline %s; %lldx%lld, %d frames a scene and build, medians; ratio = "
       "this / baseline (each build in its own process, their order alternating by scene)\n",
       self.c_str(), baseline.c_str(), width, height, rounds);
+  if (const auto dir = args.get("baseline-scenes"))
+    std::printf("the baseline renders the scenes of the same name in %s\n", dir->c_str());
   std::printf("  %-26s %12s %12s %8s\n", "scene / pass", "baseline ms", "this ms", "ratio");
   nlohmann::json rows = nlohmann::json::array();
   double log_ratio_sum = 0;
@@ -160,11 +176,13 @@ int run_bench_baseline(const ParsedArgs& args, int rounds, long long width, long
     std::fprintf(stderr, "lagoon bench render: [%zu/%zu] %s\n", i + 1, scenes.size(), scenes[i].c_str());
     // ABAB... would favour whichever build runs second on a machine that warms up or throttles.
     const bool base_first = i % 2 == 0;
-    Result<BuildTimes> first =
-        measure(base_first ? baseline : self, scenes[i], args, rounds, width, height, work.path);
-    Result<BuildTimes> second =
-        first ? measure(base_first ? self : baseline, scenes[i], args, rounds, width, height, work.path)
-              : first;
+    const std::string base_scene = baseline_scene(args, scenes[i]);
+    auto run = [&](bool base) {
+      return measure(base ? baseline : self, base ? base_scene : scenes[i], args, rounds, width, height,
+                     work.path);
+    };
+    Result<BuildTimes> first = run(base_first);
+    Result<BuildTimes> second = first ? run(!base_first) : first;
     const std::string name = fs::path(scenes[i]).stem().string();
     const Result<BuildTimes>& base_run = base_first ? first : second;
     if (!base_run && every_scene && (base_first || first)) {
@@ -217,7 +235,8 @@ int run_bench_baseline(const ParsedArgs& args, int rounds, long long width, long
                                     {"rounds", rounds},
                                     {"frame_ratio_geometric_mean", mean_ratio},
                                     {"scenes_compared", compared},
-                                    {"scenes_skipped", skipped}};
+                                    {"scenes_skipped", skipped},
+                                    {"baseline_scenes", args.get("baseline-scenes").value_or("")}};
     if (!write_report(*path, {{"context", context}, {"benchmarks", rows}})) return kExitFailure;
     std::printf("wrote %s\n", path->c_str());
   }

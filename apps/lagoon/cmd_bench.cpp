@@ -279,7 +279,7 @@ int run_bench_render(const ParsedArgs& args, int rounds) {
 // Options that only bench render (and bench bodies: --scene, --set) reads; the others refuse them rather
 // than silently ignoring them.
 std::optional<std::string> render_only_option(const ParsedArgs& args, const std::string& what) {
-  for (const char* name : {"scene", "set", "width", "height", "baseline"})
+  for (const char* name : {"scene", "set", "width", "height", "baseline", "baseline-scenes"})
     if (args.has(name) && !(what == "bodies" && (std::string(name) == "scene" || std::string(name) == "set")))
       return std::string(name);
   return std::nullopt;
@@ -369,6 +369,10 @@ const Command& bench_command() {
                  "worktree) side by side, each build in its own process, and print per-scene ratios "
                  "(this / baseline) of the frame and of each pass; without --scene, every scenes/*.json "
                  "of the working directory, skipping any the older build cannot render"},
+                {"baseline-scenes", "DIR",
+                 "render, with --baseline: the older build renders DIR/NAME.json, the scene of the same "
+                 "name as it was at its commit (e.g. ../lagoon-base/scenes), where a scene's fields have "
+                 "changed since; this build renders its own"},
                 {"rounds", "R",
                  "measured rounds per configuration (default 15 compute, wakes and bodies, 10 render; "
                  "a round of bodies is 60 frames)"}},

@@ -175,6 +175,34 @@ TEST(BenchCli, BaselineSkipsAShippedSceneItCannotRender) {
   EXPECT_EQ(doc["context"]["scenes_skipped"], 1);
 }
 
+// --baseline-scenes DIR: the older build renders the scene of the same name there (as its commit had it),
+// this build its own; a folder that is not there is a usage error.
+TEST(BenchCli, BaselineScenesGiveTheOlderBuildItsOwnScene) {
+  TempDir dir;
+  std::filesystem::create_directories(dir / "old-scenes");
+  const std::string old_build =
+      fake_baseline(dir,
+                    "while [ $# -gt 0 ]; do [ \"$1\" = --json ] && out=$2; shift; done\n"
+                    "printf '{\"context\":{},\"benchmarks\":[{\"name\":\"render/frame\","
+                    "\"real_time\":1000}]}' > \"$out\"\n");
+  const std::string scene = std::string(LAGOON_SOURCE_DIR) + "/scenes/open-ocean.json";
+  const std::string old_scene = (dir / "old-scenes" / "open-ocean.json").string();
+  auto r = lagoon("bench render --baseline " + old_build + " --baseline-scenes " +
+                  (dir / "old-scenes").string() + " --scene " + scene + " --width 32 --height 18 --rounds 1");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::ifstream args_file(dir / "args.txt");
+  const std::string given((std::istreambuf_iterator<char>(args_file)), std::istreambuf_iterator<char>());
+  EXPECT_NE(given.find("--scene " + old_scene + " "), std::string::npos) << given;
+  EXPECT_EQ(given.find("--scene " + scene), std::string::npos) << given;
+  EXPECT_NE(r.output.find("open-ocean frame (wall)"), std::string::npos) << r.output;
+  auto missing = lagoon("bench render --baseline " + old_build + " --baseline-scenes " +
+                        (dir / "nope").string() + " --scene " + scene);
+  EXPECT_EQ(missing.exit_code, 2) << missing.output;
+  EXPECT_NE(missing.output.find("--baseline-scenes " + (dir / "nope").string() + ": no such folder"),
+            std::string::npos)
+      << missing.output;
+}
+
 TEST(BenchCli, BaselineThatIsMissingOrFailsIsNamed) {
   TempDir dir;
   const std::string scene = " --scene " + std::string(LAGOON_SOURCE_DIR) + "/scenes/open-ocean.json";
