@@ -78,6 +78,7 @@ gpu::FrameUniforms frame_uniforms(const FrameInputs& in) {
   const float width = float(in.extent.width), height = float(in.extent.height);
   const uint32_t drawn = std::min<uint32_t>(in.ocean.cascade_count(), LAGOON_MAX_CASCADES);
   gpu::FrameUniforms f{
+      .screen = glm::vec4(width, height, 1.0f / width, 1.0f / height),
       .view_proj = in.view_proj,
       .inv_view_proj = glm::inverse(in.view_proj),
       .camera_pos = glm::vec4(scene.camera.position, float(scene.time_s)),
@@ -99,7 +100,6 @@ gpu::FrameUniforms frame_uniforms(const FrameInputs& in) {
                          scene.render.tone_map == scene::ToneMap::Clamp ? 0.0f : 1.0f, 0.0f),
       .lut = glm::vec4(float(in.luts.r_max_m), float(in.luts.h_max_m),
                        scene.render.effects.refraction ? 1.0f : 0.0f, light.light_scale),
-      .screen = glm::vec4(width, height, 1.0f / width, 1.0f / height),
       .lights = glm::vec4(float(in.light_count), 0, 0, 0),
       .underwater =
           glm::vec4(float(in.luts.d_max_m), float(in.luts.z_max_m), in.under_water ? 1.0f : 0.0f, 0),

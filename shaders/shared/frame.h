@@ -12,6 +12,12 @@
 
 LAGOON_GPU_BEGIN
 struct FrameUniforms {
+  // First, and constant while the picture's size is. Debian's lavapipe (Mesa 22.3) inlines the uniforms a
+  // shader's branches read and compiles that variant at the draw; for a uniform buffer (not push constants)
+  // it files their offsets where it does not read them back, so it inlines the block's first word instead.
+  // With the view matrix here, every turn of the camera compiled the surface seen from below again, 0.5 s
+  // a frame (docs/evaluation.md, "The below-surface recompile").
+  vec4 screen;  // x = width, y = height (pixels), zw = 1 / (width, height)
   mat4 view_proj;
   mat4 inv_view_proj;
   vec4 camera_pos;      // xyz metres, w = time s
@@ -33,7 +39,6 @@ struct FrameUniforms {
   vec4 post;           // x = exposure, y = display gamma, z = tone-map m, w = tone-map exponent
   vec4 post2;          // x = tone-map white, y = tone-map world adaptation, z = tone map on (1) / clamp (0)
   vec4 lut;            // x = r_max m, y = h_max m of the colour LUTs, z = refraction on, w = light scale
-  vec4 screen;         // x = width, y = height (pixels), zw = 1 / (width, height)
   vec4 lights;         // x = number of point lights in the light buffer, yzw unused
   vec4 underwater;     // x = d_max m, y = z_max m of the underwater tables (optics/underwater.h),
                        // z = 1 when the camera is under the water surface, w = unused
@@ -80,10 +85,10 @@ LAGOON_GPU_END
 LAGOON_CHECK_SIZE(FrameUniforms, 2848);
 LAGOON_CHECK_OFFSET(FrameUniforms, sky, 592);
 LAGOON_CHECK_SIZE(PointLightGpu, 48);
-LAGOON_CHECK_OFFSET(FrameUniforms, camera_pos, 128);
-LAGOON_CHECK_OFFSET(FrameUniforms, water_deep, 208);
-LAGOON_CHECK_OFFSET(FrameUniforms, post2, 352);
-LAGOON_CHECK_OFFSET(FrameUniforms, screen, 384);
+LAGOON_CHECK_OFFSET(FrameUniforms, screen, 0);
+LAGOON_CHECK_OFFSET(FrameUniforms, camera_pos, 144);
+LAGOON_CHECK_OFFSET(FrameUniforms, water_deep, 224);
+LAGOON_CHECK_OFFSET(FrameUniforms, post2, 368);
 LAGOON_CHECK_OFFSET(FrameUniforms, underwater, 416);
 #endif
 #endif
