@@ -12,11 +12,14 @@
 
 LAGOON_GPU_BEGIN
 struct FrameUniforms {
-  // First, and constant while the picture's size is. Debian's lavapipe (Mesa 22.3) inlines the uniforms a
-  // shader's branches read and compiles that variant at the draw; for a uniform buffer (not push constants)
-  // it files their offsets where it does not read them back, so it inlines the block's first word instead.
-  // With the view matrix here, every turn of the camera compiled the surface seen from below again, 0.5 s
-  // a frame (docs/evaluation.md, "The below-surface recompile").
+  // Read by no shader, on purpose. Debian's lavapipe (Mesa 22.3) inlines the uniforms a shader's branches
+  // read and compiles that variant at the draw; for a uniform buffer (not push constants) it files their
+  // offsets where it does not read them back, so it inlines the block's first word instead. With the view
+  // matrix here, every turn of the camera compiled the surface seen from below again, 0.5 s a frame; with
+  // the picture's size here, a shader that folded it kept a variant per draw and memory grew 2 MiB a frame.
+  // A word no shader reads folds nothing, and lavapipe gives up inlining after its first try (docs/
+  // evaluation.md, "The below-surface recompile").
+  vec4 unread;
   vec4 screen;  // x = width, y = height (pixels), zw = 1 / (width, height)
   mat4 view_proj;
   mat4 inv_view_proj;
@@ -82,13 +85,14 @@ struct PointLightGpu {
 LAGOON_GPU_END
 
 #ifdef __cplusplus
-LAGOON_CHECK_SIZE(FrameUniforms, 2848);
-LAGOON_CHECK_OFFSET(FrameUniforms, sky, 592);
+LAGOON_CHECK_SIZE(FrameUniforms, 2864);
+LAGOON_CHECK_OFFSET(FrameUniforms, sky, 608);
 LAGOON_CHECK_SIZE(PointLightGpu, 48);
-LAGOON_CHECK_OFFSET(FrameUniforms, screen, 0);
-LAGOON_CHECK_OFFSET(FrameUniforms, camera_pos, 144);
-LAGOON_CHECK_OFFSET(FrameUniforms, water_deep, 224);
-LAGOON_CHECK_OFFSET(FrameUniforms, post2, 368);
-LAGOON_CHECK_OFFSET(FrameUniforms, underwater, 416);
+LAGOON_CHECK_OFFSET(FrameUniforms, unread, 0);
+LAGOON_CHECK_OFFSET(FrameUniforms, screen, 16);
+LAGOON_CHECK_OFFSET(FrameUniforms, camera_pos, 160);
+LAGOON_CHECK_OFFSET(FrameUniforms, water_deep, 240);
+LAGOON_CHECK_OFFSET(FrameUniforms, post2, 384);
+LAGOON_CHECK_OFFSET(FrameUniforms, underwater, 432);
 #endif
 #endif
