@@ -185,6 +185,7 @@ int run_bench_baseline(const ParsedArgs& args, int rounds, long long width, long
     Result<BuildTimes> second = first ? run(!base_first) : first;
     const std::string name = fs::path(scenes[i]).stem().string();
     const Result<BuildTimes>& base_run = base_first ? first : second;
+    // (When this build ran first, its own failure is copied into `second`: that one ends the run below.)
     if (!base_run && every_scene && (base_first || first)) {
       // A scene newer than the older build (a field it does not know): the other scenes still compare.
       std::fprintf(stderr, "lagoon bench render: skipping %s, which the baseline cannot render: %s\n",
