@@ -13,6 +13,7 @@
 #include "gpu_session.h"
 #include "io/png.h"
 #include "io/sha256.h"
+#include "render/cold_compile.h"
 #include "render/ocean_renderer.h"
 #include "scene/scene.h"
 #include "scene_args.h"
@@ -187,6 +188,19 @@ int render_sequence(const ParsedArgs& args, const std::vector<std::string>& over
   return kExitOk;
 }
 
+// Waits for a cold start's second device (its validation errors fail the run, as the first device's do: it
+// drew the same frame) and, when the run went well, notes that this build has drawn on this device.
+int finish_cold_start(std::unique_ptr<render::ColdCompile> cold, vk::Context& ctx, int status) {
+  if (cold && cold->finish() > 0) {
+    std::fprintf(stderr,
+                 "lagoon: the Vulkan validation layer reported errors on the cold start's second device "
+                 "(render/cold_compile.h); see the messages above\n");
+    return kExitValidation;
+  }
+  if (status == kExitOk) render::ColdCompile::mark_warm(ctx);
+  return status;
+}
+
 int run_render(const ParsedArgs& args) {
   const std::string out_path = *args.get("out");
   if (out_path.size() < 5 || out_path.substr(out_path.size() - 4) != ".png") {
@@ -210,17 +224,23 @@ int run_render(const ParsedArgs& args) {
   if (!ctx) return kExitFailure;
   t_device.end();
 
+  // A first run of this build on a CPU device compiles the frame's code on a second one meanwhile.
+  auto cold = render::ColdCompile::start_if_cold(*ctx, vk::ContextOptions::from_environment(), *scene);
   auto renderer = render::OceanRenderer::create(*ctx, *scene);
   if (!renderer) {
     std::fprintf(stderr, "lagoon render: %s: %s\n", scene->source.c_str(), renderer.error().message.c_str());
     return kExitFailure;
   }
-  if (sequence->frames > 1 || args.has("shard") || *path || !aovs->empty())
-    return render_sequence(args, *overrides, *sequence, *path, *aovs, out_path, *scene, *ctx, **renderer);
+  if (sequence->frames > 1 || args.has("shard") || *path || !aovs->empty()) {
+    const int status =
+        render_sequence(args, *overrides, *sequence, *path, *aovs, out_path, *scene, *ctx, **renderer);
+    return finish_cold_start(std::move(cold), *ctx, status);
+  }
   std::vector<vk::PassTime> timings;
   const io::Image8 image = (*renderer)->render(*scene, &timings);
   // A frame rendered with validation errors is not written: it cannot be trusted.
-  if (int status = validation_status(*ctx); status != kExitOk) return status;
+  if (int status = finish_cold_start(std::move(cold), *ctx, validation_status(*ctx)); status != kExitOk)
+    return status;
   StageTimer t_png("PNG");
   if (auto written = io::write_png(out_path, image); !written) {
     std::fprintf(stderr, "lagoon render: %s\n", written.error().message.c_str());

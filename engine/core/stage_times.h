@@ -17,6 +17,18 @@ inline bool stage_times_enabled() {
   return enabled;
 }
 
+// Set on a thread whose stages are not the run's own (a second device's, render/cold_compile.h).
+inline thread_local bool stage_times_muted = false;
+
+// Mutes this thread's stage times while it lives.
+class StageTimesMuted {
+ public:
+  StageTimesMuted() { stage_times_muted = true; }
+  ~StageTimesMuted() { stage_times_muted = false; }
+  StageTimesMuted(const StageTimesMuted&) = delete;
+  StageTimesMuted& operator=(const StageTimesMuted&) = delete;
+};
+
 // Prints its stage's wall time when it goes out of scope (or at end()).
 class StageTimer {
  public:
@@ -26,7 +38,7 @@ class StageTimer {
   StageTimer& operator=(const StageTimer&) = delete;
   void end() {
     if (!stage_) return;
-    if (stage_times_enabled()) {
+    if (stage_times_enabled() && !stage_times_muted) {
       const double ms =
           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_).count();
       std::fprintf(stderr, "lagoon: %-28s %8.1f ms\n", stage_, ms);

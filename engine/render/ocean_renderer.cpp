@@ -302,6 +302,12 @@ void OceanRenderer::record(VkCommandBuffer cmd, const scene::Scene& scene, const
   remember_pipelines();
 }
 
+void OceanRenderer::draw_for_code_only(const scene::Scene& scene) {
+  pipeline_memory_.reset();  // this frame's pipelines are not the scene's (no warm-up)
+  const VkExtent2D extent{scene.render.width, scene.render.height};
+  ctx_.submit_and_wait([&](VkCommandBuffer cmd) { record(cmd, scene, extent, 0); });
+}
+
 std::string OceanRenderer::views_key(const scene::Scene& scene, world::CameraSide side, VkExtent2D extent) {
   return scene::scene_to_json(scene, {}).dump() + " side " + std::to_string(int(side)) + " size " +
          std::to_string(extent.width) + "x" + std::to_string(extent.height);

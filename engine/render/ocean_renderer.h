@@ -77,6 +77,11 @@ class OceanRenderer {
   // and waits for it.
   io::Image8 render(const scene::Scene& scene, std::vector<vk::PassTime>* timings = nullptr);
 
+  // Records one frame of `scene` at its size without the warm-up, submits it and waits; remembers no
+  // pipelines (render/pipeline_memory.h) and reads nothing back. For a second device whose only product is
+  // the machine code lavapipe files in Mesa's shader cache (render/cold_compile.h).
+  void draw_for_code_only(const scene::Scene& scene);
+
   // How a frame's state that builds up over time (foam, the wakes' waves) is reached. Continuous (the
   // default, for real time): from the last frame's, and from a warm-up from still water when the time jumps
   // (the first frame, a step back, or far ahead). Sequence (datasets, sharded renders: docs/datasets.md):
