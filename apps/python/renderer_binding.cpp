@@ -12,6 +12,7 @@
 #include "bindings.h"
 #include "dataset/frame_metadata.h"
 #include "dataset/ground_truth.h"
+#include "render/cold_compile.h"
 #include "render/ocean_renderer.h"
 #include "scene/scene.h"
 #include "scene/scene_io.h"
@@ -38,6 +39,8 @@ class Renderer {
     auto ctx = vk::Context::create(options);
     if (!ctx) throw std::runtime_error(ctx.error().message);
     ctx_ = std::move(ctx).value();
+    // A first render of this build on a CPU device compiles the frame on a second one too.
+    cold_ = render::ColdCompile::start_if_cold(*ctx_, options, scene_);
     auto renderer = render::OceanRenderer::create(*ctx_, scene_, tracks);
     if (!renderer) throw std::runtime_error(renderer.error().message);
     renderer_ = std::move(renderer).value();
@@ -64,6 +67,7 @@ class Renderer {
     {
       py::gil_scoped_release unlocked;  // other Python threads run while the device renders
       image = renderer_->render(frame);
+      finish_cold_start();
       if (!aovs.empty())
         gt = dataset::frame_ground_truth(
             *renderer_, frame, std::any_of(aovs.begin(), aovs.end(), dataset::GroundTruth::needs_terms));
@@ -98,6 +102,14 @@ class Renderer {
     return out;
   }
 
+  // After the first frame: waits for the second device and notes that this build has drawn on this one.
+  void finish_cold_start() {
+    if (!cold_) return;
+    cold_failures_ = cold_->finish();
+    cold_.reset();
+    if (ctx_->validation().failures() + cold_failures_ == 0) render::ColdCompile::mark_warm(*ctx_);
+  }
+
   py::dict device() const {
     const vk::DeviceInfo& info = ctx_->device_info();
     py::dict d;
@@ -126,7 +138,7 @@ class Renderer {
     }
     return out;
   }
-  uint32_t validation_errors() const { return ctx_->validation().failures(); }
+  uint32_t validation_errors() const { return ctx_->validation().failures() + cold_failures_; }
 
  private:
   scene::Scene with_camera(const py::dict& camera) const {
@@ -144,6 +156,9 @@ class Renderer {
   scene::Scene scene_;
   std::unique_ptr<vk::Context> ctx_;
   std::unique_ptr<render::OceanRenderer> renderer_;
+  // Last, so that it is waited for first.
+  std::unique_ptr<render::ColdCompile> cold_;
+  uint32_t cold_failures_ = 0;  // the second device's validation errors (it drew the same frame)
 };
 
 }  // namespace

@@ -15,7 +15,7 @@ namespace lagoon::render {
 namespace {
 
 io::ResultKey marker_key(const vk::Context& ctx) {
-  io::ResultKey key = table_key("drawn on this device");  // the build's fingerprint, so its shaders
+  io::ResultKey key = table_key("drawn");  // with the build's fingerprint: its shaders
   add_device(key, ctx);
   return key;
 }

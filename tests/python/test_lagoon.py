@@ -112,6 +112,23 @@ def test_the_frame_is_the_pixels_lagoon_render_writes(tmp_path):
     assert np.array_equal(image, written), np.abs(image.astype(int) - written.astype(int)).max()
 
 
+def test_a_first_render_of_the_build_compiles_on_a_second_device_and_draws_the_same(tmp_path, monkeypatch):
+    # An empty result cache: this build has not drawn here (render/cold_compile.h). On a CPU device the first
+    # render starts a second device, and after it the marker that stops the next run starting one.
+    monkeypatch.setenv("LAGOON_PIPELINE_CACHE", str(tmp_path / "cold"))
+    scene = lagoon.Scene.load(DEFAULT, SMALL)
+    renderer = lagoon.Renderer(scene)
+    cold = renderer.render(time=2.0)["image"]
+    assert renderer.validation_errors == 0
+    markers = list((tmp_path / "cold" / "results").glob("drawn-*.bin"))
+    assert len(markers) == (1 if renderer.device["type"] == "CPU" else 0), markers
+    monkeypatch.setenv("LAGOON_PIPELINE_CACHE", str(tmp_path / "without"))
+    monkeypatch.setenv("LAGOON_COLD_COMPILE", "0")
+    alone = lagoon.Renderer(scene).render(time=2.0)["image"]
+    assert not list((tmp_path / "without" / "results").glob("drawn-*.bin"))  # no second device, no marker
+    assert np.array_equal(cold, alone), np.abs(cold.astype(int) - alone.astype(int)).max()
+
+
 def test_a_camera_moves_the_view_and_a_bad_one_is_refused():
     renderer = lagoon.Renderer(lagoon.Scene.load(DEFAULT, SMALL))
     assert renderer.device["name"]
