@@ -107,13 +107,21 @@ int run(const std::vector<std::string>& args) {
 }
 
 py::object export_fields(const py::object& scene, const py::object& out, int frames, std::optional<double> dt,
-                         std::optional<double> t0, const py::dict& overrides) {
+                         std::optional<double> t0, const py::dict& overrides,
+                         const std::optional<std::vector<double>>& surface,
+                         std::optional<double> surface_spacing) {
   SceneArgument s(scene);
   const std::string folder = fspath(out);
   std::vector<std::string> args{
       "export", "--scene", s.path(), "--out", folder, "--frames", std::to_string(frames)};
   if (dt) args.insert(args.end(), {"--dt", number(*dt)});
   if (t0) args.insert(args.end(), {"--t0", number(*t0)});
+  if (surface) {
+    std::string corners;
+    for (double v : *surface) corners += (corners.empty() ? "" : ",") + number(v);
+    args.insert(args.end(), {"--surface", corners});
+  }
+  if (surface_spacing) args.insert(args.end(), {"--surface-spacing", number(*surface_spacing)});
   add_overrides(args, overrides);
   run_or_raise(args);
   std::ifstream meta(fs::path(folder) / "meta.json");
@@ -172,9 +180,12 @@ void bind_cli(py::module_& m) {
         "validation errors); its output goes to this process's stdout and stderr. The GIL is released.");
   m.def("export", &export_fields, py::arg("scene"), py::arg("out"), py::arg("frames") = 1,
         py::arg("dt") = py::none(), py::arg("t0") = py::none(), py::arg("overrides") = py::dict(),
+        py::arg("surface") = py::none(), py::arg("surface_spacing") = py::none(),
         "`lagoon export`: the FFT ocean's cascades (displacement, normal, Jacobian, foam), the wakes and the "
         "poses of what moves, for `frames` frames `dt` s apart from `t0`, as .npy files in the folder "
-        "`out`. `scene` is a path or a lagoon.Scene; `overrides` as Scene.load's. Returns meta.json as a "
+        "`out`; with `surface` = [x0, z0, x1, z1] (m) also the sea over that window of the world, over the "
+        "floor (surface_height.npy, `surface_spacing` m apart: --surface). `scene` is a path or a "
+        "lagoon.Scene; `overrides` as Scene.load's. Returns meta.json as a "
         "dict; raises CommandError (its exit_code and the CLI's message) when the export fails, leaving no "
         "partial output.");
   m.def("render_sequence", &render_sequence, py::arg("scene"), py::arg("out"), py::arg("frames") = 1,

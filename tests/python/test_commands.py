@@ -39,15 +39,17 @@ def same_files(a, b, names):
 
 
 def test_export_writes_the_clis_files_byte_for_byte(tmp_path):
-    meta = lagoon.export(DEFAULT, tmp_path / "py", frames=2, dt=0.25, t0=3.0, overrides=SMALL_SEA)
+    meta = lagoon.export(DEFAULT, tmp_path / "py", frames=2, dt=0.25, t0=3.0, overrides=SMALL_SEA,
+                         surface=[-10, -10, 10, 5], surface_spacing=2.5)
     r = cli("export", "--scene", DEFAULT, "--out", str(tmp_path / "cli"), "--frames", "2", "--dt", "0.25",
-            "--t0", "3", *sets(SMALL_SEA))
+            "--t0", "3", "--surface", "-10,-10,10,5", "--surface-spacing", "2.5", *sets(SMALL_SEA))
     assert r.returncode == 0, r.stderr
     arrays = sorted(f for f in os.listdir(tmp_path / "cli") if f.endswith(".npy"))
     assert sorted(f for f in os.listdir(tmp_path / "py") if f.endswith(".npy")) == arrays
     same_files(tmp_path / "py", tmp_path / "cli", arrays + ["meta.json"])
     assert meta == json.load(open(tmp_path / "py" / "meta.json"))
     assert np.load(tmp_path / "py" / "cascade0_displacement.npy").shape[0] == 2
+    assert np.load(tmp_path / "py" / "surface_height.npy").shape == (2, 7, 9)
 
 
 def test_a_sequence_in_shards_is_the_clis_sequence_and_verifies(tmp_path):

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "commands.h"
+#include "export_surface.h"
 #include "gpu_session.h"
 #include "interrupt_guard.h"
 #include "io/atomic_file.h"
@@ -258,6 +259,7 @@ struct ExportOptions {
   long long frames = 1;
   double dt = 1.0 / 30.0;              // seconds between frames
   std::vector<std::string> overrides;  // --t0 T as --set time_s=T, validated like the scene file
+  std::optional<SurfaceWindow> surface;
 };
 
 // --frames, --dt and --t0; nullopt (after printing why) when one is out of range.
@@ -284,6 +286,12 @@ std::optional<ExportOptions> export_options(const ParsedArgs& args) {
     }
     o.overrides.push_back("time_s=" + *v);
   }
+  auto surface = surface_window_option(args);
+  if (!surface) {
+    std::fprintf(stderr, "lagoon export: %s\n", surface.error().message.c_str());
+    return std::nullopt;
+  }
+  o.surface = *surface;
   return o;
 }
 
@@ -300,9 +308,11 @@ Result<std::vector<CascadeStreams>> open_all_streams(const io::StagedOutput& sta
 
 // meta.json, then every array, then the folder itself: the output appears complete or not at all.
 Result<void> commit_export(io::StagedOutput& staged, std::vector<CascadeStreams>& streams, WakeExport* wakes,
-                           const std::string& meta) {
+                           SurfaceExport* surface, const std::string& meta) {
   if (auto r = io::write_text_atomic(staged.file("meta.json"), meta); !r) return r;
   if (auto r = commit_streams(streams); !r) return r;
+  if (surface)
+    if (auto r = surface->commit(); !r) return r;
   if (wakes)
     for (io::NpyStreamWriter* w : {&wakes->height, &wakes->foam})
       if (auto r = w->commit(); !r) return r;
@@ -328,6 +338,12 @@ int export_fields(vk::Context& ctx, const scene::Scene& scene, const world::Vehi
     auto w = open_wake_export(ctx, *staged, wakes, scene, size_t(o.frames));
     if (!w) return export_failure(w.error().message);
     wake.emplace(std::move(*w));
+  }
+  std::optional<SurfaceExport> surface;
+  if (o.surface) {
+    auto e = SurfaceExport::create(*staged, scene, gpu.spectra(), *o.surface, size_t(o.frames));
+    if (!e) return export_failure(e.error().message);
+    surface.emplace(std::move(*e));
   }
   // What floats and the vehicles, simulated on the CPU from bodies_start_s (as in a render of each frame).
   const std::vector<world::MovingTarget> targets = world::moving_targets(scene);
@@ -355,6 +371,8 @@ int export_fields(vk::Context& ctx, const scene::Scene& scene, const world::Vehi
         return export_failure(r.error().message);
     if (wake)
       if (auto r = append_wakes(ctx, wakes, *wake, t); !r) return export_failure(r.error().message);
+    if (surface)
+      if (auto r = surface->append(t); !r) return export_failure(r.error().message);
     if (moving) {
       moving->advance(t);
       nlohmann::json frame = nlohmann::json::array();
@@ -369,6 +387,7 @@ int export_fields(vk::Context& ctx, const scene::Scene& scene, const world::Vehi
 
   nlohmann::json meta = meta_json(scene, gpu, times);
   if (wake) meta["wakes"] = wakes_json(wakes, wake->layer->window());
+  if (surface) meta["surface"] = surface->meta();
   if (moving)
     meta["poses"] = {
         {"layout",
@@ -377,7 +396,9 @@ int export_fields(vk::Context& ctx, const scene::Scene& scene, const world::Vehi
          "origin = where the model's origin is (world, m, y up), orientation_wxyz = the model's "
          "rotation as a unit quaternion, velocities of the centre of mass (m/s, rad/s)"},
         {"frames", std::move(poses)}};
-  if (auto r = commit_export(*staged, *streams, wake ? &*wake : nullptr, meta.dump(2) + "\n"); !r)
+  if (auto r = commit_export(*staged, *streams, wake ? &*wake : nullptr, surface ? &*surface : nullptr,
+                             meta.dump(2) + "\n");
+      !r)
     return export_failure(r.error().message);
   std::printf("wrote %s: %lld frame(s), %u cascade(s), on %s\n", out.c_str(), o.frames, gpu.cascade_count(),
               ctx.device_info().name.c_str());
@@ -395,8 +416,9 @@ int run_export(const ParsedArgs& args) {
     return export_failure("--out " + out.string() + " exists and is not a folder");
   auto wakes = world::VehicleWakes::create(*scene);
   if (!wakes) return export_failure(wakes.error().message);
-  if (auto space = check_space(out, export_bytes(*scene, *wakes, size_t(options->frames))); !space)
-    return export_failure(space.error().message);
+  const uint64_t bytes = export_bytes(*scene, *wakes, size_t(options->frames)) +
+                         (options->surface ? surface_bytes(*options->surface, size_t(options->frames)) : 0);
+  if (auto space = check_space(out, bytes); !space) return export_failure(space.error().message);
   auto ctx = open_context();
   if (!ctx) return kExitFailure;
   return export_fields(*ctx, *scene, *wakes, out, *options);
@@ -415,21 +437,30 @@ const Command& export_command() {
                "vehicles (and wakes.enabled), also the wakes' dynamic layer: wakes_height.npy and "
                "wakes_foam.npy over its window (meta.json's \"wakes\"); with floating objects or vehicles, "
                "their pose and velocities at every frame (meta.json's \"poses\").",
-           .options = {scene_option(),
-                       {"out", "DIR",
-                        "output folder (created; existing files of the same names are replaced)", true},
-                       {"frames", "N",
-                        "number of frames (default 1, at most 100000); each is written as it is "
-                        "computed, so memory does not grow with N"},
-                       {"dt", "S", "seconds between frames (default 1/30); foam evolves with it"},
-                       {"t0", "T", "time of the first frame (default: the scene's time_s)"},
-                       set_option()},
+           .options =
+               {scene_option(),
+                {"out", "DIR", "output folder (created; existing files of the same names are replaced)",
+                 true},
+                {"frames", "N",
+                 "number of frames (default 1, at most 100000); each is written as it is "
+                 "computed, so memory does not grow with N"},
+                {"dt", "S", "seconds between frames (default 1/30); foam evolves with it"},
+                {"t0", "T", "time of the first frame (default: the scene's time_s)"},
+                {"surface", "X0,Z0,X1,Z1",
+                 "also the sea's surface over this window of the world (metres): "
+                 "surface_height.npy [frame][z][x], the heights lagoon probe answers there, with the "
+                 "floor's shoaling and the swell's turning (the cascades' tiles are the deep sea's; "
+                 "meta.json's \"surface\")"},
+                {"surface-spacing", "M",
+                 "metres between the --surface samples (default 1, 0.01 to 1000; at most 2048 a side)"},
+                set_option()},
            .details =
                "The output's size is printed first; an export larger than the free space at --out is refused "
                "before any work. Frames are staged beside --out and moved in only when all are written: "
                "an error, SIGINT or SIGTERM leaves no partial output (exit 128 + the signal's number).\n"
                "example:\n  lagoon export --scene scenes/default.json --out out/fields --frames 30 "
-               "--dt 0.1\n  python3 -c \"import numpy; print(numpy.load('out/fields/"
+               "--dt 0.1\n  lagoon export --scene scenes/beach.json --out out/beach --surface -40,-60,40,20 "
+               "--surface-spacing 0.5\n  python3 -c \"import numpy; print(numpy.load('out/fields/"
                "cascade0_displacement.npy').shape)\"\n"},
       .run = run_export};
   return command;
