@@ -21,6 +21,7 @@
 #include "ocean/wave_query.h"
 #include "optics/lut.h"
 #include "parameter_panel.h"
+#include "render/cold_compile.h"
 #include "render/ocean_renderer.h"
 #include "resolution_scale.h"
 #include "vk/buffer.h"
@@ -52,6 +53,9 @@ class Demo {
   int start();
   void create_acquire_semaphores();
   void print_summary() const;
+  // Waits for a cold start's second device (render/cold_compile.h) and, when neither device reported a
+  // validation error, notes that this build has drawn on this device.
+  void finish_cold_start();
 
   // One frame (demo_frame.cpp).
   bool frame();
@@ -127,7 +131,9 @@ class Demo {
   // The loop's state.
   std::array<bool, render::OceanRenderer::kSlots> slot_used_{};  // a slot's timings are readable
   double t0_ = 0;                                                // the scene's time at start
-  long long frame_ = 0;                                          // frames presented
+  std::unique_ptr<render::ColdCompile> cold_;  // a cold start's second device, until the first frames
+  uint32_t cold_failures_ = 0;                 // its validation errors
+  long long frame_ = 0;                        // frames presented
   Clock::time_point last_frame_{};
   int exit_status_ = cli::kExitOk;   // kExitFailure when the --screenshot could not be written
   long long fail_after_frame_ = -1;  // LAGOON_DEMO_FAIL_AFTER_FRAME (tests of the error path)

@@ -30,9 +30,24 @@ int Demo::run() {
     if (!frame()) break;  // the last of --frames, with --exit
   }
   ctx_->wait_idle();
+  finish_cold_start();
   print_summary();
   if (int v = cli::validation_status(*ctx_); v != cli::kExitOk) return v;
+  if (cold_failures_ > 0) {
+    std::fprintf(stderr,
+                 "lagoon-demo: the Vulkan validation layer reported %u error(s) on the cold start's second "
+                 "device (render/cold_compile.h); see the messages above\n",
+                 cold_failures_);
+    return cli::kExitValidation;
+  }
   return exit_status_;
+}
+
+void Demo::finish_cold_start() {
+  if (!cold_) return;
+  cold_failures_ = cold_->finish();
+  cold_.reset();
+  if (cold_failures_ == 0 && ctx_->validation().failures() == 0) render::ColdCompile::mark_warm(*ctx_);
 }
 
 // The window, a device that can present to it, the renderer, the swapchain and the UI; an exit code.
@@ -55,6 +70,7 @@ int Demo::start() {
     return cli::kExitFailure;
   }
   ctx_ = std::move(*ctx);
+  cold_ = render::ColdCompile::start_if_cold(*ctx_, context_options, scene_);
   vsync_ = options_.vsync;
   resolution_.set_target_fps(options_.target_fps);
   show_ui_ = !options_.hide_ui;

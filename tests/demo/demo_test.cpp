@@ -135,6 +135,32 @@ TEST_F(Demo, ScreenshotMatchesTheCliRenderOfTheSameSceneAndTime) {
   EXPECT_TRUE(r.passed) << r.summary();
 }
 
+// A cold start (render/cold_compile.h): with an empty result cache the demo compiles its first frames on a
+// second device too, files the marker once they are drawn (on a CPU device), and shows what it shows without.
+TEST_F(Demo, AColdStartsSecondDeviceLeavesItsMarkerAndTheSameScreenshot) {
+  auto run = [&](const std::string& name, const std::string& env) {
+    return demo("--scene " + shell_quote(kScene) + " --width 160 --height 96 --frames 3 --screenshot " +
+                    shell_quote(out(name + ".png")) + " --hide-ui --exit",
+                env + "LAGOON_PIPELINE_CACHE=" + shell_quote(out(name)) + " ");
+  };
+  auto cold = run("cold", "");
+  ASSERT_EQ(cold.exit_code, 0) << cold.output;
+  auto alone = run("alone", "LAGOON_COLD_COMPILE=0 ");
+  ASSERT_EQ(alone.exit_code, 0) << alone.output;
+  auto markers = [&](const std::string& name) {
+    int n = 0;
+    for (const auto& e : fs::directory_iterator(dir_ / name / "results"))
+      n += e.path().filename().string().rfind("drawn-", 0) == 0;
+    return n;
+  };
+  const bool cpu =
+      cold.output.find("(CPU)") != std::string::npos || cold.output.find("llvmpipe") != std::string::npos;
+  EXPECT_EQ(markers("cold"), cpu ? 1 : 0) << cold.output;
+  EXPECT_EQ(markers("alone"), 0);
+  EXPECT_TRUE(png(out("cold.png")).rgba == png(out("alone.png")).rgba)
+      << "the second device changed the picture";
+}
+
 // The beach (issue 37): its waves over the sloping floor, the sand above the water and the surf are what the
 // CLI draws at the same time. 10 frames from t = 4 s: the last at 4 + 9/30 s.
 TEST_F(Demo, TheBeachMatchesTheCliRenderOfTheSameTime) {
