@@ -53,9 +53,6 @@ class Demo {
   int start();
   void create_acquire_semaphores();
   void print_summary() const;
-  // Waits for a cold start's second device (render/cold_compile.h) and, when neither device reported a
-  // validation error, notes that this build has drawn on this device.
-  void finish_cold_start();
 
   // One frame (demo_frame.cpp).
   bool frame();

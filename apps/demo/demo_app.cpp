@@ -30,7 +30,7 @@ int Demo::run() {
     if (!frame()) break;  // the last of --frames, with --exit
   }
   ctx_->wait_idle();
-  finish_cold_start();
+  cold_failures_ += render::ColdCompile::finish(cold_, *ctx_);
   print_summary();
   if (int v = cli::validation_status(*ctx_); v != cli::kExitOk) return v;
   if (cold_failures_ > 0) {
@@ -41,13 +41,6 @@ int Demo::run() {
     return cli::kExitValidation;
   }
   return exit_status_;
-}
-
-void Demo::finish_cold_start() {
-  if (!cold_) return;
-  cold_failures_ = cold_->finish();
-  cold_.reset();
-  if (cold_failures_ == 0 && ctx_->validation().failures() == 0) render::ColdCompile::mark_warm(*ctx_);
 }
 
 // The window, a device that can present to it, the renderer, the swapchain and the UI; an exit code.

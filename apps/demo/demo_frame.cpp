@@ -54,7 +54,8 @@ bool Demo::frame() {
   if (!screenshot.empty()) finish_screenshot(screenshot, pixels);
   if (last_scripted && !options_.save_scene.empty()) save_scene_to(options_.save_scene);
   ++frame_;
-  if (frame_ == 2) finish_cold_start();  // the first frame's code is made by then
+  if (frame_ == 2)
+    cold_failures_ += render::ColdCompile::finish(cold_, *ctx_);  // the first frame's code is made
   // Every 64 frames the freed heap goes back to the system: an edit that rebuilds the renderer compiles its
   // pipelines over the next frames and frees what the compiler used.
   if (frame_ % 64 == 0) release_free_heap();

@@ -188,16 +188,14 @@ int render_sequence(const ParsedArgs& args, const std::vector<std::string>& over
   return kExitOk;
 }
 
-// Waits for a cold start's second device (its validation errors fail the run, as the first device's do: it
-// drew the same frame) and, when the run went well, notes that this build has drawn on this device.
+// Waits for a cold start's second device: its validation errors fail the run, as the first device's do.
 int finish_cold_start(std::unique_ptr<render::ColdCompile> cold, vk::Context& ctx, int status) {
-  if (cold && cold->finish() > 0) {
+  if (render::ColdCompile::finish(cold, ctx) > 0) {
     std::fprintf(stderr,
                  "lagoon: the Vulkan validation layer reported errors on the cold start's second device "
                  "(render/cold_compile.h); see the messages above\n");
     return kExitValidation;
   }
-  if (status == kExitOk) render::ColdCompile::mark_warm(ctx);
   return status;
 }
 

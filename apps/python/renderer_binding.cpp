@@ -67,7 +67,7 @@ class Renderer {
     {
       py::gil_scoped_release unlocked;  // other Python threads run while the device renders
       image = renderer_->render(frame);
-      finish_cold_start();
+      cold_failures_ += render::ColdCompile::finish(cold_, *ctx_);  // after the first frame only
       if (!aovs.empty())
         gt = dataset::frame_ground_truth(
             *renderer_, frame, std::any_of(aovs.begin(), aovs.end(), dataset::GroundTruth::needs_terms));
@@ -100,14 +100,6 @@ class Renderer {
       out[py::str(name)] = py::array_t<float>(shape, values.data(), keep);
     }
     return out;
-  }
-
-  // After the first frame: waits for the second device and notes that this build has drawn on this one.
-  void finish_cold_start() {
-    if (!cold_) return;
-    cold_failures_ = cold_->finish();
-    cold_.reset();
-    if (ctx_->validation().failures() + cold_failures_ == 0) render::ColdCompile::mark_warm(*ctx_);
   }
 
   py::dict device() const {

@@ -74,13 +74,21 @@ void ColdCompile::run(vk::ContextOptions options, scene::Scene scene) {
   }
 }
 
-uint32_t ColdCompile::finish() {
+uint32_t ColdCompile::join() {
   if (thread_.joinable()) thread_.join();
   return validation_failures_;
 }
 
+uint32_t ColdCompile::finish(std::unique_ptr<ColdCompile>& cold, vk::Context& ctx) {
+  if (!cold) return 0;
+  const uint32_t failures = cold->join();
+  cold.reset();
+  if (failures == 0 && ctx.validation().failures() == 0) mark_warm(ctx);
+  return failures;
+}
+
 ColdCompile::~ColdCompile() {
-  finish();
+  join();
 }
 
 }  // namespace lagoon::render

@@ -25,20 +25,21 @@ class ColdCompile {
   // LAGOON_COLD_COMPILE=0. `options` are those `ctx` was made with (the second device is the same one).
   static std::unique_ptr<ColdCompile> start_if_cold(const vk::Context& ctx, vk::ContextOptions options,
                                                     const scene::Scene& scene);
-  // Files the marker: this build has finished a frame on this device (call after the first device's frame).
-  static void mark_warm(const vk::Context& ctx);
+  // Call after the first device's first frame: waits for the second device, drops it and, when neither
+  // device reported a validation error, files the marker (this build has drawn on this device). Returns the
+  // validation layer's errors on the second device (it drew the same frame, so they are the frame's); 0 and
+  // nothing done when `cold` is null.
+  static uint32_t finish(std::unique_ptr<ColdCompile>& cold, vk::Context& ctx);
 
   // Waits for the second device's frame (a cold run's renderer is slower still: it is never waited long).
   ~ColdCompile();
   ColdCompile(const ColdCompile&) = delete;
   ColdCompile& operator=(const ColdCompile&) = delete;
 
-  // Waits, then the validation layer's errors on the second device (it draws the same frame, so an error
-  // there is one of the frame's).
-  uint32_t finish();
-
  private:
   ColdCompile() = default;
+  static void mark_warm(const vk::Context& ctx);
+  uint32_t join();
   void run(vk::ContextOptions options, scene::Scene scene);
 
   std::thread thread_;

@@ -40,12 +40,9 @@ Result<std::optional<SurfaceWindow>> surface_window_option(const ParsedArgs& arg
   if (!corners) return corners.error();
   const auto& c = *corners;
   SurfaceWindow w;
-  if (auto s = args.get("surface-spacing")) {
-    auto v = parse_number(*s);
-    if (!v || !(*v >= 0.01 && *v <= 1000))
-      return make_error("--surface-spacing " + *s + " must be metres between samples in [0.01, 1000]");
-    w.spacing_m = *v;
-  }
+  auto spacing = number_option(args, "surface-spacing", 1.0, 0.01, 1000);
+  if (!spacing) return spacing.error();
+  w.spacing_m = *spacing;
   const glm::dvec2 lo(std::min(c[0], c[2]), std::min(c[1], c[3])),
       hi(std::max(c[0], c[2]), std::max(c[1], c[3]));
   if (std::max({std::abs(lo.x), std::abs(lo.y), std::abs(hi.x), std::abs(hi.y)}) >
