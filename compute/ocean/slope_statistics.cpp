@@ -1,5 +1,6 @@
 #include "ocean/slope_statistics.h"
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <numbers>
@@ -45,7 +46,7 @@ double spectrum_mean_square_slope(const OceanParams& params, double k_from, doub
   return sum * step;
 }
 
-SlopeMoments slope_moments(const CascadeSpectrum& s) {
+SlopeMoments slope_moments(const CascadeSpectrum& s, double k_from) {
   const uint32_t n = s.resolution;
   const double dk = 2.0 * std::numbers::pi / s.patch_size_m;
   SlopeMoments m;
@@ -53,6 +54,7 @@ SlopeMoments slope_moments(const CascadeSpectrum& s) {
     const double kz = dk * (iz < n / 2 ? double(iz) : double(iz) - n);
     for (uint32_t ix = 0; ix < n; ++ix) {
       const double kx = dk * (ix < n / 2 ? double(ix) : double(ix) - n);
+      if (kx * kx + kz * kz < k_from * k_from) continue;
       const double a = 2.0 * std::norm(std::complex<double>(s.h0[size_t{iz} * n + ix]));
       m.xx += kx * kx * a;
       m.zz += kz * kz * a;
@@ -99,6 +101,23 @@ SlopeMoments sea_slope_moments(const OceanParams& params, const std::vector<Casc
     const SlopeMoments rest = short_wave_slope_moments(params, cascade_bands(params).back().k_max);
     m.xx += rest.xx, m.zz += rest.zz, m.xz += rest.xz;
   }
+  return m;
+}
+
+SlopeMoments unresolved_slope_moments(const OceanParams& params, const std::vector<CascadeSpectrum>& spectra,
+                                      size_t drawn, double k_from) {
+  drawn = std::min(drawn, spectra.size());
+  SlopeMoments m;
+  if (drawn == 0) return m;
+  for (size_t c = 0; c < drawn; ++c) {
+    const SlopeMoments one = slope_moments(spectra[c], k_from);
+    m.xx += one.xx, m.zz += one.zz, m.xz += one.xz;
+  }
+  const double beyond = std::max(cascade_bands(params)[drawn - 1].k_max, k_from);
+  const SlopeMoments rest = params.model == SurfaceModel::Fft
+                                ? short_wave_slope_moments(params, beyond)
+                                : spectrum_slope_moments(params, beyond, kCapillaryCutoffK);
+  m.xx += rest.xx, m.zz += rest.zz, m.xz += rest.xz;
   return m;
 }
 

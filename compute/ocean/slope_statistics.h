@@ -25,8 +25,9 @@ double spectrum_mean_square_slope(const OceanParams& params, double k_from, doub
 struct SlopeMoments {
   double xx = 0, zz = 0, xz = 0;
 };
-// The cascade's, averaged over time, from its sampled amplitudes (as mean_square_slope).
-SlopeMoments slope_moments(const CascadeSpectrum& spectrum);
+// The cascade's, averaged over time, from its sampled amplitudes (as mean_square_slope); only its modes with
+// |k| >= k_from.
+SlopeMoments slope_moments(const CascadeSpectrum& spectrum, double k_from = 0);
 // The continuous directional spectrum's over k_from <= |k| < k_to (no sampling).
 SlopeMoments spectrum_slope_moments(const OceanParams& params, double k_from, double k_to);
 // The whole sea's: every cascade's, plus for the FFT ocean the capillary-gravity waves beyond the last
@@ -36,6 +37,11 @@ SlopeMoments sea_slope_moments(const OceanParams& params);
 // The same from cascade spectra already built for `params` (make_cascade_spectra), without building them
 // again.
 SlopeMoments sea_slope_moments(const OceanParams& params, const std::vector<CascadeSpectrum>& spectra);
+// What a field sampled every π/k_from metres does not resolve: the first `drawn` cascades' modes with
+// |k| >= k_from, plus the waves beyond the last drawn one down to 1 cm (kCapillaryCutoffK), as the glint
+// counts them (Elfouhaily's short waves for the FFT ocean, the spectrum's own tail for the other models).
+SlopeMoments unresolved_slope_moments(const OceanParams& params, const std::vector<CascadeSpectrum>& spectra,
+                                      size_t drawn, double k_from);
 
 // Shortest wave the glint model counts, 1 cm (k = 2π/0.01): below it capillary damping dominates and the
 // gravity-wave spectra used here no longer hold (Cox & Munk's glitter slopes end about here).

@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "ocean/short_waves.h"
 #include "ocean/slope_statistics.h"
 #include "ocean/spectral_fields.h"
 
@@ -66,6 +67,30 @@ TEST(SlopeStatistics, SpectrumIntegralMatchesTheSampledBand) {
   EXPECT_NEAR(ocean::mean_square_slope(s) / integral, 1.0, 0.05);
   EXPECT_EQ(ocean::spectrum_mean_square_slope(params, 5.0, 5.0), 0.0);
   EXPECT_EQ(ocean::spectrum_mean_square_slope(params, 5.0, 1.0), 0.0);
+}
+
+TEST(SlopeStatistics, UnresolvedSlopesAreTheSpectrumBeyondTheCut) {
+  // A cut inside cascade 1's band: its sampled modes beyond it against the continuous spectrum's integral,
+  // plus Elfouhaily's short waves beyond the band (the glint's).
+  const auto params = ocean_with({{200.0, 256}, {20.0, 256}});
+  const auto bands = ocean::cascade_bands(params);
+  const std::vector<ocean::CascadeSpectrum> spectra{ocean::make_cascade_spectrum(params, 0),
+                                                    ocean::make_cascade_spectrum(params, 1)};
+  const double cut = std::sqrt(bands[1].k_min * bands[1].k_max);
+  const ocean::SlopeMoments band = ocean::spectrum_slope_moments(params, cut, bands[1].k_max);
+  const ocean::SlopeMoments rest = ocean::short_wave_slope_moments(params, bands[1].k_max);
+  const ocean::SlopeMoments m = ocean::unresolved_slope_moments(params, spectra, 2, cut);
+  EXPECT_NEAR((m.xx + m.zz) / (band.xx + band.zz + rest.xx + rest.zz), 1.0, 0.05);
+  EXPECT_NEAR(m.xx / (band.xx + rest.xx), 1.0, 0.05);  // along the wind, not only in sum
+  // Beyond every cascade only the short waves are left; with cascade 1 not drawn, the glint's short waves
+  // stand for its band beyond the cut.
+  const double far = 2 * bands[1].k_max;
+  const ocean::SlopeMoments beyond = ocean::unresolved_slope_moments(params, spectra, 2, far);
+  const ocean::SlopeMoments short_only = ocean::short_wave_slope_moments(params, far);
+  EXPECT_DOUBLE_EQ(beyond.xx + beyond.zz, short_only.xx + short_only.zz);
+  const ocean::SlopeMoments one = ocean::unresolved_slope_moments(params, spectra, 1, cut);
+  const ocean::SlopeMoments after_first = ocean::short_wave_slope_moments(params, cut);
+  EXPECT_NEAR((one.xx + one.zz) / (after_first.xx + after_first.zz), 1.0, 1e-9);
 }
 
 TEST(SlopeStatistics, TotalIsWithinCoxAndMunksRange) {
