@@ -38,6 +38,9 @@ const std::vector<std::pair<std::string, std::string>>& broken_variants() {
       {"no-refraction", "water of index 1: light.snell-window"},
       {"seed-kd", "the seed's diffuse path-length factor D = 1: light.kd-jerlov"},
       {"beam-secchi", "Secchi depth from the beam attenuation alone: light.secchi"},
+      {"sharp-caustics",
+       "caustics without the blur of the waves shorter than a cell and of the solar disc: "
+       "light.caustics-contrast"},
       {"no-radiation", "the heave added mass and radiation damping left out: bodies.sphere-decay"},
       {"quasi-static",
        "the sphere feels the height above each point, not linear theory's pressure under the wave: "

@@ -216,6 +216,7 @@ Result<CausticSlices> caustic_slices(vk::Context& ctx, bool from_above, const Va
                      {"time_s", 10}};
   auto s = scene::parse_scene(doc, "lagoon validate (caustics)");
   if (!s) return s.error();
+  s->render.effects.caustics_blur = o.broken != "sharp-caustics";
   auto renderer = render::OceanRenderer::create(ctx, *s);
   if (!renderer) return renderer.error();
   auto inputs = render::scene_lut_inputs(*s);
@@ -266,8 +267,9 @@ Result<std::vector<Law>> caustics(vk::Context& ctx, const ValidateOptions& o) {
                    "From above; the contrast of the floor's light at 15 m must not exceed that at 6 m. The "
                    "floor's light is the sun's direct share s(z) of it focused by the map, the diffuse rest "
                    "unfocused (common/caustics.glsl: 1 + s (map - 1), s from the optics model): scattering "
-                   "takes light out of the focused beam with depth, as the finite sun and the waves' "
-                   "spread of focal depths blur the pattern."};
+                   "takes light out of the focused beam with depth, and the waves shorter than the map's "
+                   "cells and the solar disc blur the pattern in proportion to depth "
+                   "(render/caustics_window.h)."};
   std::vector<Law> laws;
   for (bool above : {true, false}) {
     auto slices = caustic_slices(ctx, above, o);

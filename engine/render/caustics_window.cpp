@@ -5,6 +5,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "render/sky_light.h"
 #include "shared/caustics.h"
 
 namespace lagoon::render {
@@ -15,7 +16,15 @@ constexpr float kBehindM = 4.0f;
 
 }  // namespace
 
-CausticsWindow caustics_window(const scene::Scene& scene, glm::vec3 sun, float ior) {
+double refracted_sun_spread_rad(double sun_y, double ior, double unresolved_mss) {
+  const double cos_a = std::clamp(sun_y, 0.0, 1.0), sin_w = std::sqrt(1.0 - cos_a * cos_a) / ior;
+  const double cos_w = std::sqrt(1.0 - sin_w * sin_w), squeeze = cos_a / (ior * cos_w);
+  const double slopes = (1.0 - squeeze) * std::sqrt(std::max(unresolved_mss, 0.0) / 2.0);
+  const double disc = 0.5 * kSunDiscRadiusRad * squeeze;
+  return std::sqrt(slopes * slopes + disc * disc);
+}
+
+CausticsWindow caustics_window(const scene::Scene& scene, glm::vec3 sun, float ior, float unresolved_mss) {
   CausticsWindow w;
   // Nothing to light: open water with no floor and no objects.
   const bool lit = scene.seafloor.type != scene::SeafloorType::None || !scene.objects.empty();
@@ -37,6 +46,14 @@ CausticsWindow caustics_window(const scene::Scene& scene, glm::vec3 sun, float i
   w.source_origin = w.origin + glm::min(deepest_shift, glm::vec2(0.0f)) - margin;
   const glm::vec2 end = w.origin + size + glm::max(deepest_shift, glm::vec2(0.0f)) + margin;
   w.source_cells = glm::uvec2(glm::ceil((end - w.source_origin) / w.cell_m));
+  if (scene.render.effects.caustics_blur) {
+    // An angular spread δ moves the ray's landing point at depth z by z δ / cos² θt along the plane of
+    // incidence (d(z tan θ)/dθ); across it by z δ / cos θt, less: the blur is the along-plane one both ways.
+    const double spread = refracted_sun_spread_rad(sun.y, ior, unresolved_mss);
+    const double cos2_t = 1.0 - double(sin_t) * sin_t;
+    for (int k = 0; k < LAGOON_CAUSTICS_SLICES; ++k)
+      w.blur_cells[k] = float(w.depths[k] * spread / cos2_t / w.cell_m);
+  }
   return w;
 }
 

@@ -23,8 +23,20 @@ struct CausticsWindow {
   // cell serves every slice, so the cascades are sampled once.
   glm::vec2 source_origin{0};
   glm::uvec2 source_cells{0};
+  // Each slice's Gaussian blur, its standard deviation in cells: the rays' angular spread that the splat
+  // does not follow (the waves shorter than a cell and the solar disc) over the slice's depth. 0 when
+  // render.effects.caustics_blur is off.
+  glm::vec4 blur_cells{0.0f};
 };
-// `sun` towards the sun; `ior` of the water.
-CausticsWindow caustics_window(const scene::Scene& scene, glm::vec3 sun, float ior);
+// `sun` towards the sun; `ior` of the water; `unresolved_mss` the mean square slope of the waves shorter than
+// a cell (OceanShading::caustic_mss).
+CausticsWindow caustics_window(const scene::Scene& scene, glm::vec3 sun, float ior, float unresolved_mss);
+
+// The standard deviation, in radians per axis, of the refracted sun's direction under the water from what a
+// cell's ray leaves out: slopes of mean square `unresolved_mss` tilt the surface's normal by s (per axis
+// √(mss/2)), which turns the refracted ray by (1 − cos θa / (n cos θw)) s in the plane of incidence, and the
+// solar disc's radius α, α cos θa / (n cos θw) under the water (a uniform disc: α/2 per axis). Spreads
+// combined in quadrature. `sun_y` is the sine of the sun's elevation.
+double refracted_sun_spread_rad(double sun_y, double ior, double unresolved_mss);
 
 }  // namespace lagoon::render

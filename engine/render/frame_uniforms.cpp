@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "ocean/direct_waves.h"
 #include "ocean/short_waves.h"
@@ -15,7 +16,6 @@ namespace lagoon::render {
 namespace {
 
 constexpr float kFoamAlbedo = 0.85f;
-constexpr double kSunDiscRadiusRad = 0.00465;
 
 // The floor's depth under the camera, where the scene's floor is the procedural slope; 0 (unknown) for none
 // and for a mesh floor.
@@ -49,6 +49,10 @@ OceanShading ocean_shading(const ocean::GpuOcean& ocean) {
     out.subgrid_mss =
         float(ocean::spectrum_mean_square_slope(ocean.params(), last_k, ocean::kCapillaryCutoffK));
   }
+  // The caustic splat samples the cascades filtered to its cell (a mip per cascade): it keeps |k| < π/cell.
+  const ocean::SlopeMoments unresolved = ocean::unresolved_slope_moments(
+      ocean.params(), ocean.spectra(), drawn, std::numbers::pi / double(CausticsWindow{}.cell_m));
+  out.caustic_mss = float(unresolved.xx + unresolved.zz);
   return out;
 }
 

@@ -18,6 +18,7 @@ namespace lagoon::render {
 struct OceanShading {
   glm::vec4 cascade_mss{0};        // mean square slope of each drawn cascade (ocean/slope_statistics.h)
   float subgrid_mss = 0;           // ... of the waves shorter than the last drawn cascade, down to 1 cm
+  float caustic_mss = 0;           // ... of the waves the caustic map's cells do not resolve (its blur)
   DisplacementBound bound;         // 6σ of the whole ocean's displacement plus a metre, for culling
   float significant_height_m = 0;  // H_s = 4σ of the drawn cascades' height
 };

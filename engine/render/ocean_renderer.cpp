@@ -289,7 +289,8 @@ const vk::Image& OceanRenderer::record(VkCommandBuffer cmd, const scene::Scene& 
 void OceanRenderer::record(VkCommandBuffer cmd, const scene::Scene& scene, const HostTargets& targets,
                            uint32_t slot) {
   resize(targets.extent);
-  const CausticsWindow caustics = caustics_window(scene, sun_direction(scene.sun), float(scene.water.ior));
+  const CausticsWindow caustics =
+      caustics_window(scene, sun_direction(scene.sun), float(scene.water.ior), shading_.caustic_mss);
   const FrameContext frame = begin_frame(cmd, scene, targets.extent, slot, caustics);
   record_frame(frame, {.kind = FrameKind::Picture,
                        .caustics = caustics,

@@ -12,6 +12,8 @@
 
 namespace lagoon::render {
 
+inline constexpr double kSunDiscRadiusRad = 0.00465;  // the solar disc's angular radius seen from the Earth
+
 struct SkyLight {
   glm::vec3 sun_direction{0, 1, 0};  // unit vector towards the sun
   // Irradiance from the sun on a surface facing it, and radiance of a uniform sky with the model's E_sky,

@@ -44,11 +44,12 @@ struct RenderEffects {
   bool reflection = true;  // planar reflection of what is above the water (else the sky alone)
   bool refraction = true;  // the floor and submerged objects seen through the water, coloured by the LUTs
   bool foam = true;
-  bool shore_foam = true;  // a band of foam where the water is too shallow for the waves (shores, hulls)
-  bool caustics = true;    // the sun focused by the waves on the floor and submerged objects
-  bool particles = true;   // suspended particles, seen by a camera under the water
-  bool shafts = false;     // light shafts: the sun's focused beams in the water (costly on a CPU device)
-  bool underwater = true;  // the water's attenuation and light along a view ray under the water
+  bool shore_foam = true;     // a band of foam where the water is too shallow for the waves (shores, hulls)
+  bool caustics = true;       // the sun focused by the waves on the floor and submerged objects
+  bool caustics_blur = true;  // ... blurred with depth by the waves too short for the map and the sun's disc
+  bool particles = true;      // suspended particles, seen by a camera under the water
+  bool shafts = false;        // light shafts: the sun's focused beams in the water (costly on a CPU device)
+  bool underwater = true;     // the water's attenuation and light along a view ray under the water
 };
 
 // Suspended particles in the water (underwater.particles): seen by a camera under the water.

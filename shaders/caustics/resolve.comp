@@ -1,20 +1,28 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-#include "shared/frame.h"
 #include "shared/caustics.h"
+#include "shared/frame.h"
 
-// The accumulated fixed-point energy as irradiance relative to a flat sea, one layer per slice; the
-// accumulation is cleared for the next frame on the way (no separate fill).
+// The map, one layer per slice: blur_rows.comp's irradiance (relative to a flat sea, blurred along x)
+// blurred along z by the slice's spread (common/caustic_blur.glsl).
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(std430, binding = LAGOON_CAUSTICS_BIND_ACCUM) buffer Accum { uint energy[]; };
+layout(std430, binding = LAGOON_CAUSTICS_BIND_ROWS) readonly buffer Rows {
+  float rows[];
+};
 layout(r32f, binding = LAGOON_CAUSTICS_BIND_MAP) writeonly uniform image2DArray caustic_map;
+layout(push_constant) uniform Push {
+  CausticsBlurPush p;
+};
+
+float caustic_in(int slice, int x, int z) {
+  const int n = LAGOON_CAUSTICS_CELLS;
+  return rows[(slice * n + z) * n + x];
+}
+#include "common/caustic_blur.glsl"
 
 void main() {
   const int n = LAGOON_CAUSTICS_CELLS;
   ivec3 c = ivec3(gl_GlobalInvocationID);
   if (any(greaterThanEqual(c.xy, ivec2(n)))) return;
-  uint i = uint((c.z * n + c.y) * n + c.x);
-  float e = float(energy[i]) / LAGOON_CAUSTICS_ONE;
-  energy[i] = 0u;
-  imageStore(caustic_map, c, vec4(e));
+  imageStore(caustic_map, c, vec4(caustic_blur(c.z, c.xy, ivec2(0, 1), p.sigma_cells[c.z])));
 }

@@ -12,8 +12,9 @@
 #define LAGOON_CAUSTICS_ONE 65536.0  // fixed-point unit of the accumulation (one source cell's energy)
 // Rays per source cell side (n x n rays of 1/n^2 a cell's energy). One ray per cell leaves each destination
 // cell the sum of about one ray's bilinear weights once rays cross: a grain of std/mean ~0.67 beyond a few
-// metres. 2 draws the caustic network without it, but its 16 atomics per ray cost a lavapipe frame of the
-// reef-dive 30 % more (231 against 177 ms at 640 x 360, 2026-11-27), so it waits for issue 34's budget.
+// metres, which the blur by what the rays leave out (common/caustic_blur.glsl) smooths where it is wider
+// than a cell (past ~5 m under a 7 m/s sea). 2 would draw the shallow planes without it, but its 16 atomics
+// per ray cost a lavapipe frame of the reef-dive 30 % more (231 against 177 ms at 640 x 360, 2026-11-27).
 #define LAGOON_CAUSTICS_RAYS 1
 
 #define LAGOON_CAUSTICS_BIND_FRAME 0
@@ -23,11 +24,17 @@
   LAGOON_SURFACE_BIND_NORMAL_JACOBIAN  // sampler2DArray[MAX_CASCADES]
 #define LAGOON_CAUSTICS_BIND_ACCUM 3   // uint[SLICES][CELLS][CELLS], fixed point
 #define LAGOON_CAUSTICS_BIND_MAP 4     // r32f image2DArray, one layer per slice
+#define LAGOON_CAUSTICS_BIND_ROWS 5    // float[SLICES][CELLS][CELLS]: the accumulation blurred along x
+// Widest blur, cells each side (3 m): 3σ of the spread at 15 m under a 20 m/s sea is about 1.1 m.
+#define LAGOON_CAUSTICS_MAX_BLUR 24
 // ... and the wakes at LAGOON_SURFACE_BIND_WAKES (common/wake_fields.glsl)
 
 LAGOON_GPU_BEGIN
 struct CausticsPush {
   vec4 source;  // xy = world xz of source cell (0, 0)'s corner, zw = source cells along x and z
+};
+struct CausticsBlurPush {
+  vec4 sigma_cells;  // each slice's Gaussian blur, standard deviation in cells (CausticsWindow::blur_cells)
 };
 LAGOON_GPU_END
 

@@ -4,9 +4,12 @@
 // time and is the same for the same time, and focusing grows with depth.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 
+#include "render/camera.h"
+#include "render/frame_uniforms.h"
 #include "render/ocean_renderer.h"
 #include "render/passes/caustics_pass.h"
 #include "scene/scene_io.h"
@@ -95,6 +98,63 @@ TEST_F(Caustics, FocusingGrowsWithDepthBeforeTheFocus) {
   ASSERT_FALSE(map.empty());
   const double c1 = stats(map, 0).stddev, c2 = stats(map, 1).stddev;  // 1 m and 2.5 m
   EXPECT_GT(c2, 1.5 * c1) << c1 << " at 1 m, " << c2 << " at 2.5 m";
+}
+
+// The map blurred along one axis as common/caustic_blur.glsl should: a Gaussian of standard deviation
+// `sigma` cells over 3σ each side, the edge cells standing for what lies beyond, in double.
+std::vector<double> gaussian_along(const std::vector<double>& in, int slice, double sigma, bool along_x) {
+  const int n = LAGOON_CAUSTICS_CELLS, radius = int(std::ceil(3 * sigma));
+  std::vector<double> out(in);
+  for (int z = 0; z < n; ++z)
+    for (int x = 0; x < n; ++x) {
+      double sum = 0, total = 0;
+      for (int i = -radius; i <= radius; ++i) {
+        const int cx = along_x ? std::clamp(x + i, 0, n - 1) : x,
+                  cz = along_x ? z : std::clamp(z + i, 0, n - 1);
+        const double w = std::exp(-0.5 * i * i / (sigma * sigma));
+        sum += w * in[(size_t(slice) * n + cz) * n + cx], total += w;
+      }
+      out[(size_t(slice) * n + z) * n + x] = sum / total;
+    }
+  return out;
+}
+
+TEST_F(Caustics, TheBlurIsAGaussianOfTheSharpPatternAsWideAsTheRaysSpread) {
+  // The same sea with and without the blur: the same rays, so the blurred map is the sharp one convolved
+  // with each slice's Gaussian, computed here in double from the renderer's own spread.
+  const std::vector<std::string> sharp_sea{"render.width=64", "render.height=48",
+                                           "render.effects.caustics_blur=false"};
+  auto s = scene::load_scene(std::string(LAGOON_SOURCE_DIR) + "/scenes/tropical-lagoon.json", sharp_sea);
+  ASSERT_TRUE(s) << s.error().message;
+  auto renderer = render::OceanRenderer::create(ctx(), *s);
+  ASSERT_TRUE(renderer) << renderer.error().message;
+  (*renderer)->render(*s);
+  const std::vector<float> sharp = (*renderer)->caustics().read_map(ctx());
+  s->render.effects.caustics_blur = true;
+  (*renderer)->render(*s);
+  const std::vector<float> blurred = (*renderer)->caustics().read_map(ctx());
+  const render::CausticsWindow w =
+      render::caustics_window(*s, render::sun_direction(s->sun), float(s->water.ior),
+                              render::ocean_shading((*renderer)->ocean()).caustic_mss);
+  ASSERT_GT(w.blur_cells[3], 1.0f) << "the 15 m slice blurred by less than a cell: nothing is checked";
+  std::vector<double> expected(sharp.begin(), sharp.end());
+  for (int k = 0; k < LAGOON_CAUSTICS_SLICES; ++k) {
+    if (w.blur_cells[k] < 0.05f) continue;  // no blur (common/caustic_blur.glsl)
+    expected = gaussian_along(gaussian_along(expected, k, w.blur_cells[k], true), k, w.blur_cells[k], false);
+  }
+  for (int k = 0; k < LAGOON_CAUSTICS_SLICES; ++k) {
+    double worst = 0;
+    for (size_t i = k * kSliceTexels; i < (k + 1) * kSliceTexels; ++i)
+      worst = std::max(worst, std::abs(blurred[i] - expected[i]));
+    RecordProperty("slice" + std::to_string(k),
+                   "sigma " + std::to_string(w.blur_cells[k]) + " cells, worst " + std::to_string(worst) +
+                       ", sharp std " + std::to_string(stats(sharp, k).stddev) + ", blurred std " +
+                       std::to_string(stats(blurred, k).stddev));
+    EXPECT_LT(worst, 1e-4) << "slice " << k << ", sigma " << w.blur_cells[k];
+    // The light stays: only the edge cells, standing for what lies beyond the window, are counted twice.
+    EXPECT_NEAR(stats(blurred, k).mean, stats(sharp, k).mean, 3e-3) << "the blur moves light in or out";
+  }
+  EXPECT_LT(stats(blurred, 3).stddev, 0.7 * stats(sharp, 3).stddev);
 }
 
 // Mean and standard deviation of the luminance over the image's lower half (the floor, in these views).

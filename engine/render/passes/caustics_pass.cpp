@@ -25,10 +25,13 @@ CausticsPass::CausticsPass(vk::Context& ctx, const SurfaceFields& fields, const 
       samplers_(samplers),
       splat_(vk::ComputePipeline::create(ctx, shaders::caustics_splat_comp,
                                          with_surface_field_specs({}, fields))),
+      blur_rows_(vk::ComputePipeline::create(ctx, shaders::caustics_blur_rows_comp)),
       resolve_(vk::ComputePipeline::create(ctx, shaders::caustics_resolve_comp)),
       accum_(vk::Buffer::create(ctx, kMapTexels * sizeof(uint32_t),
                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                 vk::MemoryUsage::Device, "caustics accumulation")),
+      rows_(vk::Buffer::create(ctx, kMapTexels * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                               vk::MemoryUsage::Device, "caustics rows")),
       map_(vk::Image::create(ctx, {.format = VK_FORMAT_R32_SFLOAT,
                                    .extent = {LAGOON_CAUSTICS_CELLS, LAGOON_CAUSTICS_CELLS},
                                    .layers = LAGOON_CAUSTICS_SLICES,
@@ -36,7 +39,7 @@ CausticsPass::CausticsPass(vk::Context& ctx, const SurfaceFields& fields, const 
                                    .usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
                                             VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                                    .debug_name = "caustic map"})) {
-  // The resolve leaves the accumulation cleared for the next frame; it starts cleared, and the map at 1.
+  // Each frame leaves the accumulation cleared for the next; it starts cleared, and the map at 1.
   vk::upload_buffer(ctx, accum_, vk::as_bytes_of(std::vector<uint32_t>(kMapTexels, 0u)));
   vk::upload_image(ctx, map_, vk::as_bytes_of(std::vector<float>(kMapTexels, 1.0f)), VK_IMAGE_LAYOUT_GENERAL,
                    vk::access::kGraphicsSampled);
@@ -56,21 +59,29 @@ void CausticsPass::record(const FrameContext& frame, const CausticsWindow& windo
   vk::dispatch(frame.cmd, splat_, splat, &push, sizeof(push),
                vk::groups_for(splat_, {window.source_cells.x * LAGOON_CAUSTICS_RAYS,
                                        window.source_cells.y * LAGOON_CAUSTICS_RAYS, 1}));
-  vk::buffer_barrier(frame.cmd, accum_.handle(), vk::access::kComputeReadWrite,
-                     vk::access::kComputeReadWrite);
+  vk::buffer_barrier(frame.cmd, accum_.handle(), vk::access::kComputeReadWrite, vk::access::kComputeRead);
+  // The blur, one axis per pass: 2 (2r + 1) reads a cell, against (2r + 1)² for the square kernel.
+  const gpu::CausticsBlurPush blur{.sigma_cells = window.blur_cells};
+  const std::array<uint32_t, 3> cells{LAGOON_CAUSTICS_CELLS, LAGOON_CAUSTICS_CELLS, LAGOON_CAUSTICS_SLICES};
+  vk::dispatch(frame.cmd, blur_rows_,
+               {vk::bind(LAGOON_CAUSTICS_BIND_ACCUM, accum_), vk::bind(LAGOON_CAUSTICS_BIND_ROWS, rows_)},
+               blur, vk::groups_for(blur_rows_, cells));
+  // Cleared for the next frame's splat, once the rows have read it.
+  vk::buffer_barrier(frame.cmd, accum_.handle(), vk::access::kComputeRead, vk::access::kTransferWrite);
+  vkCmdFillBuffer(frame.cmd, accum_.handle(), 0, VK_WHOLE_SIZE, 0);
+  vk::buffer_barrier(frame.cmd, rows_.handle(), vk::access::kComputeWrite, vk::access::kComputeRead);
   // The last frame's readers are done with the map before it is rewritten.
   vk::image_barrier(frame.cmd, map_.handle(), map_.all_subresources(), VK_IMAGE_LAYOUT_GENERAL,
                     VK_IMAGE_LAYOUT_GENERAL, vk::access::kGraphicsSampled, vk::access::kComputeWrite);
-  vk::dispatch(
-      frame.cmd, resolve_,
-      {vk::bind(LAGOON_CAUSTICS_BIND_ACCUM, accum_),
-       vk::bind(LAGOON_CAUSTICS_BIND_MAP, vk::ImageRef{map_.view(), VK_IMAGE_LAYOUT_GENERAL})},
-      vk::groups_for(resolve_, {LAGOON_CAUSTICS_CELLS, LAGOON_CAUSTICS_CELLS, LAGOON_CAUSTICS_SLICES}));
+  vk::dispatch(frame.cmd, resolve_,
+               {vk::bind(LAGOON_CAUSTICS_BIND_ROWS, rows_),
+                vk::bind(LAGOON_CAUSTICS_BIND_MAP, vk::ImageRef{map_.view(), VK_IMAGE_LAYOUT_GENERAL})},
+               blur, vk::groups_for(resolve_, cells));
   vk::image_barrier(frame.cmd, map_.handle(), map_.all_subresources(), VK_IMAGE_LAYOUT_GENERAL,
                     VK_IMAGE_LAYOUT_GENERAL, vk::access::kComputeWrite, vk::access::kGraphicsSampled);
-  // The next frame's splat follows this resolve's clearing writes.
-  vk::buffer_barrier(frame.cmd, accum_.handle(), vk::access::kComputeReadWrite,
-                     vk::access::kComputeReadWrite);
+  // The next frame's splat follows the clearing, and its rows this frame's resolve.
+  vk::buffer_barrier(frame.cmd, accum_.handle(), vk::access::kTransferWrite, vk::access::kComputeReadWrite);
+  vk::buffer_barrier(frame.cmd, rows_.handle(), vk::access::kComputeRead, vk::access::kComputeWrite);
 }
 
 std::vector<float> CausticsPass::read_map(vk::Context& ctx) const {

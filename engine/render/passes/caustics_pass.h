@@ -1,7 +1,8 @@
 // Caustics: the sun's light focused by the displaced surface onto horizontal planes at a few depths
 // (shared/caustics.h), in a window of the sea around where the camera looks. Each frame, every source cell's
-// refracted sun ray is splatted where it lands (shaders/caustics/splat.comp), then resolved into a map of
-// irradiance relative to a flat sea (resolve.comp) that the floor's shading multiplies the direct sunlight
+// refracted sun ray is splatted where it lands (shaders/caustics/splat.comp), then blurred by what the rays
+// leave out (blur_rows.comp along x, render/caustics_window.h) and resolved into a map of irradiance relative
+// to a flat sea (resolve.comp, along z) that the floor's shading multiplies the direct sunlight
 // by, from above (ocean_surface.frag) and below (underwater_medium.frag). Energy is conserved by
 // construction: every ray carries the same share of the flat-surface irradiance.
 #pragma once
@@ -39,8 +40,8 @@ class CausticsPass {
  private:
   const SurfaceFields& fields_;
   const Samplers& samplers_;
-  vk::ComputePipeline splat_, resolve_;
-  vk::Buffer accum_;
+  vk::ComputePipeline splat_, blur_rows_, resolve_;
+  vk::Buffer accum_, rows_;
   vk::Image map_;
 };
 

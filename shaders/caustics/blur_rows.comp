@@ -1,0 +1,31 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+#include "shared/caustics.h"
+#include "shared/frame.h"
+
+// The accumulated fixed-point energy as irradiance relative to a flat sea, blurred along x by the slice's
+// spread (common/caustic_blur.glsl); resolve.comp blurs it along z into the map. The accumulation is
+// cleared after this pass (CausticsPass::record) for the next frame's splat.
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(std430, binding = LAGOON_CAUSTICS_BIND_ACCUM) readonly buffer Accum {
+  uint energy[];
+};
+layout(std430, binding = LAGOON_CAUSTICS_BIND_ROWS) writeonly buffer Rows {
+  float rows[];
+};
+layout(push_constant) uniform Push {
+  CausticsBlurPush p;
+};
+
+float caustic_in(int slice, int x, int z) {
+  const int n = LAGOON_CAUSTICS_CELLS;
+  return float(energy[(slice * n + z) * n + x]) / LAGOON_CAUSTICS_ONE;
+}
+#include "common/caustic_blur.glsl"
+
+void main() {
+  const int n = LAGOON_CAUSTICS_CELLS;
+  ivec3 c = ivec3(gl_GlobalInvocationID);
+  if (any(greaterThanEqual(c.xy, ivec2(n)))) return;
+  rows[(c.z * n + c.y) * n + c.x] = caustic_blur(c.z, c.xy, ivec2(1, 0), p.sigma_cells[c.z]);
+}
