@@ -66,21 +66,20 @@ void CausticsPass::record(const FrameContext& frame, const CausticsWindow& windo
   vk::dispatch(frame.cmd, blur_rows_,
                {vk::bind(LAGOON_CAUSTICS_BIND_ACCUM, accum_), vk::bind(LAGOON_CAUSTICS_BIND_ROWS, rows_)},
                blur, vk::groups_for(blur_rows_, cells));
-  // Cleared for the next frame's splat, once the rows have read it.
-  vk::buffer_barrier(frame.cmd, accum_.handle(), vk::access::kComputeRead, vk::access::kTransferWrite);
-  vkCmdFillBuffer(frame.cmd, accum_.handle(), 0, VK_WHOLE_SIZE, 0);
+  // The resolve reads the rows, and clears the accumulation the rows have read for the next frame's splat.
+  vk::buffer_barrier(frame.cmd, accum_.handle(), vk::access::kComputeRead, vk::access::kComputeWrite);
   vk::buffer_barrier(frame.cmd, rows_.handle(), vk::access::kComputeWrite, vk::access::kComputeRead);
   // The last frame's readers are done with the map before it is rewritten.
   vk::image_barrier(frame.cmd, map_.handle(), map_.all_subresources(), VK_IMAGE_LAYOUT_GENERAL,
                     VK_IMAGE_LAYOUT_GENERAL, vk::access::kGraphicsSampled, vk::access::kComputeWrite);
   vk::dispatch(frame.cmd, resolve_,
-               {vk::bind(LAGOON_CAUSTICS_BIND_ROWS, rows_),
+               {vk::bind(LAGOON_CAUSTICS_BIND_ACCUM, accum_), vk::bind(LAGOON_CAUSTICS_BIND_ROWS, rows_),
                 vk::bind(LAGOON_CAUSTICS_BIND_MAP, vk::ImageRef{map_.view(), VK_IMAGE_LAYOUT_GENERAL})},
                blur, vk::groups_for(resolve_, cells));
   vk::image_barrier(frame.cmd, map_.handle(), map_.all_subresources(), VK_IMAGE_LAYOUT_GENERAL,
                     VK_IMAGE_LAYOUT_GENERAL, vk::access::kComputeWrite, vk::access::kGraphicsSampled);
   // The next frame's splat follows the clearing, and its rows this frame's resolve.
-  vk::buffer_barrier(frame.cmd, accum_.handle(), vk::access::kTransferWrite, vk::access::kComputeReadWrite);
+  vk::buffer_barrier(frame.cmd, accum_.handle(), vk::access::kComputeWrite, vk::access::kComputeReadWrite);
   vk::buffer_barrier(frame.cmd, rows_.handle(), vk::access::kComputeRead, vk::access::kComputeWrite);
 }
 
