@@ -6,6 +6,7 @@
 // The accumulated fixed-point energy as irradiance relative to a flat sea, blurred along x by the slice's
 // spread (common/caustic_blur.glsl); resolve.comp blurs it along z into the map and clears the
 // accumulation for the next frame's splat.
+layout(local_size_x = 8, local_size_y = 8) in;
 layout(std430, binding = LAGOON_CAUSTICS_BIND_ACCUM) readonly buffer Accum {
   uint energy[];
 };
@@ -24,6 +25,7 @@ float caustic_in(int slice, int x, int z) {
 
 void main() {
   const int n = LAGOON_CAUSTICS_CELLS;
-  ivec3 c = caustic_cell(true);  // x along the row, y the row, z the slice: the dispatch covers the map
-  rows[(c.z * n + c.y) * n + c.x] = caustic_blur(true, p.sigma_cells[c.z]);
+  ivec3 c = ivec3(gl_GlobalInvocationID);
+  if (any(greaterThanEqual(c.xy, ivec2(n)))) return;
+  rows[(c.z * n + c.y) * n + c.x] = caustic_blur(c.z, c.xy, ivec2(1, 0), p.sigma_cells[c.z]);
 }

@@ -6,6 +6,7 @@
 // The map, one layer per slice: blur_rows.comp's irradiance (relative to a flat sea, blurred along x)
 // blurred along z by the slice's spread (common/caustic_blur.glsl). The accumulation, which blur_rows.comp
 // has read, is cleared on the way for the next frame's splat (no separate fill).
+layout(local_size_x = 8, local_size_y = 8) in;
 layout(std430, binding = LAGOON_CAUSTICS_BIND_ACCUM) writeonly buffer Accum {
   uint energy[];
 };
@@ -25,7 +26,8 @@ float caustic_in(int slice, int x, int z) {
 
 void main() {
   const int n = LAGOON_CAUSTICS_CELLS;
-  ivec3 c = caustic_cell(false);  // the dispatch's x runs along the column
-  imageStore(caustic_map, c, vec4(caustic_blur(false, p.sigma_cells[c.z])));
+  ivec3 c = ivec3(gl_GlobalInvocationID);
+  if (any(greaterThanEqual(c.xy, ivec2(n)))) return;
+  imageStore(caustic_map, c, vec4(caustic_blur(c.z, c.xy, ivec2(0, 1), p.sigma_cells[c.z])));
   energy[(c.z * n + c.y) * n + c.x] = 0u;
 }
