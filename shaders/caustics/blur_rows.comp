@@ -23,9 +23,13 @@ float caustic_in(int slice, int x, int z) {
 }
 #include "common/caustic_blur.glsl"
 
+// An invocation is a run of cells along a row: x = the run, y = the row, z = the slice.
 void main() {
   const int n = LAGOON_CAUSTICS_CELLS;
-  ivec3 c = ivec3(gl_GlobalInvocationID);
-  if (any(greaterThanEqual(c.xy, ivec2(n)))) return;
-  rows[(c.z * n + c.y) * n + c.x] = caustic_blur(c.z, c.xy, ivec2(1, 0), p.sigma_cells[c.z]);
+  ivec3 g = ivec3(gl_GlobalInvocationID);
+  if (g.x >= n / LAGOON_CAUSTICS_RUN || g.y >= n) return;
+  ivec2 start = ivec2(g.x * LAGOON_CAUSTICS_RUN, g.y);
+  float run[LAGOON_CAUSTICS_RUN];
+  caustic_blur_run(g.z, start, ivec2(1, 0), p.sigma_cells[g.z], run);
+  for (int j = 0; j < LAGOON_CAUSTICS_RUN; ++j) rows[(g.z * n + start.y) * n + start.x + j] = run[j];
 }

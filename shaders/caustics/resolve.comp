@@ -24,10 +24,16 @@ float caustic_in(int slice, int x, int z) {
 }
 #include "common/caustic_blur.glsl"
 
+// An invocation is a run of cells along a column: x = the run, y = the column, z = the slice.
 void main() {
   const int n = LAGOON_CAUSTICS_CELLS;
-  ivec3 c = ivec3(gl_GlobalInvocationID);
-  if (any(greaterThanEqual(c.xy, ivec2(n)))) return;
-  imageStore(caustic_map, c, vec4(caustic_blur(c.z, c.xy, ivec2(0, 1), p.sigma_cells[c.z])));
-  energy[(c.z * n + c.y) * n + c.x] = 0u;
+  ivec3 g = ivec3(gl_GlobalInvocationID);
+  if (g.x >= n / LAGOON_CAUSTICS_RUN || g.y >= n) return;
+  ivec2 start = ivec2(g.y, g.x * LAGOON_CAUSTICS_RUN);
+  float run[LAGOON_CAUSTICS_RUN];
+  caustic_blur_run(g.z, start, ivec2(0, 1), p.sigma_cells[g.z], run);
+  for (int j = 0; j < LAGOON_CAUSTICS_RUN; ++j) {
+    imageStore(caustic_map, ivec3(start.x, start.y + j, g.z), vec4(run[j]));
+    energy[(g.z * n + start.y + j) * n + start.x] = 0u;
+  }
 }

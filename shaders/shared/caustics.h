@@ -27,6 +27,8 @@
 #define LAGOON_CAUSTICS_BIND_ROWS 5    // float[SLICES][CELLS][CELLS]: the accumulation blurred along x
 // Widest blur, cells each side (3 m): 3σ of the spread at 15 m under a 20 m/s sea is about 1.1 m.
 #define LAGOON_CAUSTICS_MAX_BLUR 24
+#define LAGOON_CAUSTICS_RUN \
+  8  // cells of a line each invocation of the blur's passes blurs (caustic_blur.glsl)
 // ... and the wakes at LAGOON_SURFACE_BIND_WAKES (common/wake_fields.glsl)
 
 LAGOON_GPU_BEGIN

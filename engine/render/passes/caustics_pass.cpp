@@ -62,7 +62,9 @@ void CausticsPass::record(const FrameContext& frame, const CausticsWindow& windo
   vk::buffer_barrier(frame.cmd, accum_.handle(), vk::access::kComputeReadWrite, vk::access::kComputeRead);
   // The blur, one axis per pass: 2 (2r + 1) reads a cell, against (2r + 1)² for the square kernel.
   const gpu::CausticsBlurPush blur{.sigma_cells = window.blur_cells};
-  const std::array<uint32_t, 3> cells{LAGOON_CAUSTICS_CELLS, LAGOON_CAUSTICS_CELLS, LAGOON_CAUSTICS_SLICES};
+  // An invocation per run of cells along a line (common/caustic_blur.glsl), a line per y, a slice per z.
+  const std::array<uint32_t, 3> cells{LAGOON_CAUSTICS_CELLS / LAGOON_CAUSTICS_RUN, LAGOON_CAUSTICS_CELLS,
+                                      LAGOON_CAUSTICS_SLICES};
   vk::dispatch(frame.cmd, blur_rows_,
                {vk::bind(LAGOON_CAUSTICS_BIND_ACCUM, accum_), vk::bind(LAGOON_CAUSTICS_BIND_ROWS, rows_)},
                blur, vk::groups_for(blur_rows_, cells));
