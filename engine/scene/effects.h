@@ -42,7 +42,8 @@ inline constexpr EffectKind kEffects[] = {
     {"caustics_blur", &RenderEffects::caustics_blur, "the caustic pattern blurred with depth",
      "The caustic pattern blurred with depth by what its 12.5 cm cells leave out: the waves shorter than a "
      "cell (their mean square slope, the glint's) and the solar disc spread the refracted sun, by 1.6° "
-     "under a 7 m/s sea: a blur of 0.2 m at 6 m and 0.5 m at 15 m (docs/rendering.md, Caustics); false = "
+     "under a 7 m/s sea and a 60° sun: a blur of 0.2 m at 6 m and 0.5 m at 15 m (docs/rendering.md, "
+     "Caustics); false = "
      "the resolved waves' sharp pattern at every depth.",
      "caustics"},
     {"particles", &RenderEffects::particles, "suspended particles seen under the water",

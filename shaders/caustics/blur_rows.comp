@@ -1,21 +1,15 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-#include "shared/caustics.h"
 #include "shared/frame.h"
+#include "shared/caustics.h"
 
 // The accumulated fixed-point energy as irradiance relative to a flat sea, blurred along x by the slice's
 // spread (common/caustic_blur.glsl); resolve.comp blurs it along z into the map and clears the
 // accumulation for the next frame's splat.
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(std430, binding = LAGOON_CAUSTICS_BIND_ACCUM) readonly buffer Accum {
-  uint energy[];
-};
-layout(std430, binding = LAGOON_CAUSTICS_BIND_ROWS) writeonly buffer Rows {
-  float rows[];
-};
-layout(push_constant) uniform Push {
-  CausticsBlurPush p;
-};
+layout(std430, binding = LAGOON_CAUSTICS_BIND_ACCUM) readonly buffer Accum { uint energy[]; };
+layout(std430, binding = LAGOON_CAUSTICS_BIND_ROWS) writeonly buffer Rows { float rows[]; };
+layout(push_constant) uniform Push { CausticsBlurPush p; };
 
 float caustic_in(int slice, int x, int z) {
   const int n = LAGOON_CAUSTICS_CELLS;

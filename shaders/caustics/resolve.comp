@@ -1,22 +1,16 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-#include "shared/caustics.h"
 #include "shared/frame.h"
+#include "shared/caustics.h"
 
 // The map, one layer per slice: blur_rows.comp's irradiance (relative to a flat sea, blurred along x)
 // blurred along z by the slice's spread (common/caustic_blur.glsl). The accumulation, which blur_rows.comp
 // has read, is cleared on the way for the next frame's splat (no separate fill).
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(std430, binding = LAGOON_CAUSTICS_BIND_ACCUM) writeonly buffer Accum {
-  uint energy[];
-};
-layout(std430, binding = LAGOON_CAUSTICS_BIND_ROWS) readonly buffer Rows {
-  float rows[];
-};
+layout(std430, binding = LAGOON_CAUSTICS_BIND_ACCUM) writeonly buffer Accum { uint energy[]; };
+layout(std430, binding = LAGOON_CAUSTICS_BIND_ROWS) readonly buffer Rows { float rows[]; };
 layout(r32f, binding = LAGOON_CAUSTICS_BIND_MAP) writeonly uniform image2DArray caustic_map;
-layout(push_constant) uniform Push {
-  CausticsBlurPush p;
-};
+layout(push_constant) uniform Push { CausticsBlurPush p; };
 
 float caustic_in(int slice, int x, int z) {
   const int n = LAGOON_CAUSTICS_CELLS;

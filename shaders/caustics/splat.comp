@@ -1,7 +1,7 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
-#include "shared/caustics.h"
 #include "shared/frame.h"
+#include "shared/caustics.h"
 
 // One ray per invocation, LAGOON_CAUSTICS_RAYS² per source cell of the sea's surface: the sun's ray through
 // the displaced surface there, refracted by its normal, carries its share of the flat-surface irradiance
@@ -9,22 +9,15 @@
 // same energy, so what arrives over the window is what left the surface: under a flat sea each destination
 // cell gets exactly 1.
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(std140, binding = LAGOON_CAUSTICS_BIND_FRAME) uniform Frame {
-  FrameUniforms frame;
-};
+layout(std140, binding = LAGOON_CAUSTICS_BIND_FRAME) uniform Frame { FrameUniforms frame; };
 layout(binding = LAGOON_CAUSTICS_BIND_DISPLACEMENT) uniform sampler2DArray displacement[LAGOON_MAX_CASCADES];
-layout(binding = LAGOON_CAUSTICS_BIND_NORMAL_JACOBIAN) uniform sampler2DArray
-    normal_jacobian[LAGOON_MAX_CASCADES];
-layout(std430, binding = LAGOON_CAUSTICS_BIND_ACCUM) buffer Accum {
-  uint energy[];
-};
-layout(push_constant) uniform Push {
-  CausticsPush p;
-};
+layout(binding = LAGOON_CAUSTICS_BIND_NORMAL_JACOBIAN) uniform sampler2DArray normal_jacobian[LAGOON_MAX_CASCADES];
+layout(std430, binding = LAGOON_CAUSTICS_BIND_ACCUM) buffer Accum { uint energy[]; };
+layout(push_constant) uniform Push { CausticsPush p; };
 
 #include "common/cascade_uv.glsl"
-#include "common/direct_waves.glsl"
 #include "common/wake_fields.glsl"
+#include "common/direct_waves.glsl"
 
 void splat(int slice, ivec2 cell, uint amount) {
   const int n = LAGOON_CAUSTICS_CELLS;
@@ -41,13 +34,13 @@ void main() {
   vec3 d = vec3(0.0);
   vec2 slope = vec2(0.0);
   const int count = kCascadeCount;  // compiled out beyond it (shared/limits.h)
-#define LAGOON_CASCADE(c)                                      \
-  if (count > c && cell < frame.cascade_patch[c]) {            \
-    float lod = max(0.0, log2(cell / frame.cascade_texel[c])); \
-    vec3 uvw = cascade_uvw(rest, c);                           \
-    d += textureLod(displacement[c], uvw, lod).xyz;            \
-    vec3 cn = textureLod(normal_jacobian[c], uvw, lod).xyz;    \
-    slope += -cn.xz / max(cn.y, 0.05);                         \
+#define LAGOON_CASCADE(c)                                                         \
+  if (count > c && cell < frame.cascade_patch[c]) {                               \
+    float lod = max(0.0, log2(cell / frame.cascade_texel[c]));                    \
+    vec3 uvw = cascade_uvw(rest, c);                                              \
+    d += textureLod(displacement[c], uvw, lod).xyz;                               \
+    vec3 cn = textureLod(normal_jacobian[c], uvw, lod).xyz;                       \
+    slope += -cn.xz / max(cn.y, 0.05);                                            \
   }
   LAGOON_CASCADE(0)
   LAGOON_CASCADE(1)

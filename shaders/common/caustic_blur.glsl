@@ -1,10 +1,11 @@
 // One axis of the caustic map's Gaussian blur (render/caustics_window.h: the rays' spread a cell's splat does
 // not follow), for both of its passes (caustics/blur_rows.comp along x, caustics/resolve.comp along z).
 // An invocation blurs a run of LAGOON_CAUSTICS_RUN cells of one line: it loads the run and the blur's reach
-// on either side once into a private window, and every tap reads that. On lavapipe a storage-buffer load is a
-// loop over the SIMD lanes; loading each cell's 2r + 1 taps from the buffer cost a 160 x 90 frame about
-// 12 ms more than no blur. (A line shared by a workgroup would need a barrier, which lavapipe compiles as a
-// coroutine: a longer cold compile and slower passes.)
+// on either side once into a private window, and every tap reads that. Runs made a 160 x 90 frame on
+// lavapipe 9 ms faster than an invocation per cell, with or without the blur; the taps themselves still
+// add about 10 ms there (a private array indexed per lane is a loop over the SIMD lanes too). A line shared
+// by a workgroup would need a barrier, which lavapipe compiles as a coroutine: a longer cold compile and
+// slower passes. A recursive (IIR) Gaussian would make the taps' cost independent of σ.
 // Needs, declared by the includer: `caustic_in(slice, x, z)`, the unblurred value at a cell.
 #ifndef LAGOON_COMMON_CAUSTIC_BLUR_GLSL
 #define LAGOON_COMMON_CAUSTIC_BLUR_GLSL

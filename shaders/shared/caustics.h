@@ -25,10 +25,11 @@
 #define LAGOON_CAUSTICS_BIND_ACCUM 3   // uint[SLICES][CELLS][CELLS], fixed point
 #define LAGOON_CAUSTICS_BIND_MAP 4     // r32f image2DArray, one layer per slice
 #define LAGOON_CAUSTICS_BIND_ROWS 5    // float[SLICES][CELLS][CELLS]: the accumulation blurred along x
-// Widest blur, cells each side (3 m): 3σ of the spread at 15 m under a 20 m/s sea is about 1.1 m.
+// Widest blur, cells each side (3 m): 3σ at 15 m under a 20 m/s sea with the sun 60° up (σ 0.95 m). A lower
+// sun or a rougher sea is cut there (at 30° and 20 m/s σ is 2.4 m), a blur a little narrower than its σ.
 #define LAGOON_CAUSTICS_MAX_BLUR 24
-#define LAGOON_CAUSTICS_RUN \
-  8  // cells of a line each invocation of the blur's passes blurs (caustic_blur.glsl)
+// Cells of a line each invocation of the blur's passes blurs (common/caustic_blur.glsl).
+#define LAGOON_CAUSTICS_RUN 8
 // ... and the wakes at LAGOON_SURFACE_BIND_WAKES (common/wake_fields.glsl)
 
 LAGOON_GPU_BEGIN
