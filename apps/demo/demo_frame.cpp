@@ -10,6 +10,7 @@
 #include "demo.h"
 #include "io/png.h"
 #include "live_clock.h"
+#include "shared/caustics.h"
 #include "vk/barriers.h"
 #include "vk/check.h"
 
@@ -69,8 +70,12 @@ void Demo::observe_frame_time(float dt) {
   resolution_.observe(double(dt) * 1000.0);
   if (resolution_.scale() == before) return;
   const VkExtent2D drawn = resolution_.render_extent(swapchain_->extent());
-  std::printf("lagoon-demo: live frames now drawn at %.0f %% of the window (%ux%u) for %g frames a second\n",
-              100.0 * resolution_.scale(), drawn.width, drawn.height, resolution_.target_fps());
+  const int cells = LAGOON_CAUSTICS_CELLS / resolution_.caustic_coarsening();
+  std::printf(
+      "lagoon-demo: live frames now drawn at %.0f %% of the window (%ux%u) for %g frames a second; caustic "
+      "map "
+      "%d x %d cells\n",
+      100.0 * resolution_.scale(), drawn.width, drawn.height, resolution_.target_fps(), cells, cells);
   std::fflush(stdout);
 }
 
@@ -133,6 +138,7 @@ void Demo::record_to_swapchain(VkCommandBuffer cmd, const scene::Scene& frame_sc
                                uint32_t image, bool full_size) {
   const VkExtent2D extent = swapchain_->extent();
   const VkExtent2D drawn = full_size ? extent : resolution_.render_extent(extent);
+  renderer_->set_caustic_cells(LAGOON_CAUSTICS_CELLS / (full_size ? 1 : resolution_.caustic_coarsening()));
   const vk::Image& colour = renderer_->record(cmd, frame_scene, drawn, slot);
   slot_used_[slot] = true;
 

@@ -25,6 +25,10 @@ class ResolutionScale {
   double scale() const { return scale_; }
   // The size to draw a window of `window` at: its width and height times scale(), at least 1 pixel.
   VkExtent2D render_extent(VkExtent2D window) const;
+  // How many times coarser the caustic map's cells are for frames drawn at scale(): 1 from 3/4 of the window
+  // up, 2 from 3/8, else 4 (OceanRenderer::set_caustic_cells). The map's work (its rays and blur) does not
+  // shrink with the picture: at the floor on lavapipe it was most of a small frame's cost.
+  int caustic_coarsening() const { return scale_ >= 0.75 ? 1 : scale_ >= 0.375 ? 2 : 4; }
   // One frame drawn at scale() took `frame_ms` (wall time, the whole loop). The scale that meets the target
   // is scale · sqrt(target / smoothed time), rounded down to a step.
   void observe(double frame_ms);

@@ -9,14 +9,18 @@
 #include <cstdint>
 
 #include "scene/scene.h"
+#include "shared/caustics.h"
 
 namespace lagoon::render {
 
 // Where this frame's caustics are computed (FrameUniforms::caustics, caustic_depths).
 struct CausticsWindow {
-  glm::vec2 origin{0};  // world xz of the window's corner
-  float cell_m = 0.125f;
-  uint32_t cells = 0;  // 0 = no caustics this frame (switched off, the sun down, or nothing to light)
+  static constexpr float kSizeM = 32.0f;  // the window's side: LAGOON_CAUSTICS_CELLS cells of 12.5 cm
+  glm::vec2 origin{0};                    // world xz of the window's corner
+  float cell_m = kSizeM / LAGOON_CAUSTICS_CELLS;
+  // Cells per side, at most LAGOON_CAUSTICS_CELLS (the map's first cells x cells); 0 = no caustics this frame
+  // (switched off, the sun down, or nothing to light).
+  uint32_t cells = 0;
   glm::vec4 depths{1.0f, 2.5f, 6.0f, 15.0f};
   // The surface cells whose rays reach the window at some slice: the window shifted towards the sun by where
   // a flat surface sends the rays at each depth, plus LAGOON_CAUSTICS_MARGIN cells on every side. One ray per
@@ -29,8 +33,10 @@ struct CausticsWindow {
   glm::vec4 blur_cells{0.0f};
 };
 // `sun` towards the sun; `ior` of the water; `unresolved_mss` the mean square slope of the waves shorter than
-// a cell (OceanShading::caustic_mss).
-CausticsWindow caustics_window(const scene::Scene& scene, glm::vec3 sun, float ior, float unresolved_mss);
+// a cell (caustic_unresolved_mss); `cells` per side of the same window (LAGOON_CAUSTICS_CELLS, or a power of
+// two down to 64 for a picture drawn small: OceanRenderer::set_caustic_cells).
+CausticsWindow caustics_window(const scene::Scene& scene, glm::vec3 sun, float ior, float unresolved_mss,
+                               uint32_t cells = LAGOON_CAUSTICS_CELLS);
 
 // The standard deviation, in radians per axis, of the refracted sun's direction under the water from what a
 // cell's ray leaves out: slopes of mean square `unresolved_mss` tilt the surface's normal by s (per axis

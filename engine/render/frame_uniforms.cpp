@@ -49,11 +49,16 @@ OceanShading ocean_shading(const ocean::GpuOcean& ocean) {
     out.subgrid_mss =
         float(ocean::spectrum_mean_square_slope(ocean.params(), last_k, ocean::kCapillaryCutoffK));
   }
-  // The caustic splat samples the cascades filtered to its cell (a mip per cascade): it keeps |k| < π/cell.
-  const ocean::SlopeMoments unresolved = ocean::unresolved_slope_moments(
-      ocean.params(), ocean.spectra(), drawn, std::numbers::pi / double(CausticsWindow{}.cell_m));
-  out.caustic_mss = float(unresolved.xx + unresolved.zz);
+  out.caustic_mss = caustic_unresolved_mss(ocean, CausticsWindow{}.cell_m);
   return out;
+}
+
+float caustic_unresolved_mss(const ocean::GpuOcean& ocean, float cell_m) {
+  // The caustic splat samples the cascades filtered to its cell (a mip per cascade): it keeps |k| < π/cell.
+  const uint32_t drawn = std::min<uint32_t>(ocean.cascade_count(), LAGOON_MAX_CASCADES);
+  const ocean::SlopeMoments unresolved = ocean::unresolved_slope_moments(
+      ocean.params(), ocean.spectra(), drawn, std::numbers::pi / double(cell_m));
+  return float(unresolved.xx + unresolved.zz);
 }
 
 uint32_t write_point_lights(const scene::Scene& scene, const std::vector<scene::PointLight>& more,

@@ -23,6 +23,8 @@ struct OceanShading {
   float significant_height_m = 0;  // H_s = 4σ of the drawn cascades' height
 };
 OceanShading ocean_shading(const ocean::GpuOcean& ocean);
+// The mean square slope of the waves a caustic map of `cell_m` cells does not resolve (its blur).
+float caustic_unresolved_mss(const ocean::GpuOcean& ocean, float cell_m);
 
 struct FrameInputs {
   const scene::Scene& scene;

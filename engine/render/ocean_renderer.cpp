@@ -70,6 +70,7 @@ Result<void> OceanRenderer::init(const scene::Scene& scene, world::VehicleTracks
   if (!ocean_step) return make_error("ocean: " + ocean_step.error().message);
   ocean_step_ = std::make_unique<OceanStepPass>(std::move(*ocean_step));
   shading_ = ocean_shading(ocean());
+  caustic_mss_ = shading_.caustic_mss;
   t_ocean.end();
   StageTimer t_luts("water LUTs");
   auto luts = upload_water_luts(ctx_, scene, &ocean().spectra());  // the spectra the ocean step built
@@ -290,7 +291,7 @@ void OceanRenderer::record(VkCommandBuffer cmd, const scene::Scene& scene, const
                            uint32_t slot) {
   resize(targets.extent);
   const CausticsWindow caustics =
-      caustics_window(scene, sun_direction(scene.sun), float(scene.water.ior), shading_.caustic_mss);
+      caustics_window(scene, sun_direction(scene.sun), float(scene.water.ior), caustic_mss_, caustic_cells_);
   const FrameContext frame = begin_frame(cmd, scene, targets.extent, slot, caustics);
   record_frame(frame, {.kind = FrameKind::Picture,
                        .caustics = caustics,
@@ -301,6 +302,17 @@ void OceanRenderer::record(VkCommandBuffer cmd, const scene::Scene& scene, const
   views_drawn_for_.clear();
   picture_side_ = frame.camera_side;
   remember_pipelines();
+}
+
+void OceanRenderer::set_caustic_cells(uint32_t cells) {
+  uint32_t allowed = LAGOON_CAUSTICS_CELLS;
+  while (allowed > 64 && allowed > cells) allowed /= 2;
+  if (allowed == caustic_cells_) return;
+  caustic_cells_ = allowed;
+  caustic_mss_ = allowed == LAGOON_CAUSTICS_CELLS
+                     ? shading_.caustic_mss
+                     : caustic_unresolved_mss(ocean(), CausticsWindow::kSizeM / float(allowed));
+  views_drawn_for_.clear();  // a ground-truth frame after it draws its own map
 }
 
 void OceanRenderer::draw_for_code_only(const scene::Scene& scene) {

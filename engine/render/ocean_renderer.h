@@ -152,6 +152,12 @@ class OceanRenderer {
   const WakesPass& wakes() const { return *wakes_; }
   // The caustics of the last frame (e.g. for a check of their energy after render()).
   const CausticsPass& caustics() const { return *caustics_; }
+  // The caustic map's cells per side for the frames that follow: LAGOON_CAUSTICS_CELLS (256, 12.5 cm, the
+  // default), or 128 or 64 over the same 32 m window for a picture drawn small, where the map's fixed work
+  // would be most of the frame (the demo's dynamic resolution). Other values are rounded down to one of
+  // these. The blur widens with the cells' own unresolved waves.
+  void set_caustic_cells(uint32_t cells);
+  uint32_t caustic_cells() const { return caustic_cells_; }
   // Where the camera is judged to be (above, below, cutting the surface); tests and tools may force a side.
   world::CameraMedium& camera_medium() { return world_->camera_medium(); }
   // The side a frame of `scene` at `extent` is drawn for (its near plane's reach allowed for).
@@ -212,6 +218,8 @@ class OceanRenderer {
   std::optional<SurfaceFields>
       fields_;  // the ocean's cascades and the wakes, as the surface passes bind them
   OceanShading shading_;
+  uint32_t caustic_cells_ = LAGOON_CAUSTICS_CELLS;  // set_caustic_cells
+  float caustic_mss_ = 0;                           // the waves those cells leave out (their blur)
   std::unique_ptr<RefractionPass> refraction_;
   std::unique_ptr<ObjectsPass> reflection_;
   std::unique_ptr<SurfacePass> surface_;

@@ -17,7 +17,7 @@ OceanRenderer::UnderwaterTerms OceanRenderer::render_underwater_terms(const scen
   const FloatTargets terms(ctx_, extent, 3, kDepthFormat, "underwater terms");  // clean, T, backscatter
   prepare(scene);
   const CausticsWindow caustics =
-      caustics_window(scene, sun_direction(scene.sun), float(scene.water.ior), shading_.caustic_mss);
+      caustics_window(scene, sun_direction(scene.sun), float(scene.water.ior), caustic_mss_, caustic_cells_);
   ctx_.submit_and_wait([&](VkCommandBuffer cmd) {
     const FrameContext frame = begin_frame(cmd, scene, extent, 0, caustics);
     // A dataset draws the terms right after the picture of the same frame: its caustic map and refraction

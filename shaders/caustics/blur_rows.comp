@@ -12,18 +12,18 @@ layout(std430, binding = LAGOON_CAUSTICS_BIND_ROWS) writeonly buffer Rows { floa
 layout(push_constant) uniform Push { CausticsBlurPush p; };
 
 float caustic_in(int slice, int x, int z) {
-  const int n = LAGOON_CAUSTICS_CELLS;
+  int n = int(p.cells.x);
   return float(energy[(slice * n + z) * n + x]) / LAGOON_CAUSTICS_ONE;
 }
 #include "common/caustic_blur.glsl"
 
 // An invocation is a run of cells along a row: x = the run, y = the row, z = the slice.
 void main() {
-  const int n = LAGOON_CAUSTICS_CELLS;
+  int n = int(p.cells.x);  // this frame's cells per side: the map's first n x n
   ivec3 g = ivec3(gl_GlobalInvocationID);
   if (g.x >= n / LAGOON_CAUSTICS_RUN || g.y >= n) return;
   ivec2 start = ivec2(g.x * LAGOON_CAUSTICS_RUN, g.y);
   float run[LAGOON_CAUSTICS_RUN];
-  caustic_blur_run(g.z, start, ivec2(1, 0), p.sigma_cells[g.z], run);
+  caustic_blur_run(n, g.z, start, ivec2(1, 0), p.sigma_cells[g.z], run);
   for (int j = 0; j < LAGOON_CAUSTICS_RUN; ++j) rows[(g.z * n + start.y) * n + start.x + j] = run[j];
 }

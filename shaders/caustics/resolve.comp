@@ -13,19 +13,19 @@ layout(r32f, binding = LAGOON_CAUSTICS_BIND_MAP) writeonly uniform image2DArray 
 layout(push_constant) uniform Push { CausticsBlurPush p; };
 
 float caustic_in(int slice, int x, int z) {
-  const int n = LAGOON_CAUSTICS_CELLS;
+  int n = int(p.cells.x);
   return rows[(slice * n + z) * n + x];
 }
 #include "common/caustic_blur.glsl"
 
 // An invocation is a run of cells along a column: x = the run, y = the column, z = the slice.
 void main() {
-  const int n = LAGOON_CAUSTICS_CELLS;
+  int n = int(p.cells.x);  // this frame's cells per side: the map's first n x n
   ivec3 g = ivec3(gl_GlobalInvocationID);
   if (g.x >= n / LAGOON_CAUSTICS_RUN || g.y >= n) return;
   ivec2 start = ivec2(g.y, g.x * LAGOON_CAUSTICS_RUN);
   float run[LAGOON_CAUSTICS_RUN];
-  caustic_blur_run(g.z, start, ivec2(0, 1), p.sigma_cells[g.z], run);
+  caustic_blur_run(n, g.z, start, ivec2(0, 1), p.sigma_cells[g.z], run);
   for (int j = 0; j < LAGOON_CAUSTICS_RUN; ++j) {
     imageStore(caustic_map, ivec3(start.x, start.y + j, g.z), vec4(run[j]));
     energy[(g.z * n + start.y + j) * n + start.x] = 0u;

@@ -20,7 +20,7 @@ layout(push_constant) uniform Push { CausticsPush p; };
 #include "common/direct_waves.glsl"
 
 void splat(int slice, ivec2 cell, uint amount) {
-  const int n = LAGOON_CAUSTICS_CELLS;
+  int n = int(frame.caustics.w);  // this frame's cells per side: the map's first n x n
   if (amount == 0u || any(lessThan(cell, ivec2(0))) || any(greaterThanEqual(cell, ivec2(n)))) return;
   atomicAdd(energy[(slice * n + cell.y) * n + cell.x], amount);
 }

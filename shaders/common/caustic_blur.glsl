@@ -10,11 +10,12 @@
 #ifndef LAGOON_COMMON_CAUSTIC_BLUR_GLSL
 #define LAGOON_COMMON_CAUSTIC_BLUR_GLSL
 
-// The run of cells from `start` along `axis` ((1, 0) or (0, 1)) blurred along it with standard deviation
-// `sigma` cells, over ⌈3σ⌉ each side; the edge cells stand for what lies beyond the window (clamped), so a
-// flat sea stays 1 there. sigma below 0.05 cell (weights beyond the centre under 1e-87) is no blur.
-void caustic_blur_run(int slice, ivec2 start, ivec2 axis, float sigma, out float run[LAGOON_CAUSTICS_RUN]) {
-  const ivec2 last = ivec2(LAGOON_CAUSTICS_CELLS - 1);
+// The run of cells from `start` along `axis` ((1, 0) or (0, 1)) of the frame's n x n cells, blurred along it
+// with standard deviation `sigma` cells over ⌈3σ⌉ each side; the edge cells stand for what lies beyond the
+// window (clamped), so a flat sea stays 1 there. sigma below 0.05 cell (weights beyond the centre under 1e-87) is no blur.
+void caustic_blur_run(int n, int slice, ivec2 start, ivec2 axis, float sigma,
+                      out float run[LAGOON_CAUSTICS_RUN]) {
+  ivec2 last = ivec2(n - 1);
   int radius = sigma < 0.05 ? 0 : min(int(ceil(3.0 * sigma)), LAGOON_CAUSTICS_MAX_BLUR);
   float window[LAGOON_CAUSTICS_RUN + 2 * LAGOON_CAUSTICS_MAX_BLUR];
   for (int j = 0; j < LAGOON_CAUSTICS_RUN + 2 * radius; ++j) {

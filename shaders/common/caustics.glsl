@@ -3,6 +3,7 @@
 // by the includer: `frame` (FrameUniforms) and `caustic_map` (sampler2DArray).
 #ifndef LAGOON_COMMON_CAUSTICS_GLSL
 #define LAGOON_COMMON_CAUSTICS_GLSL
+#include "shared/caustics.h"
 
 layout(constant_id = LAGOON_SURFACE_SPEC_CAUSTICS) const bool kCaustics = true;
 
@@ -19,7 +20,11 @@ float caustic_gain(vec2 xz, float depth) {
   int k = depth < z.y ? 0 : depth < z.z ? 1 : depth < z.w ? 2 : 3;
   int next = min(k + 1, 3);
   float f = k == 3 ? 0.0 : clamp((depth - z[k]) / (z[next] - z[k]), 0.0, 1.0);
-  float e = mix(texture(caustic_map, vec3(uv, float(k))).r, texture(caustic_map, vec3(uv, float(next))).r, f);
+  // The frame's n x n cells are the map's first (OceanRenderer::set_caustic_cells), its texel centres the
+  // window's cells: kept inside them, so a coarser map does not blend in the cells it did not write.
+  float n = frame.caustics.w;
+  vec2 tc = clamp(uv * n, vec2(0.5), vec2(n - 0.5)) / float(LAGOON_CAUSTICS_CELLS);
+  float e = mix(texture(caustic_map, vec3(tc, float(k))).r, texture(caustic_map, vec3(tc, float(next))).r, f);
   e = depth < z.x ? mix(1.0, e, depth / z.x) : e;  // there k = 0 and f = 0: e is the first slice's
   float share = mix(frame.caustic_share[k], frame.caustic_share[next], f);
   vec2 edge = min(uv, 1.0 - uv);

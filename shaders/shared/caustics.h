@@ -7,7 +7,7 @@
 #include "shared/surface.h"
 
 #define LAGOON_CAUSTICS_SLICES 4     // depths per frame (FrameUniforms::caustic_depths)
-#define LAGOON_CAUSTICS_CELLS 256    // destination cells per side of the window
+#define LAGOON_CAUSTICS_CELLS 256    // destination cells per side of the window, at most (the map's size)
 #define LAGOON_CAUSTICS_MARGIN 32    // source cells beyond each side: rays tilted by the waves land inside
 #define LAGOON_CAUSTICS_ONE 65536.0  // fixed-point unit of the accumulation (one source cell's energy)
 // Rays per source cell side (n x n rays of 1/n^2 a cell's energy). One ray per cell leaves each destination
@@ -38,6 +38,7 @@ struct CausticsPush {
 };
 struct CausticsBlurPush {
   vec4 sigma_cells;  // each slice's Gaussian blur, standard deviation in cells (CausticsWindow::blur_cells)
+  vec4 cells;        // x = this frame's cells per side (CausticsWindow::cells, at most LAGOON_CAUSTICS_CELLS)
 };
 LAGOON_GPU_END
 

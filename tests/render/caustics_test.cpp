@@ -157,6 +157,83 @@ TEST_F(Caustics, TheBlurIsAGaussianOfTheSharpPatternAsWideAsTheRaysSpread) {
   EXPECT_LT(stats(blurred, 3).stddev, 0.7 * stats(sharp, 3).stddev);
 }
 
+TEST_F(Caustics, ACoarserMapKeepsTheEnergyAndThePattern) {
+  // The same sea on the same 32 m window in 128² and 64² cells (a picture drawn small, the demo's dynamic
+  // resolution): every plane still conserves the light, and the pattern is the full map's, averaged over the
+  // coarser cells, where the blur is wider than a coarse cell (6 and 15 m).
+  auto s = scene::load_scene(std::string(LAGOON_SOURCE_DIR) + "/scenes/tropical-lagoon.json",
+                             std::vector<std::string>{"render.width=64", "render.height=48"});
+  ASSERT_TRUE(s) << s.error().message;
+  auto renderer = render::OceanRenderer::create(ctx(), *s);
+  ASSERT_TRUE(renderer) << renderer.error().message;
+  (*renderer)->render(*s);
+  const std::vector<float> full = (*renderer)->caustics().read_map(ctx());
+  const int n = LAGOON_CAUSTICS_CELLS;
+  for (int coarse : {2, 4}) {
+    (*renderer)->set_caustic_cells(uint32_t(n / coarse));
+    ASSERT_EQ((*renderer)->caustic_cells(), uint32_t(n / coarse));
+    (*renderer)->render(*s);
+    const std::vector<float> map = (*renderer)->caustics().read_map(ctx());
+    const int m = n / coarse;
+    for (int k = 0; k < LAGOON_CAUSTICS_SLICES; ++k) {
+      // The coarse frame's cells are the image's first m x m texels.
+      double sum = 0, a2 = 0, b2 = 0, ab = 0, a_sum = 0, b_sum = 0, count = 0;
+      for (int z = 0; z < m; ++z)
+        for (int x = 0; x < m; ++x) {
+          const double a = map[(size_t(k) * n + z) * n + x];
+          double b = 0;
+          for (int dz = 0; dz < coarse; ++dz)
+            for (int dx = 0; dx < coarse; ++dx)
+              b += full[(size_t(k) * n + z * coarse + dz) * n + x * coarse + dx];
+          b /= coarse * coarse;
+          sum += a, a_sum += a, b_sum += b, a2 += a * a, b2 += b * b, ab += a * b, ++count;
+        }
+      const double mean = sum / count, ma = a_sum / count, mb = b_sum / count;
+      const double correlation =
+          (ab / count - ma * mb) / std::sqrt((a2 / count - ma * ma) * (b2 / count - mb * mb));
+      RecordProperty(
+          "cells" + std::to_string(m) + "_slice" + std::to_string(k),
+          "mean " + std::to_string(mean) + ", correlation with the full map " + std::to_string(correlation));
+      EXPECT_NEAR(mean, 1.0, 0.03) << m << " cells, slice " << k;
+      // Measured 0.76-0.99 (the picture below checks the shading's lookup of the coarse cells).
+      EXPECT_GT(correlation, k >= 2 ? 0.85 : 0.7) << m << " cells, slice " << k;
+    }
+  }
+  // The floor drawn with the coarse map looks up its own cells: the reef's floor, 8-12 m down where the blur
+  // is wider than a coarse cell, is the full map's picture within a little. Each picture from a renderer of
+  // its own, so no texel of another frame's map stands in for a lookup in the wrong place.
+  auto reef = scene::load_scene(std::string(LAGOON_SOURCE_DIR) + "/scenes/reef-dive.json",
+                                std::vector<std::string>{"render.width=160", "render.height=96"});
+  ASSERT_TRUE(reef) << reef.error().message;
+  auto picture = [&](uint32_t cells, bool caustics) {
+    scene::Scene one = *reef;
+    one.render.effects.caustics = caustics;
+    auto r = render::OceanRenderer::create(ctx(), one);
+    EXPECT_TRUE(r) << r.error().message;
+    (*r)->set_caustic_cells(cells);
+    return (*r)->render(one);
+  };
+  const io::Image8 fine = picture(uint32_t(n), true), coarse = picture(uint32_t(n / 2), true),
+                   off = picture(uint32_t(n), false);
+  auto difference = [](const io::Image8& a, const io::Image8& b) {  // mean over the lower half, the floor
+    double sum = 0;
+    int count = 0;
+    for (uint32_t y = a.height / 2; y < a.height; ++y)
+      for (uint32_t x = 0; x < a.width; ++x)
+        for (int c = 0; c < 3; ++c) sum += std::abs(int(a.pixel(x, y)[c]) - int(b.pixel(x, y)[c])), ++count;
+    return sum / count;
+  };
+  const double to_coarse = difference(fine, coarse), to_off = difference(fine, off);
+  RecordProperty("picture", "mean difference to the 128-cell map's " + std::to_string(to_coarse) +
+                                ", to no caustics " + std::to_string(to_off));
+  EXPECT_LT(to_coarse, 0.4 * to_off) << "the coarse map's picture is not the full map's";
+  (*renderer)->set_caustic_cells(77);  // rounded down to a power of two of at least 64
+
+  EXPECT_EQ((*renderer)->caustic_cells(), 64u);
+  (*renderer)->set_caustic_cells(100000);
+  EXPECT_EQ((*renderer)->caustic_cells(), uint32_t(n));
+}
+
 // Mean and standard deviation of the luminance over the image's lower half (the floor, in these views).
 std::pair<double, double> floor_luminance(const io::Image8& image) {
   double sum = 0, sum2 = 0;

@@ -61,9 +61,10 @@ void CausticsPass::record(const FrameContext& frame, const CausticsWindow& windo
                                        window.source_cells.y * LAGOON_CAUSTICS_RAYS, 1}));
   vk::buffer_barrier(frame.cmd, accum_.handle(), vk::access::kComputeReadWrite, vk::access::kComputeRead);
   // The blur, one axis per pass: 2 (2r + 1) reads a cell, against (2r + 1)² for the square kernel.
-  const gpu::CausticsBlurPush blur{.sigma_cells = window.blur_cells};
+  const uint32_t n = std::min<uint32_t>(window.cells, LAGOON_CAUSTICS_CELLS);
+  const gpu::CausticsBlurPush blur{.sigma_cells = window.blur_cells, .cells = glm::vec4(float(n), 0, 0, 0)};
   // An invocation per run of cells along a line (common/caustic_blur.glsl), a line per y, a slice per z.
-  const std::array<uint32_t, 3> cells{LAGOON_CAUSTICS_CELLS / LAGOON_CAUSTICS_RUN, LAGOON_CAUSTICS_CELLS,
+  const std::array<uint32_t, 3> cells{(n + LAGOON_CAUSTICS_RUN - 1) / LAGOON_CAUSTICS_RUN, n,
                                       LAGOON_CAUSTICS_SLICES};
   vk::dispatch(frame.cmd, blur_rows_,
                {vk::bind(LAGOON_CAUSTICS_BIND_ACCUM, accum_), vk::bind(LAGOON_CAUSTICS_BIND_ROWS, rows_)},

@@ -32,9 +32,11 @@ class CausticsPass {
   // Computes the map for `window` (nothing when it has no cells) and makes it ready for fragment shaders.
   void record(const FrameContext& frame, const CausticsWindow& window) const;
 
-  // LAGOON_CAUSTICS_SLICES layers of LAGOON_CAUSTICS_CELLS² irradiance ratios (R32F, GENERAL layout).
+  // LAGOON_CAUSTICS_SLICES layers of LAGOON_CAUSTICS_CELLS² irradiance ratios (R32F, GENERAL layout), of
+  // which a frame's window uses the first cells² (CausticsWindow::cells).
   const vk::Image& map() const { return map_; }
-  // For tests: the last frame's map read back, [slice][row z][column x], relative to a flat sea.
+  // For tests: the last frame's map read back, [slice][row z][column x] over the whole image (a coarser
+  // frame's cells are its first cells x cells), relative to a flat sea.
   std::vector<float> read_map(vk::Context& ctx) const;
 
  private:

@@ -43,6 +43,15 @@ TEST(ResolutionScale, OutOfReachGoesToTheFloorAndZeroMeansFullSize) {
   EXPECT_EQ(r.render_extent({37, 11}).width, 37u);
 }
 
+TEST(ResolutionScale, TheCausticMapCoarsensWithTheSize) {
+  ResolutionScale r(15.0);
+  EXPECT_EQ(r.caustic_coarsening(), 1);  // full size: the full map
+  run(r, 100.0, 40.0, 200);              // to the floor, a quarter of the window each way
+  EXPECT_EQ(r.caustic_coarsening(), 4);
+  r.set_target_fps(0);
+  EXPECT_EQ(r.caustic_coarsening(), 1);
+}
+
 TEST(ResolutionScale, TheFirstFrameAtASizeIsNotItsCost) {
   ResolutionScale r(15.0);
   r.observe(5000.0);  // a frame that compiled pipelines or re-made targets
