@@ -58,6 +58,8 @@ class Demo {
   bool frame();
   float tick();
   void observe_frame_time(float dt);
+  // The caustic map's cells per side for live frames at the current dynamic resolution.
+  uint32_t live_caustic_cells() const;
   void update_ui(float dt);
   scene::Scene advance_time(float dt);
   std::optional<uint32_t> acquire_image(uint32_t slot);

@@ -65,16 +65,20 @@ bool Demo::frame() {
 
 // Feeds the dynamic resolution a live frame's time and says when the size it draws at moves (a line a user
 // can match against the timing tab; the live test waits for it instead of guessing how long to run).
+uint32_t Demo::live_caustic_cells() const {
+  return LAGOON_CAUSTICS_CELLS / uint32_t(resolution_.caustic_coarsening());
+}
+
 void Demo::observe_frame_time(float dt) {
   const double before = resolution_.scale();
   resolution_.observe(double(dt) * 1000.0);
   if (resolution_.scale() == before) return;
   const VkExtent2D drawn = resolution_.render_extent(swapchain_->extent());
-  const int cells = LAGOON_CAUSTICS_CELLS / resolution_.caustic_coarsening();
+  const uint32_t cells = live_caustic_cells();
   std::printf(
       "lagoon-demo: live frames now drawn at %.0f %% of the window (%ux%u) for %g frames a second; caustic "
       "map "
-      "%d x %d cells\n",
+      "%u x %u cells\n",
       100.0 * resolution_.scale(), drawn.width, drawn.height, resolution_.target_fps(), cells, cells);
   std::fflush(stdout);
 }
@@ -138,7 +142,7 @@ void Demo::record_to_swapchain(VkCommandBuffer cmd, const scene::Scene& frame_sc
                                uint32_t image, bool full_size) {
   const VkExtent2D extent = swapchain_->extent();
   const VkExtent2D drawn = full_size ? extent : resolution_.render_extent(extent);
-  renderer_->set_caustic_cells(LAGOON_CAUSTICS_CELLS / (full_size ? 1 : resolution_.caustic_coarsening()));
+  renderer_->set_caustic_cells(full_size ? LAGOON_CAUSTICS_CELLS : live_caustic_cells());
   const vk::Image& colour = renderer_->record(cmd, frame_scene, drawn, slot);
   slot_used_[slot] = true;
 
