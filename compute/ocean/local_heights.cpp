@@ -103,7 +103,9 @@ void LocalHeights::sample_ahead(long long index) {
     if (i == index) return;
   const size_t count = size_t(options_.points_per_side) * size_t(options_.points_per_side);
   ahead_index_ = index;
-  ahead_ = query_->heights_ahead(double(index) * options_.knot_interval_s, lattice_points(0, count));
+  // Due when update() first reads it: at knot index - 2 (it reads k - 1 .. k + 2).
+  ahead_ = query_->heights_ahead(double(index) * options_.knot_interval_s, lattice_points(0, count),
+                                 double(index - 2) * options_.knot_interval_s);
 }
 
 void LocalHeights::update(double time_s, glm::dvec2 centre) {

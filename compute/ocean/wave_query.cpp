@@ -157,9 +157,7 @@ WaveQuery::WaveQuery(const OceanParams& params, std::vector<CascadeSpectrum> spe
   bound_displacement_ = 5 * std::sqrt(2 * variance_d);  // both components: |(dx, dz)|
 }
 
-WaveQuery::~WaveQuery() {
-  if (pending_.valid()) pending_.wait();  // it reads this query
-}
+WaveQuery::~WaveQuery() = default;  // lane_, destroyed first, waits for the jobs that read this
 
 // The grid's heights and vertical velocities at the nodes, and their central-difference slopes (as the GPU's
 // springs_assemble.comp takes them); no horizontal motion.
@@ -216,19 +214,44 @@ void WaveQuery::keep(std::shared_ptr<const Evaluation> evaluation) {
   recent_.push_back(std::move(evaluation));
 }
 
-BackgroundWorker& WaveQuery::worker() {
-  if (!worker_) worker_ = std::make_unique<BackgroundWorker>();
-  return *worker_;
+WorkerLane& WaveQuery::lane() {
+  if (!lane_) lane_ = std::make_unique<WorkerLane>(options_.worker);
+  return *lane_;
 }
 
-void WaveQuery::prefetch(double time_s) {
+std::shared_ptr<const WaveQuery::Evaluation> WaveQuery::fields_of(Pending& pending) const {
+  if (!pending.begun.exchange(true)) {
+    try {
+      pending.made.set_value(evaluate_spectra(pending.time_s));
+    } catch (...) {
+      pending.made.set_exception(std::current_exception());
+    }
+  }
+  return pending.fields.get();
+}
+
+std::shared_ptr<WaveQuery::Pending> WaveQuery::pending_at(double time_s) const {
+  for (const auto& p : pending_)
+    if (p->time_s == time_s) return p;
+  return nullptr;
+}
+
+void WaveQuery::prefetch(double time_s, double due_s) {
   if (springs_ || direct_) return;
-  if (pending_.valid() && pending_time_ == time_s) return;
+  if (pending_at(time_s)) return;
   for (const auto& e : recent_)
     if (e->time_s == time_s) return;
-  if (pending_.valid()) keep(pending_.get());  // one at a time; keep what the last one made
-  pending_time_ = time_s;
-  pending_ = worker().submit([this, time_s] { return evaluate_spectra(time_s); }).share();
+  // The finished ones join the recent times, in the order they were asked for; at most kRecentTimes wait.
+  while (!pending_.empty() &&
+         (pending_.size() >= kRecentTimes ||
+          pending_.front()->fields.wait_for(std::chrono::seconds(0)) == std::future_status::ready)) {
+    keep(fields_of(*pending_.front()));
+    pending_.erase(pending_.begin());
+  }
+  auto pending = std::make_shared<Pending>();
+  pending->time_s = time_s;
+  pending_.push_back(pending);
+  lane().submit([this, pending] { fields_of(*pending); }, due_s);
 }
 
 bool WaveQuery::ready(double time_s) const {
@@ -236,11 +259,12 @@ bool WaveQuery::ready(double time_s) const {
   if (springs_) return false;
   for (const auto& e : recent_)
     if (e->time_s == time_s) return true;
-  return pending_.valid() && pending_time_ == time_s &&
-         pending_.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
+  const std::shared_ptr<Pending> pending = pending_at(time_s);
+  return pending && pending->fields.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
 }
 
-WaveQuery::HeightsAhead WaveQuery::heights_ahead(double time_s, std::vector<glm::dvec2> points) {
+WaveQuery::HeightsAhead WaveQuery::heights_ahead(double time_s, std::vector<glm::dvec2> points,
+                                                 double due_s) {
   auto heights_of = [](const std::vector<WaveSample>& samples) {
     std::vector<double> out(samples.size());
     for (size_t i = 0; i < samples.size(); ++i) out[i] = samples[i].height;
@@ -253,24 +277,23 @@ WaveQuery::HeightsAhead WaveQuery::heights_ahead(double time_s, std::vector<glm:
     });
     return ahead;
   }
-  std::shared_future<std::shared_ptr<const Evaluation>> fields;
+  // The fields: a recent time's, or the pending ones (evaluated by this job if nobody has begun them).
+  std::shared_ptr<const Evaluation> recent;
   for (const auto& e : recent_)
-    if (e->time_s == time_s) {
-      std::promise<std::shared_ptr<const Evaluation>> made;
-      made.set_value(e);
-      fields = made.get_future().share();
-    }
-  if (!fields.valid()) {
-    prefetch(time_s);
-    fields = pending_;
+    if (e->time_s == time_s) recent = e;
+  std::shared_ptr<Pending> pending;
+  if (!recent) {
+    prefetch(time_s, due_s);
+    pending = pending_at(time_s);
   }
-  ahead.heights =
-      worker().submit([this, fields, points = std::move(points), heights_of, begun = ahead.begun] {
+  ahead.heights = lane().submit(
+      [this, recent, pending, points = std::move(points), heights_of, begun = ahead.begun] {
         if (begun->exchange(true)) return std::vector<double>{};  // claimed by the caller
         std::vector<WaveSample> out(points.size());
-        sample_range(*fields.get(), points, out, 0, points.size());
+        sample_range(recent ? *recent : *fields_of(*pending), points, out, 0, points.size());
         return heights_of(out);
-      });
+      },
+      due_s);
   return ahead;
 }
 
@@ -285,9 +308,9 @@ void WaveQuery::evaluate(double time_s) {
       current_ = e;
       return;
     }
-  if (pending_.valid() && pending_time_ == time_s) {
-    current_ = pending_.get();
-    pending_ = {};
+  if (const std::shared_ptr<Pending> pending = pending_at(time_s)) {
+    current_ = fields_of(*pending);  // evaluated here if the worker has not begun them (a catch-up)
+    std::erase(pending_, pending);
   } else {
     current_ = evaluate_spectra(time_s);
   }

@@ -65,6 +65,9 @@ struct WaveQueryOptions {
   // The height and rest position only (normal and velocity keep their defaults): half the fields to evaluate.
   // The bound's slope term then uses the spectrum's largest possible slope, Σ|a_k| k, not the grid's.
   bool heights_only = false;
+  // The thread that evaluates prefetch()'s times and samples heights_ahead()'s points; shared with the
+  // caller's other helpers when given (the bodies' sea and wake layers), else the query's own.
+  std::shared_ptr<BackgroundWorker> worker;
 };
 
 class WaveQuery {
@@ -82,7 +85,8 @@ class WaveQuery {
   // them ready (or waits only for the rest). The bodies' physics asks for its next time knot this way: the
   // FFTs run while the steps before the knot go on, instead of on one step. The answers are the same to
   // the bit. Nothing for model springs, whose grid steps in order.
-  void prefetch(double time_s);
+  // `due_s`: when the caller will need them, in its own clock; the worker does the soonest of its jobs first.
+  void prefetch(double time_s, double due_s = BackgroundWorker::kWhenever);
   // Whether sample() at `time_s` would answer without evaluating or waiting: the time is a recent one, or
   // its prefetch has finished. Always false for model springs.
   bool ready(double time_s) const;
@@ -98,7 +102,8 @@ class WaveQuery {
     std::shared_ptr<std::atomic<bool>> begun = std::make_shared<std::atomic<bool>>(false);
     bool claim() { return !begun->exchange(true); }
   };
-  HeightsAhead heights_ahead(double time_s, std::vector<glm::dvec2> points);
+  HeightsAhead heights_ahead(double time_s, std::vector<glm::dvec2> points,
+                             double due_s = BackgroundWorker::kWhenever);
 
   static constexpr size_t kRecentTimes = 5;  // the bodies' four knots in use and the next one
 
@@ -115,12 +120,24 @@ class WaveQuery {
     std::vector<std::unique_ptr<Grid>> grids;
     double max_slope = 0;
   };
+  // A prefetched time's fields: evaluated by whoever needs them first (the worker, a sampling job, or the
+  // caller in a catch-up that overtook the worker), the others wait for them.
+  struct Pending {
+    double time_s = 0;
+    std::atomic<bool> begun{false};
+    std::promise<std::shared_ptr<const Evaluation>> made;
+    std::shared_future<std::shared_ptr<const Evaluation>> fields = made.get_future().share();
+  };
+  // The pending fields, evaluated here if nobody has begun them.
+  std::shared_ptr<const Evaluation> fields_of(Pending& pending) const;
+  // The pending time `time_s`, or null.
+  std::shared_ptr<Pending> pending_at(double time_s) const;
+  WorkerLane& lane();
   void evaluate(double time_s);
   // Reads only what construction set, so it may run on another thread while the query answers.
   std::shared_ptr<const Evaluation> evaluate_spectra(double time_s) const;
   std::shared_ptr<const Evaluation> evaluate_springs(double time_s);
   void keep(std::shared_ptr<const Evaluation> evaluation);
-  BackgroundWorker& worker();
   glm::dvec2 displacement(const Evaluation& fields, glm::dvec2 p) const;
   double sea_scale(glm::dvec2 p) const;  // the random sea's height over the floor, 1 where it is deep
   // sample()'s answers for points[begin, end), from `fields`. Reads nothing that changes after
@@ -139,13 +156,14 @@ class WaveQuery {
   double slope_bound_ = 0;  // Σ |a_k| |k| over every mode: no slope of the surface exceeds it
   std::shared_ptr<const Evaluation> current_;              // what sample() answers from
   std::vector<std::shared_ptr<const Evaluation>> recent_;  // the last kRecentTimes, oldest first
-  // prefetch()'s, for pending_time_ (shared with heights_ahead()'s threads).
-  std::shared_future<std::shared_ptr<const Evaluation>> pending_;
-  double pending_time_ = 0;
+  // prefetch()'s times not yet kept among the recent ones, oldest first (shared with heights_ahead()'s jobs).
+  // A new prefetch does not wait for the ones before it: in a catch-up the worker runs behind the caller.
+  std::vector<std::shared_ptr<Pending>> pending_;
   double bound_height_ = 0, bound_displacement_ = 0, worst_case_height_ = 0;
-  // Evaluates prefetch()'s times and samples heights_ahead()'s points, in that order; made at the first of
-  // them. Last: its jobs read the rest, so it finishes them before the rest goes.
-  std::unique_ptr<BackgroundWorker> worker_;
+  // Evaluates prefetch()'s times and samples heights_ahead()'s points; made at the first of them (on
+  // options_.worker, or a worker of its own). Last: its jobs read the rest, so it waits for them before the
+  // rest goes.
+  std::unique_ptr<WorkerLane> lane_;
 };
 
 // Largest error of periodic Catmull-Rom interpolation of e^{iθm} (unit samples), |θ| <= π, and the

@@ -146,7 +146,8 @@ Result<std::unique_ptr<FloatingObjects>> FloatingObjects::create(
     auto wakes = VehicleWakes::create(scene, out->tracks_);
     if (!wakes) return wakes.error();
     out->wakes_first_step_ = wakes->first_step_for(out->start_s());
-    if (!wakes->empty()) out->wakes_ = std::make_unique<WakeHeights>(*wakes, scene.wakes.bodies_resolution);
+    if (!wakes->empty())
+      out->wakes_ = std::make_unique<WakeHeights>(*wakes, scene.wakes.bodies_resolution, out->helper_);
   }
   out->reset();
   return out;
@@ -161,7 +162,8 @@ void FloatingObjects::reset() {
         // ahead), where a second thread of normal priority would take the core the steps run on (issue 35).
         ocean::WaveQueryOptions{.threads = 1,
                                 .max_wavenumber = ocean::lattice_wavenumber(ocean::LocalHeightsOptions{}),
-                                .heights_only = true});
+                                .heights_only = true,
+                                .worker = helper_});
   size_t h = 0;
   for (size_t o = 0; o < scene_.objects.size(); ++o) {
     const scene::Object& object = scene_.objects[o];

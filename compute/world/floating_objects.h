@@ -97,6 +97,10 @@ class FloatingObjects {
   std::vector<physics::TriangleMesh> hulls_;          // floating objects', in scene order
   std::vector<physics::TriangleMesh> vehicle_hulls_;  // surface vehicles', in scene order
   physics::FloorHeight floor_;                        // world y of the sea floor the floating objects rest on
+  // The one thread that works ahead for the steps: the sea's next knots and their lattices, the wake layers'
+  // next step, soonest due first. One, not one each: with two, both cores of a two-core machine were taken
+  // from the steps whenever a knot and a wake step ran together (issue 35's worst frames).
+  std::shared_ptr<BackgroundWorker> helper_ = std::make_shared<BackgroundWorker>();
   std::shared_ptr<ocean::WaveQuery> sea_;  // shared by every body's LocalHeights: one evaluation per knot
   std::vector<Body> bodies_;
   std::vector<Vehicle> vehicles_;

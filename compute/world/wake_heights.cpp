@@ -25,8 +25,8 @@ double row_sum(const std::array<double, 4>& w, const double* row) {
 
 }  // namespace
 
-WakeHeights::WakeHeights(VehicleWakes wakes, uint32_t resolution)
-    : wakes_(std::move(wakes)), params_(coarse(wakes_.params(), resolution)) {
+WakeHeights::WakeHeights(VehicleWakes wakes, uint32_t resolution, std::shared_ptr<BackgroundWorker> worker)
+    : wakes_(std::move(wakes)), params_(coarse(wakes_.params(), resolution)), lane_(std::move(worker)) {
   if (wakes_.empty()) return;
   const size_t hulls = wakes_.sources(0.0).size();
   views_.push_back({kNoVehicle, {}, {}});
@@ -37,13 +37,15 @@ WakeHeights::WakeHeights(VehicleWakes wakes, uint32_t resolution)
 }
 
 void WakeHeights::restart(long long first_step) {
-  if (next_.valid()) next_.get();  // a step of the states being replaced
+  if (next_ && next_->begun.exchange(true)) next_done_.get();  // the worker is stepping the states replaced
+  next_ = {};
+  next_done_ = {};
   for (Layer& l : layers_) {
     // One thread: the layers step on the background worker (next_), where a second thread of normal
     // priority would take the core the bodies' steps run on.
     l.layer = std::make_unique<ocean::DynamicLayerCpu>(params_, 1);
     l.layer->set_foam(false);  // the bodies feel heights only
-    l.before = l.layer->state();
+    l.previous = nullptr;      // set by the first step
   }
   first_step_ = first_step;
   steps_done_ = first_step;
@@ -55,10 +57,18 @@ glm::ivec2 WakeHeights::window_for(glm::dvec2 centre) const {
           int(std::floor(centre.y / params_.cell_m)) - half};
 }
 
-WakeHeights::Stepped WakeHeights::copies() const {
-  Stepped out;
-  for (const Layer& l : layers_) out.push_back(std::make_unique<ocean::DynamicLayerCpu>(*l.layer));
-  return out;
+void WakeHeights::run(NextStep& next) const {
+  copy_layers(next.layers);
+  next.layers = step_layers(std::move(next.layers), next.origin, next.step);
+}
+
+void WakeHeights::copy_layers(Stepped& into) const {
+  into.resize(layers_.size());
+  for (size_t h = 0; h < layers_.size(); ++h)
+    if (into[h])
+      *into[h] = *layers_[h].layer;
+    else
+      into[h] = std::make_unique<ocean::DynamicLayerCpu>(*layers_[h].layer);
 }
 
 WakeHeights::Stepped WakeHeights::step_layers(Stepped layers, glm::ivec2 origin, long long step) const {
@@ -71,17 +81,32 @@ WakeHeights::Stepped WakeHeights::step_layers(Stepped layers, glm::ivec2 origin,
 }
 
 void WakeHeights::step_all(glm::dvec2 centre) {
-  for (Layer& l : layers_) {
-    l.before = l.layer->state();
-  }
   Stepped stepped;
-  if (next_.valid()) {
-    stepped = next_.get();
-  } else {  // a catch-up: the layers themselves step (no other thread holds them)
-    for (Layer& l : layers_) stepped.push_back(std::move(l.layer));
-    stepped = step_layers(std::move(stepped), window_for(centre), steps_done_);
+  if (next_) {
+    if (next_->begun.exchange(true))
+      next_done_.get();  // the worker has it
+    else
+      run(*next_);  // not begun: the worker runs behind (a catch-up); its job will find it taken
+    stepped = std::move(next_->layers);
+    next_ = {};
+    next_done_ = {};
+  } else {  // the first step after a restart: nothing was begun ahead
+    NextStep now;
+    now.layers = std::move(spare_);
+    now.origin = window_for(centre);
+    now.step = steps_done_;
+    run(now);
+    stepped = std::move(now.layers);
   }
-  for (size_t h = 0; h < layers_.size(); ++h) layers_[h].layer = std::move(stepped[h]);
+  // Three states per layer turn round, none copied here: the one before the last step is free for the next
+  // step to be copied into (copying a stepped state on this thread read it from the worker's core: 1-2 ms).
+  spare_.resize(layers_.size());
+  for (size_t h = 0; h < layers_.size(); ++h) {
+    Layer& l = layers_[h];
+    spare_[h] = std::move(l.previous);
+    l.previous = std::move(l.layer);
+    l.layer = std::move(stepped[h]);
+  }
   ++steps_done_;
 }
 
@@ -91,11 +116,20 @@ void WakeHeights::advance(double t, glm::dvec2 centre, long long first_step) {
   const long long k = std::max(wakes_.step_at(t), first_step);
   if (steps_done_ < 0 || first_step != first_step_ || steps_done_ > k + 1) restart(first_step);
   while (steps_done_ < k + 1) step_all(centre);
-  if (!next_.valid())  // copied here, so the other thread never reads a layer this one replaces
-    next_ =
-        worker_.submit([this, origin = window_for(centre), step = steps_done_, layers = copies()]() mutable {
-          return step_layers(std::move(layers), origin, step);
-        });
+  // The next step, on the worker: it copies the layers over the spares there (this thread only reads the
+  // layers until it takes the result, in step_all), then steps the copies. Due when t reaches the end of
+  // this interval.
+  if (!next_) {
+    next_ = std::make_shared<NextStep>();
+    next_->layers = std::move(spare_);
+    next_->origin = window_for(centre);
+    next_->step = steps_done_;
+    next_done_ = lane_.submit(
+        [this, next = next_] {
+          if (!next->begun.exchange(true)) run(*next);
+        },
+        double(steps_done_) * wakes_.step_s());
+  }
   const double dt = wakes_.step_s();
   const double s = std::clamp((t - double(k) * dt) / dt, 0.0, 1.0), s2 = s * s, s3 = s2 * s;
   // Cubic Hermite through (h, dh/dt) at both ends, and its derivative.
@@ -124,7 +158,7 @@ void WakeHeights::refresh(View& v, size_t w) const {
   double height = 0, rate = 0;
   for (const Layer& l : layers_) {
     if (l.vehicle == v.skip) continue;
-    const std::complex<double> a = l.before[c], b = l.layer->state()[c];
+    const std::complex<double> a = l.previous->state()[c], b = l.layer->state()[c];
     height += q.h[0] * a.real() + q.h[1] * a.imag() + q.h[2] * b.real() + q.h[3] * b.imag();
     rate += q.r[0] * a.real() + q.r[1] * a.imag() + q.r[2] * b.real() + q.r[3] * b.imag();
   }

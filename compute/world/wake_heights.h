@@ -33,7 +33,9 @@ class WakeHeights {
   static constexpr size_t kNoVehicle = std::numeric_limits<size_t>::max();
 
   // Empty (no layers) when `wakes` is; `resolution` cells per side over the wakes' window width.
-  WakeHeights(VehicleWakes wakes, uint32_t resolution);
+  // `worker`: the thread the layers step on ahead of time, shared with the caller's other helpers (null: one
+  // of its own).
+  WakeHeights(VehicleWakes wakes, uint32_t resolution, std::shared_ptr<BackgroundWorker> worker = nullptr);
   WakeHeights(const WakeHeights&) = delete;  // its next step's thread holds `this`
   WakeHeights& operator=(const WakeHeights&) = delete;
 
@@ -59,7 +61,7 @@ class WakeHeights {
   struct Layer {
     size_t vehicle;
     std::unique_ptr<ocean::DynamicLayerCpu> layer;
-    std::vector<std::complex<double>> before;  // (h, dh/dt) at step steps_done_ - 1, per storage index
+    std::unique_ptr<ocean::DynamicLayerCpu> previous;  // the layer at step steps_done_ - 1
   };
   // The cubic Hermite weights of the last advance's time within its interval: h00, h10·dt, h01, h11·dt for
   // the height and their time derivatives for the rate.
@@ -78,7 +80,18 @@ class WakeHeights {
   using Stepped = std::vector<std::unique_ptr<ocean::DynamicLayerCpu>>;
   void restart(long long first_step);
   glm::ivec2 window_for(glm::dvec2 centre) const;
-  Stepped copies() const;
+  // The layers copied into `into` (its objects reused: copy-assigned, so no allocation once they have the
+  // size), or new copies where it has none.
+  void copy_layers(Stepped& into) const;
+  // The layers' next step: the spares, copied over from the layers and stepped by whoever begins it (the
+  // worker, or this thread in a catch-up that overtook it).
+  struct NextStep {
+    std::atomic<bool> begun{false};
+    Stepped layers;
+    glm::ivec2 origin{0};
+    long long step = 0;
+  };
+  void run(NextStep& next) const;
   // `layers` stepped once from step `step` with their window at `origin`. Reads nothing else of this but
   // wakes_ and params_, which never change, so it may run on another thread.
   Stepped step_layers(Stepped layers, glm::ivec2 origin, long long step) const;
@@ -104,14 +117,19 @@ class WakeHeights {
   Weights weights_;
   uint32_t advances_ = 0;      // stamps View::fresh
   glm::ivec2 origin_{0};       // the window's first cell
-  long long steps_done_ = -1;  // the layers' state is at this step (the step before is in Layer::before)
+  long long steps_done_ = -1;  // the layers' state is at this step (the step before is in Layer::previous)
   long long first_step_ = 0;
   // The layers' next step, begun on another thread when an advance has brought them to steps_done_, with
   // the window where the bodies were then: the FFTs of a step run while the bodies take the 120 Hz steps
   // before it, instead of on one of them. The window thus trails the bodies by one step of the layer.
-  std::future<Stepped> next_;
-  // Runs next_. Last: its job reads the rest, so it finishes before the rest goes.
-  BackgroundWorker worker_;
+  std::shared_ptr<NextStep> next_;
+  std::future<void> next_done_;  // the worker's job for next_
+  // The layers two steps old, kept for the next step to copy into: a fresh copy each step was allocated,
+  // faulted in and freed on the stepping thread, 3-7 ms every 0.1 s (issue 35's worst frame).
+  Stepped spare_;
+  // Runs next_, on the worker given (shared with the bodies' sea) or its own. Last: its jobs read the rest,
+  // so it waits for them before the rest goes.
+  WorkerLane lane_;
 };
 
 }  // namespace lagoon::world

@@ -72,6 +72,19 @@ void BM_WaveQuerySample(benchmark::State& state) {
 }
 BENCHMARK(BM_WaveQuerySample)->Unit(benchmark::kMillisecond);
 
+// One knot of the sea the bodies feel (world/floating_objects.cpp's query: band-limited to the lattice's
+// waves, heights and displacements only): the fields a new time costs, at a new time each call.
+void BM_WaveQueryKnot(benchmark::State& state) {
+  const ocean::OceanParams p;
+  ocean::WaveQuery query(
+      p, ocean::make_cascade_spectra(p),
+      ocean::WaveQueryOptions{
+          .threads = 1, .max_wavenumber = ocean::lattice_wavenumber({}), .heights_only = true});
+  double t = 3.0;
+  for (auto _ : state) benchmark::DoNotOptimize(query.sample(t += 0.2, 1.5, -2.5));
+}
+BENCHMARK(BM_WaveQueryKnot)->Unit(benchmark::kMillisecond);
+
 // A body's heights from its local lattice (ocean/local_heights.h): the bicubic lookup a hull's vertices make.
 void BM_LocalHeights(benchmark::State& state) {
   const ocean::OceanParams p;

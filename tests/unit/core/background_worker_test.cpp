@@ -1,6 +1,7 @@
 // BackgroundWorker (core/background_worker.h): jobs run in the order they were handed over, on one thread
-// other than the caller's, their results and exceptions come back through the futures, and the worker does
-// every queued job before it goes (its jobs read their owner, which must not go first).
+// other than the caller's, soonest due first; their results and exceptions come back through the futures,
+// and the worker does every queued job before it goes (its jobs read their owner, which must not go first).
+// WorkerLane: owners sharing one worker, each waiting for its own jobs when it goes.
 #include "core/background_worker.h"
 
 #include <gtest/gtest.h>
@@ -9,7 +10,9 @@
 #include <chrono>
 #include <future>
 #include <stdexcept>
+#include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace lagoon::test {
@@ -51,6 +54,55 @@ TEST(BackgroundWorker, QueuedJobsAreDoneBeforeItGoesAndDroppedFuturesDoNotWait) 
     EXPECT_LT(done.load(), 30) << "the first job still sleeps: submit must not have waited for it";
   }
   EXPECT_EQ(done.load(), 30);
+}
+
+// Holds a worker's thread until released (or 10 s, so a broken test fails instead of hanging).
+struct Blocker {
+  std::promise<void> release;
+  std::shared_future<void> released = release.get_future().share();
+  void block(BackgroundWorker& worker) {
+    std::promise<void> started;
+    std::future<void> running = started.get_future();
+    worker.post([&started, r = released] {
+      started.set_value();
+      r.wait_for(std::chrono::seconds(10));
+    });
+    running.wait();
+  }
+};
+
+TEST(BackgroundWorker, TheSoonestDueJobGoesFirstAndEqualOnesInTheirOrder) {
+  BackgroundWorker worker;
+  Blocker blocker;
+  blocker.block(worker);  // the rest queue up behind it
+  std::vector<std::string> order;
+  std::vector<std::future<void>> done;
+  const std::pair<const char*, double> jobs[] = {{"3", 3.0},  {"never said", BackgroundWorker::kWhenever},
+                                                 {"1a", 1.0}, {"2", 2.0},
+                                                 {"1b", 1.0}, {"-5", -5.0}};
+  for (const auto& [name, due] : jobs)
+    done.push_back(worker.submit([&order, n = std::string(name)] { order.push_back(n); }, due));
+  blocker.release.set_value();
+  for (auto& d : done) d.get();
+  EXPECT_EQ(order, (std::vector<std::string>{"-5", "1a", "1b", "2", "3", "never said"}));
+}
+
+TEST(WorkerLane, LanesShareOneThreadAndEachWaitsForItsOwnJobsWhenItGoes) {
+  auto worker = std::make_shared<BackgroundWorker>();
+  WorkerLane a(worker);
+  std::atomic<bool> finished{false};
+  std::thread::id b_ran;
+  {
+    WorkerLane b(worker);
+    b.submit([&] {
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+      b_ran = std::this_thread::get_id();
+      finished = true;
+    });  // the future dropped: only the lane waits
+  }
+  EXPECT_TRUE(finished.load()) << "the lane went before its job was done";
+  EXPECT_EQ(a.submit([] { return std::this_thread::get_id(); }).get(), b_ran) << "one thread for both lanes";
+  EXPECT_NE(b_ran, std::this_thread::get_id());
 }
 
 }  // namespace

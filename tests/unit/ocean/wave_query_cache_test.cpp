@@ -1,8 +1,12 @@
 // WaveQuery's recent times and prefetch (ocean/wave_query.h): a time evaluated on another thread, or kept
 // from before, answers exactly as a query that evaluates it afresh. The bodies' physics relies on this: its
-// knots are prefetched, and a frame must not depend on how it was reached.
+// knots are prefetched, and a frame must not depend on how it was reached, nor on which thread got there
+// first.
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <future>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -102,6 +106,40 @@ TEST(WaveQueryCache, ALargeBatchSplitBetweenThreadsAnswersAsOnePointAtATime) {
   std::vector<ocean::WaveSample> strided;
   for (int i = 0; i < 50000; i += 997) strided.push_back(batch[size_t(i)]);
   expect_same(strided, one_by_one, "batch against single points");
+}
+
+// In a catch-up the caller runs ahead of the worker (on two cores it shares with the wake layers): a time
+// prefetched but not begun is evaluated by whoever needs it first, here the caller, without waiting for the
+// worker, and later prefetches do not wait for the earlier ones. The answers are still a fresh query's.
+TEST(WaveQueryCache, ACallerThatOvertakesTheWorkerEvaluatesThePrefetchedTimeItself) {
+  const std::vector<glm::dvec2> at = points();
+  auto worker = std::make_shared<BackgroundWorker>();
+  std::promise<void> release;
+  std::shared_future<void> released = release.get_future().share();
+  std::promise<void> started;
+  worker->post([&started, released] {
+    started.set_value();
+    released.wait_for(std::chrono::seconds(10));  // a broken query fails the test rather than hanging it
+  });
+  started.get_future().wait();
+  ocean::WaveQueryOptions options;
+  options.worker = worker;
+  ocean::WaveQuery query(small_sea(), {}, options);
+  query.prefetch(2.6, 1.0);
+  query.prefetch(3.1, 2.0);  // does not wait for 2.6, which nobody has begun
+  auto ahead = query.heights_ahead(3.1, at, 2.0);
+  EXPECT_FALSE(query.ready(2.6));
+  const auto blocked_until = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+  const auto got = query.sample(2.6, at);
+  const auto next = query.sample(3.1, at);
+  EXPECT_LT(std::chrono::steady_clock::now(), blocked_until) << "the caller waited for the held worker";
+  EXPECT_EQ(released.wait_for(std::chrono::seconds(0)), std::future_status::timeout);
+  EXPECT_TRUE(ahead.claim()) << "the worker is held: the caller may sample the knot itself";
+  release.set_value();
+  ocean::WaveQuery fresh(small_sea());
+  expect_same(got, fresh.sample(2.6, at), "t = 2.6");
+  expect_same(next, fresh.sample(3.1, at), "t = 3.1");
+  EXPECT_TRUE(ahead.heights.get().empty()) << "claimed by the caller: the worker's job gives nothing";
 }
 
 }  // namespace

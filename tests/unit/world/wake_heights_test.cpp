@@ -6,8 +6,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <complex>
+#include <future>
+#include <memory>
 #include <vector>
 
 #include "fft/cpu_fft.h"
@@ -140,6 +143,38 @@ TEST(WakeHeights, ACellLookedUpBeforeAnAdvanceAnswersAsAFreshLayerAfterIt) {
     }
   for (const glm::dvec2& p : at) EXPECT_EQ(used.rate(p), fresh.rate(p)) << p.x << ", " << p.y;
   EXPECT_GT(largest, 1e-3) << "the boats' wakes are in the window";
+}
+
+// The layers' next step runs on the worker; when the caller needs it before the worker has begun it (a
+// catch-up, or a worker busy with the sea's knots), the caller steps it itself, without waiting. Either way
+// the same states to the bit.
+TEST(WakeHeights, AStepTheWorkerHasNotBegunIsSteppedByTheCallerToTheSameBits) {
+  const scene::Scene s = shipped_scene("default", {"vehicles=[" + kBoat + "," + kCrossing + "]"});
+  auto worker = std::make_shared<BackgroundWorker>();
+  std::promise<void> release, started;
+  std::shared_future<void> released = release.get_future().share();
+  worker->post([&started, released] {
+    started.set_value();
+    released.wait_for(std::chrono::seconds(10));  // a broken caller fails the test rather than hanging it
+  });
+  started.get_future().wait();
+  world::WakeHeights held(wakes_of(s), 64, worker), free(wakes_of(s), 64);
+  const auto blocked_until = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+  for (double t = 4.0; t < 6.02; t += 1.0 / 60.0) {
+    held.advance(t, glm::dvec2(5, 5));
+    free.advance(t, glm::dvec2(5, 5));
+  }
+  EXPECT_LT(std::chrono::steady_clock::now(), blocked_until) << "the caller waited for the held worker";
+  EXPECT_EQ(released.wait_for(std::chrono::seconds(0)), std::future_status::timeout);
+  double largest = 0;
+  for (double x = -40; x <= 40; x += 2.7)
+    for (double z = -40; z <= 40; z += 3.1) {
+      ASSERT_EQ(held.height({x, z}), free.height({x, z})) << x << ", " << z;
+      ASSERT_EQ(held.rate({x, z}), free.rate({x, z})) << x << ", " << z;
+      largest = std::max(largest, std::abs(free.height({x, z})));
+    }
+  EXPECT_GT(largest, 1e-3) << "the boats' wakes are in the window";
+  release.set_value();
 }
 
 // The hulls' lattices ask for their points in one batch (add_heights): the batch must answer as height()
