@@ -183,30 +183,55 @@ std::shared_ptr<const WaveQuery::Evaluation> WaveQuery::evaluate_springs(double 
   return out;
 }
 
-std::shared_ptr<const WaveQuery::Evaluation> WaveQuery::evaluate_spectra(double time_s) const {
+int WaveQuery::field_count() const {
+  return options_.heights_only ? kDz + 1 : kFieldCount;  // Dx, height, Dz come first
+}
+
+std::shared_ptr<WaveQuery::Evaluation> WaveQuery::empty_evaluation(double time_s) const {
   auto out = std::make_shared<Evaluation>();
   out->time_s = time_s;
-  const int fields = options_.heights_only ? kDz + 1 : kFieldCount;  // Dx, height, Dz come first
   for (const CascadeSpectrum& s : spectra_) {
     auto grid = std::make_unique<Grid>();
     grid->n = s.resolution;
     grid->texel_m = s.patch_size_m / s.resolution;
-    auto values = evaluate_fields(s, time_s, std::span(kFields, size_t(fields)), fft_);
-    for (int f = 0; f < fields; ++f) grid->fields[f] = std::move(values[f]);
     out->grids.push_back(std::move(grid));
   }
+  return out;
+}
+
+// Piece p: cascade p / pairs, fields 2 (p % pairs) and the one after it, packed in one FFT as the whole
+// cascade's evaluation packs them (evaluate_fields), so the same numbers to the bit.
+void WaveQuery::evaluate_piece(Evaluation& evaluation, int piece) const {
+  const int fields = field_count(), pairs = (fields + 1) / 2;
+  const int cascade = piece / pairs, first = 2 * (piece % pairs), count = std::min(2, fields - first);
+  auto values = evaluate_fields(spectra_[size_t(cascade)], evaluation.time_s,
+                                std::span(kFields + first, size_t(count)), fft_);
+  for (int f = 0; f < count; ++f) evaluation.grids[size_t(cascade)]->fields[first + f] = std::move(values[f]);
+}
+
+std::shared_ptr<const WaveQuery::Evaluation> WaveQuery::evaluate_spectra(double time_s) const {
+  std::shared_ptr<Evaluation> out = empty_evaluation(time_s);
+  const int fields = field_count();
+  for (size_t c = 0; c < spectra_.size(); ++c) {  // every field of a cascade at once: its FFTs' threads
+    auto values = evaluate_fields(spectra_[c], time_s, std::span(kFields, size_t(fields)), fft_);
+    for (int f = 0; f < fields; ++f) out->grids[c]->fields[f] = std::move(values[f]);
+  }
+  finish(*out);
+  return out;
+}
+
+void WaveQuery::finish(Evaluation& out) const {
   if (options_.heights_only) {
-    out->max_slope = slope_bound_;
-    return out;
+    out.max_slope = slope_bound_;
+    return;
   }
   // Largest slope of the summed surface, bounded by the sum of each cascade's largest slope.
-  for (const auto& g : out->grids) {
+  for (const auto& g : out.grids) {
     double m = 0;
     for (size_t i = 0; i < g->fields[kSlopeX].size(); ++i)
       m = std::max(m, std::hypot(g->fields[kSlopeX][i], g->fields[kSlopeZ][i]));
-    out->max_slope += m;
+    out.max_slope += m;
   }
-  return out;
 }
 
 void WaveQuery::keep(std::shared_ptr<const Evaluation> evaluation) {
@@ -219,20 +244,48 @@ WorkerLane& WaveQuery::lane() {
   return *lane_;
 }
 
-std::shared_ptr<const WaveQuery::Evaluation> WaveQuery::fields_of(Pending& pending) const {
-  if (!pending.begun.exchange(true)) {
-    try {
-      pending.made.set_value(evaluate_spectra(pending.time_s));
-    } catch (...) {
-      pending.made.set_exception(std::current_exception());
+std::shared_ptr<WaveQuery::Pending> WaveQuery::begin_pending(double time_s) const {
+  auto pending = std::make_shared<Pending>();
+  pending->building = empty_evaluation(time_s);
+  pending->pieces = int(spectra_.size()) * ((field_count() + 1) / 2);
+  pending->left = pending->pieces;
+  return pending;
+}
+
+bool WaveQuery::take_piece(Pending& pending) const {
+  const int piece = pending.next.fetch_add(1);
+  if (piece >= pending.pieces) return false;
+  try {
+    evaluate_piece(*pending.building, piece);
+  } catch (...) {
+    std::lock_guard lock(pending.failed_mutex);
+    if (!pending.failed) pending.failed = std::current_exception();
+  }
+  if (pending.left.fetch_sub(1) == 1) {  // the last piece: every field is in
+    std::exception_ptr failed;
+    {
+      std::lock_guard lock(pending.failed_mutex);
+      failed = pending.failed;
+    }
+    if (failed) {
+      pending.made.set_exception(failed);
+    } else {
+      finish(*pending.building);
+      pending.made.set_value(pending.building);
     }
   }
-  return pending.fields.get();
+  return true;
+}
+
+std::shared_ptr<const WaveQuery::Evaluation> WaveQuery::fields_of(Pending& pending) const {
+  while (take_piece(pending)) {
+  }
+  return pending.fields.get();  // waits only for pieces other threads are in
 }
 
 std::shared_ptr<WaveQuery::Pending> WaveQuery::pending_at(double time_s) const {
   for (const auto& p : pending_)
-    if (p->time_s == time_s) return p;
+    if (p->time_s() == time_s) return p;
   return nullptr;
 }
 
@@ -248,10 +301,9 @@ void WaveQuery::prefetch(double time_s, double due_s) {
     keep(fields_of(*pending_.front()));
     pending_.erase(pending_.begin());
   }
-  auto pending = std::make_shared<Pending>();
-  pending->time_s = time_s;
+  std::shared_ptr<Pending> pending = begin_pending(time_s);
   pending_.push_back(pending);
-  lane().submit([this, pending] { fields_of(*pending); }, due_s);
+  for (int p = 0; p < pending->pieces; ++p) lane().submit([this, pending] { take_piece(*pending); }, due_s);
 }
 
 bool WaveQuery::ready(double time_s) const {

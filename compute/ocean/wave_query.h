@@ -22,11 +22,13 @@
 //   better (away from folding crests). worst_case_bound_m() gives the rigorous Σ |a_k| E(k), far larger.
 #pragma once
 #include <atomic>
+#include <exception>
 #include <future>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <span>
 #include <vector>
 
@@ -120,16 +122,30 @@ class WaveQuery {
     std::vector<std::unique_ptr<Grid>> grids;
     double max_slope = 0;
   };
-  // A prefetched time's fields: evaluated by whoever needs them first (the worker, a sampling job, or the
-  // caller in a catch-up that overtook the worker), the others wait for them.
+  // A prefetched time's fields, evaluated in pieces (a cascade's pair of fields packed in one FFT, about a
+  // millisecond each) by whoever takes them: the worker's jobs, a sampling job, or the caller in a
+  // catch-up that overtook the worker. No one thread carries a whole knot when the others need it.
   struct Pending {
-    double time_s = 0;
-    std::atomic<bool> begun{false};
+    std::shared_ptr<Evaluation> building;  // its grids made, their fields filled by the pieces
+    int pieces = 0;
+    std::atomic<int> next{0};  // the next piece to take
+    std::atomic<int> left{0};  // pieces not yet finished: the one that finishes the last hands them over
+    std::mutex failed_mutex;
+    std::exception_ptr failed;
     std::promise<std::shared_ptr<const Evaluation>> made;
     std::shared_future<std::shared_ptr<const Evaluation>> fields = made.get_future().share();
+    double time_s() const { return building->time_s; }
   };
-  // The pending fields, evaluated here if nobody has begun them.
+  std::shared_ptr<Pending> begin_pending(double time_s) const;
+  // Runs one piece not yet taken; false when none is left.
+  bool take_piece(Pending& pending) const;
+  // The pending fields, their pieces not yet taken evaluated here.
   std::shared_ptr<const Evaluation> fields_of(Pending& pending) const;
+  // The evaluation's grids, sized and without fields, and the piece count: (cascades) x (field pairs).
+  std::shared_ptr<Evaluation> empty_evaluation(double time_s) const;
+  int field_count() const;
+  void evaluate_piece(Evaluation& evaluation, int piece) const;
+  void finish(Evaluation& evaluation) const;  // the largest slope, once every field is in
   // The pending time `time_s`, or null.
   std::shared_ptr<Pending> pending_at(double time_s) const;
   WorkerLane& lane();

@@ -37,9 +37,10 @@ WakeHeights::WakeHeights(VehicleWakes wakes, uint32_t resolution, std::shared_pt
 }
 
 void WakeHeights::restart(long long first_step) {
-  if (next_ && next_->begun.exchange(true)) next_done_.get();  // the worker is stepping the states replaced
-  next_ = {};
-  next_done_ = {};
+  for (size_t h = 0; h < next_.size(); ++h)  // a step of the states being replaced: dropped
+    if (next_[h]->begun.exchange(true) && next_done_[h].valid()) next_done_[h].get();
+  next_.clear();
+  next_done_.clear();
   for (Layer& l : layers_) {
     // One thread: the layers step on the background worker (next_), where a second thread of normal
     // priority would take the core the bodies' steps run on.
@@ -58,46 +59,33 @@ glm::ivec2 WakeHeights::window_for(glm::dvec2 centre) const {
 }
 
 void WakeHeights::run(NextStep& next) const {
-  copy_layers(next.layers);
-  next.layers = step_layers(std::move(next.layers), next.origin, next.step);
+  const ocean::DynamicLayerCpu& from = *layers_[next.hull].layer;
+  if (next.layer)
+    *next.layer = from;
+  else
+    next.layer = std::make_unique<ocean::DynamicLayerCpu>(from);
+  const std::vector<ocean::WakeSource> sources = wakes_.sources(double(next.step) * wakes_.step_s());
+  next.layer->set_window(next.origin);
+  next.layer->step(wakes_.step_s(), std::span(&sources[next.hull], 1));
 }
 
-void WakeHeights::copy_layers(Stepped& into) const {
-  into.resize(layers_.size());
-  for (size_t h = 0; h < layers_.size(); ++h)
-    if (into[h])
-      *into[h] = *layers_[h].layer;
+WakeHeights::Stepped WakeHeights::take_next() {
+  Stepped stepped;
+  for (size_t h = 0; h < next_.size(); ++h) {
+    if (next_[h]->begun.exchange(true))
+      next_done_[h].get();  // the worker has it
     else
-      into[h] = std::make_unique<ocean::DynamicLayerCpu>(*layers_[h].layer);
-}
-
-WakeHeights::Stepped WakeHeights::step_layers(Stepped layers, glm::ivec2 origin, long long step) const {
-  const std::vector<ocean::WakeSource> sources = wakes_.sources(double(step) * wakes_.step_s());
-  for (size_t h = 0; h < layers.size(); ++h) {
-    layers[h]->set_window(origin);
-    layers[h]->step(wakes_.step_s(), std::span(&sources[h], 1));
+      run(*next_[h]);  // not begun: the worker runs behind (a catch-up); its job will find it taken
+    stepped.push_back(std::move(next_[h]->layer));
   }
-  return layers;
+  next_.clear();
+  next_done_.clear();
+  return stepped;
 }
 
 void WakeHeights::step_all(glm::dvec2 centre) {
-  Stepped stepped;
-  if (next_) {
-    if (next_->begun.exchange(true))
-      next_done_.get();  // the worker has it
-    else
-      run(*next_);  // not begun: the worker runs behind (a catch-up); its job will find it taken
-    stepped = std::move(next_->layers);
-    next_ = {};
-    next_done_ = {};
-  } else {  // the first step after a restart: nothing was begun ahead
-    NextStep now;
-    now.layers = std::move(spare_);
-    now.origin = window_for(centre);
-    now.step = steps_done_;
-    run(now);
-    stepped = std::move(now.layers);
-  }
+  if (next_.empty()) begin_next(centre, false);  // the first step after a restart: this thread steps it
+  Stepped stepped = take_next();
   // Three states per layer turn round, none copied here: the one before the last step is free for the next
   // step to be copied into (copying a stepped state on this thread read it from the worker's core: 1-2 ms).
   spare_.resize(layers_.size());
@@ -110,26 +98,33 @@ void WakeHeights::step_all(glm::dvec2 centre) {
   ++steps_done_;
 }
 
+void WakeHeights::begin_next(glm::dvec2 centre, bool on_worker) {
+  spare_.resize(layers_.size());
+  for (size_t h = 0; h < layers_.size(); ++h) {
+    auto next = std::make_shared<NextStep>();
+    next->hull = h;
+    next->layer = std::move(spare_[h]);
+    next->origin = window_for(centre);
+    next->step = steps_done_;
+    next_.push_back(next);
+    // Due when t reaches the end of this interval.
+    next_done_.push_back(on_worker ? lane_.submit(
+                                         [this, next] {
+                                           if (!next->begun.exchange(true)) run(*next);
+                                         },
+                                         double(steps_done_) * wakes_.step_s())
+                                   : std::future<void>{});
+  }
+}
+
 void WakeHeights::advance(double t, glm::dvec2 centre, long long first_step) {
   if (layers_.empty()) return;
   // The interval [k, k + 1] steps holding t: the layers are brought to step k + 1, the state at k kept.
   const long long k = std::max(wakes_.step_at(t), first_step);
   if (steps_done_ < 0 || first_step != first_step_ || steps_done_ > k + 1) restart(first_step);
   while (steps_done_ < k + 1) step_all(centre);
-  // The next step, on the worker: it copies the layers over the spares there (this thread only reads the
-  // layers until it takes the result, in step_all), then steps the copies. Due when t reaches the end of
-  // this interval.
-  if (!next_) {
-    next_ = std::make_shared<NextStep>();
-    next_->layers = std::move(spare_);
-    next_->origin = window_for(centre);
-    next_->step = steps_done_;
-    next_done_ = lane_.submit(
-        [this, next = next_] {
-          if (!next->begun.exchange(true)) run(*next);
-        },
-        double(steps_done_) * wakes_.step_s());
-  }
+  // The next step, on the worker, while the bodies take the steps of this interval.
+  if (next_.empty()) begin_next(centre, true);
   const double dt = wakes_.step_s();
   const double s = std::clamp((t - double(k) * dt) / dt, 0.0, 1.0), s2 = s * s, s3 = s2 * s;
   // Cubic Hermite through (h, dh/dt) at both ends, and its derivative.

@@ -80,21 +80,23 @@ class WakeHeights {
   using Stepped = std::vector<std::unique_ptr<ocean::DynamicLayerCpu>>;
   void restart(long long first_step);
   glm::ivec2 window_for(glm::dvec2 centre) const;
-  // The layers copied into `into` (its objects reused: copy-assigned, so no allocation once they have the
-  // size), or new copies where it has none.
-  void copy_layers(Stepped& into) const;
-  // The layers' next step: the spares, copied over from the layers and stepped by whoever begins it (the
-  // worker, or this thread in a catch-up that overtook it).
+  // One layer's next step: a spare, copied over from the layer (copy-assigned, so no allocation once it has
+  // the size) and stepped by whoever begins it: the worker, or this thread in a catch-up that overtook it.
+  // One per layer, so that no piece of the helpers' work is longer than a layer's step (~1 ms).
   struct NextStep {
     std::atomic<bool> begun{false};
-    Stepped layers;
+    size_t hull = 0;
+    std::unique_ptr<ocean::DynamicLayerCpu> layer;  // the spare, then the step's result
     glm::ivec2 origin{0};
     long long step = 0;
   };
+  // Reads nothing of this but layers_[next.hull] (which this thread only reads until it takes the result),
+  // wakes_ and params_, so it may run on another thread.
   void run(NextStep& next) const;
-  // `layers` stepped once from step `step` with their window at `origin`. Reads nothing else of this but
-  // wakes_ and params_, which never change, so it may run on another thread.
-  Stepped step_layers(Stepped layers, glm::ivec2 origin, long long step) const;
+  // next_ for the step from steps_done_, handed to the worker or (on_worker false) left for take_next().
+  void begin_next(glm::dvec2 centre, bool on_worker);
+  // next_'s layers, stepped: by the worker, or here for what it has not begun.
+  Stepped take_next();
   void step_all(glm::dvec2 centre);
   View& view(size_t skip) const;
   // Sums cell `w` (window order) of `v` at the last advance's time.
@@ -122,8 +124,8 @@ class WakeHeights {
   // The layers' next step, begun on another thread when an advance has brought them to steps_done_, with
   // the window where the bodies were then: the FFTs of a step run while the bodies take the 120 Hz steps
   // before it, instead of on one of them. The window thus trails the bodies by one step of the layer.
-  std::shared_ptr<NextStep> next_;
-  std::future<void> next_done_;  // the worker's job for next_
+  std::vector<std::shared_ptr<NextStep>> next_;  // per layer; empty when none is begun ahead
+  std::vector<std::future<void>> next_done_;     // the worker's jobs for next_
   // The layers two steps old, kept for the next step to copy into: a fresh copy each step was allocated,
   // faulted in and freed on the stepping thread, 3-7 ms every 0.1 s (issue 35's worst frame).
   Stepped spare_;

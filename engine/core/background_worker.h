@@ -49,6 +49,21 @@ class BackgroundWorker {
     return result;
   }
 
+  // Runs the soonest queued job on the calling thread if it is due before `due_before`; false when none is.
+  // A loop that has overtaken its worker (a catch-up) takes one piece of the work it will soon need at a
+  // step, instead of waiting for all of it at once when it needs it.
+  bool help(double due_before) {
+    std::function<void()> job;
+    {
+      std::lock_guard lock(mutex_);
+      if (jobs_.empty() || !(jobs_.begin()->first.first < due_before)) return false;
+      job = std::move(jobs_.begin()->second);
+      jobs_.erase(jobs_.begin());
+    }
+    job();
+    return true;
+  }
+
   // Queues a job that must not throw (submit()'s packaged tasks do not).
   void post(std::function<void()> job, double due = kWhenever) {
     {

@@ -87,6 +87,26 @@ TEST(BackgroundWorker, TheSoonestDueJobGoesFirstAndEqualOnesInTheirOrder) {
   EXPECT_EQ(order, (std::vector<std::string>{"-5", "1a", "1b", "2", "3", "never said"}));
 }
 
+TEST(BackgroundWorker, ALoopHelpsWithTheSoonestJobDueBeforeItsLimitOnItsOwnThread) {
+  BackgroundWorker worker;
+  Blocker blocker;
+  blocker.block(worker);
+  std::vector<std::thread::id> ran(3);
+  std::vector<std::future<void>> done;
+  for (int i = 0; i < 3; ++i)
+    done.push_back(
+        worker.submit([&ran, i] { ran[size_t(i)] = std::this_thread::get_id(); }, i == 0 ? 5.0 : 1.0 + i));
+  EXPECT_FALSE(worker.help(2.0)) << "nothing is due before 2";
+  EXPECT_TRUE(worker.help(2.5)) << "the job due at 2";
+  EXPECT_EQ(ran[1], std::this_thread::get_id());
+  EXPECT_EQ(done[1].wait_for(std::chrono::seconds(0)), std::future_status::ready);
+  EXPECT_FALSE(worker.help(2.5)) << "the next is due at 3";
+  blocker.release.set_value();
+  for (auto& d : done) d.get();
+  EXPECT_NE(ran[0], std::this_thread::get_id());
+  EXPECT_NE(ran[2], std::this_thread::get_id());
+}
+
 TEST(WorkerLane, LanesShareOneThreadAndEachWaitsForItsOwnJobsWhenItGoes) {
   auto worker = std::make_shared<BackgroundWorker>();
   WorkerLane a(worker);
