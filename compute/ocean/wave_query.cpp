@@ -329,7 +329,7 @@ WaveQuery::HeightsAhead WaveQuery::heights_ahead(double time_s, std::vector<glm:
     });
     return ahead;
   }
-  // The fields: a recent time's, or the pending ones (evaluated by this job if nobody has begun them).
+  // The fields: a recent time's, or the pending ones (the pieces nobody has taken evaluated by this job).
   std::shared_ptr<const Evaluation> recent;
   for (const auto& e : recent_)
     if (e->time_s == time_s) recent = e;
