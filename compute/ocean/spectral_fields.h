@@ -42,6 +42,26 @@ std::vector<std::vector<double>> evaluate_fields_on_lattice(const CascadeSpectru
                                                             std::span<const Field> fields,
                                                             const InverseFft2d& fft, uint32_t stride);
 
+// What a mode's evaluation at any time is built from: h0(k), conj(h0(-k)), ω and the wave vector.
+struct ModeConstants {
+  std::complex<double> h0, h0m;
+  double omega = 0, kx = 0, kz = 0, inv_k = 0;  // inv_k = 1/|k| (0 for k = 0)
+};
+ModeConstants mode_constants(const CascadeSpectrum& spectrum, uint32_t ix, uint32_t iz);
+
+// A cascade's modes with any amplitude, listed once with their constants: evaluating a time then visits
+// these only, not every cell, and recomputes nothing but the phase (a band-limited spectrum, the bodies' sea,
+// fills a quarter of its grid; issue 35).
+struct SpectrumModes {
+  uint32_t resolution = 0;
+  std::vector<uint32_t> index;  // iz * N + ix, in the grid's order
+  std::vector<ModeConstants> constants;
+};
+SpectrumModes list_modes(const CascadeSpectrum& spectrum);
+// evaluate_fields(spectrum, ...)'s fields to the bit, from the listed modes.
+std::vector<std::vector<double>> evaluate_fields(const SpectrumModes& modes, double time_s,
+                                                 std::span<const Field> fields, const InverseFft2d& fft);
+
 // The spectral value of `field` at mode index (ix, iz) and time t (used by the evaluator and by tests).
 std::complex<double> field_spectrum(const CascadeSpectrum& spectrum, uint32_t ix, uint32_t iz, double time_s,
                                     Field field);

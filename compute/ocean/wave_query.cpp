@@ -120,6 +120,7 @@ WaveQuery::WaveQuery(const OceanParams& params, std::vector<CascadeSpectrum> spe
         kept.push_back(std::move(cut));
     spectra_ = std::move(kept);
   }
+  for (const CascadeSpectrum& s : spectra_) modes_.push_back(list_modes(s));
   // Interpolation bounds: every mode's largest amplitude |h0(k)| + |h0(-k)| times the 2-D error of its
   // exponential (tensor product: E(θx) + Λ·E(θz)), tabulated over θ to keep construction fast.
   constexpr int kTable = 512;
@@ -204,7 +205,7 @@ std::shared_ptr<WaveQuery::Evaluation> WaveQuery::empty_evaluation(double time_s
 void WaveQuery::evaluate_piece(Evaluation& evaluation, int piece) const {
   const int fields = field_count(), pairs = (fields + 1) / 2;
   const int cascade = piece / pairs, first = 2 * (piece % pairs), count = std::min(2, fields - first);
-  auto values = evaluate_fields(spectra_[size_t(cascade)], evaluation.time_s,
+  auto values = evaluate_fields(modes_[size_t(cascade)], evaluation.time_s,
                                 std::span(kFields + first, size_t(count)), fft_);
   for (int f = 0; f < count; ++f) evaluation.grids[size_t(cascade)]->fields[first + f] = std::move(values[f]);
 }
@@ -213,7 +214,7 @@ std::shared_ptr<const WaveQuery::Evaluation> WaveQuery::evaluate_spectra(double 
   std::shared_ptr<Evaluation> out = empty_evaluation(time_s);
   const int fields = field_count();
   for (size_t c = 0; c < spectra_.size(); ++c) {  // every field of a cascade at once: its FFTs' threads
-    auto values = evaluate_fields(spectra_[c], time_s, std::span(kFields, size_t(fields)), fft_);
+    auto values = evaluate_fields(modes_[c], time_s, std::span(kFields, size_t(fields)), fft_);
     for (int f = 0; f < fields; ++f) out->grids[c]->fields[f] = std::move(values[f]);
   }
   finish(*out);

@@ -167,6 +167,7 @@ class WaveQuery {
   std::unique_ptr<GerstnerSurface> swell_;     // swell trains over the cascades' sea
   std::shared_ptr<const Shoaling> sea_floor_;  // the random sea's depth-limited height, where a floor is
   std::vector<CascadeSpectrum> spectra_;
+  std::vector<SpectrumModes> modes_;  // spectra_'s modes, listed once: what each evaluation visits
   WaveQueryOptions options_;
   InverseFft2d fft_;        // plans shared by every evaluation, on any thread
   double slope_bound_ = 0;  // Σ |a_k| |k| over every mode: no slope of the surface exceeds it

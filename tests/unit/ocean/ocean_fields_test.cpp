@@ -5,6 +5,7 @@
 #include <random>
 
 #include "fft/cpu_fft.h"
+#include "ocean/band_limit.h"
 #include "ocean/spectral_fields.h"
 #include "support/fftw_reference.h"
 
@@ -32,6 +33,52 @@ TEST(CpuFft, MatchesFftw) {
       EXPECT_LT(relative_l2(a, b), 1e-13) << n;
     }
   }
+}
+
+// A band-limited spectrum fills only some rows: whole groups of the transform's lines are zeros (skipped),
+// others mix zero and non-zero rows. Every layout must still be FFTW's transform.
+TEST(CpuFft, RowsOfZerosMatchFftw) {
+  for (uint32_t n : {16u, 64u, 256u}) {
+    std::mt19937 rng(n + 7);
+    std::normal_distribution<double> g;
+    std::vector<std::complex<double>> a(size_t{n} * n * 2);
+    for (uint32_t b = 0; b < 2; ++b)
+      for (uint32_t row = 0; row < n; ++row) {
+        // The first quarter and the last eighth of the rows, and every fifth row of the rest of batch 1.
+        const bool filled = row < n / 4 || row >= n - n / 8 || (b == 1 && row % 5 == 0);
+        if (filled)
+          for (uint32_t i = 0; i < n; ++i) a[(size_t{b} * n + row) * n + i] = {g(rng), g(rng)};
+      }
+    auto b = a;
+    fft::CpuFft2d(n, true).transform(a, 2, 1);
+    fftw_2d(b, int(n), 2, true);
+    EXPECT_LT(relative_l2(a, b), 1e-13) << n;
+  }
+}
+
+// The bodies' query evaluates from the modes listed once (SpectrumModes): the same fields to the bit as the
+// evaluation that visits every cell, for a full and a band-limited spectrum, any fields and times.
+TEST(SpectralFields, ListedModesGiveTheGridsEvaluationToTheBit) {
+  ocean::OceanParams p;
+  p.cascades = {{300.0, 64}, {40.0, 32}};
+  const ocean::InverseFft2d fft = ocean::cpu_inverse_fft(1);
+  const Field fields[] = {Field::Dx, Field::Height, Field::Dz, Field::SlopeX, Field::VelocityY};
+  for (uint32_t c = 0; c < 2; ++c)
+    for (bool limited : {false, true}) {
+      ocean::CascadeSpectrum s = ocean::make_cascade_spectrum(p, c);
+      if (limited) s = ocean::band_limited(s, 0.6 * s.band.k_max);
+      const ocean::SpectrumModes modes = ocean::list_modes(s);
+      EXPECT_LT(modes.index.size(), size_t{s.resolution} * s.resolution) << "the zero modes are not listed";
+      for (double t : {0.0, 1.7, 123.4}) {
+        const auto want = ocean::evaluate_fields(s, t, fields, fft);
+        const auto got = ocean::evaluate_fields(modes, t, fields, fft);
+        ASSERT_EQ(got.size(), want.size());
+        for (size_t f = 0; f < want.size(); ++f)
+          for (size_t i = 0; i < want[f].size(); ++i)
+            ASSERT_EQ(got[f][i], want[f][i])
+                << "cascade " << c << ", field " << f << ", t " << t << ", " << i;
+      }
+    }
 }
 
 TEST(SpectralFields, HeightIsRealSoPackingTwoFieldsIsExact) {
