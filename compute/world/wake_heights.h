@@ -11,6 +11,7 @@
 // computed on another thread during the interval before it is needed (see next_).
 #pragma once
 #include <array>
+#include <atomic>
 #include <complex>
 #include <cstddef>
 #include <cstdint>
