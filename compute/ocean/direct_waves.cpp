@@ -47,7 +47,7 @@ std::optional<GerstnerParams> direct_wave_params(const OceanParams& params) {
   return std::nullopt;
 }
 
-std::optional<GerstnerParams> swell_wave_params(const OceanParams& params, double sea_significant_height_m) {
+std::optional<GerstnerParams> swell_wave_params(const OceanParams& params, const RandomSea& sea) {
   if (params.swell_waves.empty() || evaluated_directly(params) || params.model == SurfaceModel::Springs)
     return std::nullopt;
   GerstnerParams out{.dispersion = GerstnerDispersion::Deep,
@@ -55,7 +55,7 @@ std::optional<GerstnerParams> swell_wave_params(const OceanParams& params, doubl
                      .loop_period_s = params.loop_period_s,
                      .limit_steepness = false,
                      .breaker_index = params.breaker_index,
-                     .sea_significant_height_m = sea_significant_height_m};
+                     .sea = sea};
   if (params.shoaling) out.floor = params.floor;
   for (const GerstnerWaveSpec& w : params.swell_waves)
     out.waves.push_back(gerstner_wave(w, params.choppiness));
@@ -68,17 +68,16 @@ double sea_significant_height(const std::vector<CascadeSpectrum>& spectra) {
   return 4 * std::sqrt(variance);
 }
 
-std::shared_ptr<const Shoaling> sea_over_floor(const OceanParams& params, double sea_significant_height_m) {
+std::shared_ptr<const Shoaling> sea_over_floor(const OceanParams& params, const RandomSea& sea) {
   if (!params.floor || !params.shoaling || params.model == SurfaceModel::Springs) return nullptr;
-  auto sea = std::make_shared<Shoaling>(ShoalingInputs{.floor = params.floor,
-                                                       .breaker_index = params.breaker_index,
-                                                       .sea_significant_height_m = sea_significant_height_m});
-  return sea->active() ? sea : nullptr;
+  auto over = std::make_shared<Shoaling>(
+      ShoalingInputs{.floor = params.floor, .breaker_index = params.breaker_index, .sea = sea});
+  return over->active() ? over : nullptr;
 }
 
-std::optional<GerstnerParams> summed_wave_params(const OceanParams& params, double sea_significant_height_m) {
+std::optional<GerstnerParams> summed_wave_params(const OceanParams& params, const RandomSea& sea) {
   if (std::optional<GerstnerParams> own = direct_wave_params(params)) return own;
-  return swell_wave_params(params, sea_significant_height_m);
+  return swell_wave_params(params, sea);
 }
 
 std::vector<gpu::DirectWaveGpu> direct_waves_gpu(const GerstnerSurface& surface,

@@ -26,18 +26,18 @@ inline bool evaluated_directly(const OceanParams& params) {
 }
 
 // Swell trains over the random sea (OceanParams::swell_waves), or nothing: for the cascade models only. Their
-// table over the floor holds the random sea's depth-limited scale too, for its significant height
-// `sea_significant_height_m`.
-std::optional<GerstnerParams> swell_wave_params(const OceanParams& params, double sea_significant_height_m);
+// table over the floor holds the random sea's depth-limited scale and its lattices' moves too
+// (ocean/random_sea.h).
+std::optional<GerstnerParams> swell_wave_params(const OceanParams& params, const RandomSea& sea);
 // The waves the surface sums where it is drawn: the model's own, or the swell over the cascades.
-std::optional<GerstnerParams> summed_wave_params(const OceanParams& params, double sea_significant_height_m);
+std::optional<GerstnerParams> summed_wave_params(const OceanParams& params, const RandomSea& sea);
 
 // The random sea's significant height, 4σ over its spectra, as the renderer's shading takes it: what its
 // depth limit over the floor is computed from (ocean/shoaling.h).
 double sea_significant_height(const std::vector<CascadeSpectrum>& spectra);
-// The random sea's depth-limited scale over the floor on its own (when no waves are summed, whose table holds
-// it too), or null where the floor changes nothing.
-std::shared_ptr<const Shoaling> sea_over_floor(const OceanParams& params, double sea_significant_height_m);
+// The random sea over the floor on its own (when no waves are summed, whose table holds it too), or null
+// where the floor changes nothing.
+std::shared_ptr<const Shoaling> sea_over_floor(const OceanParams& params, const RandomSea& sea);
 
 // The waves as the shaders read them. With `at_time`, each phase is φ - ω t reduced to [-π, π] in double
 // (the frame's: the shaders add k·x0); without, the phase is φ and ω turns it (the step's).

@@ -55,9 +55,7 @@ GerstnerSurface::GerstnerSurface(GerstnerParams params) : params_(std::move(para
   if (params_.limit_steepness && sum > 1)
     for (double& q : q_) q /= sum;
   if (!params_.floor) return;
-  ShoalingInputs in{.floor = params_.floor,
-                    .breaker_index = params_.breaker_index,
-                    .sea_significant_height_m = params_.sea_significant_height_m};
+  ShoalingInputs in{.floor = params_.floor, .breaker_index = params_.breaker_index, .sea = params_.sea};
   if (params_.dispersion == GerstnerDispersion::FiniteDepth) in.reference_depth_m = params_.depth_m;
   for (size_t i = 0; i < k_.size(); ++i)
     in.waves.push_back({.k = k_[i],

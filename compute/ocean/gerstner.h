@@ -38,9 +38,9 @@ struct GerstnerParams {
   // The floor the waves feel (ocean/shoaling.h); none: depth_m everywhere.
   std::shared_ptr<const DepthProfile> floor;
   double breaker_index = kBreakerIndex;
-  // The random sea's significant height when these waves are swell over it: its depth-limited scale goes in
+  // The random sea when these waves are swell over it: its depth-limited scale and its lattices' moves go in
   // the same table (ocean/shoaling.h).
-  double sea_significant_height_m = 0;
+  RandomSea sea;
 };
 
 // One rest point x0 at time t: where it has moved and the surface's local frame there.

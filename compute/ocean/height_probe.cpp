@@ -72,18 +72,21 @@ HeightProbe::HeightProbe(const OceanParams& params, const std::vector<CascadeSpe
   }
 }
 
-void HeightProbe::phase_tables(glm::dvec2 p, std::vector<std::complex<double>>& table) const {
+void HeightProbe::phase_tables(const Shoaling::LatticeMoves& p,
+                               std::vector<std::complex<double>>& table) const {
   table.resize(2 * size_t{table_rows_});
   for (int axis = 0; axis < 2; ++axis)
-    for (const Axis& a : axes_) {
-      const double coordinate = axis == 0 ? p.x : p.y;
+    for (size_t c = 0; c < axes_.size(); ++c) {
+      const Axis& a = axes_[c];
+      const glm::dvec2 at = p.point[std::min(c, Shoaling::kMaxLattices - 1)];
+      const double coordinate = axis == 0 ? at.x : at.y;
       for (uint32_t r = 0; r < a.n; ++r)
         table[axis * size_t{table_rows_} + a.first_row + r] =
             std::polar(1.0, a.dk * (double(r) - double(a.n / 2)) * coordinate);
     }
 }
 
-HeightProbe::Answer HeightProbe::height(double time_s, double x, double z) const {
+HeightProbe::Answer HeightProbe::height(double time_s, double x, double z, const Shoaling* floor) const {
   // The evolved spectrum h̃(k,t) = h0(k)e^{-iωt} + conj(h0(-k))e^{iωt} (ocean/spectral_fields.h).
   std::vector<std::complex<double>> h(modes_.size());
   for (size_t i = 0; i < modes_.size(); ++i) {
@@ -93,7 +96,13 @@ HeightProbe::Answer HeightProbe::height(double time_s, double x, double z) const
   // Re Σ F(k)e^{ik·p} for the height (F = h̃) and the displacement (F = i k/|k| h̃, times λ).
   std::vector<std::complex<double>> table;
   auto sum = [&](glm::dvec2 p, bool displacement) {
-    phase_tables(p, table);
+    // Each cascade read where its lattice has moved over the floor (ocean/shoaling.h).
+    Shoaling::LatticeMoves moved;
+    if (floor)
+      moved = floor->lattice_moves(p);
+    else
+      moved.point.fill(p);
+    phase_tables(moved, table);
     glm::dvec3 out(0.0);  // (Dx, h, Dz)
     for (size_t i = 0; i < modes_.size(); ++i) {
       const Mode& m = modes_[i];

@@ -12,6 +12,7 @@
 
 #include "ocean/initial_spectrum.h"
 #include "ocean/ocean_params.h"
+#include "ocean/shoaling.h"
 
 namespace lagoon::ocean {
 
@@ -26,7 +27,9 @@ class HeightProbe {
   // Keeps the largest modes until those left out bound the height's error by `tolerance_m`.
   HeightProbe(const OceanParams& params, const std::vector<CascadeSpectrum>& spectra, double tolerance_m);
 
-  Answer height(double time_s, double x, double z) const;
+  // Over `floor` (the random sea's table, ocean/shoaling.h) each cascade is read where its lattice has
+  // moved; the height is not scaled by the depth (the caller's).
+  Answer height(double time_s, double x, double z, const Shoaling* floor = nullptr) const;
   size_t modes() const { return modes_.size(); }
 
  private:
@@ -41,7 +44,8 @@ class HeightProbe {
   };
   // e^{i·dk·m·p} for every cascade and m, along x and then z: 2·ΣN sine-cosine pairs per point instead
   // of one per mode.
-  void phase_tables(glm::dvec2 p, std::vector<std::complex<double>>& table) const;
+  // Each cascade at its own point (its lattice's move over the floor).
+  void phase_tables(const Shoaling::LatticeMoves& p, std::vector<std::complex<double>>& table) const;
   std::vector<Mode> modes_;
   std::vector<Axis> axes_;
   uint32_t table_rows_ = 0;

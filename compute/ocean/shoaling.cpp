@@ -11,7 +11,9 @@
 
 namespace {
 using sh_real = double;
+using sh_real2 = glm::dvec2;
 using sh_real4 = glm::dvec4;
+using glm::dot;
 using std::clamp;
 using std::floor;
 using std::max;
@@ -66,7 +68,7 @@ struct WaveTheory {
   WaveTheory(const ShoalingWave& w, double reference_depth_m)
       : k0(glm::length(w.k)),
         omega(w.omega),
-        top(std::min(std::numbers::pi / k0, reference_depth_m)),
+        top(std::min({std::numbers::pi / k0, reference_depth_m, w.own_depth_m})),
         k_top(Shoaling::wavenumber(omega, top)),
         cg_top(Shoaling::group_velocity(omega, top)) {}
   LocalTheory at(double h) const {
@@ -84,11 +86,23 @@ Shoaling::Shoaling(ShoalingInputs inputs) : inputs_(std::move(inputs)) {
   if (!floor || floor->rows == 0 || floor->columns() < 2 ||
       floor->columns() * floor->rows != floor->depth_m.size() || !(floor->spacing_m > 0))
     throw std::invalid_argument("Shoaling: the depth grid needs two samples or more along u, > 0 apart");
+  if (lattice_count() > kMaxLattices) throw std::invalid_argument("Shoaling: more cascades than it moves");
   const size_t n = samples(), waves = wave_count();
-  table_.assign(n * (1 + waves), glm::dvec4(0.0));
+  table_.assign(n * (1 + waves + lattice_count()), glm::dvec4(0.0));
+  // The random sea's lattices: their moves, not their heights (which stay the sea's depth-limited scale).
+  for (size_t c = 0; c < lattice_count(); ++c) {
+    if (glm::length(inputs_.sea.lattice[c].k) == 0) continue;  // no waves: not moved (zeros)
+    const size_t layer = lattice_layer(c);
+    const std::vector<double> a = floor->rows == 1 ? build_profile_wave(layer) : build_grid_wave(layer);
+    for (size_t j = 0; j < n; ++j) {
+      table_[layer * n + j].y = a[j];
+      const glm::dvec4& v = table_[layer * n + j];
+      if (v.x != 0 || a[j] != inputs_.sea.lattice[c].amplitude_m) active_ = true;
+    }
+  }
   std::vector<double> linear(n, 0.0);  // Σ H_i before breaking
   for (size_t i = 0; i < waves; ++i) {
-    const std::vector<double> a = floor->rows == 1 ? build_profile_wave(i) : build_grid_wave(i);
+    const std::vector<double> a = floor->rows == 1 ? build_profile_wave(1 + i) : build_grid_wave(1 + i);
     const ShoalingWave& w = inputs_.waves[i];
     for (size_t j = 0; j < n; ++j) {
       linear[j] += w.height_per_amplitude * a[j];
@@ -101,7 +115,7 @@ Shoaling::Shoaling(ShoalingInputs inputs) : inputs_(std::move(inputs)) {
   double base_steepness = 0;
   for (const ShoalingWave& w : inputs_.waves)
     base_steepness += w.steepness * glm::length(w.k) * w.amplitude_m;
-  const double hs = inputs_.sea_significant_height_m, gamma = inputs_.breaker_index;
+  const double hs = inputs_.sea.significant_height_m, gamma = inputs_.breaker_index;
   for (size_t j = 0; j < n; ++j) {
     const double h = floor->depth_m[j], cap = gamma * std::max(h, 0.0);
     // The waves' sum breaks too: where their summed height exceeds γ h each is scaled down alike.
@@ -127,14 +141,14 @@ Shoaling::Shoaling(ShoalingInputs inputs) : inputs_(std::move(inputs)) {
 // Straight, parallel contours: k_v is conserved (Snell's law), k_u = sqrt(k² - k_v²), the amplitude
 // a0 K_s K_r, and φ(s) = ∫ (k_u - k_u0) ds (trapezoids: the shaders interpolate linearly), 0 at the deepest
 // sample.
-std::vector<double> Shoaling::build_profile_wave(size_t i) {
-  const ShoalingWave& w = inputs_.waves[i];
+std::vector<double> Shoaling::build_profile_wave(size_t layer) {
+  const ShoalingWave& w = layer_wave(layer);
   const DepthProfile& floor = *inputs_.floor;
   const size_t n = samples();
   const WaveTheory theory(w, inputs_.reference_depth_m);
   const glm::dvec2 u = floor.axis, v = floor.across();
   const double ku0 = glm::dot(w.k, u), kv = glm::dot(w.k, v), cos0 = std::abs(ku0) / theory.k0;
-  glm::dvec4* row = &table_[(1 + i) * n];
+  glm::dvec4* row = &table_[layer * n];
   std::vector<double> amplitude(n, w.amplitude_m);
   for (size_t j = 0; j < n; ++j) {
     const double h = floor.depth_m[j];
@@ -160,8 +174,8 @@ std::vector<double> Shoaling::build_profile_wave(size_t i) {
 // Any floor on the grid: the phase S by fast marching |∇S| = k(h) from the cells where the wave is its own
 // (deeper than `top`) and from the grid's upwind edges, where S = k0·x; the local wavevector is k(h) along
 // ∇S; the amplitude by marching the energy flux along the rays in the same order: d ln(E c_g)/ds = -∇·k̂.
-std::vector<double> Shoaling::build_grid_wave(size_t wave) {
-  const ShoalingWave& w = inputs_.waves[wave];
+std::vector<double> Shoaling::build_grid_wave(size_t layer_index) {
+  const ShoalingWave& w = layer_wave(layer_index);
   const DepthProfile& floor = *inputs_.floor;
   const size_t nu = floor.columns(), nv = floor.rows, n = samples();
   const double d = floor.spacing_m;
@@ -234,7 +248,7 @@ std::vector<double> Shoaling::build_grid_wave(size_t wave) {
     return glm::dvec2((phase[j * nu + ir] - phase[j * nu + il]) / (d * double(ir - il)),
                       (phase[jr * nu + i] - phase[jl * nu + i]) / (d * double(jr - jl)));
   };
-  glm::dvec4* layer = &table_[(1 + wave) * n];
+  glm::dvec4* layer = &table_[layer_index * n];
   for (size_t j = 0; j < nv; ++j)
     for (size_t i = 0; i < nu; ++i) {
       const size_t c = j * nu + i;
@@ -317,12 +331,48 @@ glm::dvec4 Shoaling::ground(glm::dvec2 xz) const {
   return at(0, locate(xz));
 }
 
-glm::dvec4 Shoaling::wave(size_t i, glm::dvec2 xz) const {
-  const Where w = locate(xz);
+const ShoalingWave& Shoaling::layer_wave(size_t layer) const {
+  return layer <= wave_count() ? inputs_.waves[layer - 1] : inputs_.sea.lattice[layer - 1 - wave_count()];
+}
+
+glm::dvec4 Shoaling::wave_at(size_t layer, const ShoalingWave& wave, const Where& w) const {
   const DepthProfile& floor = *inputs_.floor;
-  const glm::dvec2 k = inputs_.waves[i].k;
-  return sh_wave_value(at(1 + i, w), w.beyond_u, w.beyond_v, glm::dot(k, floor.axis),
-                       glm::dot(k, floor.across()));
+  return sh_wave_value(at(layer, w), w.beyond_u, w.beyond_v, glm::dot(wave.k, floor.axis),
+                       glm::dot(wave.k, floor.across()));
+}
+
+glm::dvec4 Shoaling::wave(size_t i, glm::dvec2 xz) const {
+  return wave_at(1 + i, inputs_.waves[i], locate(xz));
+}
+
+glm::dvec4 Shoaling::lattice(size_t c, glm::dvec2 xz) const {
+  if (c >= lattice_count()) return glm::dvec4(0.0);
+  return wave_at(lattice_layer(c), inputs_.sea.lattice[c], locate(xz));
+}
+
+glm::dvec4 Shoaling::lattice_wave(size_t c) const {
+  const glm::dvec2 k = c < lattice_count() ? inputs_.sea.lattice[c].k : glm::dvec2(0.0);
+  const double k2 = glm::dot(k, k);
+  return k2 > 0 ? glm::dvec4(k, k / k2) : glm::dvec4(0.0);
+}
+
+Shoaling::LatticeMoves Shoaling::lattice_moves(glm::dvec2 xz) const {
+  LatticeMoves moves;
+  moves.point.fill(xz);
+  moves.grad.fill(glm::dvec2(0.0));
+  const Where w = locate(xz);
+  for (size_t c = 0; c < lattice_count(); ++c) {
+    const ShoalingWave& wave = inputs_.sea.lattice[c];
+    if (wave.k == glm::dvec2(0.0)) continue;
+    const glm::dvec4 value = wave_at(lattice_layer(c), wave, w);
+    moves.point[c] = sh_lattice_point(xz, value.x, lattice_wave(c));
+    moves.grad[c] = wavevector(value) - wave.k;
+  }
+  return moves;
+}
+
+glm::dvec2 Shoaling::lattice_slope(size_t c, const LatticeMoves& moves, glm::dvec2 slope) const {
+  return sh_lattice_slope(slope, moves.grad[c], lattice_wave(c));
 }
 
 glm::dvec2 Shoaling::wavevector(const glm::dvec4& value) const {

@@ -20,10 +20,15 @@
 // ∇·(E c_g k̂) = 0 marched along the rays in the same order (first-order accurate; where rays cross, behind
 // a shoal, the amplitude is held to 4 a0 and the phase is the first arrival's).
 //
-// The random sea (the FFT cascades) cannot bend its lattice waves; it is scaled by its depth-limited height
-// instead: a significant height of at most 0.6 h (Thornton & Guza 1983: H_rms <= 0.42 h in the surf zone),
-// falling to nothing at the shoreline.
+// The random sea (the FFT cascades) has one wavelength per lattice mode everywhere. Each cascade is read at a
+// moved point instead (shared/shoaling_math.h, sh_lattice_point): the rest position moved along the
+// cascade's representative wave (its modes' energy-weighted wavenumber and direction) by that wave's phase
+// offset over the floor, so that wave shortens, slows and turns exactly as a directly evaluated one, and the
+// cascade's other modes with it (approximately: each is shortened by its representative's ratio). Its height
+// is not raised by shoaling but limited by the depth: a significant height of at most 0.6 h (Thornton & Guza
+// 1983: H_rms <= 0.42 h in the surf zone), falling to nothing at the shoreline.
 #pragma once
+#include <array>
 #include <cmath>
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
@@ -43,6 +48,14 @@ struct ShoalingWave {
   double amplitude_m = 0;           // its own amplitude
   double height_per_amplitude = 2;  // crest-to-trough height / amplitude: 2 for cos θ, 1 for the sines'
   double steepness = 0;             // Q (horizontal displacement Q A)
+  double own_depth_m = HUGE_VAL;    // the depth its (k, ω) hold at (a finite-depth dispersion's D)
+};
+
+// The random sea over the floor: its significant height (its depth limit) and one representative wave per
+// cascade whose lattice is moved (k = 0: a cascade with no waves, not moved).
+struct RandomSea {
+  double significant_height_m = 0;  // 0 when there is none
+  std::vector<ShoalingWave> lattice;
 };
 
 struct ShoalingInputs {
@@ -50,10 +63,11 @@ struct ShoalingInputs {
   std::vector<ShoalingWave> waves;
   double reference_depth_m = HUGE_VAL;  // where the waves' (k, ω) hold: ocean.depth_m for finite-depth waves
   double breaker_index = kBreakerIndex;
-  double sea_significant_height_m = 0;  // of the random sea, 0 when there is none
+  RandomSea sea;
 };
 
-// The transformation: a table over the profile's samples, layer 0 for the floor, one layer per wave.
+// The transformation: a table over the profile's samples, layer 0 for the floor, one layer per wave, then one
+// per cascade of the random sea (its representative wave: lattice_layer(c)).
 class Shoaling {
  public:
   explicit Shoaling(ShoalingInputs inputs);
@@ -62,12 +76,27 @@ class Shoaling {
   bool active() const { return active_; }
   const DepthProfile& floor() const { return *inputs_.floor; }
   size_t wave_count() const { return inputs_.waves.size(); }
+  size_t lattice_count() const { return inputs_.sea.lattice.size(); }
+  size_t lattice_layer(size_t cascade) const { return 1 + wave_count() + cascade; }
   size_t samples() const { return inputs_.floor->depth_m.size(); }  // per layer
   // Layer 0 at (x, z): (depth m, the random sea's height scale, the waves' steepness scale, breaking ratio:
   // the summed linear height over γ h, >= 1 where the waves break).
   glm::dvec4 ground(glm::dvec2 xz) const;
   // Wave i at (x, z): (phase offset φ rad, amplitude m, k_u, k_v rad/m).
   glm::dvec4 wave(size_t i, glm::dvec2 xz) const;
+  // Cascade c's representative wave at (x, z), as wave() (zeros for a cascade with no waves).
+  glm::dvec4 lattice(size_t c, glm::dvec2 xz) const;
+  // Every cascade's move at the rest position xz (shared/shoaling_math.h), one lookup of the table's cell:
+  // where its textures are read, and ∇φ there (its local wavevector less its own).
+  static constexpr size_t kMaxLattices = 4;  // LAGOON_MAX_CASCADES
+  struct LatticeMoves {
+    std::array<glm::dvec2, kMaxLattices> point, grad;
+  };
+  LatticeMoves lattice_moves(glm::dvec2 xz) const;
+  // A slope of cascade c read at its moved point, as the surface's at the rest position (the chain rule).
+  glm::dvec2 lattice_slope(size_t c, const LatticeMoves& moves, glm::dvec2 slope) const;
+  // (k0, k0/|k0|²) of cascade c's representative wave, as the shaders take it (zeros: not moved).
+  glm::dvec4 lattice_wave(size_t c) const;
   // Its local wavevector in world (x, z).
   glm::dvec2 wavevector(const glm::dvec4& value) const;
   // The table, layer after layer (samples() texels each, rows of columns), for the GPU.
@@ -84,9 +113,12 @@ class Shoaling {
   };
   Where locate(glm::dvec2 xz) const;
   glm::dvec4 at(size_t layer, const Where& w) const;
-  // Each fills its wave's layer and returns the wave's amplitude before breaking at every sample.
-  std::vector<double> build_profile_wave(size_t i);  // one row: straight contours, closed form along u
-  std::vector<double> build_grid_wave(size_t i);     // rows: the eikonal and the energy flux on the grid
+  glm::dvec4 wave_at(size_t layer, const ShoalingWave& wave, const Where& w) const;
+  const ShoalingWave& layer_wave(size_t layer) const;
+  // Each fills a wave's layer (1 + i for wave i, lattice_layer(c) for a cascade's) and returns the wave's
+  // amplitude before breaking at every sample.
+  std::vector<double> build_profile_wave(size_t layer);  // one row: straight contours, closed form along u
+  std::vector<double> build_grid_wave(size_t layer);     // rows: the eikonal and the energy flux on the grid
   ShoalingInputs inputs_;
   std::vector<glm::dvec4> table_;
   bool active_ = false;

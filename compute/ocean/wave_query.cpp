@@ -13,6 +13,7 @@
 #include "ocean/catmull_rom.h"
 #include "ocean/direct_waves.h"
 #include "ocean/gerstner.h"
+#include "ocean/random_sea.h"
 #include "ocean/shoaling.h"
 #include "ocean/slope_statistics.h"
 #include "ocean/spectral_fields.h"
@@ -89,6 +90,7 @@ WaveQuery::WaveQuery(const OceanParams& params, std::vector<CascadeSpectrum> spe
       fft_(cpu_inverse_fft(options.threads)) {
   if (params.model == SurfaceModel::Springs) {
     springs_ = std::make_unique<SpringGrid>(params);
+    cascade_of_ = {0};  // its one grid, never moved (no floor table for the springs)
     return;
   }
   if (std::optional<GerstnerParams> direct = direct_wave_params(params)) {
@@ -102,22 +104,26 @@ WaveQuery::WaveQuery(const OceanParams& params, std::vector<CascadeSpectrum> spe
   if (spectra_.empty())
     for (uint32_t c = 0; c < params.cascades.size(); ++c)
       spectra_.push_back(make_cascade_spectrum(params, c));
-  // Over the floor the random sea keeps its waves but not their height (ocean/shoaling.h): its significant
-  // height is the whole spectrum's, as the renderer's. Swell trains over it are summed as model gerstner's
-  // waves, and their table holds the sea's scale too.
-  const double hs = sea_significant_height(spectra_);
-  if (std::optional<GerstnerParams> swell = swell_wave_params(params, hs)) {
+  // Over the floor the random sea's lattices move and its height is limited (ocean/shoaling.h): its
+  // significant height and representative waves are the whole spectrum's, as the renderer's. Swell trains
+  // over it are summed as model gerstner's waves, and their table holds the sea's too.
+  const RandomSea sea = random_sea(params, spectra_);
+  if (std::optional<GerstnerParams> swell = swell_wave_params(params, sea)) {
     std::erase_if(swell->waves, [&](const GerstnerWave& w) {
       return 2 * std::numbers::pi / w.wavelength_m >= options_.max_wavenumber;
     });
     if (!swell->waves.empty()) swell_ = std::make_unique<GerstnerSurface>(*swell);
   }
-  sea_floor_ = swell_ ? swell_->shared_shoaling() : sea_over_floor(params, hs);
+  sea_floor_ = swell_ ? swell_->shared_shoaling() : sea_over_floor(params, sea);
+  for (size_t c = 0; c < spectra_.size(); ++c) cascade_of_.push_back(c);
   if (std::isfinite(options_.max_wavenumber)) {
     std::vector<CascadeSpectrum> kept;
-    for (const CascadeSpectrum& s : spectra_)
-      if (CascadeSpectrum cut = band_limited(s, options_.max_wavenumber); cut.resolution > 0)
+    cascade_of_.clear();
+    for (size_t c = 0; c < spectra_.size(); ++c)
+      if (CascadeSpectrum cut = band_limited(spectra_[c], options_.max_wavenumber); cut.resolution > 0) {
         kept.push_back(std::move(cut));
+        cascade_of_.push_back(c);
+      }
     spectra_ = std::move(kept);
   }
   for (const CascadeSpectrum& s : spectra_) modes_.push_back(list_modes(s));
@@ -374,9 +380,18 @@ double WaveQuery::sea_scale(glm::dvec2 p) const {
   return sea_floor_ ? sea_floor_->ground(p).y : 1.0;
 }
 
+Shoaling::LatticeMoves WaveQuery::moves(glm::dvec2 p) const {
+  if (sea_floor_) return sea_floor_->lattice_moves(p);
+  Shoaling::LatticeMoves none;
+  none.point.fill(p);
+  return none;
+}
+
 glm::dvec2 WaveQuery::displacement(const Evaluation& fields, glm::dvec2 p) const {
   double d[3] = {0, 0, 0};
-  for (const auto& g : fields.grids) g->sample(p, kDx, 3, d);
+  const Shoaling::LatticeMoves lattices = moves(p);  // each cascade read where its lattice has moved
+  for (size_t g = 0; g < fields.grids.size(); ++g)
+    fields.grids[g]->sample(lattices.point[cascade_of_[g]], kDx, 3, d);
   glm::dvec2 out = sea_scale(p) * params_.choppiness * glm::dvec2(d[0], d[2]);
   if (swell_) {
     const glm::dvec3 moved = swell_->at_rest(p, fields.time_s).position;
@@ -435,15 +450,27 @@ void WaveQuery::sample_range(const Evaluation& fields, std::span<const glm::dvec
     // Swell trains over the sea: their sums at the same rest point, added (their slopes to the sea's).
     GerstnerPoint swell;
     if (swell_) swell = swell_->at_rest(p, fields.time_s);
+    // Each cascade read where its lattice has moved over the floor (ocean/shoaling.h).
+    const Shoaling::LatticeMoves moved = moves(p);
     if (options_.heights_only) {
-      for (const auto& g : fields.grids) g->sample(p, kHeight, 1, &f[kHeight]);
+      for (size_t g = 0; g < fields.grids.size(); ++g)
+        fields.grids[g]->sample(moved.point[cascade_of_[g]], kHeight, 1, &f[kHeight]);
       s.height = scale * f[kHeight] + swell.position.y;
       continue;
     }
-    for (const auto& g : fields.grids) g->sample(p, 0, kFieldCount, f);
+    glm::dvec2 sea_slope(0.0);
+    for (size_t g = 0; g < fields.grids.size(); ++g) {
+      const size_t c = cascade_of_[g];
+      double one[kFieldCount] = {};
+      fields.grids[g]->sample(moved.point[c], 0, kFieldCount, one);
+      for (int k = 0; k < kFieldCount; ++k) f[k] += one[k];  // the same sums as sampling into f
+      // Its slopes through the move (the chain rule); not moved: the deep sea's sum, bit for bit.
+      const glm::dvec2 own(one[kSlopeX], one[kSlopeZ]);
+      sea_slope = sea_floor_ ? sea_slope + sea_floor_->lattice_slope(c, moved, own)
+                             : glm::dvec2(f[kSlopeX], f[kSlopeZ]);
+    }
     s.height = scale * f[kHeight] + swell.position.y;
-    const glm::dvec2 slope = scale * glm::dvec2(f[kSlopeX], f[kSlopeZ]) -
-                             glm::dvec2(swell.normal.x, swell.normal.z) / swell.normal.y;
+    const glm::dvec2 slope = scale * sea_slope - glm::dvec2(swell.normal.x, swell.normal.z) / swell.normal.y;
     s.normal = glm::normalize(glm::dvec3(-slope.x, 1.0, -slope.y));
     s.velocity =
         scale * glm::dvec3(params_.choppiness * f[kVx], f[kVy], params_.choppiness * f[kVz]) + swell.velocity;

@@ -35,13 +35,13 @@
 #include "core/background_worker.h"
 #include "ocean/initial_spectrum.h"
 #include "ocean/ocean_params.h"
+#include "ocean/shoaling.h"
 #include "ocean/spectral_fields.h"
 #include "ocean/springs.h"
 
 namespace lagoon::ocean {
 
 class GerstnerSurface;
-class Shoaling;
 
 struct WaveSample {
   double height = 0;               // m above the mean water level, at the query's (x, z)
@@ -156,6 +156,7 @@ class WaveQuery {
   void keep(std::shared_ptr<const Evaluation> evaluation);
   glm::dvec2 displacement(const Evaluation& fields, glm::dvec2 p) const;
   double sea_scale(glm::dvec2 p) const;  // the random sea's height over the floor, 1 where it is deep
+  Shoaling::LatticeMoves moves(glm::dvec2 p) const;  // where each cascade is read for the rest position p
   // sample()'s answers for points[begin, end), from `fields`. Reads nothing that changes after
   // construction, so it may run on another thread.
   void sample_range(const Evaluation& fields, std::span<const glm::dvec2> points,
@@ -167,6 +168,7 @@ class WaveQuery {
   std::unique_ptr<GerstnerSurface> swell_;     // swell trains over the cascades' sea
   std::shared_ptr<const Shoaling> sea_floor_;  // the random sea's depth-limited height, where a floor is
   std::vector<CascadeSpectrum> spectra_;
+  std::vector<size_t> cascade_of_;  // each of spectra_'s cascade: whose lattice it moves with over the floor
   std::vector<SpectrumModes> modes_;  // spectra_'s modes, listed once: what each evaluation visits
   WaveQueryOptions options_;
   InverseFft2d fft_;        // plans shared by every evaluation, on any thread

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "ocean/direct_waves.h"
+#include "ocean/random_sea.h"
 #include "ocean/shoaling.h"
 
 namespace lagoon::world {
@@ -17,8 +18,8 @@ constexpr double kToleranceM = 0.01;
 CameraMedium::CameraMedium(const ocean::OceanParams& params, std::vector<ocean::CascadeSpectrum> spectra,
                            double reach_m)
     : params_(params), spectra_(std::move(spectra)), reach_m_(reach_m) {
-  const double hs = ocean::sea_significant_height(spectra_);
-  if (std::optional<ocean::GerstnerParams> summed = ocean::summed_wave_params(params_, hs)) {
+  const ocean::RandomSea sea = ocean::random_sea(params_, spectra_);
+  if (std::optional<ocean::GerstnerParams> summed = ocean::summed_wave_params(params_, sea)) {
     summed_ = std::make_unique<ocean::GerstnerSurface>(*summed);
     floor_ = summed_->shared_shoaling();
     // Their crests reach at most the sum of their largest amplitudes (over the floor, the table's).
@@ -30,7 +31,7 @@ CameraMedium::CameraMedium(const ocean::OceanParams& params, std::vector<ocean::
       reach_m_ += largest;
     }
   } else {
-    floor_ = ocean::sea_over_floor(params_, hs);
+    floor_ = ocean::sea_over_floor(params_, sea);
   }
 }
 
@@ -50,7 +51,7 @@ CameraSide CameraMedium::side(const glm::vec3& camera, double lens_m, double tim
 
 double CameraMedium::surface_height(double x, double z, double time_s) {
   if (!probe_) probe_ = std::make_unique<ocean::HeightProbe>(params_, spectra_, kToleranceM);
-  double height = probe_->height(time_s, x, z).height;
+  double height = probe_->height(time_s, x, z, floor_.get()).height;
   if (floor_) height *= floor_->ground({x, z}).y;
   if (summed_) height += summed_->sample(time_s, x, z).height;
   return height;

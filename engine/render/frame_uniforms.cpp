@@ -128,6 +128,7 @@ gpu::FrameUniforms frame_uniforms(const FrameInputs& in) {
       .submerged_rect = in.submerged_rect,
       .shoaling_axis = in.ocean.shoaling_gpu().axis(),
       .shoaling_grid = in.ocean.shoaling_gpu().grid()};
+  for (size_t c = 0; c < LAGOON_MAX_CASCADES; ++c) f.shoaling_lattice[c] = in.ocean.shoaling_gpu().lattice(c);
   if (const ocean::GerstnerSurface* direct = in.ocean.direct_waves()) {
     const std::vector<gpu::DirectWaveGpu> waves = ocean::direct_waves_gpu(*direct, scene.time_s);
     const size_t count = std::min<size_t>(waves.size(), LAGOON_DIRECT_MAX_WAVES);  // validate() keeps to it

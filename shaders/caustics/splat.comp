@@ -34,13 +34,14 @@ void main() {
   vec3 d = vec3(0.0);
   vec2 slope = vec2(0.0);
   const int count = kCascadeCount;  // compiled out beyond it (shared/limits.h)
+  Lattices lattices = lattices_at(rest);  // each cascade read where its lattice has moved over the floor
 #define LAGOON_CASCADE(c)                                                         \
   if (count > c && cell < frame.cascade_patch[c]) {                               \
     float lod = max(0.0, log2(cell / frame.cascade_texel[c]));                    \
-    vec3 uvw = cascade_uvw(rest, c);                                              \
+    vec3 uvw = cascade_uvw(lattice_point(rest, lattices, c), c);                  \
     d += textureLod(displacement[c], uvw, lod).xyz;                               \
     vec3 cn = textureLod(normal_jacobian[c], uvw, lod).xyz;                       \
-    slope += -cn.xz / max(cn.y, 0.05);                                            \
+    slope += lattice_slope(-cn.xz / max(cn.y, 0.05), lattices, c);                \
   }
   LAGOON_CASCADE(0)
   LAGOON_CASCADE(1)

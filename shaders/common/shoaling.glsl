@@ -6,6 +6,7 @@
 #ifndef LAGOON_COMMON_SHOALING_GLSL
 #define LAGOON_COMMON_SHOALING_GLSL
 #include "shared/shoaling.h"
+#include "common/cascade_uv.glsl"
 
 // 0: nothing transformed; 1: a profile (one row, straight contours); 2: a grid. A constant, not a branch on
 // the frame's uniforms: lavapipe (Mesa 22.3) re-inlines the uniforms a vertex shader branches on at every
@@ -21,6 +22,7 @@ vec4 shoal_texel(int u, int v, int layer) {
 }
 
 #define sh_real float
+#define sh_real2 vec2
 #define sh_real4 vec4
 #include "shared/shoaling_math.h"
 
@@ -79,6 +81,47 @@ ShoalPoint shoal_point(vec2 xz) {
 vec4 shoal_wave(ShoalPoint p, int wave, vec2 k0) {
   vec2 u = frame.shoaling_axis.zw;
   return sh_wave_value(shoal_layer(p, wave + 1), p.at.z, p.at.w, dot(k0, u), dot(k0, vec2(-u.y, u.x)));
+}
+
+// The random sea's lattices over the floor at a rest position (shared/shoaling_math.h): each cascade's phase
+// offset φ (phase[c]) and ∇φ (grad01: cascades 0 and 1, grad23: 2 and 3). All vec4 so that the surface's
+// vertices can hand them to its fragments.
+struct Lattices {
+  vec4 phase;
+  vec4 grad01, grad23;
+};
+
+Lattices lattices_at(vec2 rest) {
+  Lattices l = Lattices(vec4(0.0), vec4(0.0), vec4(0.0));
+  if (!kShoaling) return l;
+  ivec4 texels;
+  vec4 at;
+  shoal_locate(rest, texels, at);
+  vec2 u = frame.shoaling_axis.zw, v = vec2(-u.y, u.x);
+  int base = int(frame.shoaling_grid.w);
+  vec2 grad[4] = vec2[4](vec2(0.0), vec2(0.0), vec2(0.0), vec2(0.0));
+  for (int c = 0; c < kCascadeCount; ++c) {
+    vec2 k0 = frame.shoaling_lattice[c].xy;
+    vec4 s = sh_wave_value(shoal_value(shoal_cell(texels, base + c), at), at.z, at.w, dot(k0, u), dot(k0, v));
+    l.phase[c] = s.x;
+    grad[c] = s.z * u + s.w * v - k0;  // zeros for a cascade not moved (its layer is zeros)
+  }
+  l.grad01 = vec4(grad[0], grad[1]);
+  l.grad23 = vec4(grad[2], grad[3]);
+  return l;
+}
+
+// Where cascade c's textures are read for the rest position.
+vec2 lattice_point(vec2 rest, Lattices l, int c) {
+  if (!kShoaling) return rest;
+  return sh_lattice_point(rest, l.phase[c], frame.shoaling_lattice[c]);
+}
+
+// A slope of cascade c read at its moved point, as the surface's at the rest position.
+vec2 lattice_slope(vec2 slope, Lattices l, int c) {
+  if (!kShoaling) return slope;
+  vec2 grad = c == 0 ? l.grad01.xy : c == 1 ? l.grad01.zw : c == 2 ? l.grad23.xy : l.grad23.zw;
+  return sh_lattice_slope(slope, grad, frame.shoaling_lattice[c]);
 }
 
 // The random sea's (the cascades') height scale over the floor at a rest position: 1 in deep water.

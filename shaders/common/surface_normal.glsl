@@ -13,6 +13,10 @@
 #undef foam_real
 
 layout(location = 3) in vec2 v_floor;  // (the random sea's height scale, depth) from the vertices
+// The random sea's lattices over the floor from the vertices (common/surface_vertex.glsl).
+layout(location = 4) in vec4 v_lattice_phase;
+layout(location = 5) in vec4 v_lattice_grad01;
+layout(location = 6) in vec4 v_lattice_grad23;
 
 struct SurfaceSample {
   vec3 normal;  // unit, world space, facing the viewer
@@ -33,11 +37,13 @@ SurfaceSample surface_sample(vec3 to_viewer) {
   // octaves of the band are lost.
   float footprint = max(length(dFdx(v_rest)), length(dFdy(v_rest)));
   float mss = frame.glint.x;
+  Lattices lattices = Lattices(v_lattice_phase, v_lattice_grad01, v_lattice_grad23);
 #define LAGOON_CASCADE(c)                                                                    \
   if (count > c) {                                                                           \
-    vec3 uvw = cascade_uvw(v_rest, c);                                                       \
+    vec3 uvw = cascade_uvw(lattice_point(v_rest, lattices, c), c);                          \
     vec3 cn = texture(normal_jacobian[c], uvw).xyz;                                          \
-    slope += -cn.xz / max(cn.y, 0.05); /* the cascade normal is (-sx, 1, -sz) */             \
+    /* the cascade normal is (-sx, 1, -sz); its slope through the lattice's move */          \
+    slope += lattice_slope(-cn.xz / max(cn.y, 0.05), lattices, c);                           \
     vec4 jt = texture(jacobian_terms[c], uvw);                                               \
     foam = max(foam, jt.w);                                                                  \
     terms += jt.xyz;                                                                         \

@@ -20,8 +20,18 @@ layout(location = 1) out vec2 v_rest;
 // The floor under the vertex (common/shoaling.glsl): x = the random sea's height scale, y = the depth (< 0:
 // dry sand). Slow over a triangle, so the fragments interpolate it instead of each reading the table.
 layout(location = 3) out vec2 v_floor;
+// The random sea's lattices over the floor there (common/shoaling.glsl's Lattices): also slow over a
+// triangle, and the fragments need them for every cascade they read.
+layout(location = 4) out vec4 v_lattice_phase;
+layout(location = 5) out vec4 v_lattice_grad01;
+layout(location = 6) out vec4 v_lattice_grad23;
 
+// Also writes the lattices' outputs.
 vec2 floor_under(vec2 rest) {
+  Lattices l = lattices_at(rest);
+  v_lattice_phase = l.phase;
+  v_lattice_grad01 = l.grad01;
+  v_lattice_grad23 = l.grad23;
   if (!kShoaling) return vec2(1.0);
   vec4 ground = shoal_point(rest).ground;
   return vec2(ground.y, ground.x);
@@ -33,10 +43,11 @@ vec3 clipmap_displacement(vec2 rest, float spacing) {
   // which is zero (no k = 0 mode): such lookups are skipped (a third of them on a far-reaching clipmap).
   vec3 d = vec3(0.0);
   const int count = kCascadeCount;  // compiled out beyond it (shared/limits.h)
+  Lattices lattices = lattices_at(rest);  // each cascade read where its lattice has moved over the floor
 #define LAGOON_CASCADE(c)                                                                                  \
   if (count > c && spacing < frame.cascade_patch[c]) {                                                     \
     float lod = max(0.0, log2(spacing / frame.cascade_texel[c]));                                          \
-    d += textureLod(displacement[c], cascade_uvw(rest, c), lod).xyz;                                      \
+    d += textureLod(displacement[c], cascade_uvw(lattice_point(rest, lattices, c), c), lod).xyz;          \
   }
   LAGOON_CASCADE(0)
   LAGOON_CASCADE(1)

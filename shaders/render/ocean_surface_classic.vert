@@ -19,11 +19,12 @@ layout(location = 2) out vec3 v_colour;
 vec3 vertex_normal(vec2 rest, float spacing) {
   vec2 slope = vec2(0.0);
   const int count = kCascadeCount;
+  Lattices lattices = lattices_at(rest);  // each cascade read where its lattice has moved over the floor
 #define LAGOON_CASCADE(c)                                                                   \
   if (count > c && spacing < frame.cascade_patch[c]) {                                     \
     float lod = max(0.0, log2(spacing / frame.cascade_texel[c]));                          \
-    vec3 cn = textureLod(normal_jacobian[c], cascade_uvw(rest, c), lod).xyz;                \
-    slope += -cn.xz / max(cn.y, 0.05);                                                      \
+    vec3 cn = textureLod(normal_jacobian[c], cascade_uvw(lattice_point(rest, lattices, c), c), lod).xyz; \
+    slope += lattice_slope(-cn.xz / max(cn.y, 0.05), lattices, c);                         \
   }
   LAGOON_CASCADE(0)
   LAGOON_CASCADE(1)

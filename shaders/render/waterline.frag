@@ -23,8 +23,9 @@ layout(location = 0) out vec4 out_colour;
 vec3 displacement_at(vec2 rest, inout ShoalCell floor_cell) {
   vec3 d = vec3(0.0);
   const int count = kCascadeCount;  // compiled out beyond it (shared/limits.h)
+  Lattices lattices = lattices_at(rest);  // each cascade read where its lattice has moved over the floor
 #define LAGOON_CASCADE(c) \
-  if (count > c) d += textureLod(displacement[c], cascade_uvw(rest, c), 0.0).xyz;
+  if (count > c) d += textureLod(displacement[c], cascade_uvw(lattice_point(rest, lattices, c), c), 0.0).xyz;
   LAGOON_CASCADE(0)
   LAGOON_CASCADE(1)
   LAGOON_CASCADE(2)

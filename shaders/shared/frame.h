@@ -68,9 +68,13 @@ struct FrameUniforms {
   vec4 submerged_rect;  // screen uv (xy least, zw greatest) that bounds every object drawn under the water
                         // (render/scene_objects.h); empty (x > z) when there is none
   // The waves' transformation over the floor (common/shoaling.glsl): xy = world xz where its profile starts,
-  // zw = the grid's axis; and x = its spacing m, y = its columns (along the axis), z = its rows, w unused.
+  // zw = the grid's axis; and x = its spacing m, y = its columns (along the axis), z = its rows, w = the
+  // layer of cascade 0's lattice (cascade c's: w + c).
   vec4 shoaling_axis;
   vec4 shoaling_grid;
+  // Per cascade, its representative wave whose phase over the floor moves its lattice (shared/shoaling_math.h):
+  // xy = k0 (world xz, rad/m), zw = k0/|k0|² (zeros: not moved).
+  vec4 shoaling_lattice[LAGOON_MAX_CASCADES];
   // Models gerstner and sines with their own waves (common/direct_waves.glsl), phases at the frame's time.
   DirectWaveGpu direct_waves[LAGOON_DIRECT_MAX_WAVES];
 };
@@ -85,7 +89,7 @@ struct PointLightGpu {
 LAGOON_GPU_END
 
 #ifdef __cplusplus
-LAGOON_CHECK_SIZE(FrameUniforms, 2864);
+LAGOON_CHECK_SIZE(FrameUniforms, 2928);
 LAGOON_CHECK_OFFSET(FrameUniforms, sky, 608);
 LAGOON_CHECK_SIZE(PointLightGpu, 48);
 LAGOON_CHECK_OFFSET(FrameUniforms, unread, 0);

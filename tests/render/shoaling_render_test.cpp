@@ -78,6 +78,23 @@ TEST_F(ShoalingRender, TheDrawnSurfaceIsWaveQuerysOverTheFloor) {
   EXPECT_GT(e.rms_untransformed, 5 * e.rms);
 }
 
+// The random sea alone, a long-crested swell of the FFT ocean: its cascades' lattices, moved over the floor
+// (ocean/random_sea.h), are drawn where WaveQuery has them, and not where the deep sea has them.
+TEST_F(ShoalingRender, TheRandomSeasMovedLatticesAreDrawnAsWaveQueryHasThem) {
+  const std::vector<std::string> swell{"ocean.swell_waves=[]", "ocean.spectrum.wind_speed_mps=10",
+                                       "ocean.spectrum.fetch_km=200", "ocean.spectrum.swell=1",
+                                       "ocean.spectrum.wind_direction_deg=30"};
+  const HeightError e = compare(swell);
+  std::vector<std::string> off = swell;
+  off.push_back("ocean.shoaling=false");
+  const HeightError deep = compare(off);
+  EXPECT_GT(e.pixels, 3000);
+  // The mesh and its filtering of this larger sea leave more than the beach's 5 cm; the moved lattices add
+  // little to it.
+  EXPECT_LT(e.rms, 1.25 * deep.rms + 0.01);
+  EXPECT_GT(e.rms_untransformed, 5 * e.rms);
+}
+
 TEST_F(ShoalingRender, ShoalingOffDrawsTheUntransformedSea) {
   const HeightError e = compare({"ocean.shoaling=false"});
   EXPECT_LT(e.rms, 0.08);

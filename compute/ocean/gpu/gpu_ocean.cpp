@@ -12,6 +12,7 @@
 
 #include "lagoon_shaders/shaders.h"
 #include "ocean/direct_waves.h"
+#include "ocean/random_sea.h"
 #include "ocean/slope_statistics.h"
 #include "ocean/validate.h"
 #include "shared/limits.h"
@@ -183,12 +184,12 @@ void GpuOcean::build(std::vector<CascadeSpectrum> spectra) {
   springs_ = params_.model == SurfaceModel::Springs ? std::make_unique<SpringsGpu>(ctx_, params_) : nullptr;
   // The waves the surface sums: the model's own (and then their step replaces the FFT's), or swell trains
   // over the cascades.
-  const double hs = sea_significant_height(spectra_);
-  const std::optional<GerstnerParams> summed = summed_wave_params(params_, hs);
+  const RandomSea sea = random_sea(params_, spectra_);
+  const std::optional<GerstnerParams> summed = summed_wave_params(params_, sea);
   direct_surface_ = summed ? std::make_unique<GerstnerSurface>(*summed) : nullptr;
   direct_ = direct ? std::make_unique<DirectWavesGpu>(ctx_, params_, *direct_surface_) : nullptr;
   // The summed waves' table holds the random sea's scale too.
-  shoaling_ = direct_surface_ ? direct_surface_->shared_shoaling() : ocean::sea_over_floor(params_, hs);
+  shoaling_ = direct_surface_ ? direct_surface_->shared_shoaling() : ocean::sea_over_floor(params_, sea);
   shoaling_gpu_ = std::make_unique<ShoalingGpu>(ctx_, shoaling_.get());
 }
 

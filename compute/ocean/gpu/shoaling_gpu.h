@@ -3,6 +3,7 @@
 // lies, for the frame's uniforms. One texel when nothing is transformed, so every pass can bind it.
 #pragma once
 #include <glm/vec4.hpp>
+#include <vector>
 
 #include "ocean/shoaling.h"
 #include "vk/buffer.h"
@@ -21,13 +22,16 @@ class ShoalingGpu {
   const vk::Buffer& table() const { return table_; }
   // For the frame (shared/frame.h): xy = the profile's origin (world xz), zw = its axis.
   glm::vec4 axis() const { return axis_; }
-  // x = spacing m, y = samples along the axis (columns), z = across it (rows), w unused.
+  // x = spacing m, y = samples along the axis (columns), z = across it (rows), w = cascade 0's lattice layer.
   glm::vec4 grid() const { return grid_; }
+  // Cascade c's representative wave (k0, k0/|k0|²), zeros when it is not moved.
+  glm::vec4 lattice(size_t c) const { return c < lattice_.size() ? lattice_[c] : glm::vec4(0.0f); }
 
  private:
   bool active_ = false;
   vk::Buffer table_;
   glm::vec4 axis_{0.0f}, grid_{1.0f, 1.0f, 1.0f, 0.0f};
+  std::vector<glm::vec4> lattice_;
 };
 
 }  // namespace lagoon::ocean

@@ -44,7 +44,8 @@ TEST(BandLimit, TheHarboursSeaForBuoyancyOnSmallerGrids) {
 }
 
 TEST(BandLimit, AHeightsOnlyQueryAnswersTheSumOfTheLongWaves) {
-  scene::Scene s = shipped_scene("harbour", {"ocean.choppiness=0"});  // heights at rest = at the point
+  // Heights at rest = at the point, and the deep sea's (its lattices not moved over the floor).
+  scene::Scene s = shipped_scene("harbour", {"ocean.choppiness=0", "ocean.shoaling=false"});
   const auto spectra = ocean::make_cascade_spectra(s.ocean);
   const double k_cut = ocean::lattice_wavenumber({});
   ocean::WaveQuery cut(s.ocean, spectra, {.max_wavenumber = k_cut, .heights_only = true});

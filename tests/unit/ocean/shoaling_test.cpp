@@ -21,6 +21,7 @@
 #include "core/compass.h"
 #include "ocean/direct_waves.h"
 #include "ocean/gerstner.h"
+#include "ocean/random_sea.h"
 #include "ocean/wave_query.h"
 #include "scene/floor_profile.h"
 #include "support/gltf_quads.h"
@@ -313,7 +314,7 @@ TEST(Shoaling, SwellOverTheRandomSeaIsAddedToIt) {
   ocean::OceanParams with_swell = sea;
   with_swell.swell_waves = {{.amplitude_m = 0.4, .wavelength_m = 90, .direction_deg = 30, .steepness = 0.0}};
   ocean::WaveQuery alone(sea), both(with_swell);
-  const ocean::GerstnerSurface swell(*ocean::swell_wave_params(with_swell, 0));
+  const ocean::GerstnerSurface swell(*ocean::swell_wave_params(with_swell, {}));
   for (const glm::dvec2 q : {glm::dvec2(3, 4), glm::dvec2(-40, 17.5), glm::dvec2(120, -60)}) {
     const ocean::WaveSample a = alone.sample(2.5, q.x, q.y), b = both.sample(2.5, q.x, q.y);
     const ocean::GerstnerPoint s = swell.at_rest(a.rest_position, 2.5);
@@ -326,7 +327,7 @@ TEST(Shoaling, SwellOverTheRandomSeaIsAddedToIt) {
   }
   // The models with their own waves ignore it.
   with_swell.model = ocean::SurfaceModel::Gerstner;
-  EXPECT_FALSE(ocean::swell_wave_params(with_swell, 0).has_value());
+  EXPECT_FALSE(ocean::swell_wave_params(with_swell, {}).has_value());
 }
 
 TEST(Shoaling, TheWaveNumberSolvesTheDispersionRelation) {
@@ -336,6 +337,142 @@ TEST(Shoaling, TheWaveNumberSolvesTheDispersionRelation) {
       EXPECT_NEAR(kG * k * std::tanh(k * h), omega * omega, 1e-9 * omega * omega);
       EXPECT_NEAR(ocean::Shoaling::group_velocity(omega, h), theory_cg(omega, h), 1e-9);
     }
+}
+
+// The random sea's lattice over the floor (ocean/random_sea.h): a cascade holding one mode, a swell of the
+// FFT ocean, travels toward the planar beach. Its cascade is read where its lattice has moved
+// (shared/shoaling_math.h), so the mode shortens and turns as linear theory says, measured from WaveQuery's
+// heights as the direct waves are (zero crossings): local wavelength within 5 %, direction within 2°.
+struct LatticeSwell {
+  int mx, mz;  // the mode: k = 2π/L (mx, mz), L = 400 m; mz < 0 travels toward the beach (-z)
+  double patch_m = 400;
+  glm::dvec2 k() const { return 2 * kPi / patch_m * glm::dvec2(mx, mz); }
+  Swell swell() const {
+    const double omega = std::sqrt(kG * glm::length(k()));
+    return {2 * kPi / omega, std::atan2(std::abs(double(mx)), std::abs(double(mz))) * 180 / kPi, 0.05};
+  }
+};
+
+ocean::OceanParams lattice_sea_params(std::shared_ptr<const ocean::DepthProfile> floor) {
+  ocean::OceanParams p;
+  p.cascades = {{400.0, 64}};
+  p.choppiness = 0;  // no horizontal motion: the rest point is the point asked, as for the zero crossings
+  p.floor = std::move(floor);
+  return p;
+}
+
+std::vector<ocean::CascadeSpectrum> one_mode(const ocean::OceanParams& p, const LatticeSwell& m) {
+  ocean::CascadeSpectrum s = ocean::empty_cascade_spectrum(p, 0);
+  const int n = int(s.resolution);
+  const size_t cell = size_t((m.mz + n) % n) * size_t(n) + size_t((m.mx + n) % n),
+               mirrored = size_t((n - m.mz) % n) * size_t(n) + size_t((n - m.mx) % n);
+  s.h0[cell] = {0.05f, 0.0f};
+  // ω is even in k: the mirrored cell carries conj(h0(k)) (ocean/spectral_fields.h).
+  s.omega[cell] = s.omega[mirrored] =
+      float(std::sqrt(kG * glm::length(m.k()) * std::tanh(glm::length(m.k()) * p.depth_m)));
+  return {s};
+}
+
+Crossings lattice_crossings(ocean::WaveQuery& q, double z0, double window) {
+  std::vector<double> up;
+  const double dz = window / 4000;
+  std::vector<glm::dvec2> points;
+  for (double z = z0 - window; z <= z0 + window; z += dz) points.push_back({0, z});
+  const std::vector<ocean::WaveSample> s = q.sample(0.0, points);
+  for (size_t i = 1; i < s.size(); ++i)
+    if (s[i - 1].height < 0 && s[i].height >= 0)
+      up.push_back(points[i].y - dz * s[i].height / (s[i].height - s[i - 1].height));
+  Crossings best;
+  for (size_t i = 0; i + 1 < up.size(); ++i)
+    if (std::abs(0.5 * (up[i] + up[i + 1]) - z0) < std::abs(0.5 * (best.z1 + best.z2) - z0))
+      best = {up[i], up[i + 1]};
+  return best;
+}
+
+TEST(Shoaling, TheRandomSeasLatticeShortensAndTurnsAsLinearTheorySays) {
+  for (const LatticeSwell& m : {LatticeSwell{0, -3}, LatticeSwell{2, -4}, LatticeSwell{1, -5}}) {
+    const Swell s = m.swell();
+    const ocean::OceanParams p = lattice_sea_params(planar_beach());
+    ocean::WaveQuery q(p, one_mode(p, m));
+    double worst_length = 0, worst_angle = 0;
+    for (double h : kDepths) {
+      const double k = theory_k(s.omega(), h);
+      const double kz = std::sqrt(k * k - s.k_along_shore() * s.k_along_shore());
+      const Crossings c = lattice_crossings(q, beach_z(h), 2.5 * 2 * kPi / kz);
+      const double expected = 2 * kPi / theory_mean_kz(s, c);
+      worst_length = std::max(worst_length, std::abs(c.spacing() / expected - 1));
+      EXPECT_NEAR(c.spacing(), expected, 0.05 * expected) << "mode " << m.mx << ", " << m.mz << ", h " << h;
+      const double angle = std::atan2(s.k_along_shore(), 2 * kPi / c.spacing()) * 180 / kPi;
+      const double h_mid = 0.5 * (c.z1 + c.z2) / 630 * 21 - 1;
+      worst_angle = std::max(worst_angle, std::abs(angle - s.theta_deg(h_mid)));
+      EXPECT_NEAR(angle, s.theta_deg(h_mid), 2.0) << "mode " << m.mx << ", " << m.mz << ", h " << h;
+    }
+    std::printf("lattice, T %.1f s at %.1f deg: wavelength %.2f %%, direction %.2f deg\n", s.period_s,
+                s.angle_deg, 100 * worst_length, worst_angle);
+  }
+}
+
+// The slope WaveQuery answers over the floor is its height's own slope (the chain rule through the move):
+// against central differences of its heights, within 3 % of a k (the cascade's Catmull-Rom interpolation
+// of its slope against the slope of its interpolated height: 1-2 %); left out, it would be k0/k of it.
+TEST(Shoaling, TheMovedLatticesSlopeIsItsHeightsSlope) {
+  const LatticeSwell m{2, -4};
+  const ocean::OceanParams p = lattice_sea_params(planar_beach());
+  ocean::WaveQuery q(p, one_mode(p, m));
+  double worst = 0;
+  for (double h : {12.0, 4.0, 1.5})
+    for (double dx : {0.0, 3.0, 7.5}) {
+      const glm::dvec2 at(dx, beach_z(h));
+      constexpr double kStep = 0.01;
+      const std::vector<glm::dvec2> points = {at, at + glm::dvec2(kStep, 0), at - glm::dvec2(kStep, 0),
+                                              at + glm::dvec2(0, kStep), at - glm::dvec2(0, kStep)};
+      const std::vector<ocean::WaveSample> s = q.sample(1.3, points);
+      const glm::dvec2 numeric((s[1].height - s[2].height) / (2 * kStep),
+                               (s[3].height - s[4].height) / (2 * kStep));
+      const glm::dvec2 answered = -glm::dvec2(s[0].normal.x, s[0].normal.z) / s[0].normal.y;
+      // a k, the slope's size: h0(k) and its mirror each add 0.05 m to the amplitude.
+      const double scale = 0.1 * theory_k(m.swell().omega(), h);
+      worst = std::max(worst, glm::length(answered - numeric) / scale);
+      EXPECT_NEAR(glm::length(answered - numeric), 0.0, 0.03 * scale) << "h " << h << ", x " << dx;
+    }
+  std::printf("lattice slope against its heights' differences: worst %.3f %% of a k\n", 100 * worst);
+}
+
+// A cascade's representative wave: its modes' variance-weighted wavenumber and direction.
+TEST(Shoaling, ACascadesRepresentativeWaveIsItsModesWeightedByTheirVariance) {
+  ocean::OceanParams p = lattice_sea_params(nullptr);
+  p.depth_m = 30;
+  ocean::CascadeSpectrum s = ocean::empty_cascade_spectrum(p, 0);
+  const double dk = 2 * kPi / 400;
+  s.h0[size_t(64 - 3) * 64 + 0] = {1.0f, 0.0f};  // k = dk (0, -3), variance 1
+  s.h0[size_t(4) * 64 + 4] = {0.0f, 2.0f};       // k = dk (4, 4), variance 4
+  const ocean::ShoalingWave w = ocean::representative_wave(s, p);
+  const double k = (1 * 3 * dk + 4 * std::sqrt(32.0) * dk) / 5;
+  const glm::dvec2 toward = glm::normalize(1.0 * glm::dvec2(0, -1) + 4.0 * glm::dvec2(1, 1) / std::sqrt(2.0));
+  EXPECT_NEAR(glm::length(w.k), k, 1e-9 * k);
+  EXPECT_NEAR(glm::dot(glm::normalize(w.k), toward), 1.0, 1e-12);
+  EXPECT_NEAR(w.omega, std::sqrt(kG * k * std::tanh(k * 30)), 1e-9);
+  EXPECT_EQ(w.own_depth_m, 30);
+  EXPECT_EQ(glm::length(ocean::representative_wave(ocean::empty_cascade_spectrum(p, 0), p).k), 0.0);
+}
+
+// Deeper than half the representative wave's length everywhere, the lattice is not moved and the sea is the
+// deep sea's to the bit; just shallower, it is moved.
+TEST(Shoaling, ARandomSeaOverADeepFloorIsUnchangedToTheBit) {
+  const LatticeSwell m{0, -3};  // 133 m long: half is 67 m
+  const ocean::OceanParams deep = lattice_sea_params(planar_beach(70, 200, 400));
+  ocean::OceanParams open = deep;
+  open.floor = nullptr;
+  ocean::WaveQuery over(deep, one_mode(deep, m)), alone(open, one_mode(open, m));
+  for (double z : {-50.0, 10.0, 200.0})
+    for (double t : {0.0, 3.7}) {
+      const ocean::WaveSample a = over.sample(t, 12.5, z), b = alone.sample(t, 12.5, z);
+      EXPECT_EQ(a.height, b.height);
+      EXPECT_EQ(a.normal, b.normal);
+    }
+  EXPECT_EQ(ocean::sea_over_floor(deep, ocean::random_sea(deep, one_mode(deep, m))), nullptr);
+  const ocean::OceanParams shallower = lattice_sea_params(planar_beach(60, 200, 400));
+  EXPECT_NE(ocean::sea_over_floor(shallower, ocean::random_sea(shallower, one_mode(shallower, m))), nullptr);
 }
 
 }  // namespace
