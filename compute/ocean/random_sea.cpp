@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "ocean/direct_waves.h"
+#include "ocean/slope_statistics.h"
 
 namespace lagoon::ocean {
 
@@ -30,7 +31,7 @@ ShoalingWave representative_wave(const CascadeSpectrum& spectrum, const OceanPar
   const double k = k_sum / weight;
   return {.k = k * glm::normalize(toward),
           .omega = std::sqrt(kGravity * k * std::tanh(k * params.depth_m)),
-          .amplitude_m = 1.0,
+          .amplitude_m = std::sqrt(2 * height_variance(spectrum)),  // a sine of the cascade's variance
           .own_depth_m = params.depth_m};
 }
 

@@ -11,8 +11,9 @@
 namespace lagoon::ocean {
 
 // A cascade's representative wave: its modes' wavenumber and direction weighted by their variance |h0|²
-// (the waves that carry its height), with the sea's dispersion at ocean.depth_m. k = 0 for a cascade
-// without waves. Amplitude 1: only its phase and direction over the floor are used.
+// (the waves that carry its height), with the sea's dispersion at ocean.depth_m, and the amplitude of a sine
+// of the cascade's height variance: its shoaling weighs the cascades by their share of the sea's energy.
+// k = 0 for a cascade without waves.
 ShoalingWave representative_wave(const CascadeSpectrum& spectrum, const OceanParams& params);
 
 // The random sea of these spectra: its significant height, 4σ over all of them, and each cascade's

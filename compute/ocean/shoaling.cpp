@@ -89,15 +89,20 @@ Shoaling::Shoaling(ShoalingInputs inputs) : inputs_(std::move(inputs)) {
   if (lattice_count() > kMaxLattices) throw std::invalid_argument("Shoaling: more cascades than it moves");
   const size_t n = samples(), waves = wave_count();
   table_.assign(n * (1 + waves + lattice_count()), glm::dvec4(0.0));
-  // The random sea's lattices: their moves, not their heights (which stay the sea's depth-limited scale).
+  // The random sea's lattices: their moves, and their shoaling, the energy-weighted K_s K_r of their
+  // representative waves: sqrt(Σ a_c² / Σ a0_c²), 1 where all are their own.
+  std::vector<double> energy(n, 0.0);
+  double own_energy = 0;
   for (size_t c = 0; c < lattice_count(); ++c) {
-    if (glm::length(inputs_.sea.lattice[c].k) == 0) continue;  // no waves: not moved (zeros)
+    const ShoalingWave& w = inputs_.sea.lattice[c];
+    if (glm::length(w.k) == 0) continue;  // no waves: not moved (zeros)
     const size_t layer = lattice_layer(c);
     const std::vector<double> a = floor->rows == 1 ? build_profile_wave(layer) : build_grid_wave(layer);
+    own_energy += w.amplitude_m * w.amplitude_m;
     for (size_t j = 0; j < n; ++j) {
       table_[layer * n + j].y = a[j];
-      const glm::dvec4& v = table_[layer * n + j];
-      if (v.x != 0 || a[j] != inputs_.sea.lattice[c].amplitude_m) active_ = true;
+      energy[j] += a[j] * a[j];
+      if (table_[layer * n + j].x != 0 || a[j] != w.amplitude_m) active_ = true;
     }
   }
   std::vector<double> linear(n, 0.0);  // Σ H_i before breaking
@@ -131,10 +136,12 @@ Shoaling::Shoaling(ShoalingInputs inputs) : inputs_(std::move(inputs)) {
     // Steeper, shorter waves would loop their crests: never more than the waves do in deep water (or 1).
     const double allowed = std::max(1.0, base_steepness);
     const double q = steep > allowed ? allowed / steep : 1.0;
-    const double sea = hs > 0 ? std::clamp(kSurfZoneHsPerDepth * h / hs, 0.0, 1.0) : 1.0;
+    // The random sea grows as its waves shoal, up to its depth limit (0.6 h), and ends at the shoreline.
+    const double shoaled = own_energy > 0 ? std::sqrt(energy[j] / own_energy) : 1.0;
+    const double sea = hs > 0 ? std::clamp(kSurfZoneHsPerDepth * h / hs, 0.0, shoaled) : 1.0;
     const double ratio = cap > 0 ? linear[j] / cap : (linear[j] > 0 ? 1e3 : 0.0);
     table_[j] = glm::dvec4(h, sea, q, ratio);
-    if (sea < 1 || q < 1) active_ = true;
+    if (sea != 1 || q < 1) active_ = true;
   }
 }
 

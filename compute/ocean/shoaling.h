@@ -25,8 +25,9 @@
 // cascade's representative wave (its modes' energy-weighted wavenumber and direction) by that wave's phase
 // offset over the floor, so that wave shortens, slows and turns exactly as a directly evaluated one, and the
 // cascade's other modes with it (approximately: each is shortened by its representative's ratio). Its height
-// is not raised by shoaling but limited by the depth: a significant height of at most 0.6 h (Thornton & Guza
-// 1983: H_rms <= 0.42 h in the surf zone), falling to nothing at the shoreline.
+// shoals by the representative waves' energy-weighted K_s K_r, up to its depth limit: a significant height of
+// at most 0.6 h (Thornton & Guza 1983: H_rms <= 0.42 h in the surf zone), falling to nothing at the
+// shoreline.
 #pragma once
 #include <array>
 #include <cmath>
@@ -79,7 +80,8 @@ class Shoaling {
   size_t lattice_count() const { return inputs_.sea.lattice.size(); }
   size_t lattice_layer(size_t cascade) const { return 1 + wave_count() + cascade; }
   size_t samples() const { return inputs_.floor->depth_m.size(); }  // per layer
-  // Layer 0 at (x, z): (depth m, the random sea's height scale, the waves' steepness scale, breaking ratio:
+  // Layer 0 at (x, z): (depth m, the random sea's height scale (its shoaling up to its depth limit), the
+  // waves' steepness scale, breaking ratio:
   // the summed linear height over γ h, >= 1 where the waves break).
   glm::dvec4 ground(glm::dvec2 xz) const;
   // Wave i at (x, z): (phase offset φ rad, amplitude m, k_u, k_v rad/m).

@@ -444,9 +444,9 @@ void WaveQuery::sample_range(const Evaluation& fields, std::span<const glm::dvec
     double f[kFieldCount] = {};
     WaveSample& s = out[i];
     s.rest_position = p;
-    s.error_bound_m = bound;
     s.converged = converged;
     const double scale = sea_scale(p);  // over the floor (ocean/shoaling.h); its own slope is left out
+    s.error_bound_m = bound * std::max(1.0, scale);  // higher where the sea shoals
     // Swell trains over the sea: their sums at the same rest point, added (their slopes to the sea's).
     GerstnerPoint swell;
     if (swell_) swell = swell_->at_rest(p, fields.time_s);

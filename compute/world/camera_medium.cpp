@@ -33,6 +33,11 @@ CameraMedium::CameraMedium(const ocean::OceanParams& params, std::vector<ocean::
   } else {
     floor_ = ocean::sea_over_floor(params_, sea);
   }
+  // Where its waves shoal, the random sea is higher than in deep water (its scale over 1, layer 0).
+  double gain = 1;
+  if (floor_)
+    for (size_t j = 0; j < floor_->samples(); ++j) gain = std::max(gain, floor_->table()[j].y);
+  reach_m_ += (gain - 1) * reach_m;
 }
 
 CameraSide CameraMedium::side(const glm::vec3& camera, double lens_m, double time_s) {

@@ -61,7 +61,7 @@ SurfaceSample surface_sample(vec3 to_viewer) {
   float sea = v_floor.x;  // the random sea's depth-limited height (common/surface_vertex.glsl)
   slope *= sea;
   terms *= sea;
-  foam *= sea;  // the cascades' foam where the floor flattens their waves
+  foam *= min(sea, 1.0);  // the cascades' foam where the floor flattens their waves
   DirectSum direct = direct_waves_at(v_rest, 0.0, footprint);  // models with their own waves
   slope += direct.slope;
   terms += direct.terms;
