@@ -47,7 +47,7 @@ const std::vector<std::pair<std::string, std::string>>& broken_variants() {
        "bodies.sphere-rao"},
       {"no-shoaling",
        "waves that do not feel the floor: shore.wavelength, shore.snell, shore.shoaling, "
-       "shore.breaking-onset"},
+       "shore.breaking-onset, shore.lattice-wavelength, shore.lattice-snell, shore.lattice-shoaling"},
       {"shallow-wakes",
        "the wakes in water of depth Froude number 0.9 instead of deep water: wakes.kelvin-angle, "
        "wakes.transverse-wavelength"}};

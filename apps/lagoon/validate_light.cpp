@@ -204,16 +204,19 @@ Result<CausticSlices> caustic_slices(vk::Context& ctx, bool from_above, const Va
   const nlohmann::json camera = from_above
                                     ? nlohmann::json{{"position", {0, 3, 0}}, {"look_at", {0, -3, 6}}}
                                     : nlohmann::json{{"position", {0, -1.5, 0}}, {"look_at", {0, -4, 10}}};
-  nlohmann::json doc{{"camera", camera},
-                     {"sun", {{"elevation_deg", 60}, {"azimuth_deg", 20}}},
-                     // The caustics do not see the foam: fading it at once spares each frame, 3.7 s after
-                     // the last, the catch-up of 37 foam steps.
-                     {"ocean", {{"spectrum", {{"wind_speed_mps", 7.0}}}, {"foam", {{"decay_per_s", 100}}}}},
-                     {"water", {{"type", "jerlov-I"}}},
-                     {"seafloor", {{"type", "slope"}, {"depth_near_m", 3}, {"depth_far_m", 6}}},
-                     {"objects", nlohmann::json::array()},
-                     {"render", {{"width", 64}, {"height", 48}, {"effects", {{"particles", false}}}}},
-                     {"time_s", 10}};
+  nlohmann::json doc{
+      {"camera", camera},
+      {"sun", {{"elevation_deg", 60}, {"azimuth_deg", 20}}},
+      // The caustics do not see the foam: fading it at once spares each frame, 3.7 s after
+      // the last, the catch-up of 37 foam steps. The slices reach 15 m, below the floor drawn
+      // at 3-6 m: the sea is the deep sea's (not shortened by that floor), as at every depth.
+      {"ocean",
+       {{"spectrum", {{"wind_speed_mps", 7.0}}}, {"foam", {{"decay_per_s", 100}}}, {"shoaling", false}}},
+      {"water", {{"type", "jerlov-I"}}},
+      {"seafloor", {{"type", "slope"}, {"depth_near_m", 3}, {"depth_far_m", 6}}},
+      {"objects", nlohmann::json::array()},
+      {"render", {{"width", 64}, {"height", 48}, {"effects", {{"particles", false}}}}},
+      {"time_s", 10}};
   auto s = scene::parse_scene(doc, "lagoon validate (caustics)");
   if (!s) return s.error();
   s->render.effects.caustics_blur = o.broken != "sharp-caustics";

@@ -2,11 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <glm/geometric.hpp>
 #include <memory>
 #include <string>
 
 #include "ocean/gerstner.h"
+#include "ocean/initial_spectrum.h"
 #include "ocean/shoaling.h"
+#include "ocean/wave_query.h"
 
 namespace lagoon::cli {
 namespace {
@@ -51,27 +55,59 @@ struct Swell {
   }
 };
 
+std::shared_ptr<const ocean::DepthProfile> beach_floor(const ValidateOptions& o) {
+  if (o.broken == "no-shoaling") return nullptr;
+  auto floor = std::make_shared<ocean::DepthProfile>();
+  floor->axis = {0, 1};
+  const size_t n = size_t(kLength / 0.25) + 1;
+  floor->spacing_m = kLength / double(n - 1);
+  for (size_t i = 0; i < n; ++i) floor->depth_m.push_back(depth_at(floor->spacing_m * double(i)));
+  return floor;
+}
+
+// A swell of the FFT ocean: one lattice mode k = 2π/L (mx, mz) of a cascade of L = 400 m (mz < 0: toward the
+// beach), with its mirror, 0.1 m high in all.
+struct LatticeMode {
+  int mx, mz;
+  static constexpr double kPatchM = 400;
+  glm::dvec2 k() const { return 2 * kPi / kPatchM * glm::dvec2(mx, mz); }
+  Swell swell() const {
+    return {2 * kPi / std::sqrt(kG * glm::length(k())),
+            std::atan2(std::abs(double(mx)), std::abs(double(mz))) * 180 / kPi, 0.1};
+  }
+};
+
 class Beach {
  public:
+  // A direct wave (ocean/gerstner.h).
   Beach(const Swell& s, const ValidateOptions& o) : swell_(s) {
     ocean::GerstnerParams p;
     p.limit_steepness = false;
-    if (o.broken != "no-shoaling") {
-      auto floor = std::make_shared<ocean::DepthProfile>();
-      floor->axis = {0, 1};
-      const size_t n = size_t(kLength / 0.25) + 1;
-      floor->spacing_m = kLength / double(n - 1);
-      for (size_t i = 0; i < n; ++i) floor->depth_m.push_back(depth_at(floor->spacing_m * double(i)));
-      p.floor = floor;
-    }
+    p.floor = beach_floor(o);
     p.waves.push_back({.amplitude_m = s.amplitude_m,
                        .wavelength_m = 2 * kPi / s.k0(),
                        .direction_deg = s.angle_deg,  // toward -z, the beach: north (core/compass.h)
                        .steepness = 0});
-    surface_ = std::make_unique<ocean::GerstnerSurface>(std::move(p));
+    auto surface = std::make_shared<ocean::GerstnerSurface>(std::move(p));
+    height_ = [surface](double z, double t) { return surface->sample(t, 0.0, z).height; };
+  }
+  // The random sea's lattice (ocean/random_sea.h): a cascade holding one mode, without horizontal motion.
+  Beach(const LatticeMode& m, const ValidateOptions& o) : swell_(m.swell()) {
+    ocean::OceanParams p;
+    p.cascades = {{LatticeMode::kPatchM, 64}};
+    p.choppiness = 0;
+    p.floor = beach_floor(o);
+    ocean::CascadeSpectrum s = ocean::empty_cascade_spectrum(p, 0);
+    const int n = int(s.resolution);
+    const size_t cell = size_t((m.mz + n) % n) * size_t(n) + size_t((m.mx + n) % n),
+                 mirrored = size_t((n - m.mz) % n) * size_t(n) + size_t((n - m.mx) % n);
+    s.h0[cell] = {0.05f, 0.0f};
+    s.omega[cell] = s.omega[mirrored] = float(swell_.omega());  // ω is even in k
+    auto query = std::make_shared<ocean::WaveQuery>(p, std::vector<ocean::CascadeSpectrum>{s});
+    height_ = [query](double z, double t) { return query->sample(t, 0.0, z).height; };
   }
   // The water's height above (0, z) at t, as WaveQuery answers it.
-  double height(double z, double t = 0) const { return surface_->sample(t, 0.0, z).height; }
+  double height(double z, double t = 0) const { return height_(z, t); }
   // The two up-crossings across the shore whose midpoint is nearest z0: one wavelength.
   std::pair<double, double> wavelength_around(double z0, double guess_m) const {
     std::pair<double, double> best{0, HUGE_VAL};
@@ -102,7 +138,7 @@ class Beach {
 
  private:
   Swell swell_;
-  std::unique_ptr<ocean::GerstnerSurface> surface_;
+  std::function<double(double, double)> height_;
 };
 
 // Theory's k across the shore averaged over [z1, z2]: what one wavelength between crossings spans.
@@ -173,7 +209,44 @@ std::vector<Law> shore_laws(const ValidateOptions& o) {
   breaking.note = beach + list +
                   "). From 10 m toward the shore in 2 cm steps, the first depth where the height falls 1 % "
                   "below linear theory's; its linear height over that depth.";
+  Law lattice_wavelength = wavelength, lattice_snell = snell, lattice_amplitude = amplitude;
+  lattice_wavelength.id = "shore.lattice-wavelength";
+  lattice_wavelength.title = "The FFT ocean's local wavelength from omega^2 = g k tanh(k h)";
+  lattice_snell.id = "shore.lattice-snell";
+  lattice_snell.title = "The FFT ocean's refraction: Snell's law";
+  lattice_amplitude.id = "shore.lattice-shoaling";
+  lattice_amplitude.title = "The FFT ocean's shoaling and refraction: a = a0 Ks Kr";
+  lattice_wavelength.measured_on = lattice_snell.measured_on = lattice_amplitude.measured_on =
+      "cpu: WaveQuery's cascades read at their lattice's move over the floor (ocean/random_sea.h, "
+      "shared/shoaling_math.h), which the renderer draws in float";
+  const std::vector<LatticeMode> modes = o.quick
+                                             ? std::vector<LatticeMode>{{2, -4}}
+                                             : std::vector<LatticeMode>{{0, -3}, {1, -5}, {2, -4}, {3, -3}};
+  std::string mode_list;
+  for (const LatticeMode& m : modes)
+    mode_list += (mode_list.empty() ? "" : ", ") + std::to_string(m.mx) + "/" + std::to_string(m.mz);
+  const std::string lattice_beach =
+      "The same beach under the random sea: a 400 m cascade of 64² holding one mode (mx/mz: " + mode_list +
+      "; 7.0-9.2 s, 0-45 deg) and its mirror, 0.1 m high, no choppiness. ";
+  lattice_wavelength.note = lattice_beach + "Its up-crossings as above.";
+  lattice_snell.note = lattice_beach + "Its direction as above.";
+  lattice_amplitude.note =
+      lattice_beach + "Half its height's range over a period, far below its depth limit.";
   size_t done = 0;
+  for (const LatticeMode& m : modes) {
+    const Swell s = m.swell();
+    const Beach b(m, o);
+    for (double h : depths) {
+      const auto [z1, z2] = b.wavelength_around(z_at(h), 2 * kPi / s.k_across(h));
+      const double expected = 2 * kPi / mean_k_across(s, z1, z2);
+      lattice_wavelength.points.push_back(relative_point(h, expected, (z2 - z1) * o.scale(), 0.05));
+      const double measured_deg = std::atan2(s.k_along(), 2 * kPi / (z2 - z1)) * 180 / kPi;
+      lattice_snell.points.push_back(
+          absolute_point(h, s.theta_deg(depth_at(0.5 * (z1 + z2))), measured_deg * o.scale(), 2.0));
+      lattice_amplitude.points.push_back(
+          relative_point(h, s.amplitude(h), b.amplitude(z_at(h)) * o.scale(), 0.10));
+    }
+  }
   for (const Swell& s : swells) {
     const Beach b(s, o);
     for (double h : depths) {
@@ -193,7 +266,7 @@ std::vector<Law> shore_laws(const ValidateOptions& o) {
     breaking.points.push_back(absolute_point(s.period_s, 0.78, ratio * o.scale(), 0.1));
     validate_progress("shore", ++done, swells.size());
   }
-  return {wavelength, snell, amplitude, breaking};
+  return {wavelength, snell, amplitude, breaking, lattice_wavelength, lattice_snell, lattice_amplitude};
 }
 
 }  // namespace lagoon::cli

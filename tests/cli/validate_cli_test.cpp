@@ -115,14 +115,18 @@ INSTANTIATE_TEST_SUITE_P(
                        "shore.wavelength",
                        "shore.snell",
                        "shore.shoaling",
-                       "shore.breaking-onset"}},
+                       "shore.breaking-onset",
+                       "shore.lattice-wavelength",
+                       "shore.lattice-snell",
+                       "shore.lattice-shoaling"}},
         BrokenVariant{"seed-foam", {"foam.whitecap-coverage"}},
         BrokenVariant{"fleeting-foam", {"foam.lifetime"}},
         BrokenVariant{"no-radiation", {"bodies.sphere-decay"}},
         BrokenVariant{"quasi-static", {"bodies.sphere-rao"}},
         BrokenVariant{"shallow-wakes", {"wakes.kelvin-angle", "wakes.transverse-wavelength"}},
         BrokenVariant{"no-shoaling",
-                      {"shore.wavelength", "shore.snell", "shore.shoaling", "shore.breaking-onset"}}),
+                      {"shore.wavelength", "shore.snell", "shore.shoaling", "shore.breaking-onset",
+                       "shore.lattice-wavelength", "shore.lattice-snell", "shore.lattice-shoaling"}}),
     [](const ::testing::TestParamInfo<BrokenVariant>& info) {
       std::string name = info.param.name;
       std::replace(name.begin(), name.end(), '-', '_');
