@@ -74,6 +74,18 @@ void ticks(io::Image8& img, const Axis& x, const Axis& y) {
   }
 }
 
+// Whether each point is joined to the one before it: a law may list several series one after the other (a
+// swell's depths, then the next swell's), each running one way along x; a step back along x, or none, starts
+// the next series.
+std::vector<bool> series_joins(const std::vector<LawPoint>& points) {
+  std::vector<bool> joined(points.size(), false);
+  for (size_t i = 1; i < points.size(); ++i) {
+    const double dx = points[i].x - points[i - 1].x;
+    joined[i] = dx != 0 && (!joined[i - 1] || (dx > 0) == (points[i - 1].x > points[i - 2].x));
+  }
+  return joined;
+}
+
 }  // namespace
 
 io::Image8 law_plot(const Law& law) {
@@ -88,21 +100,24 @@ io::Image8 law_plot(const Law& law) {
   }
   const Axis x = fit(xs, law.log_x, kLeft, kWidth - kRight);
   const Axis y = fit(ys, law.log_y, kHeight - kBottom, kTop);
-  // The tolerance band: a column per point, joined to the next.
+  const std::vector<bool> joined = series_joins(law.points);
+  // The tolerance band: a column per point, joined to its neighbours in its series.
   for (size_t i = 0; i < law.points.size(); ++i) {
     const LawPoint& p = law.points[i];
     const double lo = p.low < -1e200 ? y.lo : p.low, hi = p.high > 1e200 ? y.hi : p.high;
-    const int x0 = i == 0 ? x.pixel(p.x) - 3 : (x.pixel(law.points[i - 1].x) + x.pixel(p.x)) / 2;
-    const int x1 =
-        i + 1 == law.points.size() ? x.pixel(p.x) + 3 : (x.pixel(p.x) + x.pixel(law.points[i + 1].x)) / 2;
+    const int x0 = joined[i] ? (x.pixel(law.points[i - 1].x) + x.pixel(p.x)) / 2 : x.pixel(p.x) - 3;
+    const int x1 = i + 1 < law.points.size() && joined[i + 1]
+                       ? (x.pixel(p.x) + x.pixel(law.points[i + 1].x)) / 2
+                       : x.pixel(p.x) + 3;
     io::fill_rect(img, x0, y.pixel(hi), std::max(x1 - x0, 1), std::max(y.pixel(lo) - y.pixel(hi), 1), kBand);
   }
   io::draw_line(img, kLeft, kHeight - kBottom, kWidth - kRight, kHeight - kBottom, io::chart::kAxis);
   io::draw_line(img, kLeft, kHeight - kBottom, kLeft, kTop, io::chart::kAxis);
   ticks(img, x, y);
   for (size_t i = 1; i < law.points.size(); ++i)
-    io::draw_line(img, x.pixel(law.points[i - 1].x), y.pixel(law.points[i - 1].reference),
-                  x.pixel(law.points[i].x), y.pixel(law.points[i].reference), kReference);
+    if (joined[i])
+      io::draw_line(img, x.pixel(law.points[i - 1].x), y.pixel(law.points[i - 1].reference),
+                    x.pixel(law.points[i].x), y.pixel(law.points[i].reference), kReference);
   for (const LawPoint& p : law.points) {
     io::fill_rect(img, x.pixel(p.x) - 1, y.pixel(p.reference) - 1, 3, 3, kReference);
     io::fill_rect(img, x.pixel(p.x) - 3, y.pixel(p.measured) - 3, 7, 7, p.holds() ? kHolds : kFails);
