@@ -347,7 +347,7 @@ WaveQuery::HeightsAhead WaveQuery::heights_ahead(double time_s, std::vector<glm:
   }
   ahead.heights = lane().submit(
       [this, recent, pending, points = std::move(points), heights_of, begun = ahead.begun] {
-        if (begun->exchange(true)) return std::vector<double>{};  // claimed by the caller
+        if (!begun->take()) return std::vector<double>{};  // claimed by the caller
         std::vector<WaveSample> out(points.size());
         sample_range(recent ? *recent : *fields_of(*pending), points, out, 0, points.size());
         return heights_of(out);

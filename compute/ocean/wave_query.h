@@ -98,11 +98,10 @@ class WaveQuery {
   // the future. For models springs, gerstner and sines, the answer is sampled when asked for.
   struct HeightsAhead {
     std::future<std::vector<double>> heights;
-    // Whether the sampling has begun, set by whoever begins it. A caller that needs the heights before the
-    // worker has reached them (a catch-up, where the worker runs behind) claims them and samples them
-    // itself instead of waiting behind the worker's other jobs; the future then gives no heights.
-    std::shared_ptr<std::atomic<bool>> begun = std::make_shared<std::atomic<bool>>(false);
-    bool claim() { return !begun->exchange(true); }
+    // The sampling, taken by whoever begins it (core/background_worker.h): a caller that claims it samples
+    // the heights itself, and the future then gives none.
+    std::shared_ptr<Claim> begun = std::make_shared<Claim>();
+    bool claim() { return begun->take(); }
   };
   HeightsAhead heights_ahead(double time_s, std::vector<glm::dvec2> points,
                              double due_s = BackgroundWorker::kWhenever);

@@ -38,7 +38,7 @@ WakeHeights::WakeHeights(VehicleWakes wakes, uint32_t resolution, std::shared_pt
 
 void WakeHeights::restart(long long first_step) {
   for (size_t h = 0; h < next_.size(); ++h)  // a step of the states being replaced: dropped
-    if (next_[h]->begun.exchange(true) && next_done_[h].valid()) next_done_[h].get();
+    if (!next_[h]->begun.take() && next_done_[h].valid()) next_done_[h].get();
   next_.clear();
   next_done_.clear();
   for (Layer& l : layers_) {
@@ -72,7 +72,7 @@ void WakeHeights::run(NextStep& next) const {
 WakeHeights::Stepped WakeHeights::take_next() {
   Stepped stepped;
   for (size_t h = 0; h < next_.size(); ++h) {
-    if (next_[h]->begun.exchange(true))
+    if (!next_[h]->begun.take())
       next_done_[h].get();  // the worker has it
     else
       run(*next_[h]);  // not begun: the worker runs behind (a catch-up); its job will find it taken
@@ -110,7 +110,7 @@ void WakeHeights::begin_next(glm::dvec2 centre, bool on_worker) {
     // Due when t reaches the end of this interval.
     next_done_.push_back(on_worker ? lane_.submit(
                                          [this, next] {
-                                           if (!next->begun.exchange(true)) run(*next);
+                                           if (next->begun.take()) run(*next);
                                          },
                                          double(steps_done_) * wakes_.step_s())
                                    : std::future<void>{});

@@ -11,7 +11,6 @@
 // computed on another thread during the interval before it is needed (see next_).
 #pragma once
 #include <array>
-#include <atomic>
 #include <complex>
 #include <cstddef>
 #include <cstdint>
@@ -85,7 +84,7 @@ class WakeHeights {
   // the size) and stepped by whoever begins it: the worker, or this thread in a catch-up that overtook it.
   // One per layer, so that no piece of the helpers' work is longer than a layer's step (~1 ms).
   struct NextStep {
-    std::atomic<bool> begun{false};
+    Claim begun;  // the worker's job or this thread, whichever begins first (core/background_worker.h)
     size_t hull = 0;
     std::unique_ptr<ocean::DynamicLayerCpu> layer;  // the spare, then the step's result
     glm::ivec2 origin{0};

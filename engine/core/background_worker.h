@@ -9,6 +9,7 @@
 // it (`due`, in the loop's own clock); the worker takes the soonest first, and jobs due at the same time (or
 // never said) in the order they came.
 #pragma once
+#include <atomic>
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
@@ -95,6 +96,18 @@ class BackgroundWorker {
   uint64_t next_ = 0;
   bool stopping_ = false;
   std::thread thread_;  // last: it starts once the rest is made
+};
+
+// Work done once, by whichever thread begins it first: the worker's job, or a caller that needs it before
+// the worker has reached it (a catch-up that overtook the worker), which then does it itself instead of
+// waiting behind the worker's other jobs. take() is true for exactly one taker; a job that finds the work
+// taken returns at once, and a caller that finds it taken waits for the job's future.
+class Claim {
+ public:
+  bool take() { return !taken_.exchange(true); }
+
+ private:
+  std::atomic<bool> taken_{false};
 };
 
 // One owner's jobs on a worker it may share with others (its own when none is given). Destroying the lane

@@ -125,5 +125,23 @@ TEST(WorkerLane, LanesShareOneThreadAndEachWaitsForItsOwnJobsWhenItGoes) {
   EXPECT_NE(b_ran, std::this_thread::get_id());
 }
 
+// A claim is taken once, whichever of many threads racing for it gets there first.
+TEST(Claim, ExactlyOneOfManyRacingTakersTakesIt) {
+  for (int round = 0; round < 50; ++round) {
+    Claim claim;
+    std::atomic<int> taken{0}, ready{0};
+    std::vector<std::thread> takers;
+    for (int t = 0; t < 6; ++t)
+      takers.emplace_back([&] {
+        ++ready;
+        while (ready.load() < 6) std::this_thread::yield();
+        if (claim.take()) ++taken;
+      });
+    for (std::thread& t : takers) t.join();
+    EXPECT_EQ(taken.load(), 1) << "round " << round;
+    EXPECT_FALSE(claim.take());
+  }
+}
+
 }  // namespace
 }  // namespace lagoon::test
