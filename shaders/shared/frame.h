@@ -72,8 +72,8 @@ struct FrameUniforms {
   // layer of cascade 0's lattice (cascade c's: w + c).
   vec4 shoaling_axis;
   vec4 shoaling_grid;
-  // Per cascade, its representative wave whose phase over the floor moves its lattice (shared/shoaling_math.h):
-  // xy = k0 (world xz, rad/m), zw = k0/|k0|² (zeros: not moved).
+  // Per cascade, its representative wave whose phase over the floor moves its lattice
+  // (shared/shoaling_math.h): xy = k0 (world xz, rad/m), zw = k0/|k0|² (zeros: not moved).
   vec4 shoaling_lattice[LAGOON_MAX_CASCADES];
   // Models gerstner and sines with their own waves (common/direct_waves.glsl), phases at the frame's time.
   DirectWaveGpu direct_waves[LAGOON_DIRECT_MAX_WAVES];
