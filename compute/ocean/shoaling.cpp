@@ -352,11 +352,6 @@ glm::dvec4 Shoaling::wave(size_t i, glm::dvec2 xz) const {
   return wave_at(1 + i, inputs_.waves[i], locate(xz));
 }
 
-glm::dvec4 Shoaling::lattice(size_t c, glm::dvec2 xz) const {
-  if (c >= lattice_count()) return glm::dvec4(0.0);
-  return wave_at(lattice_layer(c), inputs_.sea.lattice[c], locate(xz));
-}
-
 glm::dvec4 Shoaling::lattice_wave(size_t c) const {
   const glm::dvec2 k = c < lattice_count() ? inputs_.sea.lattice[c].k : glm::dvec2(0.0);
   const double k2 = glm::dot(k, k);

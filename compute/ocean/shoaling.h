@@ -86,8 +86,6 @@ class Shoaling {
   glm::dvec4 ground(glm::dvec2 xz) const;
   // Wave i at (x, z): (phase offset φ rad, amplitude m, k_u, k_v rad/m).
   glm::dvec4 wave(size_t i, glm::dvec2 xz) const;
-  // Cascade c's representative wave at (x, z), as wave() (zeros for a cascade with no waves).
-  glm::dvec4 lattice(size_t c, glm::dvec2 xz) const;
   // Every cascade's move at the rest position xz (shared/shoaling_math.h), one lookup of the table's cell:
   // where its textures are read, and ∇φ there (its local wavevector less its own).
   static constexpr size_t kMaxLattices = 4;  // LAGOON_MAX_CASCADES
