@@ -89,6 +89,10 @@ Shoaling::Shoaling(ShoalingInputs inputs) : inputs_(std::move(inputs)) {
   if (lattice_count() > kMaxLattices) throw std::invalid_argument("Shoaling: more cascades than it moves");
   const size_t n = samples(), waves = wave_count();
   table_.assign(n * (1 + waves + lattice_count()), glm::dvec4(0.0));
+  for (const ShoalingWave& w : inputs_.sea.lattice) {
+    const double k2 = glm::dot(w.k, w.k);
+    lattice_waves_.push_back(k2 > 0 ? glm::dvec4(w.k, w.k / k2) : glm::dvec4(0.0));
+  }
   // The random sea's lattices: their moves, and their shoaling, the energy-weighted K_s K_r of their
   // representative waves: sqrt(Σ a_c² / Σ a0_c²), 1 where all are their own.
   std::vector<double> energy(n, 0.0);
@@ -353,9 +357,7 @@ glm::dvec4 Shoaling::wave(size_t i, glm::dvec2 xz) const {
 }
 
 glm::dvec4 Shoaling::lattice_wave(size_t c) const {
-  const glm::dvec2 k = c < lattice_count() ? inputs_.sea.lattice[c].k : glm::dvec2(0.0);
-  const double k2 = glm::dot(k, k);
-  return k2 > 0 ? glm::dvec4(k, k / k2) : glm::dvec4(0.0);
+  return c < lattice_waves_.size() ? lattice_waves_[c] : glm::dvec4(0.0);
 }
 
 Shoaling::LatticeMoves Shoaling::lattice_moves(glm::dvec2 xz) const {
@@ -363,11 +365,12 @@ Shoaling::LatticeMoves Shoaling::lattice_moves(glm::dvec2 xz) const {
   moves.point.fill(xz);
   moves.grad.fill(glm::dvec2(0.0));
   const Where w = locate(xz);
+  moves.sea_scale = at(0, w).y;
   for (size_t c = 0; c < lattice_count(); ++c) {
     const ShoalingWave& wave = inputs_.sea.lattice[c];
     if (wave.k == glm::dvec2(0.0)) continue;
     const glm::dvec4 value = wave_at(lattice_layer(c), wave, w);
-    moves.point[c] = sh_lattice_point(xz, value.x, lattice_wave(c));
+    moves.point[c] = sh_lattice_point(xz, value.x, lattice_waves_[c]);
     moves.grad[c] = wavevector(value) - wave.k;
   }
   return moves;

@@ -87,10 +87,12 @@ class Shoaling {
   // Wave i at (x, z): (phase offset φ rad, amplitude m, k_u, k_v rad/m).
   glm::dvec4 wave(size_t i, glm::dvec2 xz) const;
   // Every cascade's move at the rest position xz (shared/shoaling_math.h), one lookup of the table's cell:
-  // where its textures are read, and ∇φ there (its local wavevector less its own).
+  // where its textures are read, and ∇φ there (its local wavevector less its own); and, from the same
+  // lookup, the random sea's height scale there (ground(xz).y, to the bit).
   static constexpr size_t kMaxLattices = 4;  // LAGOON_MAX_CASCADES
   struct LatticeMoves {
-    std::array<glm::dvec2, kMaxLattices> point, grad;
+    std::array<glm::dvec2, kMaxLattices> point{}, grad{};
+    double sea_scale = 1;
   };
   LatticeMoves lattice_moves(glm::dvec2 xz) const;
   // A slope of cascade c read at its moved point, as the surface's at the rest position (the chain rule).
@@ -121,6 +123,7 @@ class Shoaling {
   std::vector<double> build_grid_wave(size_t layer);     // rows: the eikonal and the energy flux on the grid
   ShoalingInputs inputs_;
   std::vector<glm::dvec4> table_;
+  std::vector<glm::dvec4> lattice_waves_;  // lattice_wave(c) for each cascade, made once
   bool active_ = false;
 };
 

@@ -376,10 +376,6 @@ void WaveQuery::evaluate(double time_s) {
   keep(current_);
 }
 
-double WaveQuery::sea_scale(glm::dvec2 p) const {
-  return sea_floor_ ? sea_floor_->ground(p).y : 1.0;
-}
-
 Shoaling::LatticeMoves WaveQuery::moves(glm::dvec2 p) const {
   if (sea_floor_) return sea_floor_->lattice_moves(p);
   Shoaling::LatticeMoves none;
@@ -392,7 +388,7 @@ glm::dvec2 WaveQuery::displacement(const Evaluation& fields, glm::dvec2 p) const
   const Shoaling::LatticeMoves lattices = moves(p);  // each cascade read where its lattice has moved
   for (size_t g = 0; g < fields.grids.size(); ++g)
     fields.grids[g]->sample(lattices.point[cascade_of_[g]], kDx, 3, d);
-  glm::dvec2 out = sea_scale(p) * params_.choppiness * glm::dvec2(d[0], d[2]);
+  glm::dvec2 out = lattices.sea_scale * params_.choppiness * glm::dvec2(d[0], d[2]);
   if (swell_) {
     const glm::dvec3 moved = swell_->at_rest(p, fields.time_s).position;
     out += glm::dvec2(moved.x, moved.z) - p;
@@ -445,13 +441,14 @@ void WaveQuery::sample_range(const Evaluation& fields, std::span<const glm::dvec
     WaveSample& s = out[i];
     s.rest_position = p;
     s.converged = converged;
-    const double scale = sea_scale(p);  // over the floor (ocean/shoaling.h); its own slope is left out
+    // Each cascade read where its lattice has moved over the floor (ocean/shoaling.h), and the sea's height
+    // scale there (its own slope is left out).
+    const Shoaling::LatticeMoves moved = moves(p);
+    const double scale = moved.sea_scale;
     s.error_bound_m = bound * std::max(1.0, scale);  // higher where the sea shoals
     // Swell trains over the sea: their sums at the same rest point, added (their slopes to the sea's).
     GerstnerPoint swell;
     if (swell_) swell = swell_->at_rest(p, fields.time_s);
-    // Each cascade read where its lattice has moved over the floor (ocean/shoaling.h).
-    const Shoaling::LatticeMoves moved = moves(p);
     if (options_.heights_only) {
       for (size_t g = 0; g < fields.grids.size(); ++g)
         fields.grids[g]->sample(moved.point[cascade_of_[g]], kHeight, 1, &f[kHeight]);

@@ -154,8 +154,9 @@ class WaveQuery {
   std::shared_ptr<const Evaluation> evaluate_springs(double time_s);
   void keep(std::shared_ptr<const Evaluation> evaluation);
   glm::dvec2 displacement(const Evaluation& fields, glm::dvec2 p) const;
-  double sea_scale(glm::dvec2 p) const;  // the random sea's height over the floor, 1 where it is deep
-  Shoaling::LatticeMoves moves(glm::dvec2 p) const;  // where each cascade is read for the rest position p
+  // Where each cascade is read for the rest position p, and the random sea's height scale there (1 and p
+  // itself where no floor changes the sea): one lookup of the floor's table.
+  Shoaling::LatticeMoves moves(glm::dvec2 p) const;
   // sample()'s answers for points[begin, end), from `fields`. Reads nothing that changes after
   // construction, so it may run on another thread.
   void sample_range(const Evaluation& fields, std::span<const glm::dvec2> points,
